@@ -1,0 +1,248 @@
+// A subject is an implementation under test: the bundled reference implementation, a
+// deliberately wrong variant of it (a negative control), or someone else's code.
+//
+// Properties see a subject only through the named slots below, so adding a subject never means
+// editing a property. A subject fills any subset of the slots; a property whose slots are not
+// all filled is reported NOT PROVIDED, never silently skipped.
+//
+// Every slot is listed exactly once, in GM_SUBJECT_SLOTS: the list generates the members of
+// Subject<T>, the lookup by name, and the slot table printed by `geomech slots`.
+#pragma once
+
+#include "core/lie_algebra_id.hpp"
+#include "core/linalg.hpp"
+
+#include <functional>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace gm {
+
+template <class T>
+using Vec3Pair = std::pair<Vec3<T>, Vec3<T>>;
+template <class T>
+using MatXPair = std::pair<MatX<T>, MatX<T>>;
+
+// State of the rigid body with its attitude, (2.20): body angular momentum and O in SO(3).
+template <class T>
+struct RigidBodyState {
+  Vec3<T> Pi;
+  Mat3<T> O;
+};
+
+// State of Manakov's SO(n) rigid body with its attitude (section 2.4): M in so(n), O in SO(n).
+template <class T>
+struct ManakovState {
+  MatX<T> M;
+  MatX<T> O;
+};
+
+// Thrown when a property calls a slot the subject does not fill. Properties declare the slots
+// they need, so the runner reports NOT PROVIDED before running; reaching this means a property
+// forgot to declare a need, which the runner reports as an error in the property.
+class SlotMissing : public std::logic_error {
+ public:
+  explicit SlotMissing(const char* slot)
+      : std::logic_error(std::string("slot '") + slot + "' is not provided by this subject"), slot_(slot) {}
+  const char* slot() const { return slot_; }
+
+ private:
+  const char* slot_;
+};
+
+template <class Sig>
+class Slot;
+
+template <class R, class... A>
+class Slot<R(A...)> {
+ public:
+  explicit Slot(const char* name) : name_(name) {}
+  Slot& operator=(std::function<R(A...)> f) {
+    f_ = std::move(f);
+    return *this;
+  }
+  explicit operator bool() const { return static_cast<bool>(f_); }
+  R operator()(A... args) const {
+    if (!f_) throw SlotMissing(name_);
+    return f_(std::forward<A>(args)...);
+  }
+  const char* name() const { return name_; }
+
+ private:
+  const char* name_;
+  std::function<R(A...)> f_;
+};
+
+// X(name, signature, place in the notes, meaning)
+// Signatures use T, the scalar. Arguments are in the notes' order and notation.
+#define GM_SUBJECT_SLOTS(X)                                                                          \
+  /* so(3) and so(n) */                                                                              \
+  X(hat, Mat3<T>(const Vec3<T>& v), "(2.11)", "so(3) hat map: hat(v) w = v x w")                     \
+  X(vee, Vec3<T>(const Mat3<T>& m), "(2.11)", "inverse of the hat map on skew 3x3 matrices")         \
+  X(pairing, T(const MatX<T>& a, const MatX<T>& b), "(2.15)", "trace pairing <A, B> = tr(A^T B)/2")  \
+  X(hat_n, MatX<T>(const VecX<T>& v, int n), "sec. 1, SO(4) exercise", "so(n) hat map from R^{n(n-1)/2}") \
+  X(vee_n, VecX<T>(const MatX<T>& m), "sec. 1, SO(4) exercise", "inverse of hat_n")                  \
+  /* matrix Lie algebras in coordinates */                                                           \
+  X(lie_hat, MatX<T>(LieAlgebraId g, const VecX<T>& x), "sec. 1", "coordinates -> matrix in g")      \
+  X(lie_vee, VecX<T>(LieAlgebraId g, const MatX<T>& m), "sec. 1", "matrix in g -> coordinates")      \
+  X(ad_star, VecX<T>(LieAlgebraId g, const VecX<T>& xi, const VecX<T>& mu), "sec. 1, exercise",     \
+    "(ad*_xi mu)_k = xi^j mu_i c^i_jk")                                                              \
+  X(so4_bracket_R6, Vec6<T>(const Vec6<T>& a, const Vec6<T>& b), "sec. 1, SO(4) exercise",          \
+    "Lie bracket of so(4) in R^6 coordinates")                                                       \
+  X(ad_star_so4_R6, Vec6<T>(const Vec6<T>& xi, const Vec6<T>& mu), "sec. 1, SO(4) exercise",        \
+    "ad* of so(4) in R^6 coordinates")                                                               \
+  /* Euler's equations */                                                                            \
+  X(euler_2_1, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Omega), "(2.1)", "dOmega/dt, componentwise") \
+  X(euler_2_2, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Omega), "(2.2)", "dOmega/dt from I dOmega/dt = I Omega x Omega") \
+  X(euler_3_7, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Pi), "(3.7)", "dPi/dt, componentwise")       \
+  X(euler_3_8, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Pi), "(3.8)", "dPi/dt = Pi x I^-1 Pi")       \
+  X(euler_matrix_2_12, Mat3<T>(const Vec3<T>& I, const Mat3<T>& Pi_hat), "(2.12), (2.20)",           \
+    "dPi/dt = -[Omega_hat, Pi] for skew Pi")                                                         \
+  /* Lagrangian, Legendre transform, Hamiltonian */                                                  \
+  X(lagrangian_2_5, T(const Vec3<T>& I, const Vec3<T>& Omega), "(2.5)", "l = I Omega . Omega / 2")   \
+  X(lagrangian_2_13, T(const Vec3<T>& I, const Mat3<T>& Omega_hat), "(2.13)", "l = <I Omega_hat, Omega_hat>/2") \
+  X(legendre_3_1, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Omega), "(3.1)", "Pi = dl/dOmega = I Omega") \
+  X(omega_3_5, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Pi), "(3.5)", "Omega = dh/dPi = I^-1 Pi")    \
+  X(hamiltonian_3_3, T(const Vec3<T>& I, const Vec3<T>& Pi), "(3.3)", "h = Pi . Omega - l(Omega)")   \
+  X(hamiltonian_3_4, T(const Vec3<T>& I, const Vec3<T>& Pi), "(3.4)", "h = Pi . I^-1 Pi / 2")        \
+  X(hamiltonian_2_21, T(const Vec3<T>& I, const Mat3<T>& Pi_hat), "(2.21)", "h = <Pi, Omega_hat> - l") \
+  /* Poisson brackets (evaluated from gradients at a point) */                                       \
+  X(lie_poisson_2_23, T(const Mat3<T>& Pi_hat, const Mat3<T>& df_hat, const Mat3<T>& dh_hat),       \
+    "(2.23), (3.10)", "{f,h} = -<Pi, [df, dh]>, gradients as skew matrices")                         \
+  X(lie_poisson_3_6, T(const Vec3<T>& Pi, const Vec3<T>& df, const Vec3<T>& dh), "(3.6), (2.25)",   \
+    "{f,h} = -Pi . df x dh")                                                                         \
+  X(nambu_3_13, T(const Vec3<T>& dc, const Vec3<T>& df, const Vec3<T>& dh), "(3.13)",               \
+    "{f,h} = -grad c . grad f x grad h")                                                             \
+  X(nambu_motion_3_14, Vec3<T>(const Vec3<T>& dc, const Vec3<T>& dh), "(3.14)", "dx/dt = grad c x grad h") \
+  X(canonical_bracket, T(const Vec3<T>& dfdq, const Vec3<T>& dfdp, const Vec3<T>& dhdq,             \
+                         const Vec3<T>& dhdp),                                                       \
+    "sec. 3.5", "canonical bracket on T*R^3, {q_i, p_j} = delta_ij")                                 \
+  X(nambu_3_16, Vec3<T>(const Vec3<T>& a, const Vec3<T>& x), "(3.16)", "the system (3.16)")          \
+  /* momentum map, Clebsch, reconstruction */                                                        \
+  X(momentum_map, Vec3<T>(const Vec3<T>& q, const Vec3<T>& p), "momentum-map section", "J = p x q")  \
+  X(clebsch_3_21, Vec3Pair<T>(const Vec3<T>& I, const Vec3<T>& Q, const Vec3<T>& P), "(3.21)",      \
+    "(dQ/dt, dP/dt) with Pi = P x Q")                                                                \
+  X(reconstruction_2_10, Mat3<T>(const Mat3<T>& O, const Vec3<T>& Omega), "(2.10)", "dO/dt = O Omega_hat") \
+  X(spatial_momentum, Vec3<T>(const Mat3<T>& O, const Vec3<T>& Pi), "(2.30)", "pi = Ad*_{O^-1} Pi") \
+  X(inertia_space, Mat3<T>(const Mat3<T>& O, const Vec3<T>& I), "Remark 2.1", "I_space = O I O^-1")  \
+  X(inertia_tensor_2_3, Mat3<T>(const VecX<T>& m, const MatX<T>& X), "(2.3)", "inertia of point masses") \
+  X(inertia_bilinear_2_3, T(const VecX<T>& m, const MatX<T>& X, const Vec3<T>& a, const Vec3<T>& b), \
+    "(2.3)", "(a, b) = sum m (a x X).(b x X)")                                                       \
+  /* Manakov on so(n) */                                                                             \
+  X(manakov_M, MatX<T>(const MatX<T>& A, const MatX<T>& Omega), "(2.34)", "M = A Omega + Omega A")   \
+  X(manakov_Omega, MatX<T>(const MatX<T>& A, const MatX<T>& M), "(2.34)", "Omega recovered from M")  \
+  X(manakov_2_34, MatX<T>(const MatX<T>& A, const MatX<T>& M), "(2.34), (2.36)", "dM/dt = [M, Omega]") \
+  X(manakov_lagrangian, T(const MatX<T>& A, const MatX<T>& Omega), "Prop. 2.4", "l = -tr(Omega A Omega)/2") \
+  X(manakov_clebsch_3_23, MatXPair<T>(const MatX<T>& A, const MatX<T>& Q, const MatX<T>& P),        \
+    "(3.23)", "(dQ/dt, dP/dt) = (Q Omega, P Omega)")
+
+// One step of an integrator for the rigid body with attitude (Pi, O), or for Manakov's (M, O).
+template <class T>
+struct Integrator {
+  std::string name;
+  Slot<RigidBodyState<T>(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h)> rigid_body_step{
+      "rigid_body_step"};
+  Slot<ManakovState<T>(const MatX<T>& A, const ManakovState<T>& x, const T& h)> manakov_step{"manakov_step"};
+};
+
+template <class T>
+struct Subject {
+  using Scalar = T;
+
+#define GM_DECLARE_SLOT(name, sig, place, meaning) Slot<sig> name{#name};
+  GM_SUBJECT_SLOTS(GM_DECLARE_SLOT)
+#undef GM_DECLARE_SLOT
+
+  std::vector<Integrator<T>> integrators;
+
+  // Whether the slot with this name is filled; throws std::invalid_argument for a name that is
+  // not a slot at all (a typo in a property's needs must not read as "not provided").
+  bool provides(std::string_view slot) const {
+#define GM_PROVIDES_SLOT(name, sig, place, meaning) \
+  if (slot == #name) return static_cast<bool>(name);
+    GM_SUBJECT_SLOTS(GM_PROVIDES_SLOT)
+#undef GM_PROVIDES_SLOT
+    throw std::invalid_argument("no subject slot is named '" + std::string(slot) + "'");
+  }
+};
+
+struct SlotInfo {
+  const char* name;
+  const char* signature;
+  const char* place;
+  const char* meaning;
+};
+
+// The slot table, in declaration order.
+const std::vector<SlotInfo>& subject_slots();
+bool is_slot_name(std::string_view name);
+
+// What an integrator's author claims about it; the harness verifies every claim.
+struct IntegratorClaims {
+  std::string integrator;        // name of the Integrator this describes
+  int order = 0;                 // claimed order of accuracy (0: no claim)
+  bool symmetric = false;        // time-reversible: step(h) then step(-h) is the identity
+  bool casimir = false;          // preserves |Pi|^2 (or the spectrum of M) to round-off
+  bool energy = false;           // preserves h to round-off
+  bool orthogonality = false;    // keeps O orthogonal to round-off
+  bool spectrum = false;         // keeps the spectrum of M (Manakov) to round-off
+  bool poisson = false;          // is a Poisson map for the Lie-Poisson bracket
+};
+
+// A subject in every scalar it supports. A subject written only for double has mp and q empty
+// and is told which checks it therefore misses.
+struct SubjectSet {
+  std::string name;
+  std::string description;
+  std::shared_ptr<const Subject<double>> d;
+  std::shared_ptr<const Subject<Real50>> mp;
+  std::shared_ptr<const Subject<Rational>> q;
+  std::vector<IntegratorClaims> claims;
+
+  template <class T>
+  const Subject<T>* get() const {
+    if constexpr (std::is_same_v<T, double>)
+      return d.get();
+    else if constexpr (std::is_same_v<T, Real50>)
+      return mp.get();
+    else
+      return q.get();
+  }
+
+  const IntegratorClaims* claims_for(std::string_view integrator) const {
+    for (const auto& c : claims)
+      if (c.integrator == integrator) return &c;
+    return nullptr;
+  }
+};
+
+// A copy of `base` with `patch(subject)` applied to each of its scalar instantiations; `patch` is a
+// generic callable taking Subject<T>& (this is how negative controls are made).
+template <class Patch>
+SubjectSet mutate(const SubjectSet& base, std::string name, std::string description, Patch&& patch) {
+  SubjectSet out = base;
+  out.name = std::move(name);
+  out.description = std::move(description);
+  if (base.d) {
+    auto s = std::make_shared<Subject<double>>(*base.d);
+    patch(*s);
+    out.d = s;
+  }
+  if (base.mp) {
+    auto s = std::make_shared<Subject<Real50>>(*base.mp);
+    patch(*s);
+    out.mp = s;
+  }
+  if (base.q) {
+    auto s = std::make_shared<Subject<Rational>>(*base.q);
+    patch(*s);
+    out.q = s;
+  }
+  return out;
+}
+
+}  // namespace gm
