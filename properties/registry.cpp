@@ -1,0 +1,48 @@
+#include "properties/registry.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace gm {
+
+const char* tolerance_name(ToleranceClass t) {
+  switch (t) {
+    case ToleranceClass::Exact: return "exact";
+    case ToleranceClass::Roundoff: return "roundoff";
+    case ToleranceClass::Truncation: return "truncation";
+  }
+  return "?";
+}
+
+bool Property::runs_in(ScalarKind k) const {
+  switch (k) {
+    case ScalarKind::Double: return static_cast<bool>(d) || static_cast<bool>(int_d);
+    case ScalarKind::MP50: return static_cast<bool>(mp) || static_cast<bool>(int_mp);
+    case ScalarKind::Exact: return static_cast<bool>(q);
+  }
+  return false;
+}
+
+static std::vector<Property>& mutable_registry() {
+  static std::vector<Property> r;
+  return r;
+}
+
+void register_property(Property p) {
+  auto& r = mutable_registry();
+  for (const auto& q : r)
+    if (q.id == p.id) throw std::logic_error("property id registered twice: " + p.id);
+  auto pos = std::lower_bound(r.begin(), r.end(), p.id,
+                              [](const Property& a, const std::string& id) { return a.id < id; });
+  r.insert(pos, std::move(p));
+}
+
+const std::vector<Property>& properties() { return mutable_registry(); }
+
+const Property* find_property(std::string_view id) {
+  for (const auto& p : properties())
+    if (p.id == id) return &p;
+  return nullptr;
+}
+
+}  // namespace gm

@@ -1,0 +1,338 @@
+#include "properties/runner.hpp"
+
+#include "properties/support/tolerance.hpp"
+
+#include <rapidcheck.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <optional>
+#include <sstream>
+#include <unordered_map>
+
+// Exported by librapidcheck but declared only in its private headers.
+namespace rc::detail {
+std::string reproduceMapToString(const std::unordered_map<std::string, Reproduce>& reproduceMap);
+std::unordered_map<std::string, Reproduce> stringToReproduceMap(const std::string& str);
+}  // namespace rc::detail
+
+namespace gm {
+
+const char* outcome_name(Outcome o) {
+  switch (o) {
+    case Outcome::Pass: return "PASS";
+    case Outcome::Fail: return "FAIL";
+    case Outcome::NotProvided: return "NOT PROVIDED";
+    case Outcome::Crash: return "CRASH";
+    case Outcome::Timeout: return "TIMEOUT";
+    case Outcome::Error: return "ERROR";
+  }
+  return "?";
+}
+
+std::string Verdict::key() const {
+  std::string k = subject + "/" + property + "/" + scalar;
+  if (!integrator.empty()) k += "/" + integrator;
+  return k;
+}
+
+std::uint64_t derive_seed(std::uint64_t base, const std::string& property_key) {
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a
+  for (unsigned char c : property_key) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  return h ^ (base * 0x9E3779B97F4A7C15ull);
+}
+
+namespace {
+
+class SilentListener : public rc::detail::TestListener {
+ public:
+  void onTestCaseFinished(const rc::detail::CaseDescription&) override {}
+  void onShrinkTried(const rc::detail::CaseDescription&, bool) override {}
+  void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
+};
+
+struct RcEnv {
+  std::optional<std::uint64_t> seed;
+  std::optional<int> max_success;
+  std::unordered_map<std::string, rc::detail::Reproduce> reproduce;
+};
+
+// $RC_PARAMS, read the way RapidCheck documents it (seed=, max_success=, reproduce=).
+const RcEnv& rc_env() {
+  static const RcEnv env = [] {
+    RcEnv e;
+    const char* s = std::getenv("RC_PARAMS");
+    if (!s || !*s) return e;
+    rc::detail::Configuration defaults;
+    defaults.testParams.seed = 0;
+    defaults.testParams.maxSuccess = -1;
+    try {
+      auto cfg = rc::detail::configFromString(s, defaults);
+      if (cfg.testParams.seed != 0) e.seed = cfg.testParams.seed;
+      if (cfg.testParams.maxSuccess >= 0) e.max_success = cfg.testParams.maxSuccess;
+      e.reproduce = cfg.reproduce;
+    } catch (const std::exception& ex) {
+      std::fprintf(stderr, "geomech: ignoring malformed RC_PARAMS (%s)\n", ex.what());
+    }
+    return e;
+  }();
+  return env;
+}
+
+// RapidCheck names counterexample values by their C++ type; Eigen-over-Boost types are pages
+// long. Shorten them to Vec3<Rational>, Mat3x3<Real50>, VecX<double>, ...
+std::string pretty_type(const std::string& t) {
+  auto scalar = [](const std::string& s) -> std::string {
+    if (s.find("rational_adaptor") != std::string::npos) return "Rational";
+    if (s.find("cpp_bin_float<50") != std::string::npos) return "Real50";
+    if (s.find("cpp_bin_float<70") != std::string::npos) return "Real70";
+    if (s.find("double") != std::string::npos) return "double";
+    if (s.find("int") != std::string::npos && s.find("<") == std::string::npos) return s;
+    return {};
+  };
+  if (t.rfind("Eigen::Matrix<", 0) == 0) {
+    // ..., R, C, Options, MaxR, MaxC>
+    std::vector<std::string> parts;
+    std::string cur;
+    int depth = 0;
+    for (std::size_t i = std::string("Eigen::Matrix<").size(); i < t.size(); ++i) {
+      const char c = t[i];
+      if (c == '<') ++depth;
+      if (c == '>') {
+        if (depth == 0) break;
+        --depth;
+      }
+      if (c == ',' && depth == 0) {
+        parts.push_back(cur);
+        cur.clear();
+      } else if (c != ' ') {
+        cur += c;
+      }
+    }
+    parts.push_back(cur);
+    if (parts.size() >= 3) {
+      const std::string S = scalar(parts[0]);
+      auto dim = [](const std::string& d) { return d == "-1" ? std::string("X") : d; };
+      if (!S.empty()) {
+        if (parts[2] == "1") return "Vec" + dim(parts[1]) + "<" + S + ">";
+        return "Mat" + dim(parts[1]) + "x" + dim(parts[2]) + "<" + S + ">";
+      }
+    }
+    return t;
+  }
+  const std::string S = scalar(t);
+  return S.empty() ? t : S;
+}
+
+int default_cases(const Property& p, ScalarKind k) {
+  switch (k) {
+    case ScalarKind::Double: return p.cases.d;
+    case ScalarKind::MP50: return p.cases.mp;
+    case ScalarKind::Exact: return p.cases.q;
+  }
+  return 1;
+}
+
+template <class Fn>
+void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& o, Fn&& fn) {
+  const auto start = std::chrono::steady_clock::now();
+  static const RcEnv no_env;
+  const RcEnv& env = o.honour_rc_params ? rc_env() : no_env;
+  std::uint64_t base = o.seed;
+  if (env.seed) base = *env.seed;
+  v.seed = derive_seed(base, p.id + "/" + v.scalar + (v.integrator.empty() ? "" : "/" + v.integrator));
+
+  rc::detail::TestParams params;
+  params.seed = v.seed;
+  int cases = o.cases > 0 ? o.cases : static_cast<int>(default_cases(p, k) * o.case_factor + 0.5);
+  if (env.max_success) cases = *env.max_success;
+  params.maxSuccess = cases < 1 ? 1 : cases;
+  params.maxSize = 100;
+
+  rc::detail::TestMetadata metadata;
+  metadata.id = v.key();
+  metadata.description = p.title;
+
+  std::unordered_map<std::string, rc::detail::Reproduce> reproduce = env.reproduce;
+  if (!o.reproduce.empty()) reproduce = rc::detail::stringToReproduceMap(o.reproduce);
+
+  std::string missing_slot;
+  residual_log().reset();
+  SilentListener listener;
+  const auto result = rc::detail::checkProperty(
+      rc::detail::toProperty([&] {
+        try {
+          fn();
+        } catch (const SlotMissing& e) {
+          missing_slot = e.slot();
+          throw;
+        }
+      }),
+      metadata, params, listener, reproduce);
+
+  const auto& log = residual_log();
+  v.worst_eps_units = log.worst_eps_units;
+  v.worst_absolute = log.worst_absolute;
+  v.worst_check = log.worst_check;
+  v.checks = log.checks;
+
+  rc::detail::SuccessResult success;
+  rc::detail::FailureResult failure;
+  rc::detail::GaveUpResult gave_up;
+  rc::detail::Error error;
+  if (result.match(success)) {
+    v.outcome = Outcome::Pass;
+    v.cases = success.numSuccess;
+  } else if (result.match(failure)) {
+    v.cases = failure.numSuccess;
+    if (!missing_slot.empty()) {
+      v.outcome = Outcome::Error;
+      v.message = "property '" + p.id + "' called slot '" + missing_slot +
+                  "' without listing it in its needs (a defect of the property, not of the subject)";
+    } else {
+      v.outcome = Outcome::Fail;
+      v.message = failure.description;
+      for (const auto& [type, value] : failure.counterExample) v.counterexample.emplace_back(pretty_type(type), value);
+      v.reproduce = rc::detail::reproduceMapToString({{metadata.id, failure.reproduce}});
+    }
+  } else if (result.match(gave_up)) {
+    v.outcome = Outcome::Error;
+    v.cases = gave_up.numSuccess;
+    v.message = "gave up after too many discarded cases: " + gave_up.description;
+  } else if (result.match(error)) {
+    v.outcome = Outcome::Error;
+    v.message = error.description;
+  }
+  v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+template <class T>
+Verdict base_verdict(const Property& p, const SubjectSet& s) {
+  Verdict v;
+  v.subject = s.name;
+  v.property = p.id;
+  v.spec = p.spec;
+  v.title = p.title;
+  v.scalar = ScalarInfo<T>::name;
+  return v;
+}
+
+// NOT PROVIDED reasons shared by both scopes; empty when everything is there.
+template <class T>
+std::string missing_for(const Property& p, const SubjectSet& s, Outcome& outcome) {
+  outcome = Outcome::NotProvided;
+  const Subject<T>* subject = s.get<T>();
+  if (!subject)
+    return std::string("the subject has no ") + ScalarInfo<T>::name +
+           " instantiation (write it as a template on the scalar to be checked in " + ScalarInfo<T>::name + ")";
+  for (const auto& need : p.needs) {
+    if (!is_slot_name(need)) {
+      outcome = Outcome::Error;
+      return "property '" + p.id + "' lists '" + need + "' in its needs, which is not a subject slot";
+    }
+    if (!subject->provides(need)) return "needs slot '" + need + "', which the subject does not provide";
+  }
+  return {};
+}
+
+template <class T>
+std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k, const RunOptions& o,
+                            const SubjectBody<T>* body, const IntegratorBody<T>* ibody) {
+  std::vector<Verdict> out;
+  Outcome why_outcome;
+  const std::string why = missing_for<T>(p, s, why_outcome);
+  if (p.scope == Scope::Subject) {
+    Verdict v = base_verdict<T>(p, s);
+    if (!why.empty()) {
+      v.outcome = why_outcome;
+      v.message = why;
+    } else {
+      const Subject<T>& subject = *s.get<T>();
+      run_checked(v, p, k, o, [&] { (*body)(subject); });
+    }
+    out.push_back(std::move(v));
+    return out;
+  }
+  if (!why.empty()) {
+    Verdict v = base_verdict<T>(p, s);
+    v.outcome = why_outcome;
+    v.message = why;
+    out.push_back(std::move(v));
+    return out;
+  }
+  const Subject<T>& subject = *s.get<T>();
+  for (const auto& integrator : subject.integrators) {
+    const bool has_step = p.step == StepKind::RigidBody ? static_cast<bool>(integrator.rigid_body_step)
+                          : p.step == StepKind::Manakov ? static_cast<bool>(integrator.manakov_step)
+                                                        : true;
+    if (!has_step) continue;  // integrators for another system are not candidates
+    Verdict v = base_verdict<T>(p, s);
+    v.integrator = integrator.name;
+    const IntegratorClaims* claims = s.claims_for(integrator.name);
+    IntegratorClaims none;
+    none.integrator = integrator.name;
+    run_checked(v, p, k, o, [&] { (*ibody)(subject, integrator, claims ? *claims : none); });
+    out.push_back(std::move(v));
+  }
+  if (out.empty()) {
+    Verdict v = base_verdict<T>(p, s);
+    v.outcome = Outcome::NotProvided;
+    v.message = std::string("the subject provides no integrator with a ") +
+                (p.step == StepKind::Manakov ? "manakov_step" : "rigid_body_step");
+    out.push_back(std::move(v));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<Verdict> run_property(const Property& p, const SubjectSet& s, ScalarKind k, const RunOptions& o) {
+  switch (k) {
+    case ScalarKind::Double: return run_in<double>(p, s, k, o, &p.d, &p.int_d);
+    case ScalarKind::MP50: return run_in<Real50>(p, s, k, o, &p.mp, &p.int_mp);
+    case ScalarKind::Exact: return run_in<Rational>(p, s, k, o, &p.q, nullptr);
+  }
+  return {};
+}
+
+std::string reproduce_command(const Verdict& v) {
+  std::ostringstream os;
+  os << "build/bin/geomech check --subject " << v.subject << " --property " << v.property << " --scalar "
+     << v.scalar << " --reproduce '" << v.reproduce << "'";
+  return os.str();
+}
+
+std::string format_verdict(const Verdict& v) {
+  std::ostringstream os;
+  char eps_buf[64] = "";
+  if (v.checks > 0) std::snprintf(eps_buf, sizeof eps_buf, "%.3g", v.worst_eps_units);
+  os << outcome_name(v.outcome) << "  " << v.property << "  [" << v.scalar
+     << (v.integrator.empty() ? "" : ", " + v.integrator) << "]  spec " << v.spec;
+  if (v.outcome == Outcome::Pass) {
+    os << "  (" << v.cases << " cases";
+    if (v.scalar != "exact" && v.checks > 0) os << ", worst residual " << eps_buf << " eps";
+    os << ")";
+    return os.str();
+  }
+  os << "\n  " << v.title;
+  if (!v.message.empty()) {
+    std::istringstream lines(v.message);
+    for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
+  }
+  if (!v.counterexample.empty()) {
+    os << "\n  counterexample (shrunk):";
+    for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
+  }
+  if (v.outcome == Outcome::Fail) {
+    os << "\n  after " << v.cases << " passing cases; seed " << v.seed;
+    os << "\n  reproduce: RC_PARAMS=\"reproduce=" << v.reproduce << "\"";
+    os << "\n         or: " << reproduce_command(v);
+  }
+  return os.str();
+}
+
+}  // namespace gm

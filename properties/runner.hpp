@@ -1,0 +1,63 @@
+// Runs one property against one subject in one scalar and turns RapidCheck's result into a
+// verdict: outcome, message, shrunk counterexample at full precision, the seed, RapidCheck's
+// reproduce string, and the worst residual seen (in units of eps * scale).
+#pragma once
+
+#include "properties/registry.hpp"
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gm {
+
+enum class Outcome { Pass, Fail, NotProvided, Crash, Timeout, Error };
+const char* outcome_name(Outcome o);
+
+struct RunOptions {
+  std::uint64_t seed = 0;     // base seed; each (property, scalar) derives its own from it
+  int cases = 0;              // 0: the property's default for the scalar
+  double case_factor = 1.0;   // multiplies the default case counts
+  std::string reproduce;      // RapidCheck reproduce string (the value after "reproduce=")
+  bool honour_rc_params = true;  // read seed / max_success / reproduce from $RC_PARAMS
+};
+
+struct Verdict {
+  std::string subject;
+  std::string property;
+  std::string spec;
+  std::string title;
+  std::string scalar;
+  std::string integrator;     // for integrator-scoped properties
+  Outcome outcome = Outcome::Error;
+  std::string message;
+  std::vector<std::pair<std::string, std::string>> counterexample;  // (type, value)
+  std::string reproduce;      // value for RC_PARAMS="reproduce=..."
+  std::uint64_t seed = 0;
+  int cases = 0;              // cases that passed before the verdict
+  double worst_eps_units = 0; // worst residual / (eps * scale)
+  double worst_absolute = 0;
+  std::string worst_check;
+  long checks = 0;
+  double seconds = 0;
+
+  std::string key() const;    // subject/property/scalar[/integrator]: RapidCheck's test id
+};
+
+// Runs `p` on `subject` in scalar `k`: one verdict, or one per integrator for
+// integrator-scoped properties (a subject with no integrator gets one NOT PROVIDED verdict).
+std::vector<Verdict> run_property(const Property& p, const SubjectSet& subject, ScalarKind k,
+                                  const RunOptions& options = {});
+
+// Seed used for a given property key and base seed (deterministic, independent of the subject so
+// every subject of a class sees the same inputs).
+std::uint64_t derive_seed(std::uint64_t base, const std::string& property_key);
+
+// Human-readable verdict, several lines for anything but a pass.
+std::string format_verdict(const Verdict& v);
+
+// The command line that replays a failing verdict through the `geomech` tool.
+std::string reproduce_command(const Verdict& v);
+
+}  // namespace gm
