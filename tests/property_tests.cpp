@@ -1,0 +1,123 @@
+// The ctest wiring of the properties: for every registered property and every scalar it runs in,
+//   reference.<scalar>.<property>            -- the reference subject must PASS;
+//   negative.<scalar>.<property>__<mutant>   -- each of the property's negative controls must FAIL.
+// Labels: the scalar (double, mp50, exact), the spec kind (algebraic, dynamic, variational), the
+// section (s1, s2, s3, mm), "reference" or "negative-control", and the spec entry id.
+#include "impl/reference_subject.hpp"
+#include "properties/runner.hpp"
+#include "spec/catalogue.hpp"
+#include "tests/mutants/mutants.hpp"
+#include "tests/support/ctest_script.hpp"
+
+#include <gtest/gtest.h>
+
+#include <iostream>
+#include <map>
+
+namespace gm {
+namespace {
+
+const Catalogue* catalogue_or_null() {
+  static const Catalogue* c = [] () -> const Catalogue* {
+    try {
+      return new Catalogue(load_catalogue(default_catalogue_path()));
+    } catch (const std::exception& e) {
+      std::cerr << "geomech: " << e.what() << "\n";
+      return nullptr;
+    }
+  }();
+  return c;
+}
+
+ScalarKind kind_of(const std::string& scalar) {
+  if (scalar == "double") return ScalarKind::Double;
+  if (scalar == "mp50") return ScalarKind::MP50;
+  return ScalarKind::Exact;
+}
+
+class ReferenceTest : public ::testing::Test {
+ public:
+  ReferenceTest(const Property* p, ScalarKind k) : p_(p), k_(k) {}
+  void TestBody() override {
+    for (const auto& v : run_property(*p_, reference_subject(), k_)) {
+      std::cout << format_verdict(v) << "\n";
+      if (v.outcome != Outcome::Pass) ADD_FAILURE() << "the reference implementation must pass:\n" << format_verdict(v);
+    }
+  }
+
+ private:
+  const Property* p_;
+  ScalarKind k_;
+};
+
+class NegativeControlTest : public ::testing::Test {
+ public:
+  NegativeControlTest(const Property* p, ScalarKind k, std::string mutant) : p_(p), k_(k), mutant_(std::move(mutant)) {}
+  void TestBody() override {
+    const Mutant* m = find_mutant(mutant_);
+    ASSERT_NE(m, nullptr) << "negative control '" << mutant_ << "' is not a registered mutant";
+    const SubjectSet subject = m->make(reference_subject());
+    bool failed = false;
+    for (const auto& v : run_property(*p_, subject, k_)) {
+      if (v.outcome == Outcome::Fail) {
+        failed = true;
+        std::cout << "as it should, '" << p_->id << "' fails on '" << mutant_ << "' (" << m->description << "):\n"
+                  << format_verdict(v) << "\n";
+      } else if (v.outcome != Outcome::Pass) {
+        ADD_FAILURE() << "negative control could not run:\n" << format_verdict(v);
+      }
+    }
+    if (!failed)
+      ADD_FAILURE() << "property '" << p_->id << "' does not fail on its negative control '" << mutant_
+                    << "' (" << m->description << "): the property checks nothing that this mistake breaks";
+  }
+
+ private:
+  const Property* p_;
+  ScalarKind k_;
+  std::string mutant_;
+};
+
+void register_property_tests() {
+  for (const auto& p : properties()) {
+    for (ScalarKind k : {ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact}) {
+      if (!p.runs_in(k)) continue;
+      const std::string scalar = scalar_name(k);
+      ::testing::RegisterTest(("reference." + scalar).c_str(), p.id.c_str(), nullptr, nullptr, __FILE__, __LINE__,
+                              [&p, k]() -> ::testing::Test* { return new ReferenceTest(&p, k); });
+      for (const auto& m : p.negative_controls)
+        ::testing::RegisterTest(("negative." + scalar).c_str(), (p.id + "__" + m).c_str(), nullptr, nullptr, __FILE__,
+                                __LINE__, [&p, k, m]() -> ::testing::Test* { return new NegativeControlTest(&p, k, m); });
+    }
+  }
+}
+
+std::vector<std::string> labels_for(const std::string& suite, const std::string& name) {
+  std::vector<std::string> labels;
+  const auto dot = suite.find('.');
+  if (dot == std::string::npos) return {"meta"};
+  const std::string role = suite.substr(0, dot), scalar = suite.substr(dot + 1);
+  labels.push_back(scalar);
+  labels.push_back(role == "reference" ? "reference" : "negative-control");
+  const std::string prop_id = name.substr(0, name.find("__"));
+  if (const Property* p = find_property(prop_id)) {
+    labels.push_back("spec=" + p->spec);
+    if (const Catalogue* c = catalogue_or_null())
+      if (const SpecEntry* e = c->find(p->spec)) {
+        labels.push_back(e->kind);
+        labels.push_back(e->section == "MM" ? "mm" : "s" + e->section);
+      }
+  }
+  (void)kind_of;
+  return labels;
+}
+
+}  // namespace
+}  // namespace gm
+
+int main(int argc, char** argv) {
+  gm::register_property_tests();
+  if (gm::testing_support::maybe_write_ctest_script(argc, argv, gm::labels_for)) return 0;
+  ::testing::InitGoogleTest(&argc, argv);
+  return RUN_ALL_TESTS();
+}

@@ -1,0 +1,132 @@
+// The property machinery itself: scalars, comparisons (NaN never passes, exact means zero,
+// roundoff scales with eps), generators (exactly representable, rotations exactly orthogonal).
+#include "properties/support/generators.hpp"
+#include "properties/support/tolerance.hpp"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+
+namespace gm {
+namespace {
+
+// RC_FAIL throws rc::detail::CaseResult; outside a property we catch it to read the message.
+template <class F>
+std::string failure_of(F&& f) {
+  try {
+    f();
+  } catch (const rc::detail::CaseResult& r) {
+    return r.description.empty() ? "(failed)" : r.description;
+  }
+  return {};
+}
+
+TEST(Scalars, DecimalStringsParseExactly) {
+  EXPECT_EQ(parse_decimal_rational("-1.25e-3"), Rational(-1) / 800);
+  EXPECT_EQ(parse_decimal_rational("17"), Rational(17));
+  EXPECT_EQ(parse_decimal_rational(" +0.5 "), Rational(1) / 2);
+  EXPECT_EQ(parse_decimal_rational("0.0078"), Rational(78) / 10000);  // leading zeros are not octal
+  for (const char* bad : {"", "nan", "inf", "1.2.3", "1e", "0x10", "--1", "1e99999999"})
+    EXPECT_THROW(parse_decimal_rational(bad), std::invalid_argument) << bad;
+  EXPECT_THROW(from_decimal<double>("1e400"), std::invalid_argument);
+}
+
+TEST(Scalars, FullPrecisionPrintingRoundTrips) {
+  const double d = 0.1 + 0.2;
+  EXPECT_EQ(from_decimal<double>(to_string_full(d)), d);
+  const Real50 x = Real50(1) / 3;
+  EXPECT_EQ(from_decimal<Real50>(to_string_full(x)), x);
+  EXPECT_EQ(to_string_full(Rational(2) / 6), "1/3");
+}
+
+TEST(Scalars, EpsilonIsThatOfTheType) {
+  EXPECT_EQ(eps<double>(), std::numeric_limits<double>::epsilon());
+  EXPECT_LT(eps<Real50>(), Real50("1e-49"));
+  EXPECT_GT(eps<Real50>(), Real50("1e-51"));
+  EXPECT_EQ(eps<Rational>(), Rational(0));
+}
+
+TEST(Tolerance, NaNNeverPasses) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto msg = failure_of([&] { require_close("x = x", nan, nan, 1.0, 1e300); });
+  EXPECT_NE(msg.find("NaN"), std::string::npos) << msg;
+  Vec3<double> v(1, nan, 3);
+  msg = failure_of([&] { require_close("v = v", v, v, 1.0, 1e300); });
+  EXPECT_NE(msg.find("NaN"), std::string::npos) << msg;
+  const double inf = std::numeric_limits<double>::infinity();
+  msg = failure_of([&] { require_close("inf = inf", inf, inf, 1.0, 1e300); });
+  EXPECT_NE(msg.find("non-finite"), std::string::npos) << msg;
+  const Real50 mpnan = std::numeric_limits<Real50>::quiet_NaN();
+  msg = failure_of([&] { require_close("mp nan", mpnan, mpnan, Real50(1), 1e300); });
+  EXPECT_NE(msg.find("NaN"), std::string::npos) << msg;
+}
+
+TEST(Tolerance, ExactMeansZeroInRationals) {
+  const Rational a(1), b = Rational(1) + Rational(1) / Rational(bmp::cpp_int(1) << 200);
+  EXPECT_EQ(failure_of([&] { require_close("a = a", a, a, Rational(1), 1e9); }), "");
+  auto msg = failure_of([&] { require_close("a = b", a, b, Rational(1), 1e9); });
+  EXPECT_NE(msg.find("exact"), std::string::npos) << msg;
+}
+
+TEST(Tolerance, RoundoffScalesWithEpsAndScale) {
+  const double e = eps<double>();
+  EXPECT_EQ(failure_of([&] { require_close("within", 1.0, 1.0 + 2 * e, 1.0, 4); }), "");
+  EXPECT_NE(failure_of([&] { require_close("beyond", 1.0, 1.0 + 8 * e, 1.0, 4); }), "");
+  EXPECT_EQ(failure_of([&] { require_close("scaled", 1e6, 1e6 + 1e6 * 2 * e, 1e6, 4); }), "");
+  // The same k in 50 digits is 1e-34 times tighter: a double-sized error fails there.
+  const Real50 one(1);
+  EXPECT_NE(failure_of([&] { require_close("mp", one, Real50(one + Real50(e)), one, 4); }), "");
+}
+
+TEST(Tolerance, FailureMessageShowsBothSidesAtFullPrecision) {
+  auto msg = failure_of([&] { require_close("third", 1.0 / 3.0, 0.3333, 1.0, 4); });
+  EXPECT_NE(msg.find("0.33333333333333331"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("lhs-rhs"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("eps * scale"), std::string::npos) << msg;
+}
+
+template <class G>
+auto sample(const G& g, int seed) {
+  return g(rc::Random(seed), 50).value();
+}
+
+TEST(Generators, DyadicValuesAreIdenticalInEveryScalar) {
+  for (int seed = 0; seed < 200; ++seed) {
+    const auto vq = sample(gen::vec3<Rational>(), seed);
+    const auto vd = sample(gen::vec3<double>(), seed);
+    const auto vm = sample(gen::vec3<Real50>(), seed);
+    for (int i = 0; i < 3; ++i) {
+      EXPECT_EQ(Rational(vd(i)), vq(i));
+      EXPECT_EQ(Rational(vm(i)), vq(i));
+    }
+  }
+}
+
+TEST(Generators, RotationsAreExactlyOrthogonalInRationals) {
+  for (int n = 2; n <= 6; ++n)
+    for (int seed = 0; seed < 20; ++seed) {
+      const MatX<Rational> R = sample(gen::rotation<Rational>(n), seed);
+      EXPECT_EQ(MatX<Rational>(R.transpose() * R), MatX<Rational>::Identity(n, n));
+      EXPECT_EQ(R.determinant(), Rational(1));
+    }
+}
+
+TEST(Generators, InertiaIsPositiveWithStrictTriangleInequalities) {
+  for (int seed = 0; seed < 500; ++seed) {
+    const auto I = sample(gen::inertia<Rational>(), seed);
+    EXPECT_GT(I.minCoeff(), Rational(0));
+    EXPECT_LT(I(0), I(1) + I(2));
+    EXPECT_LT(I(1), I(2) + I(0));
+    EXPECT_LT(I(2), I(0) + I(1));
+  }
+}
+
+TEST(Generators, IntegersShrinkTowardZero) {
+  EXPECT_EQ(gen::zigzag(0), 0);
+  EXPECT_EQ(gen::zigzag(1), 1);
+  EXPECT_EQ(gen::zigzag(2), -1);
+  EXPECT_EQ(gen::zigzag(3), 2);
+}
+
+}  // namespace
+}  // namespace gm
