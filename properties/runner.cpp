@@ -165,6 +165,7 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   SilentListener listener;
   const auto result = rc::detail::checkProperty(
       rc::detail::toProperty([&] {
+        recorded_series().clear();
         try {
           fn();
         } catch (const SlotMissing& e) {
@@ -174,6 +175,8 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
       }),
       metadata, params, listener, reproduce);
 
+  v.series = recorded_series();
+  recorded_series().clear();
   const auto& log = residual_log();
   v.worst_eps_units = log.worst_eps_units;
   v.worst_absolute = log.worst_absolute;

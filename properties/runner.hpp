@@ -4,6 +4,7 @@
 #pragma once
 
 #include "properties/registry.hpp"
+#include "properties/support/figures.hpp"
 
 #include <cstdint>
 #include <string>
@@ -41,6 +42,7 @@ struct Verdict {
   std::string worst_check;
   long checks = 0;
   double seconds = 0;
+  std::vector<Series> series; // data for pictures, from the last case run
 
   std::string key() const;    // subject/property/scalar[/integrator]: RapidCheck's test id
 };

@@ -1,8 +1,15 @@
 #include "properties/support/tolerance.hpp"
 
+#include "properties/support/figures.hpp"
+
 #include <cstdio>
 
 namespace gm {
+
+std::vector<Series>& recorded_series() {
+  thread_local std::vector<Series> series;
+  return series;
+}
 
 ResidualLog& residual_log() {
   thread_local ResidualLog log;
