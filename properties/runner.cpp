@@ -166,6 +166,7 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   const auto result = rc::detail::checkProperty(
       rc::detail::toProperty([&] {
         recorded_series().clear();
+        recorded_notes().clear();
         try {
           fn();
         } catch (const SlotMissing& e) {
@@ -177,6 +178,8 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
 
   v.series = recorded_series();
   recorded_series().clear();
+  v.notes = recorded_notes();
+  recorded_notes().clear();
   const auto& log = residual_log();
   v.worst_eps_units = log.worst_eps_units;
   v.worst_absolute = log.worst_absolute;
@@ -319,6 +322,7 @@ std::string format_verdict(const Verdict& v) {
     os << "  (" << v.cases << " cases";
     if (v.scalar != "exact" && v.checks > 0) os << ", worst residual " << eps_buf << " eps";
     os << ")";
+    for (const auto& n : v.notes) os << "\n  note: " << n;
     return os.str();
   }
   os << "\n  " << v.title;

@@ -43,6 +43,7 @@ struct Verdict {
   long checks = 0;
   double seconds = 0;
   std::vector<Series> series; // data for pictures, from the last case run
+  std::vector<std::string> notes;  // remarks from the last case run (e.g. an unclaimed invariant that holds)
 
   std::string key() const;    // subject/property/scalar[/integrator]: RapidCheck's test id
 };

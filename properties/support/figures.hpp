@@ -1,4 +1,4 @@
-// Data series a property can attach to its verdict, for the reports' pictures: a convergence
+// Data series and notes a property can attach to its verdict, for the reports' pictures: a convergence
 // study (error against step size, with the claimed slope), an invariant's residual over time in
 // double and in 50 digits, ... The runner collects the series recorded while a property runs
 // (on its final, passing or shrunk, case) and hands them to the report writers.
@@ -25,5 +25,11 @@ struct Series {
 std::vector<Series>& recorded_series();
 
 inline void record_series(Series s) { recorded_series().push_back(std::move(s)); }
+
+// Remarks a property attaches to a passing verdict, e.g. "energy is preserved to round-off,
+// although the integrator does not claim it" (cleared before each case, like the series).
+std::vector<std::string>& recorded_notes();
+
+inline void record_note(std::string note) { recorded_notes().push_back(std::move(note)); }
 
 }  // namespace gm

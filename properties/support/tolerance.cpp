@@ -11,6 +11,11 @@ std::vector<Series>& recorded_series() {
   return series;
 }
 
+std::vector<std::string>& recorded_notes() {
+  thread_local std::vector<std::string> notes;
+  return notes;
+}
+
 ResidualLog& residual_log() {
   thread_local ResidualLog log;
   return log;
