@@ -43,7 +43,7 @@ void lie_poisson_is_nambu_2_27(const Subject<T>& s) {
 // Sizes: |dx/dt| <= 2 |x|^2 / min I <= 2 |x| Hs, Hs = (|x| + 1)^2 / min I; k = the gradient of h
 // (twice: it enters a cross product) + the cross product and a dot product + (3.8) itself.
 template <class T>
-void rigid_body_on_sphere_and_energy_ellipsoid(const Subject<T>& s) {
+void rigid_body_sphere_energy_ellipsoid(const Subject<T>& s) {
   const Vec3<T> I = *gen::inertia<T>();
   const Vec3<T> x = *gen::vec3<T>();
   const Vec3<T> dc(half_square_norm<T>().gradient(VecX<T>(x)));
@@ -175,8 +175,8 @@ GM_PROPERTY(lie_poisson_is_nambu_2_27, all_scalars,
              .needs = {"nambu_3_13", "lie_poisson_3_6"},
              .negative_controls = {"nambu_3_13_sign_flipped", "lie_poisson_3_6_sign_flipped"}});
 
-GM_PROPERTY(rigid_body_on_sphere_and_energy_ellipsoid, all_scalars,
-            {.id = "rigid_body_on_sphere_and_energy_ellipsoid",
+GM_PROPERTY(rigid_body_sphere_energy_ellipsoid, all_scalars,
+            {.id = "rigid_body_sphere_energy_ellipsoid",
              .spec = "s3.nambu-rigid-body-level-sets",
              .title = "section 3.4: (3.8) is grad c x grad h, on spheres c = |x|^2/2 and ellipsoids h = x . I^-1 x / 2",
              .tolerance = ToleranceClass::Exact,
