@@ -94,6 +94,7 @@ std::string pretty_type(const std::string& t) {
     if (s.find("int") != std::string::npos && s.find("<") == std::string::npos) return s;
     return {};
   };
+  if (t.rfind("gm::Polynomial<", 0) == 0) return "Polynomial<" + scalar(t) + ">";  // support/polynomial.hpp
   if (t.rfind("Eigen::Matrix<", 0) == 0) {
     // ..., R, C, Options, MaxR, MaxC>
     std::vector<std::string> parts;

@@ -1,0 +1,61 @@
+// Negative controls for ad* in coordinates (section 1) and the so(4) = R^6 slots.
+#include "impl/lie_algebras.hpp"
+#include "tests/mutants/mutants.hpp"
+
+namespace gm {
+
+GM_MUTANT(ad_star_is_ad, "ad*_xi mu computed as ad_xi mu = [xi, mu] (coadjoint confused with adjoint)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.ad_star = [](LieAlgebraId g, const VecX<T>& xi, const VecX<T>& mu) -> VecX<T> {
+    return ref::lie_bracket<T>(g, xi, mu);
+  };
+});
+
+// Right for so(3) and so(4) in orthonormal coordinates (an ad-invariant inner product), wrong for
+// the non-compact sl(2, R).
+GM_MUTANT(ad_star_minus_ad, "ad*_xi mu computed as -[xi, mu] (true only for compact algebras, not sl(2,R))",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            s.ad_star = [](LieAlgebraId g, const VecX<T>& xi, const VecX<T>& mu) -> VecX<T> {
+              return -ref::lie_bracket<T>(g, xi, mu);
+            };
+          });
+
+GM_MUTANT(ad_star_transposed_structure_constants, "(ad*_xi mu)_k = xi^j mu_i c^i_kj (lower indices swapped)",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            s.ad_star = [](LieAlgebraId g, const VecX<T>& xi, const VecX<T>& mu) -> VecX<T> {
+              const int d = ref::lie_dim(g);
+              const auto c = ref::structure_constants<T>(g);
+              VecX<T> out = VecX<T>::Zero(d);
+              for (int k = 0; k < d; ++k)
+                for (int j = 0; j < d; ++j)
+                  for (int i = 0; i < d; ++i) out(k) += xi(j) * mu(i) * c[i][k][j];
+              return out;
+            };
+          });
+
+GM_MUTANT(ad_star_so4_R6_sign_slip, "so(4) ad* in R^6 with mu_u x xi_v - mu_v x xi_u in the second half",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            s.ad_star_so4_R6 = [](const Vec6<T>& xi, const Vec6<T>& mu) -> Vec6<T> {
+              Vec6<T> out = ref::ad_star_so4_R6<T>(xi, mu);
+              const Vec3<T> xu = xi.template head<3>(), xv = xi.template tail<3>();
+              const Vec3<T> mu_u = mu.template head<3>(), mu_v = mu.template tail<3>();
+              out.template tail<3>() = ref::cross<T>(mu_u, xv) - ref::cross<T>(mu_v, xu);
+              return out;
+            };
+          });
+
+GM_MUTANT(so4_bracket_R6_sign_slip, "so(4) bracket in R^6 with u1 x v2 + u2 x v1 in the second half", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.so4_bracket_R6 = [](const Vec6<T>& a, const Vec6<T>& b) -> Vec6<T> {
+    Vec6<T> out = ref::so4_bracket_R6<T>(a, b);
+    const Vec3<T> u1 = a.template head<3>(), v1 = a.template tail<3>();
+    const Vec3<T> u2 = b.template head<3>(), v2 = b.template tail<3>();
+    out.template tail<3>() = ref::cross<T>(u1, v2) + ref::cross<T>(u2, v1);
+    return out;
+  };
+});
+
+}  // namespace gm

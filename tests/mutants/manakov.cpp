@@ -1,0 +1,22 @@
+// Negative controls for Manakov's equations (2.34) and the Lagrangian of Proposition 2.4.
+#include "impl/manakov.hpp"
+#include "tests/mutants/mutants.hpp"
+
+namespace gm {
+
+GM_MUTANT(manakov_2_34_commutator_reversed, "(2.34) written dM/dt = [Omega, M]", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.manakov_2_34 = [](const MatX<T>& A, const MatX<T>& M) -> MatX<T> { return -ref::manakov_2_34<T>(A, M); };
+});
+
+GM_MUTANT(manakov_lagrangian_sign_flipped, "Manakov's Lagrangian written l = +(1/2) tr(Omega A Omega)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.manakov_lagrangian = [](const MatX<T>& A, const MatX<T>& W) -> T { return -ref::manakov_lagrangian<T>(A, W); };
+});
+
+GM_MUTANT(manakov_M_one_sided, "(2.34) with M = A Omega (the term Omega A forgotten)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.manakov_M = [](const MatX<T>& A, const MatX<T>& W) -> MatX<T> { return A * W; };
+});
+
+}  // namespace gm
