@@ -162,13 +162,13 @@ To convert(const From& x) {
 // take dummy_precision() = 0, which would turn every default isApprox into an exact
 // comparison (TOOLCHAIN.md, pitfall 3); this suite never relies on isApprox, but the
 // decompositions used for isospectrality read these values.
-namespace Eigen {
-template <>
-struct NumTraits<gm::Real50> : GenericNumTraits<gm::Real50> {
-  typedef gm::Real50 Real;
-  typedef gm::Real50 NonInteger;
-  typedef gm::Real50 Literal;
-  typedef gm::Real50 Nested;
+namespace gm::detail {
+// NumTraits shared by the binary multiprecision floats (Real50, Real70).
+template <class Real>
+struct MpFloatNumTraits : Eigen::GenericNumTraits<Real> {
+  typedef Real NonInteger;
+  typedef Real Literal;
+  typedef Real Nested;
   enum {
     IsComplex = 0,
     IsInteger = 0,
@@ -187,29 +187,16 @@ struct NumTraits<gm::Real50> : GenericNumTraits<gm::Real50> {
   static inline Real infinity() { return std::numeric_limits<Real>::infinity(); }
   static inline Real quiet_NaN() { return std::numeric_limits<Real>::quiet_NaN(); }
 };
+}  // namespace gm::detail
+
+namespace Eigen {
 template <>
-struct NumTraits<gm::Real70> : GenericNumTraits<gm::Real70> {
+struct NumTraits<gm::Real50> : gm::detail::MpFloatNumTraits<gm::Real50> {
+  typedef gm::Real50 Real;
+};
+template <>
+struct NumTraits<gm::Real70> : gm::detail::MpFloatNumTraits<gm::Real70> {
   typedef gm::Real70 Real;
-  typedef gm::Real70 NonInteger;
-  typedef gm::Real70 Literal;
-  typedef gm::Real70 Nested;
-  enum {
-    IsComplex = 0,
-    IsInteger = 0,
-    IsSigned = 1,
-    RequireInitialization = 1,
-    ReadCost = 10,
-    AddCost = 10,
-    MulCost = 50
-  };
-  static inline Real epsilon() { return std::numeric_limits<Real>::epsilon(); }
-  static inline Real dummy_precision() { return epsilon() * 1024; }
-  static inline int digits10() { return std::numeric_limits<Real>::digits10; }
-  static inline int digits() { return std::numeric_limits<Real>::digits; }
-  static inline Real highest() { return (std::numeric_limits<Real>::max)(); }
-  static inline Real lowest() { return std::numeric_limits<Real>::lowest(); }
-  static inline Real infinity() { return std::numeric_limits<Real>::infinity(); }
-  static inline Real quiet_NaN() { return std::numeric_limits<Real>::quiet_NaN(); }
 };
 template <>
 struct NumTraits<gm::Rational> : GenericNumTraits<gm::Rational> {

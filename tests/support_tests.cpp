@@ -3,6 +3,8 @@
 #include "properties/support/generators.hpp"
 #include "properties/support/tolerance.hpp"
 
+#include "tests/support/rc_failure.hpp"
+
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -10,16 +12,7 @@
 namespace gm {
 namespace {
 
-// RC_FAIL throws rc::detail::CaseResult; outside a property we catch it to read the message.
-template <class F>
-std::string failure_of(F&& f) {
-  try {
-    f();
-  } catch (const rc::detail::CaseResult& r) {
-    return r.description.empty() ? "(failed)" : r.description;
-  }
-  return {};
-}
+using testing_support::failure_of;
 
 TEST(Scalars, DecimalStringsParseExactly) {
   EXPECT_EQ(parse_decimal_rational("-1.25e-3"), Rational(-1) / 800);

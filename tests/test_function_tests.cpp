@@ -4,20 +4,14 @@
 #include "properties/support/line_derivative.hpp"
 #include "properties/support/polynomial.hpp"
 
+#include "tests/support/rc_failure.hpp"
+
 #include <gtest/gtest.h>
 
 namespace gm {
 namespace {
 
-template <class F>
-std::string failure_of(F&& f) {
-  try {
-    f();
-  } catch (const rc::detail::CaseResult& r) {
-    return r.description.empty() ? "(failed)" : r.description;
-  }
-  return {};
-}
+using testing_support::failure_of;
 
 // p = 3/4 x1^2 x2 - 1/2 x2 x3^3 + 2 x3 - 5/4 (n = 3), exactly.
 Polynomial<Rational> sample() {
