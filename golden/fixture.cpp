@@ -70,7 +70,12 @@ bool parse_int(std::string_view s, long long lo, long long hi, long long& out) {
 }
 
 // The layout written by format_significant with `digits` digits: -?d.d{digits-1}e[+-]d{2,}
+// with a nonzero leading digit; zero is written 0.0...0e+00 (no sign).
 bool has_significant_layout(std::string_view s, int digits) {
+  if (s.size() > 0 && s[s[0] == '-' ? 1 : 0] == '0') {
+    const std::string zero = "0." + std::string(static_cast<std::size_t>(digits - 1), '0') + "e+00";
+    return s == (digits > 1 ? zero : std::string("0e+00"));
+  }
   std::size_t i = 0;
   if (i < s.size() && s[i] == '-') ++i;
   if (i >= s.size() || !std::isdigit(static_cast<unsigned char>(s[i]))) return false;

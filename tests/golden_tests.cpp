@@ -546,6 +546,20 @@ TEST(golden_bad_input, TooFewSignificantDigits) {
   expect_rejected(edited([](auto& l) { l[kFirstRow + 1] = "0.5 1.5 1.0e-01 2.0e-02"; }), kFirstRow + 2,
                   "exactly 50 significant digits");
 }
+TEST(golden_bad_input, ValueNotNormalised) {
+  expect_rejected(edited([](auto& l) {
+                    std::string& r = l[kFirstRow + 1];
+                    const auto b = r.find(' ') + 1;
+                    r.replace(b, r.find(' ', b) - b, "0.1000000000000000000000000000000000000000000000000e+01");
+                  }),
+                  kFirstRow + 2, "significant digits");
+  expect_rejected(edited([](auto& l) {
+                    std::string& r = l[kFirstRow + 1];
+                    const auto b = r.find(' ') + 1;
+                    r.replace(b, r.find(' ', b) - b, "-0.0000000000000000000000000000000000000000000000000e+00");
+                  }),
+                  kFirstRow + 2, "significant digits");
+}
 TEST(golden_bad_input, TextAfterTheEnd) {
   expect_rejected(edited([](auto& l) { l.push_back("0 1 2 3"); }), 30, "text after the '#: end' line");
 }
