@@ -21,6 +21,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -335,6 +336,16 @@ TEST(golden_format, WriteThenReadGivesTheSameBytes) {
     const Fixture f = parse_fixture(text, d.name);
     EXPECT_EQ(write_fixture(f), text) << d.name;
   }
+}
+
+TEST(golden_format, CommittedFilesAreExactlyTheFixtureSet) {
+  std::vector<std::string> files, names;
+  for (const auto& e : fs::directory_iterator(default_fixture_dir()))
+    if (e.path().extension() == ".golden") files.push_back(e.path().stem().string());
+  for (const auto& d : fixture_definitions()) names.push_back(d.name);
+  std::sort(files.begin(), files.end());
+  std::sort(names.begin(), names.end());
+  EXPECT_EQ(files, names) << "golden/fixtures must hold one file per definition of golden/catalogue.cpp";
 }
 
 TEST(golden_format, GenerationIsDeterministic) {
