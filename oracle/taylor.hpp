@@ -23,6 +23,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -110,6 +111,14 @@ class TaylorSolver {
   int order() const { return order_; }
   const TaylorStats& stats() const { return stats_; }
 
+  // Optional limits (default: none). sample() throws std::runtime_error once it has taken
+  // `max_steps` steps, or when |x|_inf exceeds `max_norm` (a solution escaping to infinity, as in
+  // a finite-time blow-up, would otherwise take ever shorter steps without end).
+  void set_limits(long max_steps, const T& max_norm) {
+    max_steps_ = max_steps;
+    max_norm_ = max_norm;
+  }
+
   // Integrates from (t0, x0) and returns the state at each time of `times` (monotone in the
   // direction of integration, all on the same side of t0).
   std::vector<std::vector<T>> sample(const std::vector<T>& x0, const T& t0, const std::vector<T>& times) {
@@ -142,6 +151,14 @@ class TaylorSolver {
       x = evaluate(signed_h);
       t = t_new;
       ++stats_.steps;
+      if (max_steps_ > 0 && stats_.steps >= max_steps_ && next < times.size())
+        throw std::runtime_error("TaylorSolver: " + std::to_string(max_steps_) + " steps taken before t = " +
+                                 text(to_d(times.back())) + " (reached t = " + text(to_d(t)) + ")");
+      if (max_norm_ > T(0))
+        for (const auto& v : x)
+          if (!(taylor_abs(v) <= max_norm_))
+            throw std::runtime_error("TaylorSolver: the solution grows beyond " + text(to_d(max_norm_)) + " at t = " +
+                                     text(to_d(t)) + " (it leaves every bound: a blow-up?)");
     }
     return out;
   }
@@ -153,6 +170,12 @@ class TaylorSolver {
   }
 
  private:
+  static std::string text(double v) {
+    std::ostringstream os;
+    os << v;
+    return os.str();
+  }
+
   static double to_d(const T& x) {
     if constexpr (std::is_same_v<T, double>)
       return x;
@@ -257,6 +280,8 @@ class TaylorSolver {
 
   int dim_;
   T tol_;
+  long max_steps_ = 0;
+  T max_norm_ = T(0);
   int order_ = 0;
   Tape<T> tape_;
   std::vector<int> out_;

@@ -5,6 +5,8 @@
 //   geomech slots      the subject slots an implementation can provide
 //   geomech subjects   the built-in subjects: the reference and its negative controls
 //   geomech catalogue  the spec catalogue: Markdown table, traceability check
+//   geomech golden     golden trajectories: regenerate/check the fixtures, make your own (golden/cli.hpp)
+#include "golden/cli.hpp"
 #include "impl/reference_subject.hpp"
 #include "properties/runner.hpp"
 #include "spec/catalogue.hpp"
@@ -211,6 +213,8 @@ int main(int argc, char** argv) {
   cat->add_flag("--markdown", markdown, "print the generated Markdown table (spec/CATALOGUE.md)");
   cat->add_flag("--check", trace, "check traceability between catalogue, notes and properties");
   cat->add_option("--file", catalogue_path, "catalogue file (default: the source tree's spec/catalogue.json)");
+
+  gm::golden::add_commands(app);  // runs from its own callbacks (golden/cli.hpp)
 
   CLI11_PARSE(app, argc, argv);
   try {
