@@ -26,8 +26,8 @@
 // ((3.7) reads dPi_i/dt = (1/I_k - 1/I_j) Pi_j Pi_k for cyclic (i, j, k)). The phase is
 //     u0 = F(phi0, k),  phi0 = atan2(Pi_b(0) / B, Pi_a(0) / A)   (so sn u0 = sin phi0, cn u0 = cos phi0),
 // F the incomplete elliptic integral of the first kind (Boost's ellint_1(k, phi), any real phi).
-// u is reduced modulo the period 4K(k) before sn, cn, dn are evaluated (Boost.Math
-// jacobi_elliptic, which takes the modulus k, not the parameter m = k^2).
+// sn, cn, dn come from Boost.Math's jacobi_elliptic (which takes the modulus k, not the parameter
+// m = k^2) at an argument reduced to |v| <= K/2 by the quarter-period shifts (see jacobi()).
 //
 // Degenerate cases, each with its own exact formula:
 //   - Pi(0) = 0: Pi(t) = 0.
@@ -56,6 +56,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 namespace gm::oracle {
 
@@ -156,13 +157,8 @@ class FreeRigidBodySolution {
       }
       case RigidBodyRegime::MajorAxis:
       case RigidBodyRegime::MinorAxis: {
-        using std::round;
-        T u = omega_ * t + u0_;
-        const T period4 = T(4) * K_;
-        const T n = round_(u / period4);
-        u -= n * period4;
-        T cn, dn;
-        const T sn = boost::math::jacobi_elliptic(k_, u, &cn, &dn);
+        T sn, cn, dn;
+        jacobi(T(omega_ * t + u0_), sn, cn, dn);
         Vec p;
         p[a_] = A_ * cn;
         p[b_] = B_ * sn;
@@ -181,10 +177,39 @@ class FreeRigidBodySolution {
   }
   static T abs_(const T& x) { return x < T(0) ? T(-x) : x; }
   static T sign_(const T& x) { return x < T(0) ? T(-1) : T(1); }
+  static long long to_integer(const T& x) {
+    if constexpr (std::is_same_v<T, double>)
+      return static_cast<long long>(x);
+    else
+      return x.template convert_to<long long>();
+  }
   static T round_(const T& x) {
     using std::floor;
     return floor(x + T(0.5));
   }
+  // sn, cn, dn of u. Boost's jacobi_elliptic (descending Landen/AGM) loses accuracy where the
+  // amplitude nears an odd multiple of pi/2 (u near K, 3K, ...): there it read ~600 eps off in
+  // 50 digits. So u is written u = m K + v with |v| <= K/2 and the quarter-period shifts
+  //   sn(v + K) = cn v / dn v,  cn(v + K) = -k' sn v / dn v,  dn(v + K) = k' / dn v,
+  //   (sn, cn, dn)(v + 2K) = (-sn v, -cn v, dn v)
+  // bring the evaluation to |v| <= K/2, with the complementary modulus k' from its accurate
+  // one-signed formula. This also reduces u modulo the period 4K.
+  void jacobi(const T& u, T& sn, T& cn, T& dn) const {
+    using std::floor;
+    const T m_real = floor(u / K_ + T(0.5));
+    const T v = u - m_real * K_;
+    T c, d;
+    const T s = boost::math::jacobi_elliptic(k_, v, &c, &d);
+    long long m = to_integer(m_real) % 4;
+    if (m < 0) m += 4;
+    switch (m) {
+      case 0: sn = s, cn = c, dn = d; break;
+      case 1: sn = c / d, cn = -kc_ * s / d, dn = kc_ / d; break;
+      case 2: sn = -s, cn = -c, dn = d; break;
+      default: sn = -c / d, cn = kc_ * s / d, dn = kc_ / d; break;
+    }
+  }
+
   // +1 when (a, b, c) is a cyclic permutation of (0, 1, 2), -1 otherwise.
   static int parity(int a, int b, int c) {
     (void)c;
@@ -258,7 +283,7 @@ class FreeRigidBodySolution {
     }
     const T Qm = q_m / (I_[s] * I_[l]);
     const T k2 = (I_[b] - I_[a]) * Pc / ((I_[c] - I_[b]) * Pa);
-    kc2_ = (I_[c] - I_[a]) * Qm / ((I_[c] - I_[b]) * Pa);
+    kc_ = sqrt(T((I_[c] - I_[a]) * Qm / ((I_[c] - I_[b]) * Pa)));
     k_ = sqrt(k2);
     A_ = sqrt(I_[a] * Pc / (I_[c] - I_[a]));
     C_ = sign_(P[c]) * sqrt(I_[c] * Pa / (I_[c] - I_[a]));
@@ -273,7 +298,7 @@ class FreeRigidBodySolution {
   Vec I_, Pi0_;
   RigidBodyRegime regime_ = RigidBodyRegime::Rest;
   int a_ = 0, b_ = 1, c_ = 2;
-  T A_{0}, B_{0}, C_{0}, omega_{0}, k_{0}, kc2_{1}, K_{0}, u0_{0};
+  T A_{0}, B_{0}, C_{0}, omega_{0}, k_{0}, kc_{1}, K_{0}, u0_{0};
 };
 
 }  // namespace gm::oracle
