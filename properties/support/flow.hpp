@@ -86,7 +86,7 @@ class Gbs {
         const T remaining = target - t;
         const bool last = abs_value(remaining) <= h_;
         const T H = last ? remaining : T(h_ * dir);
-        Attempt a = step(t, x, H);
+        Attempt a = step(t, x, H, last);
         if (!a.accepted) {
           ++stats_.rejected;
           h_ = reduced_step(abs_value(H), a);
@@ -95,6 +95,9 @@ class Gbs {
           continue;
         }
         ++stats_.steps;
+        if (stats_.steps > max_steps_)
+          throw std::runtime_error("Gbs: more than " + std::to_string(max_steps_) +
+                                   " steps (the solution blows up, or the field is not smooth)");
         x = std::move(a.x);
         t = last ? target : T(t + H);
         if (!last) plan_next(abs_value(H), a);
@@ -116,8 +119,9 @@ class Gbs {
   };
 
   // One extrapolated step of size H. Rows are computed up to target_row_ + 1; the step is accepted
-  // at the first row r >= max(2, target_row_ - 1) whose error estimate meets the tolerance.
-  Attempt step(const T& t, const VecX<T>& x, const T& H) {
+  // at the first row r >= max(2, target_row_ - 1) whose error estimate meets the tolerance (from
+  // row 2 on for a step shortened to reach a sample time, which usually converges early).
+  Attempt step(const T& t, const VecX<T>& x, const T& H, bool shortened) {
     Attempt a;
     const VecX<T> f0 = eval(t, x);
     T size(1);
@@ -125,7 +129,7 @@ class Gbs {
     const T target = tol_ * size;
     a.tol = target;
     const int last_row = std::min(max_rows_ - 1, target_row_ + 1);
-    const int first_check = std::max(2, target_row_ - 1);
+    const int first_check = shortened ? 2 : std::max(2, target_row_ - 1);
     std::vector<std::vector<VecX<T>>> tab;
     a.err.assign(last_row + 1, T(0));
     for (int j = 0; j <= last_row; ++j) {
@@ -224,6 +228,7 @@ class Gbs {
   Field<T> f_;
   T tol_;
   int max_rows_;
+  long max_steps_ = 20000;
   T h_ = T(1) / T(8);
   int target_row_ = 5;
   GbsStats stats_;
