@@ -45,7 +45,10 @@ Bump<T, N> draw_bump(int dim = N) {
   Bump<T, N> b;
   b.c0 = dyn::pick<T>(gen::vec<T>(dim, 32, 6));
   b.c1 = dyn::pick<T>(gen::vec<T>(dim, 32, 6));
-  if (b.c0.isZero() && b.c1.isZero()) b.c0(0) = T(1) / T(4);
+  if (b.c0.isZero() && b.c1.isZero()) {
+    for (int i = 0; i < b.c0.size(); ++i) b.c0(i) = T(i % 2 ? -1 : 1) / T(4 << i);
+    b.c1(0) = T(1) / T(8);
+  }
   return b;
 }
 
