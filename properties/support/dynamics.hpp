@@ -13,7 +13,9 @@
 // 1 to 3 steps per unit of lambda t, where lambda bounds the angular speed (|Pi| / min I, or
 // |M| / min(a_i + a_j)). So
 //   - an invariant of degree d (|Pi|^2, h, O^T O, O Pi, tr M^k) drifts by at most about
-//     d * 16 eps * 3 per unit of lambda t: it is compared with k = 64 d eps * scale * (1 + lambda t);
+//     d * 16 eps * 3 per unit of lambda t: it is compared with k = 64 d eps * scale * (1 + lambda t)
+//     (or, when many sample times force short steps, with the steps actually taken / 3 in place
+//     of 1 + lambda t: growth(lambda, t, steps));
 //   - two accurate flows (or a flow and the exact solution) also differ by a phase error: a
 //     perturbation of the invariants by delta changes the frequency by O(delta), and the phase
 //     error grows like delta * lambda t, so states are compared with
