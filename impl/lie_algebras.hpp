@@ -94,7 +94,11 @@ std::vector<std::vector<std::vector<T>>> structure_constants(LieAlgebraId a) {
 template <class T>
 VecX<T> ad_star(LieAlgebraId a, const VecX<T>& xi, const VecX<T>& mu) {
   const int d = lie_dim(a);
-  const auto c = structure_constants<T>(a);
+  // The structure constants of each algebra, computed once (flows call ad* thousands of times).
+  static const std::array<std::vector<std::vector<std::vector<T>>>, 3> constants = {
+      structure_constants<T>(LieAlgebraId::so3), structure_constants<T>(LieAlgebraId::so4),
+      structure_constants<T>(LieAlgebraId::sl2)};
+  const auto& c = constants[a == LieAlgebraId::so3 ? 0 : a == LieAlgebraId::so4 ? 1 : 2];
   VecX<T> out = VecX<T>::Zero(d);
   for (int k = 0; k < d; ++k)
     for (int j = 0; j < d; ++j)

@@ -81,10 +81,18 @@ std::pair<MatX<T>, MatX<T>> manakov_with_attitude(const MatX<T>& A, const MatX<T
   return {commutator(M, W), O * W};
 }
 
-// Closing exercise: M = (1/2)(P^T Q - Q^T P), as printed in the notes.
+// Closing exercise: the momentum M = dl/dOmega that Hamilton's principle for
+//     S = int l(Omega) + tr(P^T (dQ/dt - Q Omega)) dt
+// identifies, in the pairing (2.15) in which Manakov's M = A Omega + Omega A is dl/dOmega for
+// l = -tr(Omega A Omega)/2 (Proposition 2.4). Varying Omega,
+//     <dl/dOmega, dOmega> = tr(P^T Q dOmega) = <Q^T P - P^T Q, dOmega>   for skew dOmega,
+// so M = Q^T P - P^T Q: the formula printed in the notes, M = (1/2)(P^T Q - Q^T P), has the
+// opposite sign and half the size (it is the identification for the pairing tr(A B)). See the
+// erratum of mm.manakov-clebsch in spec/catalogue.json; the motion equation dM/dt = [M, Omega] is
+// linear in M and holds for both.
 template <class T>
 MatX<T> manakov_clebsch_M(const MatX<T>& Q, const MatX<T>& P) {
-  return (P.transpose() * Q - Q.transpose() * P) / T(2);
+  return Q.transpose() * P - P.transpose() * Q;
 }
 
 // Closing exercise, (3.23): dQ/dt = Q Omega, dP/dt = P Omega, Omega from M(Q, P) through

@@ -4,11 +4,6 @@
 
 namespace gm {
 
-template <class T>
-void add_reference_integrators(Subject<T>&) {}
-template void add_reference_integrators<double>(Subject<double>&);
-template void add_reference_integrators<Real50>(Subject<Real50>&);
-
 const SubjectSet& reference_subject() {
   static const SubjectSet set = [] {
     SubjectSet s;
@@ -17,6 +12,7 @@ const SubjectSet& reference_subject() {
     s.d = std::make_shared<const Subject<double>>(make_reference_subject<double>());
     s.mp = std::make_shared<const Subject<Real50>>(make_reference_subject<Real50>());
     s.q = std::make_shared<const Subject<Rational>>(make_reference_subject<Rational>());
+    s.claims = reference_integrator_claims();
     return s;
   }();
   return set;

@@ -13,6 +13,9 @@ extern template Subject<double> make_reference_subject<double>();
 extern template Subject<Real50> make_reference_subject<Real50>();
 extern template Subject<Rational> make_reference_subject<Rational>();
 
+// What the reference implementation claims about its integrators (impl/reference_integrators.cpp).
+std::vector<IntegratorClaims> reference_integrator_claims();
+
 // The reference implementation in double, Real50 and Rational, with its integrators' claims.
 const SubjectSet& reference_subject();
 

@@ -1,0 +1,60 @@
+// The reference subject's integrators (impl/integrators.hpp), in double and Real50, and what
+// their author claims about them. The claims are verified like anyone's, by the integrator-scoped
+// properties (properties/integrator_claims.cpp); a claim is made only where it is a theorem about
+// the method, never because a test happened to pass.
+#include "impl/integrators.hpp"
+#include "impl/reference_subject.hpp"
+
+namespace gm {
+
+template <class T>
+void add_reference_integrators(Subject<T>& s) {
+  Integrator<T> midpoint;
+  midpoint.name = "implicit_midpoint";
+  midpoint.rigid_body_step = ref::implicit_midpoint_step<T>;
+  midpoint.manakov_step = ref::manakov_implicit_midpoint_step<T>;
+  s.integrators.push_back(std::move(midpoint));
+
+  Integrator<T> splitting;
+  splitting.name = "lie_poisson_splitting";
+  splitting.rigid_body_step = ref::lie_poisson_splitting_step<T>;
+  s.integrators.push_back(std::move(splitting));
+
+  Integrator<T> rk4;
+  rk4.name = "rk4";
+  rk4.rigid_body_step = ref::rk4_step<T>;
+  rk4.manakov_step = ref::manakov_rk4_step<T>;
+  s.integrators.push_back(std::move(rk4));
+
+  Integrator<T> isospectral;
+  isospectral.name = "isospectral_cayley";
+  isospectral.manakov_step = ref::manakov_isospectral_step<T>;
+  s.integrators.push_back(std::move(isospectral));
+}
+template void add_reference_integrators<double>(Subject<double>&);
+template void add_reference_integrators<Real50>(Subject<Real50>&);
+
+std::vector<IntegratorClaims> reference_integrator_claims() {
+  std::vector<IntegratorClaims> c;
+  // Implicit midpoint: symmetric and of order 2; keeps every quadratic invariant: |Pi|^2 and h
+  // (rigid body), tr(M^2) and the energy (Manakov), O^T O. Not the quartic tr(M^4) (n >= 4), so
+  // no spectrum claim. Not claimed Poisson: the midpoint rule is not a Poisson map for the
+  // Lie-Poisson bracket (3.6) in general.
+  c.push_back({.integrator = "implicit_midpoint", .order = 2, .symmetric = true, .casimir = true, .energy = true,
+               .orthogonality = true, .spectrum = false, .poisson = false});
+  // Strang splitting into the exact flows of Pi_i^2 / (2 I_i): symmetric, order 2, Casimir and
+  // orthogonality (rotations), Poisson (exact Hamiltonian flows composed). Energy error O(h^2).
+  c.push_back({.integrator = "lie_poisson_splitting", .order = 2, .symmetric = true, .casimir = true,
+               .energy = false, .orthogonality = true, .spectrum = false, .poisson = true});
+  // Classical RK4: order 4, nothing else.
+  c.push_back({.integrator = "rk4", .order = 4});
+  // Isospectral Cayley (Manakov only): symmetric, order 2, the whole spectrum of M (hence
+  // tr(M^2)), orthogonality of O, and the energy E(M) = -tr(Omega(M) M)/4: Omega(.) is linear and
+  // self-adjoint for the trace pairing, so E(M1) - E(M0) = -tr(W (M1 - M0))/2 with W = Omega(M_*),
+  // and tr(W U^T M0 U) = tr(U W U^T M0) = tr(W M0) because U = cay(h W) commutes with W.
+  c.push_back({.integrator = "isospectral_cayley", .order = 2, .symmetric = true, .casimir = true, .energy = true,
+               .orthogonality = true, .spectrum = true, .poisson = false});
+  return c;
+}
+
+}  // namespace gm

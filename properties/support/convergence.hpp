@@ -1,0 +1,52 @@
+// Convergence orders from log-log slopes (GeometricIntegrators.jl's verification idea): the
+// error of a method of order p behaves like C h^p, so log(err) against log(h) is a line of slope
+// p until the error reaches the round-off plateau, where it stops decreasing. Points on the
+// plateau are excluded before the least-squares fit.
+#pragma once
+
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace gm::conv {
+
+struct SlopeFit {
+  double slope = 0;   // least-squares slope of log(err) against log(h) over the points used
+  int used = 0;       // points used (above the plateau)
+  std::string table;  // every point, marked "used" or "plateau", for failure messages
+};
+
+// `floor[i]` is the round-off plateau for point i (round-off grows with the number of steps):
+// points whose error is at most their floor (or not finite and positive) are excluded, and so is
+// every point at a smaller h than the first excluded one (once on the plateau, smaller steps only
+// add round-off). `h` must be decreasing.
+inline SlopeFit loglog_slope(const std::vector<double>& h, const std::vector<double>& err,
+                             const std::vector<double>& floor) {
+  SlopeFit f;
+  std::vector<double> X, Y;
+  bool plateau = false;
+  char line[160];
+  for (std::size_t i = 0; i < h.size() && i < err.size(); ++i) {
+    const bool usable = !plateau && std::isfinite(err[i]) && err[i] > floor[i] && h[i] > 0;
+    if (!usable) plateau = true;
+    std::snprintf(line, sizeof line, "    h = %-12.6g error = %-12.6g %s\n", h[i], err[i], usable ? "" : "(round-off plateau, excluded)");
+    f.table += line;
+    if (usable) {
+      X.push_back(std::log(h[i]));
+      Y.push_back(std::log(err[i]));
+    }
+  }
+  f.used = static_cast<int>(X.size());
+  if (f.used < 2) return f;
+  double mx = 0, my = 0;
+  for (int i = 0; i < f.used; ++i) mx += X[i], my += Y[i];
+  mx /= f.used;
+  my /= f.used;
+  double sxy = 0, sxx = 0;
+  for (int i = 0; i < f.used; ++i) sxy += (X[i] - mx) * (Y[i] - my), sxx += (X[i] - mx) * (X[i] - mx);
+  f.slope = sxx > 0 ? sxy / sxx : 0;
+  return f;
+}
+
+}  // namespace gm::conv
