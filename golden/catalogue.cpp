@@ -30,11 +30,11 @@ const std::vector<std::string> kTimes = {"0", "0.5", "1", "2.5", "5", "7.5", "10
 
 std::vector<FixtureDefinition> make_definitions() {
   std::vector<FixtureDefinition> d;
-  // The body of the benchmark (TOOLCHAIN.md): I = (2, 1, 2/3), stable axes 1 and 3, unstable 2.
-  // Like the notes' I = diag(1, 1/2, 1/3) it violates the triangle inequality (2 > 1 + 2/3): a
-  // well-posed Euler system, not a physical body. The attitude and Clebsch fixtures use the
-  // physical body (3, 2, 3/2).
-  const auto body = qs({"2", "1", "2/3"});
+  // Fixtures use bodies that exist: moments satisfying the triangle inequality. (The benchmark's
+  // I = (2, 1, 2/3) of TOOLCHAIN.md and the notes' I = diag(1, 1/2, 1/3) violate it: well-posed
+  // Euler systems, but no mass distribution has them.) I = (2, 3/2, 1): stable axes 1 and 3,
+  // unstable intermediate axis 2. The attitude and Clebsch fixtures use (3, 2, 3/2).
+  const auto body = qs({"2", "3/2", "1"});
   const auto physical = qs({"3", "2", "3/2"});
   d.push_back({"free_rigid_body_stable",
                "the free rigid body near its stable axis of largest moment (I1 = 2)",
@@ -42,9 +42,9 @@ std::vector<FixtureDefinition> make_definitions() {
                {block("I", body)},
                {block("Pi", qs({"1", "1/10", "1/20"}))},
                kTimes});
-  // Pi(0) one thousandth off the unstable intermediate axis: h - |Pi|^2/(2 I2) = (Pi3^2 - Pi1^2)/4
-  // = 7.5e-7 > 0, just outside the separatrix; the body leaves the axis (rate 1/2) around t = 14
-  // and returns along the separatrix.
+  // Pi(0) one thousandth off the unstable intermediate axis: h - |Pi|^2/(2 I2) = Pi3^2/6 - Pi1^2/12
+  // = 7/12 * 1e-6 > 0, just beside the separatrix (on the side circulating about the minor axis 3);
+  // the body leaves the axis and returns along the separatrix.
   d.push_back({"free_rigid_body_separatrix",
                "the free rigid body close to the separatrix, starting near the unstable intermediate axis",
                "free_rigid_body",

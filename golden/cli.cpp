@@ -41,6 +41,7 @@ struct TrajectoryOptions {
   std::string name = "trajectory";
   std::string title;
   std::string output;
+  bool allow_nonphysical = false;  // accept moments violating the triangle inequality
 };
 
 int run_trajectory(const TrajectoryOptions& o) {
@@ -63,8 +64,13 @@ int run_trajectory(const TrajectoryOptions& o) {
     rq.digits = o.digits;
     rq.problem = make_problem(o.system, "--system " + o.system, 0, std::move(params), std::move(initial), true);
     rq.times = parse_times_argument(o.times);
-    if (const std::string note = nonphysical_inertia(rq.problem); !note.empty())
+    if (const std::string note = nonphysical_inertia(rq.problem); !note.empty()) {
+      if (!o.allow_nonphysical)
+        throw InputError("--param I", 0,
+                         note + ". Pass --allow-nonphysical to integrate them anyway (as for the notes' "
+                                "example I = diag(1, 1/2, 1/3))");
       std::cerr << "geomech golden trajectory: note: " << note << "\n";
+    }
     GenerationReport rep;
     const Fixture f = generate(rq, &rep);
     const std::string text = write_fixture(f);
@@ -210,6 +216,8 @@ void add_commands(CLI::App& app) {
   t->add_option("--name", traj->name, "the trajectory's name (default: trajectory)");
   t->add_option("--title", traj->title, "one line describing it (default: the system's)");
   t->add_option("--output,-o", traj->output, "write to this file (atomically) instead of standard output");
+  t->add_flag("--allow-nonphysical", traj->allow_nonphysical,
+              "accept moments of inertia that violate the triangle inequality (no body has them; the notes' examples do)");
   t->callback([traj] {
     const int s = run_trajectory(*traj);
     if (s != 0) exit_with(s);

@@ -3,7 +3,7 @@
 #include "golden/generate.hpp"
 
 #include "golden/condition.hpp"
-#include "golden/elliptic_seam.hpp"
+#include "golden/elliptic_check.hpp"
 #include "golden/extrapolation.hpp"
 #include "golden/fields_geometric.hpp"
 #include "oracle/fields.hpp"

@@ -5,7 +5,7 @@
 //   check      Gragg-Bulirsch-Stoer extrapolation (golden/extrapolation.hpp) on the fields as
 //              written in golden/fields_geometric.hpp, Real70, 14 columns, tolerance 1e-60
 //   check      closed form, for a free rigid body with two equal moments (symmetric top)
-//   check      SEAM: the exact elliptic solution for the free rigid body (golden/elliptic_seam.cpp)
+//   check      the exact elliptic solution for the free rigid body (golden/elliptic_check.cpp)
 //
 // A fixture is written only if every check agrees with the generator to within
 // min(1e-40, 10^-(digits+2) max(1, |x|_max)): the printed digits are then all verified.
