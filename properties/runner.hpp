@@ -4,6 +4,7 @@
 #pragma once
 
 #include "properties/registry.hpp"
+#include "properties/support/claims.hpp"
 #include "properties/support/figures.hpp"
 
 #include <cstdint>
@@ -43,6 +44,7 @@ struct Verdict {
   long checks = 0;
   double seconds = 0;
   std::vector<Series> series; // data for pictures, from the last case run
+  std::vector<ClaimFinding> claims;  // integrator properties: what they found about each claim
 
   std::string key() const;    // subject/property/scalar[/integrator]: RapidCheck's test id
 };
