@@ -1,0 +1,68 @@
+# Student implementations.
+#
+# 1. The prebuilt main() of a student check program (student/driver.cpp), compiled once.
+# 2. student/toolchain.json in the build tree: the compiler, flags and prebuilt files with which
+#    `geomech check FILE.cpp` compiles only the student's file and links it (harness/build.cpp).
+# 3. geomech_add_student(<target> <source>...): the same program as a CMake target, used for the
+#    examples (examples/students) and usable by anyone building inside this tree.
+
+add_library(geomech_student_driver OBJECT ${PROJECT_SOURCE_DIR}/student/driver.cpp)
+target_link_libraries(geomech_student_driver PRIVATE geomech_harness)
+
+# Per-scalar optimisation of student code: double at the suite's -O2; the multiprecision and
+# rational instantiations at -O1, which compiles markedly faster and runs within a few percent
+# (their cost is in Boost's arithmetic, not in the student's loops).
+set(GM_STUDENT_OPT_DOUBLE -O2)
+set(GM_STUDENT_OPT_MP50 -O1)
+set(GM_STUDENT_OPT_EXACT -O1)
+
+get_target_property(_gm_eigen_inc Eigen3::Eigen INTERFACE_INCLUDE_DIRECTORIES)
+set(_gm_student_includes ${PROJECT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/student ${_gm_eigen_inc} ${Boost_INCLUDE_DIRS})
+list(REMOVE_DUPLICATES _gm_student_includes)
+list(REMOVE_ITEM _gm_student_includes /usr/include)
+set(_gm_inc_json "")
+foreach(_d IN LISTS _gm_student_includes)
+  if(_gm_inc_json)
+    string(APPEND _gm_inc_json ", ")
+  endif()
+  string(APPEND _gm_inc_json "\"${_d}\"")
+endforeach()
+
+file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/student/toolchain.json CONTENT "{
+  \"format\": \"geomech-student-toolchain 1\",
+  \"cxx\": \"${CMAKE_CXX_COMPILER}\",
+  \"flags\": [\"-std=c++20\", \"-DBOOST_ALL_NO_LIB\", \"-Wall\", \"-Wextra\", \"-Wno-deprecated-copy\", \"-Wno-maybe-uninitialized\"],
+  \"includes\": [${_gm_inc_json}],
+  \"opt\": {\"double\": \"${GM_STUDENT_OPT_DOUBLE}\", \"mp50\": \"${GM_STUDENT_OPT_MP50}\", \"exact\": \"${GM_STUDENT_OPT_EXACT}\"},
+  \"driver_object\": \"$<TARGET_OBJECTS:geomech_student_driver>\",
+  \"harness_library\": \"$<TARGET_FILE:geomech_harness>\",
+  \"property_library\": \"$<TARGET_FILE:geomech>\",
+  \"other_libraries\": [\"$<TARGET_LINKER_FILE:rapidcheck>\"],
+  \"cache_dir\": \"${CMAKE_BINARY_DIR}/student-cache\"
+}
+")
+
+# geomech_add_student(<target> <source>...): a check program for the student sources. Each source
+# is compiled once per scalar (double, mp50, exact), in parallel.
+function(geomech_add_student target)
+  set(_objs "")
+  foreach(_scalar IN ITEMS double mp50 exact)
+    if(_scalar STREQUAL "double")
+      set(_k 0)
+      set(_opt ${GM_STUDENT_OPT_DOUBLE})
+    elseif(_scalar STREQUAL "mp50")
+      set(_k 1)
+      set(_opt ${GM_STUDENT_OPT_MP50})
+    else()
+      set(_k 2)
+      set(_opt ${GM_STUDENT_OPT_EXACT})
+    endif()
+    add_library(${target}_${_scalar} OBJECT ${ARGN})
+    target_compile_definitions(${target}_${_scalar} PRIVATE GEOMECH_STUDENT_ONLY=${_k} GEOMECH_STUDENT_CHECK=1)
+    target_compile_options(${target}_${_scalar} PRIVATE ${_opt})
+    target_link_libraries(${target}_${_scalar} PRIVATE geomech_harness)
+    list(APPEND _objs $<TARGET_OBJECTS:${target}_${_scalar}>)
+  endforeach()
+  add_executable(${target} ${_objs} $<TARGET_OBJECTS:geomech_student_driver>)
+  target_link_libraries(${target} PRIVATE geomech_harness)
+endfunction()
