@@ -43,26 +43,12 @@ file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/student/toolchain.json CONTENT "{
 ")
 
 # geomech_add_student(<target> <source>...): a check program for the student sources. Each source
-# is compiled once per scalar (double, mp50, exact), in parallel.
+# is compiled once, for all three scalars (the `geomech check` tool instead compiles one copy per
+# scalar in parallel, and leaves out what does not compile in a scalar; here a slot that does not
+# compile for a scalar is a build error: declare skip_exact / skip_mp50, see student.hpp).
 function(geomech_add_student target)
-  set(_objs "")
-  foreach(_scalar IN ITEMS double mp50 exact)
-    if(_scalar STREQUAL "double")
-      set(_k 0)
-      set(_opt ${GM_STUDENT_OPT_DOUBLE})
-    elseif(_scalar STREQUAL "mp50")
-      set(_k 1)
-      set(_opt ${GM_STUDENT_OPT_MP50})
-    else()
-      set(_k 2)
-      set(_opt ${GM_STUDENT_OPT_EXACT})
-    endif()
-    add_library(${target}_${_scalar} OBJECT ${ARGN})
-    target_compile_definitions(${target}_${_scalar} PRIVATE GEOMECH_STUDENT_ONLY=${_k} GEOMECH_STUDENT_CHECK=1)
-    target_compile_options(${target}_${_scalar} PRIVATE ${_opt})
-    target_link_libraries(${target}_${_scalar} PRIVATE geomech_harness)
-    list(APPEND _objs $<TARGET_OBJECTS:${target}_${_scalar}>)
-  endforeach()
-  add_executable(${target} ${_objs} $<TARGET_OBJECTS:geomech_student_driver>)
+  add_executable(${target} ${ARGN} $<TARGET_OBJECTS:geomech_student_driver>)
+  target_compile_definitions(${target} PRIVATE GEOMECH_STUDENT_CHECK=1)
+  target_compile_options(${target} PRIVATE ${GM_STUDENT_OPT_MP50})
   target_link_libraries(${target} PRIVATE geomech_harness)
 endfunction()

@@ -276,6 +276,14 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     }
   }
   bool compiled_anything = false;
+  // Scalars not asked for (--scalar double) are not compiled at all.
+  const bool wanted[3] = {true, o.mp50, o.exact};
+  for (int k = 1; k < 3; ++k)
+    if (!wanted[k]) {
+      st[k].done = true;
+      st[k].ok = false;
+      st[k].unavailable = std::string("not compiled for ") + kScalars[k] + " in this run (--scalar)";
+    }
 
   for (int round = 0; round < 5; ++round) {
     std::vector<int> todo;

@@ -47,6 +47,8 @@ struct BuildOptions {
   std::string cache_dir;        // default: the toolchain's
   bool verbose = false;         // print each command
   bool force = false;           // ignore the cache
+  bool mp50 = true;             // compile the 50-digit instantiation (double is always compiled)
+  bool exact = true;            // compile the exact-rational instantiation
 };
 
 struct BuildResult {

@@ -158,6 +158,9 @@ void explain_not_provided(Verdict& v, const Property& p, const SubjectSet& s, co
     v.message = "needs slot '" + need + "', which is not provided";
     return;
   }
+  if (p.scope == Scope::Integrator && *kind == ScalarKind::MP50 && !integrators_for(p, s, ScalarKind::Double).empty())
+    v.message = "the integrators are provided for double only (their steps are not function templates on the "
+                "scalar), so this check cannot run in mp50";
 }
 
 std::vector<IntegratorInfo> integrator_info(const SubjectSet& s) {

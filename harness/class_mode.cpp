@@ -91,7 +91,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   for (const auto& impl : impls) {
     tasks.push_back([&, impl]() {
       json j;
-      BuildOptions bo;
+      BuildOptions bo = o.build;
       bo.jobs = 1;
       bo.name = impl.name;
       const BuildResult b = build_student(impl.source, tc, bo);

@@ -22,6 +22,7 @@ struct ClassOptions {
   double timeout_per_implementation = 1800;
   std::string front_door;          // how to call geomech in printed commands (e.g. "./geomech")
   CheckCliOptions check;           // forwarded to every implementation's check
+  BuildOptions build;              // how each implementation is compiled (jobs is set to 1)
 };
 
 struct Implementation {

@@ -300,10 +300,22 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   for (const auto& v : r.verdicts)
     if (is_problem(v.outcome)) problems.push_back(&v);
   if (!problems.empty()) {
+    // One line per property (and integrator) and outcome, naming the scalars it happened in.
     md << "## What to fix\n\n";
-    for (const Verdict* v : problems)
-      md << "- **" << outcome_name(v->outcome) << "** [" << row_name(*v) << " in " << v->scalar << "](#"
-         << anchor_of(*v) << "): " << md_cell(v->title) << " - " << md_cell(first_line(v->message)) << "\n";
+    std::vector<std::pair<std::string, std::vector<const Verdict*>>> groups;
+    for (const Verdict* v : problems) {
+      const std::string key = row_name(*v) + "|" + outcome_name(v->outcome);
+      auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == key; });
+      if (it == groups.end()) groups.push_back({key, {v}});
+      else it->second.push_back(v);
+    }
+    for (const auto& [key, vs] : groups) {
+      const Verdict& v = *vs.front();
+      md << "- **" << outcome_name(v.outcome) << "** `" << row_name(v) << "` in ";
+      for (std::size_t i = 0; i < vs.size(); ++i)
+        md << (i ? ", " : "") << "[" << vs[i]->scalar << "](#" << anchor_of(*vs[i]) << ")";
+      md << ": " << md_cell(v.title) << ". " << md_cell(first_line(v.message)) << "\n";
+    }
     md << "\n";
   }
 

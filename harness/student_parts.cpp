@@ -29,11 +29,17 @@ void store(std::shared_ptr<P>& slot, std::optional<PartInfo>& info_slot, std::sh
 }
 
 template <class T>
-bool fills_anything(const Subject<T>& s) {
+bool fills_slots(const Subject<T>& s) {
   for (const auto& slot : subject_slots())
     if (s.provides(slot.name)) return true;
-  if constexpr (!is_exact_v<T>) return !s.integrators.empty();
   return false;
+}
+
+template <class T>
+bool fills_anything(const Subject<T>& s) {
+  if constexpr (!is_exact_v<T>)
+    if (!s.integrators.empty()) return true;
+  return fills_slots(s);
 }
 
 std::string first_identifier(const std::string& registration) {
@@ -97,18 +103,22 @@ SubjectSet assemble(const std::string& name_in, harness::SubjectInfo& info, cons
       if (!info.slot_notes[scalar].count(slot)) info.slot_notes[scalar][slot] = why;
     for (const auto& w : part->warnings)
       if (seen_warnings.insert(w).second) info.warnings.push_back(w);
-    if (!fills_anything(*subject)) {
-      if (!info.scalar_unavailable.count(scalar) && std::string(scalar) != "double" && r.d && fills_anything(*r.d))
-        info.scalar_unavailable[scalar] =
-            std::string("nothing is written as a template on the scalar, so nothing can be checked in ") + scalar +
-            " (write `template <class T> static Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& Pi)` and so on)";
-      return;  // leave the scalar empty: the runner then reports it as not provided, with the reason above
-    }
+    if (!fills_anything(*subject)) return;  // nothing here: the runner reports each check NOT PROVIDED, with the reason
     out = subject;
   };
   take(r.d, r.d_info, "double", s.d);
   take(r.mp, r.mp_info, "mp50", s.mp);
   take(r.q, r.q_info, "exact", s.q);
+  // A double-only implementation: say once, at the top, what that costs.
+  if (s.d && fills_slots(*s.d)) {
+    const bool mp_missing = !s.mp && !info.scalar_unavailable.count("mp50");
+    const bool q_missing = !s.q && !info.scalar_unavailable.count("exact");
+    if (mp_missing || q_missing)
+      info.warnings.push_back(
+          std::string("nothing is written as a template on the scalar, so nothing is checked in ") +
+          (mp_missing && q_missing ? "50 digits (mp50) or exact rationals (exact)" : mp_missing ? "50 digits (mp50)" : "exact rationals (exact)") +
+          ": write `template <class T> static Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& Pi)` and so on");
+  }
   for (const auto& [slot, why] : info.slot_notes["double"])
     if (why.rfind("a function named", 0) == 0) info.warnings.push_back("slot '" + slot + "': " + why);
   return s;

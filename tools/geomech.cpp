@@ -159,6 +159,7 @@ int main(int argc, char** argv) {
   check->add_option("--subject", subject, "built-in subject when no file is given (default: reference)");
   check->add_flag("--verbose", bo.verbose, "print the compiler commands");
   check->add_flag("--rebuild", bo.force, "compile again even if nothing changed");
+  check->add_option("--cache-dir", bo.cache_dir, "where compiled implementations are kept (default: in the build tree)");
   gm::harness::add_check_options(*check, co);
 
   gm::harness::ClassOptions class_opts;
@@ -187,6 +188,8 @@ int main(int argc, char** argv) {
     if (*check) {
       if (!student_file.empty()) {
         if (check->count("--subject")) throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
+        bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
+        bo.exact = co.scalar == "all" || co.scalar == "exact";
         return gm::run_student_check(student_file, co, bo);
       }
       return gm::run_builtin_check(subject, co);
@@ -195,6 +198,8 @@ int main(int argc, char** argv) {
       if (class_opts.check.report_dir.size()) class_opts.report_dir = class_opts.check.report_dir;
       class_opts.check.report_dir.clear();
       class_opts.front_door = gm::front_door();
+      class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
+      class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
       return gm::harness::run_class(class_opts, gm::harness::load_toolchain(gm::harness::default_toolchain_path()));
     }
     if (*list) return gm::run_list();
