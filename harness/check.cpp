@@ -214,6 +214,7 @@ bool CheckResult::ok() const {
 }
 
 std::string reproduce_command(const CheckResult& r, const Verdict& v) {
+  if (!r.info.randomised) return r.info.reproduce_prefix;
   std::string prefix = r.info.reproduce_prefix.empty() ? "build/bin/geomech check --subject " + r.subject
                                                         : r.info.reproduce_prefix;
   std::string cmd = prefix + " --property " + v.property + " --scalar " + v.scalar;

@@ -24,6 +24,7 @@ struct SubjectInfo {
   std::map<std::string, std::string> scalar_unavailable;                // scalar -> reason
   std::map<std::string, std::map<std::string, std::string>> slot_notes;  // scalar -> slot -> reason
   std::vector<std::string> warnings;                                    // shown at the top of the report
+  bool randomised = true;  // verdicts come from random cases (seeds, replay by --property); false for trajectory files
 };
 
 struct CheckConfig {

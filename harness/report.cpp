@@ -157,12 +157,18 @@ std::string area_of(const Verdict& v, const Catalogue* c) {
 }
 
 std::vector<ClaimRow> claim_rows(const CheckResult& r, const IntegratorInfo& integrator) {
+  // The claims an integrator can declare, then any other claim a check reported on.
+  std::vector<std::string> names(std::begin(kClaims), std::end(kClaims));
+  for (const auto& v : r.verdicts)
+    if (v.integrator == integrator.name)
+      for (const auto& f : v.claims)
+        if (std::find(names.begin(), names.end(), f.claim) == names.end()) names.push_back(f.claim);
   std::vector<ClaimRow> rows;
-  for (const char* claim : kClaims) {
+  for (const auto& claim : names) {
     ClaimRow row;
     row.claim = claim;
-    row.claimed = claimed_text(integrator.claims, claim);
-    const bool claimed = row.claimed != "no";
+    const std::string declared = claimed_text(integrator.claims, claim);
+    bool claimed = declared != "no";
     bool found = false, holds = true;
     std::vector<std::string> evidence;
     for (const auto& v : r.verdicts) {
@@ -170,10 +176,12 @@ std::vector<ClaimRow> claim_rows(const CheckResult& r, const IntegratorInfo& int
       for (const auto& f : v.claims) {
         if (f.claim != claim) continue;
         found = true;
+        claimed = claimed || f.claimed;
         holds = holds && f.holds;
         evidence.push_back(v.scalar + ", " + v.property + ": " + f.evidence);
       }
     }
+    row.claimed = declared != "no" ? declared : claimed ? "yes" : "no";
     if (!found)
       row.status = claimed ? "claimed, not checked by any property" : "-";
     else if (claimed)
@@ -250,7 +258,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
   for (const auto& integ : r.integrators) {
     os << "\nintegrator '" << integ.name << "' claims:";
     for (const auto& row : claim_rows(r, integ))
-      if (row.status != "-") os << "\n  " << std::setw(14) << row.claim << std::setw(6) << row.claimed << row.status;
+      if (row.status != "-") os << "\n  " << std::setw(18) << row.claim << std::setw(6) << row.claimed << row.status;
     os << "\n";
   }
   if (details) {
@@ -267,7 +275,8 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
         os << "\n  counterexample (shrunk):";
         for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
       }
-      if (v.outcome == Outcome::Fail) os << "\n  after " << v.cases << " passing cases; seed " << v.seed;
+      if (v.outcome == Outcome::Fail && r.info.randomised)
+        os << "\n  after " << v.cases << " passing cases; seed " << v.seed;
       os << "\n  reproduce: " << reproduce_command(r, v) << "\n";
     }
     const Missing m = missing_of(r);
@@ -356,8 +365,12 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       md << "; scalars: ";
       for (std::size_t i = 0; i < integ.scalars.size(); ++i) md << (i ? ", " : "") << integ.scalars[i];
       md << (integ.has_claims ? "" : "; no claims declared") << ".\n\n";
-      md << "| claim | claimed | finding | evidence |\n|---|---|---|---|\n";
+      bool any_row = false;
+      for (const auto& row : claim_rows(r, integ)) any_row = any_row || row.status != "-";
+      if (!any_row) md << "Nothing claimed, and no property reported on any claim.\n\n";
+      else md << "| claim | claimed | finding | evidence |\n|---|---|---|---|\n";
       for (const auto& row : claim_rows(r, integ)) {
+        if (row.status == "-") continue;  // neither claimed nor checked
         std::string status = row.status;
         if (status == "FALSE CLAIM") status = "**FALSE CLAIM**";
         md << "| " << row.claim << " | " << row.claimed << " | " << status << " | " << md_cell(row.evidence) << " |\n";
@@ -430,7 +443,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
         md << fence(ce);
       }
       md << "\n";
-      if (v->outcome == Outcome::Fail) md << "Failed after " << v->cases << " passing cases; seed " << v->seed << ".\n\n";
+      if (v->outcome == Outcome::Fail && r.info.randomised) md << "Failed after " << v->cases << " passing cases; seed " << v->seed << ".\n\n";
       md << "Reproduce:\n\n" << fence(reproduce_command(r, *v)) << "\n";
     }
   }

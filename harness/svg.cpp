@@ -136,8 +136,6 @@ std::string svg_plot(const std::string& title, const std::vector<Series>& series
   o << "<rect x=\"0\" y=\"0\" width=\"" << W << "\" height=\"" << H << "\" fill=\"white\"/>\n";
   o << "<text x=\"" << num(W / 2) << "\" y=\"24\" text-anchor=\"middle\" font-size=\"15\">" << xml_escape(title)
     << "</text>\n";
-  o << "<clipPath id=\"plot\"><rect x=\"" << L << "\" y=\"" << T << "\" width=\"" << pw << "\" height=\"" << ph
-    << "\"/></clipPath>\n";
   // Grid and ticks.
   for (double v : ax.ticks()) {
     const double x = px(v);
@@ -168,7 +166,8 @@ std::string svg_plot(const std::string& title, const std::vector<Series>& series
     std::vector<std::pair<double, double>> pts;
     for (const auto& [x, y] : s.points)
       if (drawable(x, y)) pts.emplace_back(px(x), py(y));
-    o << "<g clip-path=\"url(#plot)\">\n";
+    // No clipPath (not every renderer honours it): the axes are fitted to the data, and the one
+    // line that could leave the plot, the reference slope, is clipped here.
     if (pts.size() > 1) {
       o << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"1.6\" points=\"";
       for (const auto& [x, y] : pts) o << num(x) << "," << num(y) << " ";
@@ -182,16 +181,23 @@ std::string svg_plot(const std::string& title, const std::vector<Series>& series
       // Through the first drawable point: log y = log y0 + p (log x - log x0).
       for (const auto& [x0, y0] : s.points) {
         if (!drawable(x0, y0)) continue;
-        const double lx0 = std::log10(x0), ly0 = std::log10(y0);
-        const double ya = ly0 + s.reference_slope * (ax.lo - lx0), yb = ly0 + s.reference_slope * (ax.hi - lx0);
+        const double lx0 = std::log10(x0), ly0 = std::log10(y0), p = s.reference_slope;
+        double xa = ax.lo, xb = ax.hi;  // the part of the line inside the plot, in log10 units
+        double ya = 0;
+        const double x_at_lo = lx0 + (ay.lo - ly0) / p, x_at_hi = lx0 + (ay.hi - ly0) / p;
+        xa = std::max(xa, std::min(x_at_lo, x_at_hi));
+        xb = std::min(xb, std::max(x_at_lo, x_at_hi));
+        if (!(xa < xb)) break;
+        ya = ly0 + p * (xa - lx0);
+        const double yb = ly0 + p * (xb - lx0);
+        auto pxl = [&](double lx) { return L + (lx - ax.lo) / (ax.hi - ax.lo) * pw; };
         auto pyl = [&](double ly) { return T + ph - (ly - ay.lo) / (ay.hi - ay.lo) * ph; };
-        o << "<line x1=\"" << num(L) << "\" y1=\"" << num(pyl(ya)) << "\" x2=\"" << num(L + pw) << "\" y2=\""
+        o << "<line x1=\"" << num(pxl(xa)) << "\" y1=\"" << num(pyl(ya)) << "\" x2=\"" << num(pxl(xb)) << "\" y2=\""
           << num(pyl(yb)) << "\" stroke=\"" << colour << "\" stroke-dasharray=\"6,4\" stroke-width=\"1\"/>\n";
         slope_drawn = true;
         break;
       }
     }
-    o << "</g>\n";
     o << "<line x1=\"" << num(W - R + 12) << "\" y1=\"" << num(legend_y) << "\" x2=\"" << num(W - R + 36) << "\" y2=\""
       << num(legend_y) << "\" stroke=\"" << colour << "\" stroke-width=\"2\"/>\n";
     o << "<text x=\"" << num(W - R + 42) << "\" y=\"" << num(legend_y + 4) << "\">" << xml_escape(s.name)

@@ -3,6 +3,7 @@
 //   geomech check      run every property against a subject and print the report:
 //                      `geomech check FILE.cpp` for anyone's implementation (see docs/STUDENTS.md)
 //   geomech check-class  a folder of implementations, in parallel, with a summary table
+//   geomech check-trajectory  trajectory files written by programs in any language
 //   geomech list       the registered properties with their spec entries
 //   geomech slots      the subject slots an implementation can provide
 //   geomech subjects   the built-in subjects: the reference and its negative controls
@@ -12,6 +13,8 @@
 #include "harness/cli.hpp"
 #include "harness/isolate.hpp"
 #include "harness/process.hpp"
+#include "harness/report.hpp"
+#include "harness/trajectory.hpp"
 #include "impl/reference_subject.hpp"
 #include "properties/runner.hpp"
 #include "spec/catalogue.hpp"
@@ -87,6 +90,57 @@ int run_student_check(const std::string& file, harness::CheckCliOptions o, const
     return 2;
   }
   return pr.exit_code;
+}
+
+// `geomech check-trajectory FILE...`: trajectories written by programs in any language.
+int run_trajectory_check(const std::vector<std::string>& files, const harness::TrajectoryCheckOptions& o,
+                         const std::string& report_dir, const std::string& junit, bool quiet) {
+  harness::CheckResult r;
+  try {
+    r = harness::check_trajectories(files, o);
+  } catch (const harness::TrajectoryError& e) {
+    std::cerr << "geomech check-trajectory: " << e.what() << "\n";
+    return 2;
+  }
+  std::string cmd = front_door() + " check-trajectory";
+  for (const auto& f : files) cmd += " " + harness::shell_quote(f);
+  if (o.params.system) cmd += " --system " + harness::shell_quote(*o.params.system);
+  if (o.params.inertia)
+    cmd += " --inertia " + harness::shell_quote((*o.params.inertia)[0] + "," + (*o.params.inertia)[1] + "," + (*o.params.inertia)[2]);
+  if (o.params.step) cmd += " --step " + harness::shell_quote(*o.params.step);
+  if (o.order > 0) cmd += " --order " + std::to_string(o.order);
+  if (!o.preserves.empty()) {
+    std::string list;
+    for (const auto& p : o.preserves) list += (list.empty() ? "" : ",") + p;
+    cmd += " --preserves " + list;
+  }
+  if (o.tolerance != harness::TrajectoryCheckOptions{}.tolerance) {
+    std::ostringstream t;
+    t << o.tolerance;
+    cmd += " --tolerance " + t.str();
+  }
+  r.info.reproduce_prefix = cmd;
+  std::optional<Catalogue> cat;
+  try {
+    cat = load_catalogue(default_catalogue_path());
+  } catch (const std::exception&) {
+  }
+  if (quiet)
+    std::cout << r.subject << ": " << (r.ok() ? "PASS" : "FAIL") << " (" << r.count(Outcome::Pass) << " PASS, "
+              << r.count(Outcome::Fail) << " FAIL)\n";
+  else
+    std::cout << harness::console_report(r, cat ? &*cat : nullptr);
+  try {
+    if (!report_dir.empty()) {
+      harness::write_report_dir(r, report_dir, cat ? &*cat : nullptr);
+      std::cout << "report: " << report_dir << "/report.md\n";
+    }
+    if (!junit.empty()) harness::write_file_atomically(junit, harness::junit_report(r));
+  } catch (const std::exception& e) {
+    std::cerr << "geomech: " << e.what() << "\n";
+    return 2;
+  }
+  return r.exit_code();
 }
 
 int run_list() {
@@ -172,6 +226,29 @@ int main(int argc, char** argv) {
                     "seconds allowed to build and check one implementation (default 1800)");
   gm::harness::add_check_options(*klass, class_opts.check);
 
+  gm::harness::TrajectoryCheckOptions tro;
+  std::vector<std::string> trajectory_files, tr_inertia, tr_preserves;
+  std::string tr_system, tr_step, tr_report, tr_junit;
+  bool tr_quiet = false;
+  auto* traj = app.add_subcommand("check-trajectory",
+                                  "check trajectory files from any language (format: docs/TRAJECTORY_FORMAT.md)");
+  traj->add_option("files", trajectory_files, "trajectory files; several runs of one motion at different steps give the order")
+      ->required();
+  traj->add_option("--system", tr_system, "the system, for files without a header (rigid_body)");
+  traj->add_option("--inertia", tr_inertia, "I1,I2,I3 for files without a header")->expected(3)->delimiter(',');
+  traj->add_option("--step", tr_step, "step size h, for files without a header");
+  traj->add_option("--order", tro.order, "claimed order of the method (judged from the log-log slope)")
+      ->check(CLI::Range(1, 20));
+  traj->add_option("--preserves", tr_preserves,
+                   "claimed exact invariants: casimir, energy, orthogonality, spatial_momentum (comma-separated)")
+      ->delimiter(',');
+  traj->add_option("--tolerance", tro.tolerance,
+                   "allowed error against the reference, relative to |Pi(0)| (default 0.05: catches wrong equations)")
+      ->check(CLI::PositiveNumber);
+  traj->add_option("--report", tr_report, "write report.md, junit.xml, verdicts.json and figures/ into this directory");
+  traj->add_option("--junit", tr_junit, "also write the JUnit XML to this file");
+  traj->add_flag("--quiet,-q", tr_quiet, "print only the summary");
+
   auto* list = app.add_subcommand("list", "list the registered properties");
   auto* slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
   auto* subjects = app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
@@ -201,6 +278,13 @@ int main(int argc, char** argv) {
       class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
       class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
       return gm::harness::run_class(class_opts, gm::harness::load_toolchain(gm::harness::default_toolchain_path()));
+    }
+    if (*traj) {
+      if (!tr_system.empty()) tro.params.system = tr_system;
+      if (!tr_inertia.empty()) tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
+      if (!tr_step.empty()) tro.params.step = tr_step;
+      tro.preserves.insert(tr_preserves.begin(), tr_preserves.end());
+      return gm::run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);
     }
     if (*list) return gm::run_list();
     if (*slots) return gm::run_slots();
