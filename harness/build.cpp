@@ -109,6 +109,71 @@ std::string trim_lines(const std::string& text, std::size_t max_lines) {
   return out;
 }
 
+// Compiler messages spell the suite's scalars out in full (hundreds of characters of Boost); a
+// student reads Rational and Real50 better.
+std::string shorten_types(std::string line) {
+  const std::string open = "boost::multiprecision::number<";
+  for (std::size_t at = line.find(open); at != std::string::npos; at = line.find(open, at)) {
+    int depth = 0;
+    std::size_t end = at + open.size() - 1;
+    for (; end < line.size(); ++end) {
+      if (line[end] == '<') ++depth;
+      if (line[end] == '>' && --depth == 0) break;
+    }
+    if (end >= line.size()) break;
+    const std::string inside = line.substr(at, end + 1 - at);
+    const std::string name = inside.find("rational_adaptor") != std::string::npos ? "Rational"
+                             : inside.find("cpp_bin_float<50") != std::string::npos ? "Real50"
+                                                                                    : "number<...>";
+    line.replace(at, end + 1 - at, name);
+    at += name.size();
+  }
+  return line;
+}
+
+std::string clip(std::string line) {
+  line = shorten_types(std::move(line));
+  if (line.size() > 400) line = line.substr(0, 400) + " ...";
+  return line;
+}
+
+// The errors of a failed compile, each with the place in the student's file it comes from and
+// the slot it concerns: a few lines a student can act on (the full output is kept in a file).
+std::string error_summary(const std::string& out, const std::string& source, std::size_t max_errors = 8) {
+  static const std::regex marker(R"(detail::slot_([A-Za-z0-9_]+))");
+  const std::string file = fs::path(source).filename().string();
+  std::istringstream in(out);
+  std::string place, slot, summary;
+  std::size_t n = 0, total = 0;
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, marker)) slot = m[1];
+    // The first place in the student's own file since the last error: the innermost of their lines.
+    const bool include_chain = line.find("In file included from") != std::string::npos ||
+                               (line.find_first_not_of(' ') != std::string::npos &&
+                                    line.compare(line.find_first_not_of(' '), 5, "from ") == 0);
+    if (place.empty() && !include_chain && line.find(file + ":") != std::string::npos &&
+        line.find(": error:") == std::string::npos && line.find(": note:") == std::string::npos) {
+      const auto at = line.find(file + ":");
+      place = line.substr(at, line.find(' ', at) == std::string::npos ? std::string::npos : line.find(' ', at) - at);
+      while (!place.empty() && (place.back() == ':' || place.back() == ',')) place.pop_back();
+    }
+    const auto e = line.find("error:");
+    if (e == std::string::npos) continue;
+    ++total;
+    if (n < max_errors) {
+      std::string where = line.find(file + ":") != std::string::npos ? line.substr(line.find(file + ":"), line.find(": error:") - line.find(file + ":")) : place;
+      summary += "  " + (where.empty() ? std::string() : where + ": ") + (slot.empty() ? "" : "(in " + slot + ") ") +
+                 clip(line.substr(e)) + "\n";
+      ++n;
+    }
+    place.clear();
+    slot.clear();
+  }
+  if (total > n) summary += "  ... and " + std::to_string(total - n) + " more errors\n";
+  return summary;
+}
+
 }  // namespace
 
 std::string default_toolchain_path() {
@@ -153,10 +218,7 @@ Toolchain load_toolchain(const std::string& path) {
 std::string first_error(const std::string& out) {
   std::istringstream in(out);
   for (std::string line; std::getline(in, line);)
-    if (line.find("error:") != std::string::npos) {
-      if (line.size() > 400) line = line.substr(0, 400) + " ...";
-      return line;
-    }
+    if (line.find("error:") != std::string::npos) return clip(line);
   return {};
 }
 
@@ -171,7 +233,7 @@ std::map<std::string, std::string> slots_failing_in(const std::string& out) {
       if (is_slot_name(slot)) pending.insert(slot);
     }
     if (line.find("error:") != std::string::npos) {
-      std::string msg = line.size() > 400 ? line.substr(0, 400) + " ..." : line;
+      const std::string msg = clip(line);
       for (const auto& s : pending)
         if (!failing.count(s)) failing[s] = msg;
       pending.clear();
@@ -286,6 +348,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     }
 
   for (int round = 0; round < 5; ++round) {
+    if (st[0].done && !st[0].ok) break;  // the file itself does not compile: nothing else to learn
     std::vector<int> todo;
     for (int k = 0; k < 3; ++k)
       if (!st[k].done) todo.push_back(k);
@@ -307,6 +370,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       const std::string scalar = kScalars[k];
       const ProcessResult& pr = results[i];
       st[k].output = pr.output;
+      std::ofstream(dir / (scalar + ".log"), std::ios::trunc) << shell_join(specs[i].argv) << "\n\n" << pr.output;
       if (pr.started && pr.exit_code == 0) {
         st[k].done = st[k].ok = true;
         std::ofstream(dir / (scalar + ".cmd"), std::ios::trunc) << shell_join(specs[i].argv);
@@ -345,7 +409,8 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   }
 
   if (!st[0].ok) {
-    r.message = "the file does not compile:\n" + trim_lines(st[0].output, 60);
+    r.message = "the file does not compile:\n" + error_summary(st[0].output, r.source) +
+                "the compiler's full output: " + (dir / "double.log").string();
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   }

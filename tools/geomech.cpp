@@ -71,7 +71,11 @@ int run_student_check(const std::string& file, harness::CheckCliOptions o, const
   }
   std::cerr << "geomech: built " << b.name << (b.cached ? " (up to date)" : "") << " in " << std::fixed
             << std::setprecision(1) << b.seconds << " s\n";
-  if (o.report_dir.empty()) o.report_dir = "geomech-reports/" + b.name;
+  // A full check writes its report by default; a narrowed one (a replay, one property) only when asked,
+  // so that replaying a failure never replaces the full report.
+  const bool narrowed = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" || !o.integrator.empty() ||
+                        !o.reproduce.empty();
+  if (o.report_dir.empty() && !narrowed) o.report_dir = "geomech-reports/" + b.name;
   std::vector<std::string> argv{b.program};
   const auto args = harness::to_args(o);
   argv.insert(argv.end(), args.begin(), args.end());
