@@ -376,6 +376,9 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
         md << "| " << row.claim << " | " << row.claimed << " | " << status << " | " << md_cell(row.evidence) << " |\n";
       }
       md << "\n";
+      if (std::find(integ.steps.begin(), integ.steps.end(), "rigid_body_step") == integ.steps.end() &&
+          std::find(integ.steps.begin(), integ.steps.end(), "manakov_step") != integ.steps.end())
+        md << "No pictures are drawn for `manakov_step` yet (only for `rigid_body_step`).\n\n";
       for (const auto& p : r.portraits) {
         if (p.integrator != integ.name) continue;
         if (!p.message.empty()) md << "Portrait in " << p.scalar << ": " << md_cell(p.message) << "\n\n";
