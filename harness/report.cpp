@@ -564,9 +564,20 @@ void write_file_atomically(const std::string& path, const std::string& content) 
 }
 
 void write_report_dir(const CheckResult& r, const std::string& dir, const Catalogue* c) {
-  const fs::path target = fs::absolute(dir).lexically_normal();
+  fs::path target = fs::absolute(dir).lexically_normal();
+  while (target.has_relative_path() && target.filename().empty()) target = target.parent_path();  // "dir/" -> "dir"
+  if (!target.has_relative_path() || target.filename() == "." || target.filename() == "..")
+    throw std::runtime_error("cannot write a report into " + dir + ": give a directory of its own");
   const fs::path parent = target.parent_path();
   std::error_code ec;
+  // Only a previous report (or an empty directory) is ever replaced: never someone's own files.
+  if (fs::exists(target, ec)) {
+    if (!fs::is_directory(target, ec))
+      throw std::runtime_error("cannot write a report into " + target.string() + ": it is a file");
+    if (!fs::is_empty(target, ec) && !fs::exists(target / "verdicts.json", ec))
+      throw std::runtime_error("refusing to replace " + target.string() +
+                               ": it is not empty and not a geomech report (no verdicts.json); choose another --report");
+  }
   fs::create_directories(parent, ec);
   if (ec) throw std::runtime_error("cannot create " + parent.string() + ": " + ec.message());
   const std::string pid = std::to_string(::getpid());

@@ -294,6 +294,14 @@ TEST(Reports, JUnitMarkdownAndJsonSayTheSame) {
   EXPECT_TRUE(fs::exists(dir / "report" / "junit.xml"));
   EXPECT_TRUE(fs::exists(dir / "report" / "verdicts.json"));
   EXPECT_FALSE(fs::exists(dir / "report" / "stale.txt"));
+  // Someone's own directory is never replaced.
+  fs::create_directories(dir / "mine");
+  std::ofstream(dir / "mine" / "thesis.tex") << "precious";
+  EXPECT_THROW(write_report_dir(r, (dir / "mine").string(), nullptr), std::runtime_error);
+  EXPECT_TRUE(fs::exists(dir / "mine" / "thesis.tex"));
+  EXPECT_THROW(write_report_dir(r, (dir / "mine" / "thesis.tex").string(), nullptr), std::runtime_error);
+  EXPECT_THROW(write_report_dir(r, "/", nullptr), std::runtime_error);
+  fs::remove_all(dir / "mine");
   const auto entries = std::distance(fs::directory_iterator(dir), fs::directory_iterator{});
   EXPECT_EQ(entries, 1);
   fs::remove_all(dir);
