@@ -33,7 +33,7 @@ struct CheckConfig {
   std::vector<ScalarKind> scalars{ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact};
   std::string integrator;               // only this integrator (empty: all)
   RunOptions run;                       // seed, case counts, reproduce string
-  double timeout_seconds = 120;         // per (property, scalar, integrator)
+  double timeout_seconds = 60;          // per (property, scalar, integrator)
   int jobs = 1;                         // children at once
   bool isolate = true;                  // fork per property (false: in-process, for a debugger)
   long memory_limit_mb = 4096;

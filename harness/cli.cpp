@@ -17,7 +17,7 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_option("--cases", o.cases, "cases per property (default: each property's own)")->check(CLI::NonNegativeNumber);
   app.add_option("--case-factor", o.case_factor, "multiply every default case count")->check(CLI::PositiveNumber);
   app.add_option("--reproduce", o.reproduce, "RapidCheck reproduce string printed with a failure");
-  app.add_option("--timeout", o.timeout, "seconds allowed per property and scalar (default 120)")
+  app.add_option("--timeout", o.timeout, "seconds allowed per property and scalar (default 60)")
       ->check(CLI::PositiveNumber);
   app.add_option("--jobs,-j", o.jobs, "properties checked at once (default 1)")->check(CLI::Range(1, 256));
   app.add_option("--memory-limit", o.memory_limit_mb, "address space per check, in MiB (default 4096)")

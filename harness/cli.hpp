@@ -21,7 +21,7 @@ struct CheckCliOptions {
   int cases = 0;
   double case_factor = 1.0;
   std::string reproduce;
-  double timeout = 120;
+  double timeout = 60;
   int jobs = 1;
   long memory_limit_mb = 4096;
   std::string report_dir;  // write report.md, junit.xml, verdicts.json, figures/ here
