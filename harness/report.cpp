@@ -67,6 +67,12 @@ std::vector<std::pair<std::string, std::map<std::string, const Verdict*>>> table
   return rows;
 }
 
+bool nothing_ran(const std::map<std::string, const Verdict*>& by_scalar) {
+  for (const auto& [scalar, v] : by_scalar)
+    if (v->outcome != Outcome::NotProvided) return false;
+  return true;
+}
+
 std::string summary_counts(const CheckResult& r) {
   std::ostringstream os;
   bool first = true;
@@ -234,7 +240,12 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
   const char* scalars[] = {"double", "mp50", "exact"};
   for (const char* s : scalars) os << std::setw(20) << s;
   os << "\n" << std::string(44 + 30 + 60, '-') << "\n";
+  std::vector<std::string> not_run;
   for (const auto& [name, by] : table_rows(r)) {
+    if (nothing_ran(by)) {
+      not_run.push_back(name);
+      continue;
+    }
     const Verdict& any = *by.begin()->second;
     std::string place = any.spec;
     const std::string full = place_of(any, c);
@@ -253,6 +264,11 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
       os << std::setw(20) << cell;
     }
     os << "\n";
+  }
+  if (!not_run.empty()) {
+    os << "(" << not_run.size() << " more properties are not provided in any scalar:";
+    for (const auto& n : not_run) os << " " << n;
+    os << ")\n";
   }
   os << "\nsummary: " << summary_counts(r) << "  (" << seconds_text(r.seconds) << ")\n";
   for (const auto& integ : r.integrators) {
@@ -331,7 +347,12 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   md << "## Every property\n\n"
      << "| property | statement | spec entry (place in the notes) | double | mp50 | exact |\n"
      << "|---|---|---|---|---|---|\n";
+  std::vector<std::string> md_not_run;
   for (const auto& [name, by] : table_rows(r)) {
+    if (nothing_ran(by)) {
+      md_not_run.push_back(name);
+      continue;
+    }
     const Verdict& any = *by.begin()->second;
     const std::string place = place_of(any, c);
     md << "| `" << name << "` | " << md_cell(any.title) << " | `" << any.spec << "`"
@@ -351,6 +372,11 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       md << " " << cell << " |";
     }
     md << "\n";
+  }
+  if (!md_not_run.empty()) {
+    md << "\nNot provided in any scalar (" << md_not_run.size() << " properties, reasons under *Not provided*): ";
+    for (std::size_t i = 0; i < md_not_run.size(); ++i) md << (i ? ", " : "") << "`" << md_not_run[i] << "`";
+    md << ".\n";
   }
   md << "\nA dash means the property does not run in that scalar (integrators and anything that needs square "
         "roots or flows are not run in exact rationals).\n\n";
