@@ -7,7 +7,8 @@
 //       writes the ctest declarations (run after each build);
 //   example_tests --example NAME --program EXE --source FILE      one example;
 //   example_tests --end-to-end NAME --geomech EXE --source FILE    `geomech check FILE` from scratch;
-//   example_tests --class DIR --geomech EXE                        `geomech check-class DIR`.
+//   example_tests --class DIR --geomech EXE                        `geomech check-class DIR`;
+//   example_tests --cmake-package CMAKE --config DIR --source FILE  a student's own CMake project.
 //
 // Examples whose bugs only integrator-claim properties can catch (they come with the dynamics
 // properties, issue 4) are declared DISABLED while no integrator-scoped property is registered;
@@ -349,10 +350,34 @@ int run_class(const std::string& class_dir, const std::string& geomech) {
   return failures ? 1 : 0;
 }
 
+// A student's own CMake project using the exported GeomechStudentConfig.cmake.
+int run_cmake_package(const std::string& cmake, const std::string& config_dir, const std::string& source) {
+  const fs::path dir = temp_dir("cmake-package");
+  fs::copy_file(source, dir / "student.cpp");
+  std::ofstream(dir / "CMakeLists.txt") << "cmake_minimum_required(VERSION 3.25)\nproject(student CXX)\n"
+                                        << "find_package(GeomechStudent REQUIRED PATHS \"" << config_dir
+                                        << "\" NO_DEFAULT_PATH)\ngeomech_add_student(check student.cpp)\n";
+  using gm::harness::ProcessSpec;
+  const auto configure = gm::harness::run_process(
+      ProcessSpec{{cmake, "-S", dir.string(), "-B", (dir / "build").string(), "-DCMAKE_BUILD_TYPE=Release"}, {}, false});
+  check(configure.exit_code == 0, "the student's project does not configure:\n" + configure.output);
+  const auto build = gm::harness::run_process(ProcessSpec{{cmake, "--build", (dir / "build").string()}, {}, false});
+  check(build.exit_code == 0, "the student's project does not build:\n" + build.output);
+  if (build.exit_code == 0) {
+    const auto run = gm::harness::run_process(
+        ProcessSpec{{(dir / "build" / "check").string(), "--quiet", "--report", (dir / "report").string()}, {}, false});
+    std::cout << run.output;
+    check(run.exit_code == 0, "the student's check program fails");
+    check(run.output.find("PASS") != std::string::npos, "no PASS in the summary");
+  }
+  fs::remove_all(dir);
+  return failures ? 1 : 0;
+}
+
 std::string bracket(const std::string& s) { return "[==[" + s + "]==]"; }
 
 int write_ctest_script(const std::string& out, const std::string& tsv, const std::string& geomech,
-                       const std::string& source_dir) {
+                       const std::string& source_dir, const std::string& cmake, const std::string& config_dir) {
   std::ifstream in(tsv);
   if (!in) {
     std::cerr << "cannot read " << tsv << "\n";
@@ -387,6 +412,9 @@ int write_ctest_script(const std::string& out, const std::string& tsv, const std
            << bracket(geomech) << " --source " << bracket(source_dir + "/examples/students/" + e2e + ".cpp") << ")\n";
     script << "set_tests_properties(" << bracket(test) << " PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600)\n";
   }
+  script << "add_test(student.cmake_package " << bracket(self) << " --cmake-package " << bracket(cmake) << " --config "
+         << bracket(config_dir) << " --source " << bracket(source_dir + "/tests/class/alice.cpp") << ")\n";
+  script << "set_tests_properties(student.cmake_package PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600)\n";
   script << "add_test(student.class_mode " << bracket(self) << " --class " << bracket(source_dir + "/tests/class")
          << " --geomech " << bracket(geomech) << ")\n";
   script << "set_tests_properties(student.class_mode PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600)\n";
@@ -407,7 +435,9 @@ int main(int argc, char** argv) {
   for (int i = 1; i + 1 < argc; i += 2) a[argv[i]] = argv[i + 1];
   try {
     if (a.count("--ctest-script"))
-      return write_ctest_script(a["--ctest-script"], a["--examples"], a["--geomech"], a["--source-dir"]);
+      return write_ctest_script(a["--ctest-script"], a["--examples"], a["--geomech"], a["--source-dir"], a["--cmake"],
+                                a["--config"]);
+    if (a.count("--cmake-package")) return run_cmake_package(a["--cmake-package"], a["--config"], a["--source"]);
     if (a.count("--example")) return run_example(a["--example"], a["--program"], a["--source"]);
     if (a.count("--end-to-end")) return run_end_to_end(a["--end-to-end"], a["--geomech"], a["--source"]);
     if (a.count("--class")) return run_class(a["--class"], a["--geomech"]);
