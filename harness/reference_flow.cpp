@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdio>
+#include <string>
 
 namespace gm::harness {
 
@@ -76,6 +78,12 @@ R step_size(const Coefficients& c, const R& tol) {
   return h * R(0.9);
 }
 
+std::string estimate_text(const R& n) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2g", n.convert_to<double>());
+  return buf;
+}
+
 }  // namespace
 
 std::vector<RigidBodyState<R>> reference_rigid_body(const Vec3<R>& I, const RigidBodyState<R>& x0, const R& t0,
@@ -101,10 +109,20 @@ std::vector<RigidBodyState<R>> reference_rigid_body(const Vec3<R>& I, const Rigi
   long steps = 0;
   std::size_t next = 0;
   while (next < times.size() && times[next] == t) out.push_back(x), ++next;
+  const R last = times.empty() ? t0 : times.back();
+  bool estimated = false;
   while (next < times.size()) {
     coefficients(Iinv, x, c);
     R h = step_size(c, tol);
-    const R last = times.back();
+    // The step size barely changes along a free rigid body (|Omega| is bounded by the invariants):
+    // refuse at once what would take too long, rather than after minutes.
+    if (!estimated) {
+      estimated = true;
+      if (R((last - t) / h) > R(limits.max_steps))
+        throw std::length_error("the reference solution would need about " + estimate_text(R((last - t) / h)) +
+                                " Taylor steps to reach t = " + to_string_full(last) + " (the limit is " +
+                                std::to_string(limits.max_steps) + "); shorten the run or scale it down");
+    }
     if (t + h > last) h = last - t;
     while (next < times.size() && times[next] <= t + h) out.push_back(evaluate(c, times[next] - t)), ++next;
     x = evaluate(c, h);

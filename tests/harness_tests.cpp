@@ -483,6 +483,21 @@ TEST(TrajectoryFiles, EveryMalformedInputIsRejectedWithFileLineAndColumn) {
   EXPECT_NE(bad(kGood, p).find("t.txt:4: step in the file differs from --step"), std::string::npos) << bad(kGood, p);
 }
 
+TEST(TrajectoryFiles, ARunTooLongForTheReferenceIsRefusedAtOnce) {
+  const fs::path dir = temp_dir();
+  std::ofstream(dir / "long.txt") << "# geomech-trajectory 1\n# system: rigid_body\n# inertia: 2 1.5 1\n# step: 1\n"
+                                  << "0 1000 2000 3000\n1e9 1000 2000 3000\n";
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    check_trajectories({(dir / "long.txt").string()}, {});
+    ADD_FAILURE() << "accepted";
+  } catch (const TrajectoryError& e) {
+    EXPECT_NE(std::string(e.what()).find("Taylor steps"), std::string::npos) << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
+  fs::remove_all(dir);
+}
+
 TEST(TrajectoryFiles, NothingIsWrittenForBadInput) {
   const fs::path dir = temp_dir();
   std::ofstream(dir / "bad.txt") << "# geomech-trajectory 1\n# system: rigid_body\n";
