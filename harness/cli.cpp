@@ -5,8 +5,12 @@
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <thread>
+#include <algorithm>
 
 namespace gm::harness {
+
+int default_jobs() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
 
 void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_option("--property,-p", o.properties, "only these properties (repeatable; see `geomech list`)");
@@ -19,7 +23,7 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_option("--reproduce", o.reproduce, "RapidCheck reproduce string printed with a failure");
   app.add_option("--timeout", o.timeout, "seconds allowed per property and scalar (default 60)")
       ->check(CLI::PositiveNumber);
-  app.add_option("--jobs,-j", o.jobs, "properties checked at once (default 1)")->check(CLI::Range(1, 256));
+  app.add_option("--jobs,-j", o.jobs, "checks run at once, each in its own process (default: the number of cores)")->check(CLI::Range(1, 256));
   app.add_option("--memory-limit", o.memory_limit_mb, "address space per check, in MiB (default 4096)")
       ->check(CLI::Range(64L, 1L << 30));
   app.add_option("--report", o.report_dir, "write report.md, junit.xml, verdicts.json and figures/ into this directory");

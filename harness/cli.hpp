@@ -12,6 +12,8 @@
 
 namespace gm::harness {
 
+int default_jobs();  // the number of cores (at least 1)
+
 struct CheckCliOptions {
   std::vector<std::string> properties;
   std::string spec_prefix;
@@ -22,7 +24,7 @@ struct CheckCliOptions {
   double case_factor = 1.0;
   std::string reproduce;
   double timeout = 60;
-  int jobs = 1;
+  int jobs = default_jobs();  // the cores of this machine
   long memory_limit_mb = 4096;
   std::string report_dir;  // write report.md, junit.xml, verdicts.json, figures/ here
   std::string junit;       // also write the JUnit XML here

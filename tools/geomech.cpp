@@ -267,8 +267,6 @@ int main(int argc, char** argv) {
   CLI11_PARSE(app, argc, argv);
   try {
     if (*check) {
-      // Checks run in parallel children; use the cores unless told otherwise.
-      if (!check->count("--jobs")) co.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
       if (!student_file.empty()) {
         if (check->count("--subject")) throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
         bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
