@@ -151,6 +151,15 @@ int student_main(int argc, char** argv) {
       return 2;
     }
   }
+  {
+    const Registered& r = registered();
+    if (!r.d && !r.mp && !r.q) {
+      std::cerr << "geomech: " << (source.empty() ? std::string("the program") : source)
+                << " registers no implementation: write GEOMECH_STUDENT(YourStruct, YourIntegrators...) at namespace "
+                   "scope, after the struct (see docs/STUDENTS.md)\n";
+      return 2;
+    }
+  }
   harness::SubjectInfo info;
   info.source = source;
   if (prefix.empty()) {
