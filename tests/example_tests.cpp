@@ -10,6 +10,9 @@
 //   example_tests --class DIR --geomech EXE                        `geomech check-class DIR`;
 //   example_tests --cmake-package CMAKE --config DIR --source FILE  a student's own CMake project.
 //
+// The end-to-end tests compile (three compilers each) and take the RESOURCE_LOCK "compilers", so
+// they run one at a time and the time they print is that of one check alone.
+//
 // Examples whose bugs only integrator-claim properties can catch (they come with the dynamics
 // properties, issue 4) are declared DISABLED while no integrator-scoped property is registered;
 // they enable themselves once one is, and must then pass.
@@ -410,14 +413,14 @@ int write_ctest_script(const std::string& out, const std::string& tsv, const std
     const std::string test = std::string("student.end_to_end.") + e2e;
     script << "add_test(" << bracket(test) << " " << bracket(self) << " --end-to-end " << e2e << " --geomech "
            << bracket(geomech) << " --source " << bracket(source_dir + "/examples/students/" + e2e + ".cpp") << ")\n";
-    script << "set_tests_properties(" << bracket(test) << " PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600)\n";
+    script << "set_tests_properties(" << bracket(test) << " PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
   }
   script << "add_test(student.cmake_package " << bracket(self) << " --cmake-package " << bracket(cmake) << " --config "
          << bracket(config_dir) << " --source " << bracket(source_dir + "/tests/class/alice.cpp") << ")\n";
-  script << "set_tests_properties(student.cmake_package PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600)\n";
+  script << "set_tests_properties(student.cmake_package PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
   script << "add_test(student.class_mode " << bracket(self) << " --class " << bracket(source_dir + "/tests/class")
          << " --geomech " << bracket(geomech) << ")\n";
-  script << "set_tests_properties(student.class_mode PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600)\n";
+  script << "set_tests_properties(student.class_mode PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
   const std::string tmp = out + ".tmp";
   {
     std::ofstream f(tmp, std::ios::trunc);
