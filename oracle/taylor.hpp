@@ -163,6 +163,14 @@ class TaylorSolver {
     return out;
   }
 
+  // The step the solver would take from state x (its first step from x): lets a caller estimate
+  // how many steps an integration will need before starting it.
+  T step_size_at(const std::vector<T>& x) {
+    check_state(x);
+    compute_coefficients(x);
+    return step_size(x);
+  }
+
   // The state at time t1 from (t0, x0).
   std::vector<T> flow(const std::vector<T>& x0, const T& t0, const T& t1) {
     if (t1 == t0) return x0;

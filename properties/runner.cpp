@@ -163,6 +163,7 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
 
   std::string missing_slot;
   residual_log().reset();
+  recorded_claims().clear();
   SilentListener listener;
   const auto result = rc::detail::checkProperty(
       rc::detail::toProperty([&] {
@@ -181,6 +182,8 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   recorded_series().clear();
   v.notes = recorded_notes();
   recorded_notes().clear();
+  v.claims = recorded_claims();
+  recorded_claims().clear();
   const auto& log = residual_log();
   v.worst_eps_units = log.worst_eps_units;
   v.worst_absolute = log.worst_absolute;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "properties/registry.hpp"
+#include "properties/support/claims.hpp"
 #include "properties/support/figures.hpp"
 
 #include <cstdint>
@@ -44,6 +45,7 @@ struct Verdict {
   double seconds = 0;
   std::vector<Series> series; // data for pictures, from the last case run
   std::vector<std::string> notes;  // remarks from the last case run (e.g. an unclaimed invariant that holds)
+  std::vector<ClaimFinding> claims;  // integrator properties: what they found about each claim
 
   std::string key() const;    // subject/property/scalar[/integrator]: RapidCheck's test id
 };

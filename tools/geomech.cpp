@@ -1,12 +1,22 @@
 // geomech: the command-line front end of the suite.
 //
-//   geomech check      run every property against a subject and print the report
+//   geomech check      run every property against a subject and print the report:
+//                      `geomech check FILE.cpp` for anyone's implementation (see docs/STUDENTS.md)
+//   geomech check-class  a folder of implementations, in parallel, with a summary table
+//   geomech check-trajectory  trajectory files written by programs in any language
 //   geomech list       the registered properties with their spec entries
 //   geomech slots      the subject slots an implementation can provide
 //   geomech subjects   the built-in subjects: the reference and its negative controls
 //   geomech catalogue  the spec catalogue: Markdown table, traceability check
 //   geomech golden     golden trajectories: regenerate/check the fixtures, make your own (golden/cli.hpp)
 #include "golden/cli.hpp"
+#include "harness/build.hpp"
+#include "harness/class_mode.hpp"
+#include "harness/cli.hpp"
+#include "harness/isolate.hpp"
+#include "harness/process.hpp"
+#include "harness/report.hpp"
+#include "harness/trajectory.hpp"
 #include "impl/reference_subject.hpp"
 #include "properties/runner.hpp"
 #include "spec/catalogue.hpp"
@@ -15,7 +25,10 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <thread>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -24,115 +37,116 @@
 namespace gm {
 namespace {
 
-struct CheckOptions {
-  std::string subject = "reference";
-  std::vector<std::string> properties;
-  std::string spec_prefix;
-  std::string scalar = "all";
-  std::uint64_t seed = 0;
-  int cases = 0;
-  double case_factor = 1.0;
-  std::string reproduce;
-};
-
-std::vector<ScalarKind> scalars_from(const std::string& s) {
-  if (s == "all") return {ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact};
-  if (s == "double") return {ScalarKind::Double};
-  if (s == "mp50") return {ScalarKind::MP50};
-  if (s == "exact") return {ScalarKind::Exact};
-  throw CLI::ValidationError("--scalar", "must be one of double, mp50, exact, all (got '" + s + "')");
+// How the user called us, for the commands we print: the front-door script sets GEOMECH_FRONT_DOOR.
+std::string front_door() {
+  if (const char* f = std::getenv("GEOMECH_FRONT_DOOR"); f && *f) return f;
+  return "geomech";
 }
 
-std::string cell(const Verdict& v) {
-  std::string s = outcome_name(v.outcome);
-  if (v.outcome == Outcome::Pass && v.scalar != "exact" && v.checks > 0) {
-    char buf[48];
-    std::snprintf(buf, sizeof buf, " %.2g eps", v.worst_eps_units);
-    s += buf;
-  }
-  return s;
-}
-
-int run_check(const CheckOptions& o) {
+// `geomech check` without a file: a built-in subject (the reference, or a negative control).
+int run_builtin_check(const std::string& name, const harness::CheckCliOptions& o) {
   SubjectSet subject;
-  if (o.subject == "reference") {
+  if (name == "reference") {
     subject = reference_subject();
-  } else if (const Mutant* m = find_mutant(o.subject)) {
+  } else if (const Mutant* m = find_mutant(name)) {
     subject = m->make(reference_subject());
   } else {
-    std::cerr << "geomech check: unknown subject '" << o.subject
+    std::cerr << "geomech check: unknown subject '" << name
               << "' (available: reference, or a negative control listed by `geomech subjects`)\n";
     return 2;
   }
+  harness::SubjectInfo info;
+  info.reproduce_prefix = front_door() + " check --subject " + name;
+  return harness::run_check_cli(subject, info, o);
+}
+
+// `geomech check FILE.cpp`: compile only the student's file against the prebuilt library, then
+// run its check program (which isolates every property in a child process).
+int run_student_check(const std::string& file, harness::CheckCliOptions o, const harness::BuildOptions& bo) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const harness::Toolchain tc = harness::load_toolchain(harness::default_toolchain_path());
+  const harness::BuildResult b = harness::build_student(file, tc, bo);
+  for (const auto& line : b.log) std::cerr << "geomech: " << line << "\n";
+  if (!b.ok) {
+    std::cerr << "geomech check: " << file << ": " << b.message << "\n";
+    return 2;
+  }
+  std::cerr << "geomech: built " << b.name << (b.cached ? " (up to date)" : "") << " in " << std::fixed
+            << std::setprecision(1) << b.seconds << " s\n";
+  // A full check writes its report by default; a narrowed one (a replay, one property) only when asked,
+  // so that replaying a failure never replaces the full report.
+  const bool narrowed = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" || !o.integrator.empty() ||
+                        !o.reproduce.empty();
+  if (o.report_dir.empty() && !narrowed) o.report_dir = "geomech-reports/" + b.name;
+  std::vector<std::string> argv{b.program};
+  const auto args = harness::to_args(o);
+  argv.insert(argv.end(), args.begin(), args.end());
+  argv.insert(argv.end(), {"--name", b.name, "--source", file, "--build-notes", b.notes_file, "--reproduce-prefix",
+                           front_door() + " check " + harness::shell_quote(file)});
+  const harness::ProcessResult pr = harness::run_process(harness::ProcessSpec{argv, {}, true});
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cerr << "geomech: checked " << b.name << " in " << std::fixed << std::setprecision(1) << total
+            << " s (build " << b.seconds << " s, check " << pr.seconds << " s)\n";
+  if (!pr.started) {
+    std::cerr << "geomech check: " << pr.output << "\n";
+    return 2;
+  }
+  if (pr.signal) {
+    std::cerr << "geomech check: the check program was " << harness::describe_signal(pr.signal) << "\n";
+    return 2;
+  }
+  return pr.exit_code;
+}
+
+// `geomech check-trajectory FILE...`: trajectories written by programs in any language.
+int run_trajectory_check(const std::vector<std::string>& files, const harness::TrajectoryCheckOptions& o,
+                         const std::string& report_dir, const std::string& junit, bool quiet) {
+  harness::CheckResult r;
+  try {
+    r = harness::check_trajectories(files, o);
+  } catch (const harness::TrajectoryError& e) {
+    std::cerr << "geomech check-trajectory: " << e.what() << "\n";
+    return 2;
+  }
+  std::string cmd = front_door() + " check-trajectory";
+  for (const auto& f : files) cmd += " " + harness::shell_quote(f);
+  if (o.params.system) cmd += " --system " + harness::shell_quote(*o.params.system);
+  if (o.params.inertia)
+    cmd += " --inertia " + harness::shell_quote((*o.params.inertia)[0] + "," + (*o.params.inertia)[1] + "," + (*o.params.inertia)[2]);
+  if (o.params.step) cmd += " --step " + harness::shell_quote(*o.params.step);
+  if (o.order > 0) cmd += " --order " + std::to_string(o.order);
+  if (!o.preserves.empty()) {
+    std::string list;
+    for (const auto& p : o.preserves) list += (list.empty() ? "" : ",") + p;
+    cmd += " --preserves " + list;
+  }
+  if (o.tolerance != harness::TrajectoryCheckOptions{}.tolerance) {
+    std::ostringstream t;
+    t << o.tolerance;
+    cmd += " --tolerance " + t.str();
+  }
+  r.info.reproduce_prefix = cmd;
   std::optional<Catalogue> cat;
   try {
     cat = load_catalogue(default_catalogue_path());
+  } catch (const std::exception&) {
+  }
+  if (quiet)
+    std::cout << r.subject << ": " << (r.ok() ? "PASS" : "FAIL") << " (" << r.count(Outcome::Pass) << " PASS, "
+              << r.count(Outcome::Fail) << " FAIL)\n";
+  else
+    std::cout << harness::console_report(r, cat ? &*cat : nullptr);
+  try {
+    if (!report_dir.empty()) {
+      harness::write_report_dir(r, report_dir, cat ? &*cat : nullptr);
+      std::cout << "report: " << report_dir << "/report.md\n";
+    }
+    if (!junit.empty()) harness::write_file_atomically(junit, harness::junit_report(r));
   } catch (const std::exception& e) {
-    std::cerr << "geomech: warning: " << e.what() << " (spec places will not be shown)\n";
+    std::cerr << "geomech: " << e.what() << "\n";
+    return 2;
   }
-  const auto kinds = scalars_from(o.scalar);
-
-  std::vector<const Property*> selected;
-  for (const auto& p : properties()) {
-    if (!o.properties.empty() && std::find(o.properties.begin(), o.properties.end(), p.id) == o.properties.end())
-      continue;
-    if (!o.spec_prefix.empty() && p.spec.rfind(o.spec_prefix, 0) != 0) continue;
-    selected.push_back(&p);
-  }
-  for (const auto& id : o.properties)
-    if (!find_property(id)) {
-      std::cerr << "geomech check: no property is named '" << id << "' (see `geomech list`)\n";
-      return 2;
-    }
-
-  RunOptions ro;
-  ro.seed = o.seed;
-  ro.cases = o.cases;
-  ro.case_factor = o.case_factor;
-  ro.reproduce = o.reproduce;
-
-  std::cout << "geomech check: subject '" << subject.name << "' (" << subject.description << ")\n"
-            << "seed " << o.seed << "; " << selected.size() << " properties; residuals in units of eps * scale\n\n";
-  std::cout << std::left << std::setw(40) << "property" << std::setw(28) << "spec entry (place)";
-  for (auto k : kinds) std::cout << std::setw(22) << scalar_name(k);
-  std::cout << "\n" << std::string(40 + 28 + 22 * kinds.size(), '-') << "\n";
-
-  std::map<Outcome, int> counts;
-  std::vector<Verdict> problems;
-  for (const Property* p : selected) {
-    std::map<std::string, std::map<ScalarKind, Verdict>> rows;  // integrator -> scalar -> verdict
-    for (auto k : kinds) {
-      if (!p->runs_in(k)) continue;
-      for (auto& v : run_property(*p, subject, k, ro)) rows[v.integrator][k] = v;
-    }
-    for (auto& [integrator, by_scalar] : rows) {
-      std::string name = p->id + (integrator.empty() ? "" : " [" + integrator + "]");
-      std::string place = p->spec;
-      if (cat)
-        if (const SpecEntry* e = cat->find(p->spec)) place += " " + e->place.substr(0, e->place.find(','));
-      if (place.size() > 27) place = place.substr(0, 26) + "~";
-      std::cout << std::setw(40) << name << std::setw(28) << place;
-      for (auto k : kinds) {
-        auto it = by_scalar.find(k);
-        std::cout << std::setw(22) << (it == by_scalar.end() ? std::string("-") : cell(it->second));
-        if (it != by_scalar.end()) {
-          ++counts[it->second.outcome];
-          if (it->second.outcome != Outcome::Pass && it->second.outcome != Outcome::NotProvided)
-            problems.push_back(it->second);
-        }
-      }
-      std::cout << "\n";
-    }
-  }
-  std::cout << "\nsummary:";
-  for (auto o2 : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error})
-    std::cout << " " << counts[o2] << " " << outcome_name(o2) << ",";
-  std::cout << "\n";
-  if (!problems.empty()) {
-    std::cout << "\ndetails of every verdict that is not a pass:\n\n";
-    for (const auto& v : problems) std::cout << format_verdict(v) << "\n\n";
-  }
-  return problems.empty() ? 0 : 1;
+  return r.exit_code();
 }
 
 int run_list() {
@@ -192,16 +206,54 @@ int main(int argc, char** argv) {
   CLI::App app{"geomech: the rigid-body lecture notes as an executable specification"};
   app.require_subcommand(1);
 
-  gm::CheckOptions co;
-  auto* check = app.add_subcommand("check", "run the properties against a subject and print the report");
-  check->add_option("--subject", co.subject, "subject to check (default: reference)");
-  check->add_option("--property,-p", co.properties, "only these properties (repeatable)");
-  check->add_option("--spec", co.spec_prefix, "only properties whose spec entry starts with this (e.g. s2.)");
-  check->add_option("--scalar", co.scalar, "double, mp50, exact or all (default)");
-  check->add_option("--seed", co.seed, "base seed (default 0; fixed so runs are reproducible)");
-  check->add_option("--cases", co.cases, "cases per property (default: each property's own)");
-  check->add_option("--case-factor", co.case_factor, "multiply every default case count");
-  check->add_option("--reproduce", co.reproduce, "RapidCheck reproduce string printed with a failure");
+  gm::harness::CheckCliOptions co;
+  std::string subject = "reference";
+  std::string student_file;
+  gm::harness::BuildOptions bo;
+  // Compilers at once: the three scalars of one file compile in parallel even on two cores (the
+  // kernel interleaves them; total wall time is then about their summed CPU time / cores).
+  bo.jobs = static_cast<int>(std::max(3u, std::thread::hardware_concurrency()));
+  auto* check = app.add_subcommand(
+      "check", "check an implementation: a student's FILE.cpp, or a built-in subject (default: the reference)");
+  check->add_option("file", student_file, "a C++ file using GEOMECH_STUDENT (see docs/STUDENTS.md)");
+  check->add_option("--subject", subject, "built-in subject when no file is given (default: reference)");
+  check->add_flag("--verbose", bo.verbose, "print the compiler commands");
+  check->add_flag("--rebuild", bo.force, "compile again even if nothing changed");
+  check->add_option("--cache-dir", bo.cache_dir, "where compiled implementations are kept (default: in the build tree)");
+  gm::harness::add_check_options(*check, co);
+
+  gm::harness::ClassOptions class_opts;
+  class_opts.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  auto* klass = app.add_subcommand("check-class", "check every implementation in a folder, in parallel, with a summary table");
+  klass->add_option("folder", class_opts.dir, "folder of *.cpp files (or of one folder per student)")->required();
+  klass->add_option("--parallel", class_opts.jobs, "implementations checked at once (default: all cores)")
+      ->check(CLI::Range(1, 256));
+  klass->add_option("--timeout-per-implementation", class_opts.timeout_per_implementation,
+                    "seconds allowed to build and check one implementation (default 1800)");
+  gm::harness::add_check_options(*klass, class_opts.check);
+
+  gm::harness::TrajectoryCheckOptions tro;
+  std::vector<std::string> trajectory_files, tr_inertia, tr_preserves;
+  std::string tr_system, tr_step, tr_report, tr_junit;
+  bool tr_quiet = false;
+  auto* traj = app.add_subcommand("check-trajectory",
+                                  "check trajectory files from any language (format: docs/TRAJECTORY_FORMAT.md)");
+  traj->add_option("files", trajectory_files, "trajectory files; several runs of one motion at different steps give the order")
+      ->required();
+  traj->add_option("--system", tr_system, "the system, for files without a header (rigid_body)");
+  traj->add_option("--inertia", tr_inertia, "I1,I2,I3 for files without a header")->expected(3)->delimiter(',');
+  traj->add_option("--step", tr_step, "step size h, for files without a header");
+  traj->add_option("--order", tro.order, "claimed order of the method (judged from the log-log slope)")
+      ->check(CLI::Range(1, 20));
+  traj->add_option("--preserves", tr_preserves,
+                   "claimed exact invariants: casimir, energy, orthogonality, spatial_momentum (comma-separated)")
+      ->delimiter(',');
+  traj->add_option("--tolerance", tro.tolerance,
+                   "allowed error against the reference, relative to |Pi(0)| (default 0.05: catches wrong equations)")
+      ->check(CLI::PositiveNumber);
+  traj->add_option("--report", tr_report, "write report.md, junit.xml, verdicts.json and figures/ into this directory");
+  traj->add_option("--junit", tr_junit, "also write the JUnit XML to this file");
+  traj->add_flag("--quiet,-q", tr_quiet, "print only the summary");
 
   auto* list = app.add_subcommand("list", "list the registered properties");
   auto* slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
@@ -218,7 +270,30 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   try {
-    if (*check) return gm::run_check(co);
+    if (*check) {
+      if (!student_file.empty()) {
+        if (check->count("--subject")) throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
+        bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
+        bo.exact = co.scalar == "all" || co.scalar == "exact";
+        return gm::run_student_check(student_file, co, bo);
+      }
+      return gm::run_builtin_check(subject, co);
+    }
+    if (*klass) {
+      if (class_opts.check.report_dir.size()) class_opts.report_dir = class_opts.check.report_dir;
+      class_opts.check.report_dir.clear();
+      class_opts.front_door = gm::front_door();
+      class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
+      class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
+      return gm::harness::run_class(class_opts, gm::harness::load_toolchain(gm::harness::default_toolchain_path()));
+    }
+    if (*traj) {
+      if (!tr_system.empty()) tro.params.system = tr_system;
+      if (!tr_inertia.empty()) tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
+      if (!tr_step.empty()) tro.params.step = tr_step;
+      tro.preserves.insert(tr_preserves.begin(), tr_preserves.end());
+      return gm::run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);
+    }
     if (*list) return gm::run_list();
     if (*slots) return gm::run_slots();
     if (*subjects) return gm::run_subjects();

@@ -1,0 +1,335 @@
+#include "harness/check.hpp"
+
+#include "harness/isolate.hpp"
+#include "harness/portrait.hpp"
+#include "harness/verdict_io.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace gm::harness {
+
+namespace {
+
+struct Item {
+  const Property* property;
+  ScalarKind kind;
+  std::string integrator;  // integrator-scoped properties: the one integrator this item drives
+};
+
+template <class Fn>
+decltype(auto) with_scalar(ScalarKind k, Fn&& fn) {
+  switch (k) {
+    case ScalarKind::Double: return fn(static_cast<double*>(nullptr));
+    case ScalarKind::MP50: return fn(static_cast<Real50*>(nullptr));
+    case ScalarKind::Exact: break;
+  }
+  return fn(static_cast<Rational*>(nullptr));
+}
+
+bool subject_provides(const SubjectSet& s, ScalarKind k, const std::string& slot) {
+  return with_scalar(k, [&](auto* tag) {
+    using T = std::remove_pointer_t<decltype(tag)>;
+    const Subject<T>* sub = s.get<T>();
+    return sub != nullptr && sub->provides(slot);
+  });
+}
+
+bool has_step(const Property& p, const auto& integrator) {
+  switch (p.step) {
+    case StepKind::RigidBody: return static_cast<bool>(integrator.rigid_body_step);
+    case StepKind::Manakov: return static_cast<bool>(integrator.manakov_step);
+    case StepKind::None: break;
+  }
+  return true;
+}
+
+// The integrators of `s` in scalar k that property p drives.
+std::vector<std::string> integrators_for(const Property& p, const SubjectSet& s, ScalarKind k) {
+  if (k == ScalarKind::Exact) return {};
+  return with_scalar(k, [&](auto* tag) {
+    using T = std::remove_pointer_t<decltype(tag)>;
+    std::vector<std::string> names;
+    if constexpr (!is_exact_v<T>) {
+      if (const Subject<T>* sub = s.get<T>())
+        for (const auto& i : sub->integrators)
+          if (has_step(p, i)) names.push_back(i.name);
+    }
+    return names;
+  });
+}
+
+// A copy of `s` whose subject in scalar k keeps only the named integrator.
+SubjectSet only_integrator(const SubjectSet& s, ScalarKind k, const std::string& name) {
+  SubjectSet out = s;
+  with_scalar(k, [&](auto* tag) {
+    using T = std::remove_pointer_t<decltype(tag)>;
+    if constexpr (!is_exact_v<T>) {
+      auto copy = std::make_shared<Subject<T>>(*s.get<T>());
+      std::erase_if(copy->integrators, [&](const Integrator<T>& i) { return i.name != name; });
+      if constexpr (std::is_same_v<T, double>)
+        out.d = copy;
+      else
+        out.mp = copy;
+    }
+    return 0;
+  });
+  return out;
+}
+
+Verdict base_verdict(const SubjectSet& s, const Item& item) {
+  Verdict v;
+  v.subject = s.name;
+  v.property = item.property->id;
+  v.spec = item.property->spec;
+  v.title = item.property->title;
+  v.scalar = scalar_name(item.kind);
+  v.integrator = item.integrator;
+  return v;
+}
+
+// Turns the end of a child that did not report verdicts into one verdict.
+Verdict abnormal_verdict(const SubjectSet& s, const Item& item, const TaskResult& t, const RunOptions& run) {
+  Verdict v = base_verdict(s, item);
+  v.seconds = t.seconds;
+  v.seed = derive_seed(run.seed, item.property->id + "/" + v.scalar + (v.integrator.empty() ? "" : "/" + v.integrator));
+  std::ostringstream m;
+  switch (t.status) {
+    case TaskResult::Status::TimedOut:
+      v.outcome = Outcome::Timeout;
+      m << "the check " << t.detail
+        << ": the code under test hangs (an endless loop, an iteration that never converges) or is far too slow "
+           "for this check.";
+      break;
+    case TaskResult::Status::Crashed:
+      v.outcome = Outcome::Crash;
+      if (t.signal != 0)
+        m << "the process running this check was " << t.detail
+          << ": the code under test crashed (an index out of range, a null or dangling pointer, unbounded "
+             "recursion, a failed assertion, ...). No counterexample could be shrunk; replay the check with the "
+             "command below, under a debugger if need be.";
+      else
+        m << "the process running this check " << t.detail << ".";
+      break;
+    case TaskResult::Status::Threw:
+      v.outcome = Outcome::Error;
+      m << "the harness could not run this check: it " << t.detail;
+      break;
+    case TaskResult::Status::Ok:
+      v.outcome = Outcome::Error;
+      m << "the check returned a result the harness cannot read";
+      break;
+  }
+  v.message = m.str();
+  if (!t.output.empty()) {
+    std::string tail = t.output;
+    while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
+    v.message += "\nlast output of the process:\n" + tail;
+  }
+  return v;
+}
+
+// NOT PROVIDED verdicts say why in terms a student can act on.
+void explain_not_provided(Verdict& v, const Property& p, const SubjectSet& s, const SubjectInfo& info) {
+  if (v.outcome != Outcome::NotProvided) return;
+  const auto kind = scalar_from_name(v.scalar);
+  if (!kind) return;
+  if (auto it = info.scalar_unavailable.find(v.scalar); it != info.scalar_unavailable.end()) {
+    v.message = it->second;
+    return;
+  }
+  for (const auto& need : p.needs) {
+    if (!is_slot_name(need) || subject_provides(s, *kind, need)) continue;
+    if (auto sc = info.slot_notes.find(v.scalar); sc != info.slot_notes.end())
+      if (auto n = sc->second.find(need); n != sc->second.end()) {
+        v.message = "needs slot '" + need + "': " + n->second;
+        return;
+      }
+    if (*kind != ScalarKind::Double && subject_provides(s, ScalarKind::Double, need)) {
+      v.message = "needs slot '" + need + "', which is provided for double only (it is not a function template "
+                  "on the scalar), so this check cannot run in " + v.scalar;
+      return;
+    }
+    v.message = "needs slot '" + need + "', which is not provided";
+    return;
+  }
+  if (p.scope == Scope::Integrator && *kind == ScalarKind::MP50 && !integrators_for(p, s, ScalarKind::Double).empty())
+    v.message = "the integrators are provided for double only (their steps are not function templates on the "
+                "scalar), so this check cannot run in mp50";
+}
+
+std::vector<IntegratorInfo> integrator_info(const SubjectSet& s) {
+  std::vector<IntegratorInfo> out;
+  auto add = [&](const auto* sub, const char* scalar) {
+    if (!sub) return;
+    for (const auto& i : sub->integrators) {
+      auto it = std::find_if(out.begin(), out.end(), [&](const IntegratorInfo& x) { return x.name == i.name; });
+      if (it == out.end()) {
+        IntegratorInfo info;
+        info.name = i.name;
+        if (const IntegratorClaims* c = s.claims_for(i.name)) {
+          info.has_claims = true;
+          info.claims = *c;
+        }
+        if (i.rigid_body_step) info.steps.push_back("rigid_body_step");
+        if (i.manakov_step) info.steps.push_back("manakov_step");
+        out.push_back(info);
+        it = out.end() - 1;
+      }
+      it->scalars.push_back(scalar);
+    }
+  };
+  add(s.d.get(), "double");
+  add(s.mp.get(), "mp50");
+  return out;
+}
+
+}  // namespace
+
+int scalar_rank(const std::string& scalar) {
+  if (scalar == "double") return 0;
+  if (scalar == "mp50") return 1;
+  if (scalar == "exact") return 2;
+  return 3;
+}
+
+std::optional<ScalarKind> scalar_from_name(const std::string& name) {
+  if (name == "double") return ScalarKind::Double;
+  if (name == "mp50") return ScalarKind::MP50;
+  if (name == "exact") return ScalarKind::Exact;
+  return std::nullopt;
+}
+
+int CheckResult::count(Outcome o) const {
+  return static_cast<int>(std::count_if(verdicts.begin(), verdicts.end(), [o](const Verdict& v) { return v.outcome == o; }));
+}
+
+bool CheckResult::ok() const {
+  return count(Outcome::Fail) + count(Outcome::Crash) + count(Outcome::Timeout) + count(Outcome::Error) == 0;
+}
+
+std::string reproduce_command(const CheckResult& r, const Verdict& v) {
+  if (!r.info.randomised) return r.info.reproduce_prefix;
+  std::string prefix = r.info.reproduce_prefix.empty() ? "build/bin/geomech check --subject " + r.subject
+                                                        : r.info.reproduce_prefix;
+  std::string cmd = prefix + " --property " + v.property + " --scalar " + v.scalar;
+  if (!v.integrator.empty()) cmd += " --integrator " + v.integrator;
+  if (!v.reproduce.empty())
+    cmd += " --reproduce '" + v.reproduce + "'";
+  else
+    cmd += " --seed " + std::to_string(r.seed);
+  return cmd;
+}
+
+CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckConfig& cfg) {
+  const auto start = std::chrono::steady_clock::now();
+  CheckResult result;
+  result.subject = s.name;
+  result.description = s.description;
+  result.info = info;
+  result.seed = cfg.run.seed;
+  result.integrators = integrator_info(s);
+  for (ScalarKind k : {ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact})
+    for (const auto& slot : subject_slots())
+      if (subject_provides(s, k, slot.name)) result.provided[scalar_name(k)].push_back(slot.name);
+
+  std::vector<Item> items;
+  for (const auto& p : properties()) {
+    if (!cfg.properties.empty() && std::find(cfg.properties.begin(), cfg.properties.end(), p.id) == cfg.properties.end())
+      continue;
+    if (!cfg.spec_prefix.empty() && p.spec.rfind(cfg.spec_prefix, 0) != 0) continue;
+    for (ScalarKind k : cfg.scalars) {
+      if (!p.runs_in(k)) continue;
+      if (p.scope == Scope::Integrator) {
+        auto names = integrators_for(p, s, k);
+        if (!cfg.integrator.empty()) std::erase_if(names, [&](const std::string& n) { return n != cfg.integrator; });
+        if (!names.empty()) {
+          for (const auto& n : names) items.push_back(Item{&p, k, n});
+          continue;
+        }
+      }
+      items.push_back(Item{&p, k, {}});
+    }
+  }
+  {
+    std::ostringstream sel;
+    if (cfg.properties.empty() && cfg.spec_prefix.empty())
+      sel << "all " << properties().size() << " properties";
+    else {
+      sel << "selected properties:";
+      for (const auto& p : cfg.properties) sel << " --property " << p;
+      if (!cfg.spec_prefix.empty()) sel << " --spec " << cfg.spec_prefix;
+    }
+    if (cfg.scalars.size() < 3) {
+      sel << "; scalars:";
+      for (auto k : cfg.scalars) sel << " " << scalar_name(k);
+    }
+    if (!cfg.integrator.empty()) sel << "; integrator " << cfg.integrator;
+    result.selection = sel.str();
+  }
+
+  std::vector<std::function<std::string()>> tasks;
+  for (const auto& item : items) {
+    tasks.push_back([&s, item, &cfg]() {
+      if (item.integrator.empty()) return verdicts_to_string(run_property(*item.property, s, item.kind, cfg.run));
+      const SubjectSet one = only_integrator(s, item.kind, item.integrator);
+      return verdicts_to_string(run_property(*item.property, one, item.kind, cfg.run));
+    });
+  }
+  const std::size_t n_items = tasks.size();
+  auto portrait_tasks = cfg.portraits ? portrait_task_list(s, cfg) : std::vector<PortraitTask>{};
+  for (const auto& pt : portrait_tasks) tasks.push_back(pt.run);
+
+  IsolationOptions io;
+  io.jobs = cfg.jobs;
+  io.timeout_seconds = cfg.timeout_seconds;
+  io.memory_limit_mb = cfg.memory_limit_mb;
+  io.isolate = cfg.isolate;
+  std::size_t finished = 0;
+  const bool show_progress = cfg.progress && ::isatty(STDERR_FILENO);
+  io.on_finished = [&](std::size_t) {
+    ++finished;
+    if (show_progress) std::fprintf(stderr, "\rgeomech: %zu/%zu checks done", finished, tasks.size());
+  };
+  const auto results = run_isolated(tasks, io);
+  if (show_progress) std::fprintf(stderr, "\r%60s\r", "");
+
+  for (std::size_t i = 0; i < n_items; ++i) {
+    const Item& item = items[i];
+    const TaskResult& t = results[i];
+    std::vector<Verdict> vs;
+    if (t.status == TaskResult::Status::Ok) {
+      try {
+        vs = verdicts_from_string(t.payload);
+      } catch (const std::exception& e) {
+        TaskResult bad = t;
+        bad.status = TaskResult::Status::Ok;
+        vs = {abnormal_verdict(s, item, bad, cfg.run)};
+        vs.back().message += std::string(" (") + e.what() + ")";
+      }
+    } else {
+      vs = {abnormal_verdict(s, item, t, cfg.run)};
+    }
+    for (auto& v : vs) {
+      explain_not_provided(v, *item.property, s, info);
+      result.verdicts.push_back(std::move(v));
+    }
+  }
+  for (std::size_t j = 0; j < portrait_tasks.size(); ++j)
+    result.portraits.push_back(portrait_from_task(portrait_tasks[j], results[n_items + j]));
+
+  std::stable_sort(result.verdicts.begin(), result.verdicts.end(), [](const Verdict& a, const Verdict& b) {
+    if (a.property != b.property) return a.property < b.property;
+    if (a.scalar != b.scalar) return scalar_rank(a.scalar) < scalar_rank(b.scalar);
+    return a.integrator < b.integrator;
+  });
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace gm::harness

@@ -1,0 +1,78 @@
+// The harness: every registered property against one subject (the reference, a negative
+// control, or someone else's implementation), each (property, scalar, integrator) isolated in
+// its own child process, gathered into a CheckResult that the report writers turn into
+// Markdown, JUnit XML, JSON and the console summary.
+//
+// Nothing is silently skipped: a property whose slots the subject does not fill, or which runs
+// in a scalar the subject has no instantiation for, gets a NOT PROVIDED verdict with the reason.
+#pragma once
+
+#include "properties/runner.hpp"
+
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace gm::harness {
+
+// What is known about a subject beyond its slots: where it comes from and why parts of it are
+// missing (a scalar it could not be compiled for, a slot that did not compile in a scalar, ...).
+struct SubjectInfo {
+  std::string source;            // the student's file, when there is one
+  std::string reproduce_prefix;  // the command that re-runs this check, e.g. "./geomech check my.cpp"
+  std::map<std::string, std::string> scalar_unavailable;                // scalar -> reason
+  std::map<std::string, std::map<std::string, std::string>> slot_notes;  // scalar -> slot -> reason
+  std::vector<std::string> warnings;                                    // shown at the top of the report
+  bool randomised = true;  // verdicts come from random cases (seeds, replay by --property); false for trajectory files
+};
+
+struct CheckConfig {
+  std::vector<std::string> properties;  // only these (empty: all)
+  std::string spec_prefix;              // only properties whose spec entry starts with this
+  std::vector<ScalarKind> scalars{ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact};
+  std::string integrator;               // only this integrator (empty: all)
+  RunOptions run;                       // seed, case counts, reproduce string
+  double timeout_seconds = 60;          // per (property, scalar, integrator)
+  int jobs = 1;                         // children at once
+  bool isolate = true;                  // fork per property (false: in-process, for a debugger)
+  long memory_limit_mb = 4096;
+  bool progress = false;                // a progress line on stderr
+  bool portraits = true;                // integrator pictures (convergence, invariants) besides the verdicts
+};
+
+struct IntegratorInfo {
+  std::string name;
+  bool has_claims = false;
+  IntegratorClaims claims;
+  std::vector<std::string> steps;    // "rigid_body_step", "manakov_step"
+  std::vector<std::string> scalars;  // the scalars it is instantiated in
+};
+
+struct CheckResult {
+  std::string subject;
+  std::string description;
+  SubjectInfo info;
+  std::uint64_t seed = 0;
+  std::string selection;  // the property selection, in words ("all properties", "--property x")
+  std::vector<Verdict> verdicts;  // sorted by property, then scalar (double, mp50, exact), then integrator
+  std::map<std::string, std::vector<std::string>> provided;  // scalar -> slots it fills
+  std::vector<IntegratorInfo> integrators;
+  std::vector<Verdict> portraits;  // integrator pictures: verdict-shaped carriers of figure series
+  double seconds = 0;
+
+  int count(Outcome o) const;
+  bool ok() const;            // no FAIL, CRASH, TIMEOUT or ERROR
+  int exit_code() const { return ok() ? 0 : 1; }
+};
+
+CheckResult run_check(const SubjectSet& subject, const SubjectInfo& info, const CheckConfig& config);
+
+// The command that replays one verdict (`prefix --property p --scalar s [--integrator i] ...`).
+std::string reproduce_command(const CheckResult& r, const Verdict& v);
+
+// Scalars in a stable order, and back from names.
+int scalar_rank(const std::string& scalar);
+std::optional<ScalarKind> scalar_from_name(const std::string& name);
+
+}  // namespace gm::harness

@@ -1,0 +1,226 @@
+#include "harness/class_mode.hpp"
+
+#include "harness/isolate.hpp"
+#include "harness/process.hpp"
+#include "harness/report.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+namespace gm::harness {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+bool registers_student(const fs::path& p) {
+  std::ifstream f(p);
+  std::ostringstream os;
+  os << f.rdbuf();
+  return os.str().find("GEOMECH_STUDENT(") != std::string::npos;
+}
+
+struct Row {
+  Implementation impl;
+  bool built = false;
+  std::string build_message;
+  double build_seconds = 0;
+  int exit_code = -1;
+  double check_seconds = 0;
+  std::string problem;  // the check program itself failed to run properly
+  json report;          // verdicts.json
+};
+
+std::string cell(int pass, int run, int np, int problems) {
+  if (run == 0 && np == 0) return "-";
+  std::ostringstream os;
+  os << pass << "/" << run;
+  if (problems > 0) os << " (" << problems << " bad)";
+  if (np > 0) os << " +" << np << " n/p";
+  return os.str();
+}
+
+}  // namespace
+
+std::vector<Implementation> find_implementations(const std::string& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw std::runtime_error(dir + " is not a folder");
+  std::vector<Implementation> out;
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    if (e.is_regular_file() && e.path().extension() == ".cpp") {
+      out.push_back({e.path().stem().string(), e.path().string()});
+    } else if (e.is_directory()) {
+      std::vector<fs::path> sources;
+      for (const auto& f : fs::directory_iterator(e.path(), ec))
+        if (f.is_regular_file() && f.path().extension() == ".cpp" && registers_student(f.path()))
+          sources.push_back(f.path());
+      if (sources.size() == 1) out.push_back({e.path().filename().string(), sources.front().string()});
+    }
+  }
+  if (ec) throw std::runtime_error("cannot read " + dir + ": " + ec.message());
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  for (std::size_t i = 1; i < out.size(); ++i)
+    if (out[i].name == out[i - 1].name)
+      throw std::runtime_error("two implementations in " + dir + " are both named '" + out[i].name +
+                               "' (a file and a folder); rename one");
+  if (out.empty())
+    throw std::runtime_error(dir + " holds no implementation (*.cpp files, or folders with one .cpp using GEOMECH_STUDENT)");
+  return out;
+}
+
+int run_class(const ClassOptions& o, const Toolchain& tc) {
+  const auto impls = find_implementations(o.dir);
+  const std::string report_dir =
+      o.report_dir.empty() ? "geomech-reports/" + fs::path(o.dir).lexically_normal().filename().string() : o.report_dir;
+  std::error_code ec;
+  fs::create_directories(report_dir, ec);
+  if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
+  const std::string front = o.front_door.empty() ? "geomech" : o.front_door;
+
+  std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir << ", " << o.jobs
+            << " at a time\n";
+  std::vector<std::function<std::string()>> tasks;
+  for (const auto& impl : impls) {
+    tasks.push_back([&, impl]() {
+      json j;
+      BuildOptions bo = o.build;
+      bo.jobs = 1;
+      bo.name = impl.name;
+      const BuildResult b = build_student(impl.source, tc, bo);
+      j["built"] = b.ok;
+      j["build_message"] = b.message;
+      j["build_seconds"] = b.seconds;
+      if (!b.ok) return j.dump(-1, ' ', false, json::error_handler_t::replace);
+      CheckCliOptions co = o.check;
+      co.jobs = 1;
+      co.quiet = true;
+      co.report_dir = (fs::path(report_dir) / impl.name).string();
+      std::vector<std::string> argv{b.program};
+      const auto args = to_args(co);
+      argv.insert(argv.end(), args.begin(), args.end());
+      argv.insert(argv.end(), {"--name", impl.name, "--source", impl.source, "--build-notes", b.notes_file,
+                               "--reproduce-prefix", front + " check " + shell_quote(impl.source)});
+      const ProcessResult pr = run_process(ProcessSpec{argv, {}, false});
+      j["exit_code"] = pr.exit_code;
+      j["check_seconds"] = pr.seconds;
+      if (pr.exit_code != 0 && pr.exit_code != 1)
+        j["problem"] = "the check program ended with " +
+                       (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
+                       pr.output.substr(0, 2000);
+      return j.dump(-1, ' ', false, json::error_handler_t::replace);
+    });
+  }
+  IsolationOptions io;
+  io.jobs = o.jobs;
+  io.timeout_seconds = o.timeout_per_implementation;
+  io.memory_limit_mb = 0;  // the compilers need what they need
+  std::size_t done = 0;
+  io.on_finished = [&](std::size_t i) {
+    std::cerr << "  [" << ++done << "/" << impls.size() << "] " << impls[i].name << "\n";
+  };
+  const auto results = run_isolated(tasks, io);
+
+  std::vector<Row> rows;
+  for (std::size_t i = 0; i < impls.size(); ++i) {
+    Row row;
+    row.impl = impls[i];
+    const TaskResult& t = results[i];
+    if (t.status != TaskResult::Status::Ok) {
+      row.problem = "checking it " + (t.detail.empty() ? std::string("failed") : t.detail);
+      rows.push_back(row);
+      continue;
+    }
+    const json j = json::parse(t.payload);
+    row.built = j.at("built").get<bool>();
+    row.build_message = j.value("build_message", "");
+    row.build_seconds = j.value("build_seconds", 0.0);
+    row.exit_code = j.value("exit_code", -1);
+    row.check_seconds = j.value("check_seconds", 0.0);
+    row.problem = j.value("problem", "");
+    if (row.built && row.problem.empty()) {
+      std::ifstream f(fs::path(report_dir) / impls[i].name / "verdicts.json");
+      try {
+        row.report = json::parse(f);
+      } catch (const std::exception& e) {
+        row.problem = std::string("its report cannot be read: ") + e.what();
+      }
+    }
+    rows.push_back(row);
+  }
+
+  // The summary table.
+  const auto& areas = area_names();
+  std::ostringstream md, console;
+  md << "# geomech class report: " << o.dir << "\n\n"
+     << impls.size() << " implementations. Each cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or "
+        "ERROR), then the checks not provided (n/p). Details in each implementation's report.\n\n"
+     << "| implementation | result |";
+  for (const auto& a : areas) md << " " << a << " |";
+  md << " report |\n|---|---|";
+  for (std::size_t i = 0; i < areas.size(); ++i) md << "---|";
+  md << "---|\n";
+  console << "\n" << std::left << std::setw(26) << "implementation" << std::setw(18) << "result";
+  for (const auto& a : areas) console << std::setw(20) << a;
+  console << "\n" << std::string(26 + 18 + 20 * areas.size(), '-') << "\n";
+  int bad = 0;
+  for (const auto& row : rows) {
+    std::string result;
+    std::map<std::string, std::array<int, 4>> by_area;  // pass, run, np, problems
+    if (!row.built && row.problem.empty()) {
+      result = "DOES NOT COMPILE";
+    } else if (!row.problem.empty()) {
+      result = "NOT CHECKED";
+    } else {
+      for (const auto& v : row.report.at("verdicts")) {
+        auto& c = by_area[v.value("area", "?")];
+        const std::string out = v.at("outcome").get<std::string>();
+        if (out == "NOT PROVIDED") {
+          ++c[2];
+          continue;
+        }
+        ++c[1];
+        if (out == "PASS")
+          ++c[0];
+        else
+          ++c[3];
+      }
+      result = row.exit_code == 0 ? "PASS" : "FAIL";
+    }
+    if (result != "PASS") ++bad;
+    md << "| " << row.impl.name << " | " << (result == "PASS" ? result : "**" + result + "**") << " |";
+    console << std::setw(26) << row.impl.name << std::setw(18) << result;
+    for (const auto& a : areas) {
+      auto it = by_area.find(a);
+      const std::string c = it == by_area.end() ? "-" : cell(it->second[0], it->second[1], it->second[2], it->second[3]);
+      md << " " << c << " |";
+      console << std::setw(20) << c;
+    }
+    const std::string link = row.impl.name + "/report.md";
+    md << " " << (row.built && row.problem.empty() ? "[" + link + "](" + link + ")" : "-") << " |\n";
+    console << "\n";
+  }
+  md << "\n";
+  for (const auto& row : rows) {
+    if (!row.built && row.problem.empty()) {
+      md << "## " << row.impl.name << ": does not compile\n\n```\n" << row.build_message << "\n```\n\n";
+      console << "\n" << row.impl.name << " does not compile:\n" << row.build_message << "\n";
+    } else if (!row.problem.empty()) {
+      md << "## " << row.impl.name << ": not checked\n\n```\n" << row.problem << "\n```\n\n";
+      console << "\n" << row.impl.name << ": " << row.problem << "\n";
+    }
+  }
+  write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
+  std::cout << console.str() << "\nsummary: " << report_dir << "/summary.md; one report per implementation in "
+            << report_dir << "/<name>/report.md\n";
+  return bad == 0 ? 0 : 1;
+}
+
+}  // namespace gm::harness

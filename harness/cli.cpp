@@ -1,0 +1,123 @@
+#include "harness/cli.hpp"
+
+#include "harness/report.hpp"
+
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <thread>
+#include <algorithm>
+
+namespace gm::harness {
+
+int default_jobs() { return static_cast<int>(std::max(1u, std::thread::hardware_concurrency())); }
+
+void add_check_options(CLI::App& app, CheckCliOptions& o) {
+  app.add_option("--property,-p", o.properties, "only these properties (repeatable; see `geomech list`)");
+  app.add_option("--spec", o.spec_prefix, "only properties whose spec entry starts with this (e.g. s2.)");
+  app.add_option("--scalar", o.scalar, "double, mp50, exact or all (default)");
+  app.add_option("--integrator", o.integrator, "only this integrator, for integrator properties");
+  app.add_option("--seed", o.seed, "base seed (default 0: runs are reproducible)");
+  app.add_option("--cases", o.cases, "cases per property (default: each property's own)")->check(CLI::NonNegativeNumber);
+  app.add_option("--case-factor", o.case_factor, "multiply every default case count")->check(CLI::PositiveNumber);
+  app.add_option("--reproduce", o.reproduce, "RapidCheck reproduce string printed with a failure");
+  app.add_option("--timeout", o.timeout, "seconds allowed per property and scalar (default 60)")
+      ->check(CLI::PositiveNumber);
+  app.add_option("--jobs,-j", o.jobs, "checks run at once, each in its own process (default: the number of cores)")->check(CLI::Range(1, 256));
+  app.add_option("--memory-limit", o.memory_limit_mb, "address space per check, in MiB (default 4096)")
+      ->check(CLI::Range(64L, 1L << 30));
+  app.add_option("--report", o.report_dir, "write report.md, junit.xml, verdicts.json and figures/ into this directory");
+  app.add_option("--junit", o.junit, "also write the JUnit XML to this file");
+  app.add_flag("--no-isolation", o.no_isolation, "run checks in this process (for a debugger; a crash ends the run)");
+  app.add_flag("--no-portraits", o.no_portraits, "do not draw the integrator pictures");
+  app.add_flag("--quiet,-q", o.quiet, "print only the summary");
+}
+
+CheckConfig config_from(const CheckCliOptions& o) {
+  CheckConfig c;
+  c.properties = o.properties;
+  for (const auto& id : o.properties)
+    if (!find_property(id))
+      throw CLI::ValidationError("--property", "no property is named '" + id + "' (see `geomech list`)");
+  c.spec_prefix = o.spec_prefix;
+  if (o.scalar == "all") {
+    c.scalars = {ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact};
+  } else if (auto k = scalar_from_name(o.scalar)) {
+    c.scalars = {*k};
+  } else {
+    throw CLI::ValidationError("--scalar", "must be one of double, mp50, exact, all (got '" + o.scalar + "')");
+  }
+  c.integrator = o.integrator;
+  c.run.seed = o.seed;
+  c.run.cases = o.cases;
+  c.run.case_factor = o.case_factor;
+  c.run.reproduce = o.reproduce;
+  c.timeout_seconds = o.timeout;
+  c.jobs = o.jobs;
+  c.memory_limit_mb = o.memory_limit_mb;
+  c.isolate = !o.no_isolation;
+  c.portraits = !o.no_portraits && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty();
+  c.progress = !o.quiet;
+  return c;
+}
+
+std::vector<std::string> to_args(const CheckCliOptions& o) {
+  std::vector<std::string> a;
+  auto num = [](double x) {
+    std::ostringstream os;
+    os.precision(17);
+    os << x;
+    return os.str();
+  };
+  for (const auto& p : o.properties) a.insert(a.end(), {"--property", p});
+  if (!o.spec_prefix.empty()) a.insert(a.end(), {"--spec", o.spec_prefix});
+  if (o.scalar != "all") a.insert(a.end(), {"--scalar", o.scalar});
+  if (!o.integrator.empty()) a.insert(a.end(), {"--integrator", o.integrator});
+  a.insert(a.end(), {"--seed", std::to_string(o.seed)});
+  if (o.cases > 0) a.insert(a.end(), {"--cases", std::to_string(o.cases)});
+  if (o.case_factor != 1.0) a.insert(a.end(), {"--case-factor", num(o.case_factor)});
+  if (!o.reproduce.empty()) a.insert(a.end(), {"--reproduce", o.reproduce});
+  a.insert(a.end(), {"--timeout", num(o.timeout)});
+  a.insert(a.end(), {"--jobs", std::to_string(o.jobs)});
+  a.insert(a.end(), {"--memory-limit", std::to_string(o.memory_limit_mb)});
+  if (!o.report_dir.empty()) a.insert(a.end(), {"--report", o.report_dir});
+  if (!o.junit.empty()) a.insert(a.end(), {"--junit", o.junit});
+  if (o.no_isolation) a.push_back("--no-isolation");
+  if (o.no_portraits) a.push_back("--no-portraits");
+  if (o.quiet) a.push_back("--quiet");
+  return a;
+}
+
+int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const CheckCliOptions& o) {
+  const CheckConfig cfg = config_from(o);
+  std::optional<Catalogue> cat;
+  try {
+    cat = load_catalogue(default_catalogue_path());
+  } catch (const std::exception& e) {
+    std::cerr << "geomech: warning: " << e.what() << " (places in the notes will not be shown)\n";
+  }
+  const Catalogue* c = cat ? &*cat : nullptr;
+  const CheckResult r = run_check(subject, info, cfg);
+  if (o.quiet) {
+    std::cout << r.subject << ": " << (r.ok() ? "PASS" : "FAIL") << " (" << r.count(Outcome::Pass) << " PASS, "
+              << r.count(Outcome::Fail) << " FAIL, " << r.count(Outcome::NotProvided) << " NOT PROVIDED, "
+              << r.count(Outcome::Crash) << " CRASH, " << r.count(Outcome::Timeout) << " TIMEOUT, "
+              << r.count(Outcome::Error) << " ERROR)\n";
+  } else {
+    std::cout << console_report(r, c);
+  }
+  int status = r.exit_code();
+  try {
+    if (!o.report_dir.empty()) {
+      write_report_dir(r, o.report_dir, c);
+      std::cout << "report: " << o.report_dir << "/report.md (JUnit: " << o.report_dir << "/junit.xml)\n";
+    }
+    if (!o.junit.empty()) write_file_atomically(o.junit, junit_report(r));
+  } catch (const std::exception& e) {
+    std::cerr << "geomech: " << e.what() << "\n";
+    status = 2;
+  }
+  return status;
+}
+
+}  // namespace gm::harness

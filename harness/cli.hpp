@@ -1,0 +1,49 @@
+// The options of a check, shared by `geomech check` (built-in subjects) and by the program that
+// checks a student's implementation (student/driver.cpp), so both accept the same flags and a
+// reproduce command printed by one works with the other.
+#pragma once
+
+#include "harness/check.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <string>
+#include <vector>
+
+namespace gm::harness {
+
+int default_jobs();  // the number of cores (at least 1)
+
+struct CheckCliOptions {
+  std::vector<std::string> properties;
+  std::string spec_prefix;
+  std::string scalar = "all";
+  std::string integrator;
+  std::uint64_t seed = 0;
+  int cases = 0;
+  double case_factor = 1.0;
+  std::string reproduce;
+  double timeout = 60;
+  int jobs = default_jobs();  // the cores of this machine
+  long memory_limit_mb = 4096;
+  std::string report_dir;  // write report.md, junit.xml, verdicts.json, figures/ here
+  std::string junit;       // also write the JUnit XML here
+  bool no_isolation = false;
+  bool no_portraits = false;
+  bool quiet = false;      // only the summary line and the report's path
+};
+
+void add_check_options(CLI::App& app, CheckCliOptions& o);
+
+// Turns the options into a CheckConfig (throws CLI::ValidationError for a bad --scalar or an
+// unknown --property).
+CheckConfig config_from(const CheckCliOptions& o);
+
+// The options again as command-line arguments (to hand them to a student's check program).
+std::vector<std::string> to_args(const CheckCliOptions& o);
+
+// Runs the check, prints the console report, writes the report files; returns the exit status
+// (0 all good, 1 something failed, 2 the report could not be written).
+int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const CheckCliOptions& o);
+
+}  // namespace gm::harness

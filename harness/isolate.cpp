@@ -1,0 +1,273 @@
+#include "harness/isolate.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <iostream>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define GM_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define GM_UNDER_ASAN 1
+#endif
+#endif
+
+namespace gm::harness {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr std::size_t kOutputTail = 4096;
+
+struct Running {
+  std::size_t index;
+  pid_t pid;
+  int result_fd;
+  int output_fd;
+  Clock::time_point start;
+  std::string result;
+  std::string output;
+};
+
+void append_tail(std::string& buf, const char* data, std::size_t n) {
+  buf.append(data, n);
+  if (buf.size() > 2 * kOutputTail) buf.erase(0, buf.size() - kOutputTail);
+}
+
+// Reads what is available; returns false at end of file (or on an error other than EAGAIN).
+bool drain(int fd, std::string& into, bool tail_only) {
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n > 0) {
+      if (tail_only)
+        append_tail(into, buf, static_cast<std::size_t>(n));
+      else
+        into.append(buf, static_cast<std::size_t>(n));
+      continue;
+    }
+    if (n == 0) return false;
+    if (errno == EINTR) continue;
+    return errno == EAGAIN || errno == EWOULDBLOCK;
+  }
+}
+
+void write_all(int fd, const std::string& s) {
+  std::size_t off = 0;
+  while (off < s.size()) {
+    const ssize_t n = ::write(fd, s.data() + off, s.size() - off);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return;
+    }
+    off += static_cast<std::size_t>(n);
+  }
+}
+
+[[noreturn]] void child_main(const std::function<std::string()>& task, int result_fd, int output_fd,
+                             long memory_limit_mb, pid_t parent) {
+  ::setpgid(0, 0);  // its own process group, so a timeout can kill whatever it started
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != parent) ::_exit(120);
+  ::dup2(output_fd, STDOUT_FILENO);
+  ::dup2(output_fd, STDERR_FILENO);
+  ::close(output_fd);
+  std::setvbuf(stdout, nullptr, _IONBF, 0);
+  std::cout << std::unitbuf;
+  rlimit no_core{0, 0};
+  ::setrlimit(RLIMIT_CORE, &no_core);
+#ifndef GM_UNDER_ASAN
+  if (memory_limit_mb > 0) {
+    const rlim_t bytes = static_cast<rlim_t>(memory_limit_mb) * 1024 * 1024;
+    rlimit as{bytes, bytes};
+    ::setrlimit(RLIMIT_AS, &as);
+  }
+#else
+  (void)memory_limit_mb;
+#endif
+  std::string message;
+  try {
+    const std::string payload = task();
+    write_all(result_fd, "R" + payload);
+    ::close(result_fd);
+    ::_exit(0);
+  } catch (const std::exception& e) {
+    message = e.what();
+  } catch (...) {
+    message = "an exception that is not a std::exception";
+  }
+  write_all(result_fd, "E" + message);
+  ::close(result_fd);
+  ::_exit(0);
+}
+
+TaskResult finish(Running& r, int status) {
+  TaskResult t;
+  t.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
+  t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
+  if (WIFSIGNALED(status)) {
+    t.status = TaskResult::Status::Crashed;
+    t.signal = WTERMSIG(status);
+    t.detail = "killed by " + describe_signal(t.signal);
+    return t;
+  }
+  t.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (t.exit_code == 0 && !r.result.empty() && r.result[0] == 'R') {
+    t.status = TaskResult::Status::Ok;
+    t.payload = r.result.substr(1);
+  } else if (t.exit_code == 0 && !r.result.empty() && r.result[0] == 'E') {
+    t.status = TaskResult::Status::Threw;
+    t.detail = "threw " + r.result.substr(1);
+  } else {
+    t.status = TaskResult::Status::Crashed;
+    t.detail = "exited with status " + std::to_string(t.exit_code) +
+               " without reporting a result (exit() or quick_exit() called by the code under test?)";
+  }
+  return t;
+}
+
+}  // namespace
+
+std::string describe_signal(int sig) {
+  const char* name = nullptr;
+  const char* what = ::strsignal(sig);
+  switch (sig) {
+    case SIGSEGV: name = "SIGSEGV"; break;
+    case SIGABRT: name = "SIGABRT"; break;
+    case SIGFPE: name = "SIGFPE"; break;
+    case SIGILL: name = "SIGILL"; break;
+    case SIGBUS: name = "SIGBUS"; break;
+    case SIGKILL: name = "SIGKILL"; break;
+    case SIGTERM: name = "SIGTERM"; break;
+    case SIGXCPU: name = "SIGXCPU"; break;
+    case SIGPIPE: name = "SIGPIPE"; break;
+    default: break;
+  }
+  std::string s = "signal " + std::to_string(sig);
+  if (name) s += " (" + std::string(name) + (what ? std::string(", ") + what : std::string()) + ")";
+  else if (what) s += " (" + std::string(what) + ")";
+  return s;
+}
+
+std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,
+                                     const IsolationOptions& o) {
+  std::vector<TaskResult> results(tasks.size());
+  if (!o.isolate) {
+    for (std::size_t i = 0; i < tasks.size(); ++i) {
+      const auto start = Clock::now();
+      try {
+        results[i].payload = tasks[i]();
+        results[i].status = TaskResult::Status::Ok;
+      } catch (const std::exception& e) {
+        results[i].status = TaskResult::Status::Threw;
+        results[i].detail = std::string("threw ") + e.what();
+      }
+      results[i].seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      if (o.on_finished) o.on_finished(i);
+    }
+    return results;
+  }
+
+  const int jobs = o.jobs < 1 ? 1 : o.jobs;
+  const auto timeout = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.timeout_seconds));
+  std::deque<Running> running;
+  std::size_t next = 0;
+  const pid_t self = ::getpid();
+
+  auto start_one = [&](std::size_t i) {
+    int rp[2], op[2];
+    if (::pipe2(rp, O_CLOEXEC) != 0 || ::pipe2(op, O_CLOEXEC) != 0)
+      throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error(std::string("cannot fork: ") + std::strerror(errno));
+    if (pid == 0) {
+      for (const auto& r : running) {  // the other children's pipes are not this child's business
+        ::close(r.result_fd);
+        ::close(r.output_fd);
+      }
+      ::close(rp[0]);
+      ::close(op[0]);
+      child_main(tasks[i], rp[1], op[1], o.memory_limit_mb, self);
+    }
+    ::close(rp[1]);
+    ::close(op[1]);
+    ::fcntl(rp[0], F_SETFL, O_NONBLOCK);
+    ::fcntl(op[0], F_SETFL, O_NONBLOCK);
+    running.push_back(Running{i, pid, rp[0], op[0], Clock::now(), {}, {}});
+  };
+
+  while (next < tasks.size() || !running.empty()) {
+    while (next < tasks.size() && static_cast<int>(running.size()) < jobs) start_one(next++);
+
+    std::vector<pollfd> fds;
+    for (const auto& r : running) {
+      if (r.result_fd >= 0) fds.push_back(pollfd{r.result_fd, POLLIN, 0});
+      if (r.output_fd >= 0) fds.push_back(pollfd{r.output_fd, POLLIN, 0});
+    }
+    ::poll(fds.data(), fds.size(), 20);
+
+    for (auto it = running.begin(); it != running.end();) {
+      Running& r = *it;
+      if (r.result_fd >= 0 && !drain(r.result_fd, r.result, false)) {
+        ::close(r.result_fd);
+        r.result_fd = -1;
+      }
+      if (r.output_fd >= 0 && !drain(r.output_fd, r.output, true)) {
+        ::close(r.output_fd);
+        r.output_fd = -1;
+      }
+      int status = 0;
+      const pid_t w = ::waitpid(r.pid, &status, WNOHANG);
+      bool done = false;
+      if (w == r.pid) {
+        // It has ended: whatever it wrote is in the pipes (or held open by a descendant).
+        if (r.result_fd >= 0) drain(r.result_fd, r.result, false);
+        if (r.output_fd >= 0) drain(r.output_fd, r.output, true);
+        ::kill(-r.pid, SIGKILL);  // descendants it may have left behind
+        results[r.index] = finish(r, status);
+        done = true;
+      } else if (Clock::now() - r.start > timeout) {
+        ::kill(-r.pid, SIGKILL);
+        ::kill(r.pid, SIGKILL);
+        ::waitpid(r.pid, &status, 0);
+        TaskResult t;
+        t.status = TaskResult::Status::TimedOut;
+        t.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
+        t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
+        char buf[96];
+        std::snprintf(buf, sizeof buf, "did not finish within %.0f s and was stopped", o.timeout_seconds);
+        t.detail = buf;
+        results[r.index] = t;
+        done = true;
+      }
+      if (done) {
+        if (r.result_fd >= 0) ::close(r.result_fd);
+        if (r.output_fd >= 0) ::close(r.output_fd);
+        const std::size_t index = r.index;
+        it = running.erase(it);
+        if (o.on_finished) o.on_finished(index);
+      } else {
+        ++it;
+      }
+    }
+  }
+  return results;
+}
+
+}  // namespace gm::harness

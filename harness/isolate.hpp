@@ -1,0 +1,48 @@
+// Isolation: each task runs in a forked child process, so that a segmentation fault, an abort, a
+// hang or a runaway allocation in the code under test ends that task alone. The child sends its
+// result back over a pipe; its stdout and stderr are captured (the last few kilobytes are kept,
+// to show with a crash). The parent runs up to `jobs` children at once and kills a child (and
+// its process group) that exceeds the timeout.
+//
+// The calling process must be single-threaded when it calls run_isolated (fork copies only the
+// calling thread).
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace gm::harness {
+
+struct IsolationOptions {
+  int jobs = 1;                  // children running at once
+  double timeout_seconds = 120;  // wall-clock limit per task
+  long memory_limit_mb = 4096;   // address-space limit of a child (not applied under AddressSanitizer)
+  bool isolate = true;           // false: run the tasks in this process, one after the other (debugging)
+  // Called in the parent as each task finishes (index, result), e.g. for progress output.
+  std::function<void(std::size_t)> on_finished;
+};
+
+struct TaskResult {
+  enum class Status {
+    Ok,        // the task returned; `payload` holds what it returned
+    Crashed,   // killed by a signal, or exited without a result (std::exit, a stray _exit, ...)
+    TimedOut,  // killed after the timeout
+    Threw,     // the task threw an exception outside the property machinery (message in `detail`)
+  };
+  Status status = Status::Crashed;
+  std::string payload;
+  std::string output;  // the tail of what the child wrote to stdout and stderr
+  std::string detail;  // how it ended, in words: "killed by signal 11 (SIGSEGV, segmentation fault)"
+  int signal = 0;
+  int exit_code = 0;
+  double seconds = 0;
+};
+
+std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,
+                                     const IsolationOptions& options);
+
+// "SIGSEGV (segmentation fault)" and the like.
+std::string describe_signal(int sig);
+
+}  // namespace gm::harness

@@ -1,0 +1,34 @@
+// Running other programs (the compiler, a student's check program) without a shell: argv in,
+// exit status and everything written to stdout and stderr out.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace gm::harness {
+
+struct ProcessResult {
+  int exit_code = -1;    // when it exited
+  int signal = 0;        // when a signal ended it
+  bool timed_out = false;
+  bool started = false;  // false: it could not be started (output says why)
+  std::string output;    // stdout and stderr, interleaved
+  double seconds = 0;
+};
+
+struct ProcessSpec {
+  std::vector<std::string> argv;
+  std::string output_file;  // when set, output goes (also) to this file instead of memory
+  bool pass_through = false;  // let the child write to our stdout/stderr (nothing captured)
+};
+
+// Runs the processes, at most `jobs` at once; timeout_seconds <= 0 means none.
+std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, int jobs, double timeout_seconds = 0);
+
+ProcessResult run_process(const ProcessSpec& spec, double timeout_seconds = 0);
+
+// The command as a shell would need it typed (for messages and reproduce lines).
+std::string shell_quote(const std::string& s);
+std::string shell_join(const std::vector<std::string>& argv);
+
+}  // namespace gm::harness

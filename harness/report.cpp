@@ -1,0 +1,649 @@
+#include "harness/report.hpp"
+
+#include "harness/svg.hpp"
+#include "harness/verdict_io.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace gm::harness {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const Property* property_of(const Verdict& v) { return find_property(v.property); }
+
+bool is_problem(Outcome o) {
+  return o == Outcome::Fail || o == Outcome::Crash || o == Outcome::Timeout || o == Outcome::Error;
+}
+
+std::string eps_text(double units) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.2g eps", units);
+  return buf;
+}
+
+std::string first_line(const std::string& s) {
+  const auto n = s.find('\n');
+  return n == std::string::npos ? s : s.substr(0, n);
+}
+
+std::string file_safe(const std::string& s) {
+  std::string out;
+  for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '-';
+  return out;
+}
+
+std::string row_name(const Verdict& v) { return v.property + (v.integrator.empty() ? "" : " [" + v.integrator + "]"); }
+
+std::string place_of(const Verdict& v, const Catalogue* c) {
+  if (c)
+    if (const SpecEntry* e = c->find(v.spec)) return e->place;
+  return {};
+}
+
+// Rows of the result table: property (+ integrator) -> scalar -> verdict, in verdict order.
+std::vector<std::pair<std::string, std::map<std::string, const Verdict*>>> table_rows(const CheckResult& r) {
+  std::vector<std::pair<std::string, std::map<std::string, const Verdict*>>> rows;
+  for (const auto& v : r.verdicts) {
+    const std::string name = row_name(v);
+    auto it = std::find_if(rows.begin(), rows.end(), [&](const auto& x) { return x.first == name; });
+    if (it == rows.end()) {
+      rows.push_back({name, {}});
+      it = rows.end() - 1;
+    }
+    it->second[v.scalar] = &v;
+  }
+  return rows;
+}
+
+bool nothing_ran(const std::map<std::string, const Verdict*>& by_scalar) {
+  for (const auto& [scalar, v] : by_scalar)
+    if (v->outcome != Outcome::NotProvided) return false;
+  return true;
+}
+
+std::string summary_counts(const CheckResult& r) {
+  std::ostringstream os;
+  bool first = true;
+  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error}) {
+    const int n = r.count(o);
+    if (n == 0 && o != Outcome::Pass && o != Outcome::Fail) continue;
+    os << (first ? "" : ", ") << n << " " << outcome_name(o);
+    first = false;
+  }
+  return os.str();
+}
+
+std::string seconds_text(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f s", s);
+  return buf;
+}
+
+// Groups the slots a subject lacks, with the properties that need them.
+struct Missing {
+  std::map<std::string, std::set<std::string>> by_reason;  // reason -> "property [scalar]" rows
+};
+
+Missing missing_of(const CheckResult& r) {
+  Missing m;
+  for (const auto& v : r.verdicts)
+    if (v.outcome == Outcome::NotProvided) m.by_reason[v.message].insert(v.property + " [" + v.scalar + "]");
+  return m;
+}
+
+std::string claimed_text(const IntegratorClaims& c, const std::string& claim) {
+  if (claim == "order") return c.order > 0 ? std::to_string(c.order) : "no";
+  bool b = false;
+  if (claim == "symmetric") b = c.symmetric;
+  if (claim == "casimir") b = c.casimir;
+  if (claim == "energy") b = c.energy;
+  if (claim == "orthogonality") b = c.orthogonality;
+  if (claim == "spectrum") b = c.spectrum;
+  if (claim == "poisson") b = c.poisson;
+  return b ? "yes" : "no";
+}
+
+const char* kClaims[] = {"order", "symmetric", "casimir", "energy", "orthogonality", "spectrum", "poisson"};
+
+std::string md_cell(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '|') out += "\\|";
+    else if (c == '\n') out += "<br>";
+    else out += c;
+  }
+  return out;
+}
+
+std::string fence(const std::string& s) {
+  // A code fence longer than any run of backticks inside.
+  std::size_t longest = 0, run = 0;
+  for (char c : s) {
+    run = c == '`' ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  const std::string f(std::max<std::size_t>(3, longest + 1), '`');
+  return f + "\n" + s + (s.empty() || s.back() == '\n' ? "" : "\n") + f + "\n";
+}
+
+std::string anchor_of(const Verdict& v) {
+  return file_safe(v.property + "-" + v.scalar + (v.integrator.empty() ? "" : "-" + v.integrator));
+}
+
+}  // namespace
+
+const std::vector<std::string>& area_names() {
+  static const std::vector<std::string> names = {"sec. 1", "sec. 2", "sec. 3", "momentum maps", "integrators"};
+  return names;
+}
+
+std::string area_of(const Verdict& v, const Catalogue* c) {
+  if (!v.integrator.empty()) return "integrators";
+  if (const Property* p = property_of(v); p && p->scope == Scope::Integrator) return "integrators";
+  std::string section;
+  if (c)
+    if (const SpecEntry* e = c->find(v.spec)) section = e->section;
+  if (section.empty()) section = v.spec.substr(0, v.spec.find('.'));
+  if (section == "1" || section == "s1") return "sec. 1";
+  if (section == "2" || section == "s2") return "sec. 2";
+  if (section == "3" || section == "s3") return "sec. 3";
+  return "momentum maps";
+}
+
+std::vector<ClaimRow> claim_rows(const CheckResult& r, const IntegratorInfo& integrator) {
+  // The claims an integrator can declare, then any other claim a check reported on.
+  std::vector<std::string> names(std::begin(kClaims), std::end(kClaims));
+  for (const auto& v : r.verdicts)
+    if (v.integrator == integrator.name)
+      for (const auto& f : v.claims)
+        if (std::find(names.begin(), names.end(), f.claim) == names.end()) names.push_back(f.claim);
+  std::vector<ClaimRow> rows;
+  for (const auto& claim : names) {
+    ClaimRow row;
+    row.claim = claim;
+    const std::string declared = claimed_text(integrator.claims, claim);
+    bool claimed = declared != "no";
+    bool found = false, holds = true;
+    std::vector<std::string> evidence;
+    for (const auto& v : r.verdicts) {
+      if (v.integrator != integrator.name) continue;
+      for (const auto& f : v.claims) {
+        if (f.claim != claim) continue;
+        found = true;
+        claimed = claimed || f.claimed;
+        holds = holds && f.holds;
+        evidence.push_back(v.scalar + ", " + v.property + ": " + f.evidence);
+      }
+    }
+    row.claimed = declared != "no" ? declared : claimed ? "yes" : "no";
+    if (!found)
+      row.status = claimed ? "claimed, not checked by any property" : "-";
+    else if (claimed)
+      row.status = holds ? "verified" : "FALSE CLAIM";
+    else
+      row.status = holds ? "holds, not claimed" : "does not hold (not claimed)";
+    for (const auto& e : evidence) row.evidence += (row.evidence.empty() ? "" : "\n") + e;
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+std::vector<Figure> report_figures(const CheckResult& r) {
+  struct Group {
+    std::string title, integrator;
+    std::vector<Series> series;
+  };
+  std::vector<std::pair<std::string, Group>> groups;  // file name -> group, in first-seen order
+  auto add = [&](const std::string& owner, const Verdict& v) {
+    for (const auto& s : v.series) {
+      const std::string file =
+          "figures/" + file_safe(owner + (v.integrator.empty() ? "" : "-" + v.integrator) + "-" + s.figure) + ".svg";
+      auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == file; });
+      if (it == groups.end()) {
+        Group g;
+        g.title = s.figure + (v.integrator.empty() ? "" : " - " + v.integrator) + " (" + owner + ")";
+        g.integrator = v.integrator;
+        groups.push_back({file, g});
+        it = groups.end() - 1;
+      }
+      Series copy = s;
+      if (copy.name.find(v.scalar) == std::string::npos) copy.name += " (" + v.scalar + ")";
+      it->second.series.push_back(std::move(copy));
+    }
+  };
+  for (const auto& p : r.portraits) add("portrait", p);
+  for (const auto& v : r.verdicts) add(v.property, v);
+  std::vector<Figure> out;
+  for (const auto& [file, g] : groups) out.push_back(Figure{file, svg_plot(g.title, g.series), g.integrator});
+  return out;
+}
+
+std::string console_report(const CheckResult& r, const Catalogue* c, bool details) {
+  std::ostringstream os;
+  os << "geomech check: subject '" << r.subject << "'";
+  if (!r.description.empty()) os << " (" << r.description << ")";
+  os << "\nseed " << r.seed << "; " << r.selection << "; residuals in units of eps * scale\n";
+  for (const auto& w : r.info.warnings) os << "warning: " << w << "\n";
+  os << "\n" << std::left << std::setw(44) << "property" << std::setw(30) << "spec entry (place)";
+  const char* scalars[] = {"double", "mp50", "exact"};
+  for (const char* s : scalars) os << std::setw(20) << s;
+  os << "\n" << std::string(44 + 30 + 60, '-') << "\n";
+  std::vector<std::string> not_run;
+  for (const auto& [name, by] : table_rows(r)) {
+    if (nothing_ran(by)) {
+      not_run.push_back(name);
+      continue;
+    }
+    const Verdict& any = *by.begin()->second;
+    std::string place = any.spec;
+    const std::string full = place_of(any, c);
+    if (!full.empty()) place += " " + full.substr(0, full.find(','));
+    if (place.size() > 29) place = place.substr(0, 28) + "~";
+    std::string shown = name.size() > 43 ? name.substr(0, 42) + "~" : name;
+    os << std::setw(44) << shown << std::setw(30) << place;
+    for (const char* s : scalars) {
+      auto it = by.find(s);
+      std::string cell = "-";
+      if (it != by.end()) {
+        cell = outcome_name(it->second->outcome);
+        if (it->second->outcome == Outcome::Pass && std::string(s) != "exact" && it->second->checks > 0)
+          cell += " " + eps_text(it->second->worst_eps_units);
+      }
+      os << std::setw(20) << cell;
+    }
+    os << "\n";
+  }
+  if (!not_run.empty()) {
+    os << "(" << not_run.size() << " more properties are not provided in any scalar:";
+    for (const auto& n : not_run) os << " " << n;
+    os << ")\n";
+  }
+  os << "\nsummary: " << summary_counts(r) << "  (" << seconds_text(r.seconds) << ")\n";
+  for (const auto& integ : r.integrators) {
+    os << "\nintegrator '" << integ.name << "' claims:";
+    for (const auto& row : claim_rows(r, integ))
+      if (row.status != "-") os << "\n  " << std::setw(18) << row.claim << std::setw(6) << row.claimed << row.status;
+    os << "\n";
+  }
+  if (details) {
+    bool header = false;
+    for (const auto& v : r.verdicts) {
+      if (!is_problem(v.outcome)) continue;
+      if (!header) os << "\ndetails of every verdict that is not a pass or not provided:\n";
+      header = true;
+      os << "\n" << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]  spec " << v.spec;
+      os << "\n  " << v.title;
+      std::istringstream lines(v.message);
+      for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
+      if (!v.counterexample.empty()) {
+        os << "\n  counterexample (shrunk):";
+        for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
+      }
+      if (v.outcome == Outcome::Fail && r.info.randomised)
+        os << "\n  after " << v.cases << " passing cases; seed " << v.seed;
+      os << "\n  reproduce: " << reproduce_command(r, v) << "\n";
+    }
+    const Missing m = missing_of(r);
+    if (!m.by_reason.empty()) {
+      os << "\nnot provided (" << r.count(Outcome::NotProvided) << " checks):\n";
+      for (const auto& [reason, rows] : m.by_reason) os << "  " << rows.size() << " x  " << reason << "\n";
+    }
+  }
+  return os.str();
+}
+
+std::string markdown_report(const CheckResult& r, const Catalogue* c) {
+  std::ostringstream md;
+  md << "# geomech report: " << r.subject << "\n\n";
+  if (!r.description.empty()) md << r.description << "\n\n";
+  if (!r.info.source.empty()) md << "Source: `" << r.info.source << "`\n\n";
+  md << "**Result: " << (r.ok() ? "PASS" : "FAIL") << "** - " << summary_counts(r) << ". Exit status "
+     << r.exit_code() << ".\n\n";
+  md << "Checked " << r.selection << " with seed " << r.seed << " in " << seconds_text(r.seconds)
+     << ". Residuals are in units of eps * scale (eps of the scalar; the scale is the size of the inputs).";
+  if (!r.info.reproduce_prefix.empty()) md << " Re-run: `" << r.info.reproduce_prefix << "`.";
+  md << "\n\n";
+  if (!r.info.warnings.empty()) {
+    md << "## Warnings\n\n";
+    for (const auto& w : r.info.warnings) md << "- " << md_cell(w) << "\n";
+    md << "\n";
+  }
+
+  std::vector<const Verdict*> problems;
+  for (const auto& v : r.verdicts)
+    if (is_problem(v.outcome)) problems.push_back(&v);
+  if (!problems.empty()) {
+    // One line per property (and integrator) and outcome, naming the scalars it happened in.
+    md << "## What to fix\n\n";
+    std::vector<std::pair<std::string, std::vector<const Verdict*>>> groups;
+    for (const Verdict* v : problems) {
+      const std::string key = row_name(*v) + "|" + outcome_name(v->outcome);
+      auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == key; });
+      if (it == groups.end()) groups.push_back({key, {v}});
+      else it->second.push_back(v);
+    }
+    for (const auto& [key, vs] : groups) {
+      const Verdict& v = *vs.front();
+      md << "- **" << outcome_name(v.outcome) << "** `" << row_name(v) << "` in ";
+      for (std::size_t i = 0; i < vs.size(); ++i)
+        md << (i ? ", " : "") << "[" << vs[i]->scalar << "](#" << anchor_of(*vs[i]) << ")";
+      md << ": " << md_cell(v.title) << ". " << md_cell(first_line(v.message)) << "\n";
+    }
+    md << "\n";
+  }
+
+  md << "## Every property\n\n"
+     << "| property | statement | spec entry (place in the notes) | double | mp50 | exact |\n"
+     << "|---|---|---|---|---|---|\n";
+  std::vector<std::string> md_not_run;
+  for (const auto& [name, by] : table_rows(r)) {
+    if (nothing_ran(by)) {
+      md_not_run.push_back(name);
+      continue;
+    }
+    const Verdict& any = *by.begin()->second;
+    const std::string place = place_of(any, c);
+    md << "| `" << name << "` | " << md_cell(any.title) << " | `" << any.spec << "`"
+       << (place.empty() ? "" : " (" + md_cell(place) + ")") << " |";
+    for (const char* s : {"double", "mp50", "exact"}) {
+      auto it = by.find(s);
+      if (it == by.end()) {
+        md << " - |";
+        continue;
+      }
+      const Verdict& v = *it->second;
+      std::string cell = outcome_name(v.outcome);
+      if (is_problem(v.outcome))
+        cell = "[**" + cell + "**](#" + anchor_of(v) + ")";
+      else if (v.outcome == Outcome::Pass && std::string(s) != "exact" && v.checks > 0)
+        cell += " (" + eps_text(v.worst_eps_units) + ")";
+      md << " " << cell << " |";
+    }
+    md << "\n";
+  }
+  if (!md_not_run.empty()) {
+    md << "\nNot provided in any scalar (" << md_not_run.size() << " properties, reasons under *Not provided*): ";
+    for (std::size_t i = 0; i < md_not_run.size(); ++i) md << (i ? ", " : "") << "`" << md_not_run[i] << "`";
+    md << ".\n";
+  }
+  md << "\nA dash means the property does not run in that scalar (integrators and anything that needs square "
+        "roots or flows are not run in exact rationals).\n\n";
+
+  const auto figures = report_figures(r);
+  if (!r.integrators.empty()) {
+    md << "## Integrators and their claims\n\n";
+    for (const auto& integ : r.integrators) {
+      md << "### " << integ.name << "\n\n";
+      md << "Steps: ";
+      for (std::size_t i = 0; i < integ.steps.size(); ++i) md << (i ? ", " : "") << "`" << integ.steps[i] << "`";
+      md << "; scalars: ";
+      for (std::size_t i = 0; i < integ.scalars.size(); ++i) md << (i ? ", " : "") << integ.scalars[i];
+      md << (integ.has_claims ? "" : "; no claims declared") << ".\n\n";
+      bool any_row = false;
+      for (const auto& row : claim_rows(r, integ)) any_row = any_row || row.status != "-";
+      if (!any_row) md << "Nothing claimed, and no property reported on any claim.\n\n";
+      else md << "| claim | claimed | finding | evidence |\n|---|---|---|---|\n";
+      for (const auto& row : claim_rows(r, integ)) {
+        if (row.status == "-") continue;  // neither claimed nor checked
+        std::string status = row.status;
+        if (status == "FALSE CLAIM") status = "**FALSE CLAIM**";
+        md << "| " << row.claim << " | " << row.claimed << " | " << status << " | " << md_cell(row.evidence) << " |\n";
+      }
+      md << "\n";
+      if (std::find(integ.steps.begin(), integ.steps.end(), "rigid_body_step") == integ.steps.end() &&
+          std::find(integ.steps.begin(), integ.steps.end(), "manakov_step") != integ.steps.end())
+        md << "No pictures are drawn for `manakov_step` yet (only for `rigid_body_step`).\n\n";
+      for (const auto& p : r.portraits) {
+        if (p.integrator != integ.name) continue;
+        if (!p.message.empty()) md << "Portrait in " << p.scalar << ": " << md_cell(p.message) << "\n\n";
+      }
+      for (const auto& f : figures)
+        if (f.integrator == integ.name) md << "![" << f.file << "](" << f.file << ")\n\n";
+    }
+  }
+  std::vector<std::string> other_figures;
+  for (const auto& f : figures)
+    if (f.integrator.empty()) other_figures.push_back(f.file);
+  if (!other_figures.empty()) {
+    md << "## Figures\n\n";
+    for (const auto& f : other_figures) md << "![" << f << "](" << f << ")\n\n";
+  }
+
+  const Missing m = missing_of(r);
+  md << "## Not provided\n\n";
+  if (m.by_reason.empty()) {
+    md << "Nothing: every property ran.\n\n";
+  } else {
+    md << r.count(Outcome::NotProvided) << " checks could not run. They are listed here, never skipped silently:\n\n";
+    for (const auto& [reason, rows] : m.by_reason) {
+      md << "- " << md_cell(reason) << " (" << rows.size() << "): ";
+      bool first = true;
+      for (const auto& row : rows) {
+        md << (first ? "" : ", ") << "`" << row << "`";
+        first = false;
+      }
+      md << "\n";
+    }
+    md << "\n";
+  }
+  md << "Slots provided:\n\n";
+  for (const char* s : {"double", "mp50", "exact"}) {
+    auto it = r.provided.find(s);
+    md << "- " << s << ": ";
+    if (it == r.provided.end() || it->second.empty()) {
+      md << "none";
+      if (auto u = r.info.scalar_unavailable.find(s); u != r.info.scalar_unavailable.end())
+        md << " (" << md_cell(u->second) << ")";
+    } else {
+      for (std::size_t i = 0; i < it->second.size(); ++i) md << (i ? ", " : "") << "`" << it->second[i] << "`";
+    }
+    md << "\n";
+  }
+  md << "\n";
+
+  if (!problems.empty()) {
+    md << "## Details\n\n";
+    for (const Verdict* v : problems) {
+      md << "<a id=\"" << anchor_of(*v) << "\"></a>\n### " << outcome_name(v->outcome) << ": " << row_name(*v) << " in "
+         << v->scalar << "\n\n";
+      md << "**Statement:** " << md_cell(v->title) << "\n\n";
+      md << "**Spec entry:** `" << v->spec << "`";
+      if (c)
+        if (const SpecEntry* e = c->find(v->spec))
+          md << ", " << md_cell(e->place) << " (notes, line " << e->line << "): " << md_cell(e->statement);
+      md << "\n\n";
+      md << fence(v->message);
+      if (!v->counterexample.empty()) {
+        md << "\nCounterexample (shrunk, full precision):\n\n";
+        std::string ce;
+        for (const auto& [type, value] : v->counterexample) ce += type + " = " + value + "\n";
+        md << fence(ce);
+      }
+      md << "\n";
+      if (v->outcome == Outcome::Fail && r.info.randomised) md << "Failed after " << v->cases << " passing cases; seed " << v->seed << ".\n\n";
+      md << "Reproduce:\n\n" << fence(reproduce_command(r, *v)) << "\n";
+    }
+  }
+  return md.str();
+}
+
+std::string junit_report(const CheckResult& r) {
+  int failures = 0, errors = 0, skipped = 0;
+  for (const auto& v : r.verdicts) {
+    if (v.outcome == Outcome::Fail) ++failures;
+    if (v.outcome == Outcome::Crash || v.outcome == Outcome::Timeout || v.outcome == Outcome::Error) ++errors;
+    if (v.outcome == Outcome::NotProvided) ++skipped;
+  }
+  char time_buf[32];
+  std::snprintf(time_buf, sizeof time_buf, "%.3f", r.seconds);
+  std::ostringstream x;
+  x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  x << "<testsuites name=\"geomech\" tests=\"" << r.verdicts.size() << "\" failures=\"" << failures << "\" errors=\""
+    << errors << "\" skipped=\"" << skipped << "\" time=\"" << time_buf << "\">\n";
+  x << "  <testsuite name=\"geomech." << xml_escape(r.subject) << "\" tests=\"" << r.verdicts.size()
+    << "\" failures=\"" << failures << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\""
+    << time_buf << "\">\n";
+  x << "    <properties><property name=\"seed\" value=\"" << r.seed << "\"/></properties>\n";
+  for (const auto& v : r.verdicts) {
+    char t[32];
+    std::snprintf(t, sizeof t, "%.3f", v.seconds);
+    x << "    <testcase classname=\"" << xml_escape(r.subject + "." + v.scalar) << "\" name=\""
+      << xml_escape(row_name(v)) << "\" time=\"" << t << "\">\n";
+    std::string body = v.title + "\nspec entry: " + v.spec + "\n" + v.message;
+    for (const auto& [type, value] : v.counterexample) body += "\n" + type + " = " + value;
+    if (is_problem(v.outcome)) body += "\nreproduce: " + reproduce_command(r, v);
+    switch (v.outcome) {
+      case Outcome::Fail:
+        x << "      <failure type=\"FAIL\" message=\"" << xml_escape(first_line(v.message)) << "\">"
+          << xml_escape(body) << "</failure>\n";
+        break;
+      case Outcome::Crash:
+      case Outcome::Timeout:
+      case Outcome::Error:
+        x << "      <error type=\"" << outcome_name(v.outcome) << "\" message=\"" << xml_escape(first_line(v.message))
+          << "\">" << xml_escape(body) << "</error>\n";
+        break;
+      case Outcome::NotProvided:
+        x << "      <skipped message=\"NOT PROVIDED: " << xml_escape(v.message) << "\"/>\n";
+        break;
+      case Outcome::Pass:
+        break;
+    }
+    x << "    </testcase>\n";
+  }
+  x << "  </testsuite>\n</testsuites>\n";
+  return x.str();
+}
+
+json json_report(const CheckResult& r, const Catalogue* c) {
+  json j;
+  j["format"] = "geomech-report 1";
+  j["subject"] = r.subject;
+  j["description"] = r.description;
+  j["source"] = r.info.source;
+  j["reproduce_prefix"] = r.info.reproduce_prefix;
+  j["seed"] = r.seed;
+  j["selection"] = r.selection;
+  j["seconds"] = number_to_json(r.seconds);
+  j["exit_code"] = r.exit_code();
+  j["warnings"] = r.info.warnings;
+  j["scalar_unavailable"] = r.info.scalar_unavailable;
+  j["provided"] = r.provided;
+  json counts;
+  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error})
+    counts[outcome_name(o)] = r.count(o);
+  j["counts"] = counts;
+  json integrators = json::array();
+  for (const auto& i : r.integrators) {
+    json claims = json::array();
+    for (const auto& row : claim_rows(r, i))
+      claims.push_back({{"claim", row.claim}, {"claimed", row.claimed}, {"status", row.status}, {"evidence", row.evidence}});
+    integrators.push_back({{"name", i.name}, {"steps", i.steps}, {"scalars", i.scalars}, {"claims", claims}});
+  }
+  j["integrators"] = integrators;
+  json verdicts = json::array();
+  for (const auto& v : r.verdicts) {
+    json jv = to_json(v);
+    jv["area"] = area_of(v, c);
+    if (is_problem(v.outcome)) jv["reproduce_command"] = reproduce_command(r, v);
+    verdicts.push_back(std::move(jv));
+  }
+  j["verdicts"] = verdicts;
+  json portraits = json::array();
+  for (const auto& p : r.portraits) portraits.push_back(to_json(p));
+  j["portraits"] = portraits;
+  return j;
+}
+
+void write_file_atomically(const std::string& path, const std::string& content) {
+  const fs::path p(path);
+  const fs::path tmp = p.parent_path() / ("." + p.filename().string() + ".tmp." + std::to_string(::getpid()));
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) throw std::runtime_error("cannot write " + tmp.string());
+    f << content;
+    f.flush();
+    if (!f) {
+      std::error_code ec;
+      fs::remove(tmp, ec);
+      throw std::runtime_error("cannot write " + tmp.string());
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, p, ec);
+  if (ec) {
+    fs::remove(tmp, ec);
+    throw std::runtime_error("cannot rename " + tmp.string() + " to " + path);
+  }
+}
+
+void write_report_dir(const CheckResult& r, const std::string& dir, const Catalogue* c) {
+  fs::path target = fs::absolute(dir).lexically_normal();
+  while (target.has_relative_path() && target.filename().empty()) target = target.parent_path();  // "dir/" -> "dir"
+  if (!target.has_relative_path() || target.filename() == "." || target.filename() == "..")
+    throw std::runtime_error("cannot write a report into " + dir + ": give a directory of its own");
+  const fs::path parent = target.parent_path();
+  std::error_code ec;
+  // Only a previous report (or an empty directory) is ever replaced: never someone's own files.
+  if (fs::exists(target, ec)) {
+    if (!fs::is_directory(target, ec))
+      throw std::runtime_error("cannot write a report into " + target.string() + ": it is a file");
+    if (!fs::is_empty(target, ec) && !fs::exists(target / "verdicts.json", ec))
+      throw std::runtime_error("refusing to replace " + target.string() +
+                               ": it is not empty and not a geomech report (no verdicts.json); choose another --report");
+  }
+  fs::create_directories(parent, ec);
+  if (ec) throw std::runtime_error("cannot create " + parent.string() + ": " + ec.message());
+  const std::string pid = std::to_string(::getpid());
+  const fs::path tmp = parent / ("." + target.filename().string() + ".tmp." + pid);
+  fs::remove_all(tmp, ec);
+  fs::create_directories(tmp / "figures", ec);
+  if (ec) throw std::runtime_error("cannot create " + tmp.string() + ": " + ec.message());
+  auto put = [&](const std::string& name, const std::string& content) {
+    std::ofstream f(tmp / name, std::ios::binary | std::ios::trunc);
+    f << content;
+    f.flush();
+    if (!f) throw std::runtime_error("cannot write " + (tmp / name).string());
+  };
+  try {
+    put("report.md", markdown_report(r, c));
+    put("junit.xml", junit_report(r));
+    put("verdicts.json", json_report(r, c).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
+    for (const auto& f : report_figures(r)) put(f.file, f.svg);
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+  // Swap in: the old report (if any) moves aside, the new one takes its name, the old one goes.
+  const fs::path old = parent / ("." + target.filename().string() + ".old." + pid);
+  const bool had_old = fs::exists(target);
+  if (had_old) {
+    fs::rename(target, old, ec);
+    if (ec) {
+      fs::remove_all(tmp, ec);
+      throw std::runtime_error("cannot replace " + target.string() + ": " + ec.message());
+    }
+  }
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    const std::string why = ec.message();
+    if (had_old) fs::rename(old, target, ec);
+    fs::remove_all(tmp, ec);
+    throw std::runtime_error("cannot move the new report into " + target.string() + ": " + why);
+  }
+  if (had_old) fs::remove_all(old, ec);
+}
+
+}  // namespace gm::harness

@@ -1,0 +1,53 @@
+// Reports of a check: the console summary, Markdown for people, JUnit XML for CI, JSON for
+// machines (and class mode), and SVG figures, written into one directory atomically (a report
+// directory is either the previous one or the complete new one, never half of each).
+#pragma once
+
+#include "harness/check.hpp"
+#include "spec/catalogue.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gm::harness {
+
+// The area of the notes a property belongs to, for summary tables (class mode):
+// "sec. 1", "sec. 2", "sec. 3", "momentum maps", "integrators".
+std::string area_of(const Verdict& v, const Catalogue* catalogue);
+const std::vector<std::string>& area_names();
+
+// Every figure the verdicts and the portraits carry; series of the same property, integrator and figure are drawn together across
+// scalars (double and 50 digits side by side).
+struct Figure {
+  std::string file;        // relative to the report directory: figures/<name>.svg
+  std::string svg;
+  std::string integrator;  // the integrator it belongs to, if any
+};
+std::vector<Figure> report_figures(const CheckResult& r);
+
+std::string console_report(const CheckResult& r, const Catalogue* catalogue, bool details = true);
+std::string markdown_report(const CheckResult& r, const Catalogue* catalogue);
+std::string junit_report(const CheckResult& r);
+nlohmann::json json_report(const CheckResult& r, const Catalogue* catalogue);
+
+// Writes report.md, junit.xml, verdicts.json and figures/*.svg into `dir`, replacing a previous
+// report there only once the new one is complete. Throws std::runtime_error on failure.
+void write_report_dir(const CheckResult& r, const std::string& dir, const Catalogue* catalogue);
+
+// Writes one file atomically (a temporary file in the same directory, then rename).
+void write_file_atomically(const std::string& path, const std::string& content);
+
+// The claims table of one integrator: for each claim, what was claimed and what the properties found.
+struct ClaimRow {
+  std::string claim;
+  std::string claimed;  // "2" for an order, "yes"/"no" otherwise
+  std::string status;   // "verified", "FALSE CLAIM", "holds, not claimed", "does not hold (not claimed)",
+                        // "claimed, not checked by any property", "-"
+  std::string evidence;
+};
+std::vector<ClaimRow> claim_rows(const CheckResult& r, const IntegratorInfo& integrator);
+
+}  // namespace gm::harness

@@ -1,0 +1,641 @@
+#include "harness/trajectory.hpp"
+
+#include "harness/reference_flow.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace gm::harness {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr double kAbsurd = 1e12;        // larger magnitudes are rejected as absurd
+constexpr std::size_t kMaxRows = 1000000;
+const char* kSystems = "rigid_body";
+const char* kColumns4 = "t Pi1 Pi2 Pi3";
+const char* kColumns13 = "t Pi1 Pi2 Pi3 O11 O12 O13 O21 O22 O23 O31 O32 O33";
+
+std::string trim(std::string_view s) {
+  std::size_t a = 0, b = s.size();
+  while (a < b && (s[a] == ' ' || s[a] == '\t' || s[a] == '\r')) ++a;
+  while (b > a && (s[b - 1] == ' ' || s[b - 1] == '\t' || s[b - 1] == '\r')) --b;
+  return std::string(s.substr(a, b - a));
+}
+
+struct Field {
+  std::string text;
+  std::size_t column;  // 1-based
+};
+
+std::vector<Field> split_fields(const std::string& line, std::size_t offset = 0) {
+  std::vector<Field> out;
+  std::size_t i = 0;
+  while (i < line.size()) {
+    while (i < line.size() && (line[i] == ' ' || line[i] == '\t' || line[i] == ',' || line[i] == '\r')) ++i;
+    if (i >= line.size()) break;
+    const std::size_t start = i;
+    while (i < line.size() && line[i] != ' ' && line[i] != '\t' && line[i] != ',' && line[i] != '\r') ++i;
+    out.push_back({line.substr(start, i - start), offset + start + 1});
+  }
+  return out;
+}
+
+std::string where(const std::string& name, std::size_t line, std::size_t column = 0) {
+  if (line == 0) return name + ": ";  // a value from the command line
+  std::string w = name + ":" + std::to_string(line);
+  if (column) w += ":" + std::to_string(column);
+  return w + ": ";
+}
+
+std::string printable(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) {
+    if (c >= 0x20 && c < 0x7f) out += static_cast<char>(c);
+    else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    }
+  }
+  if (out.size() > 60) out = out.substr(0, 57) + "...";
+  return out;
+}
+
+// A finite, sane double, or a TrajectoryError saying precisely why not.
+double number(const Field& f, const std::string& name, std::size_t line, const char* what) {
+  std::string lower;
+  for (char c : f.text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string bare = (!lower.empty() && (lower[0] == '+' || lower[0] == '-')) ? lower.substr(1) : lower;
+  if (bare == "nan" || bare.rfind("nan(", 0) == 0)
+    throw TrajectoryError(where(name, line, f.column) + what + " is NaN: a trajectory must be finite (NaN usually means the method broke down before this row)");
+  if (bare == "inf" || bare == "infinity")
+    throw TrajectoryError(where(name, line, f.column) + what + " is infinite: a trajectory must be finite");
+  const char* first = f.text.data();
+  const char* last = first + f.text.size();
+  if (*first == '+') ++first;  // from_chars does not take a leading '+'
+  double x = 0;
+  const auto [ptr, ec] = std::from_chars(first, last, x);
+  if (ec == std::errc::result_out_of_range)
+    throw TrajectoryError(where(name, line, f.column) + what + " '" + printable(f.text) + "' is out of the range of a double");
+  if (ec != std::errc() || ptr != last)
+    throw TrajectoryError(where(name, line, f.column) + what + " is not a number: '" + printable(f.text) + "'");
+  if (!std::isfinite(x))
+    throw TrajectoryError(where(name, line, f.column) + what + " is not finite: '" + printable(f.text) + "'");
+  if (std::abs(x) > kAbsurd)
+    throw TrajectoryError(where(name, line, f.column) + what + " = " + printable(f.text) +
+                          " is an absurd magnitude (larger than 1e12); check the units and the scaling");
+  return x;
+}
+
+int significant_digits(const std::string& text) {
+  int n = 0;
+  bool leading = true;
+  for (char c : text) {
+    if (c == 'e' || c == 'E') break;
+    if (c < '0' || c > '9') continue;
+    if (leading && c == '0') continue;
+    leading = false;
+    ++n;
+  }
+  return n;
+}
+
+double norm2(const std::array<double, 3>& v) { return v[0] * v[0] + v[1] * v[1] + v[2] * v[2]; }
+
+}  // namespace
+
+Trajectory parse_trajectory(const std::string& text, const std::string& name, const TrajectoryParams& params) {
+  Trajectory tr;
+  tr.path = name;
+  if (text.find('\0') != std::string::npos) throw TrajectoryError(name + ": this is not a text file (it contains NUL bytes)");
+  std::vector<std::string> lines;
+  {
+    std::size_t start = 0;
+    while (start <= text.size()) {
+      const std::size_t nl = text.find('\n', start);
+      if (nl == std::string::npos) {
+        if (start < text.size()) lines.push_back(text.substr(start));
+        break;
+      }
+      lines.push_back(text.substr(start, nl - start));
+      start = nl + 1;
+    }
+  }
+  std::size_t i = 0;
+  auto blank = [](const std::string& l) { return trim(l).empty(); };
+  while (i < lines.size() && blank(lines[i])) ++i;
+  if (i == lines.size()) throw TrajectoryError(name + ": the file is empty (no header and no data)");
+
+  std::optional<std::string> system, step_text, columns;
+  std::optional<std::array<std::string, 3>> inertia;
+  std::size_t system_line = 0, inertia_line = 0, step_line = 0;
+  const bool header = trim(lines[i]).rfind("# geomech-trajectory", 0) == 0;
+  if (header) {
+    const std::string magic = trim(lines[i]);
+    if (magic != "# geomech-trajectory 1")
+      throw TrajectoryError(where(name, i + 1) + "unsupported format line '" + printable(magic) +
+                            "'; this version reads '# geomech-trajectory 1'");
+    for (++i; i < lines.size(); ++i) {
+      const std::string l = trim(lines[i]);
+      if (l.empty()) continue;
+      if (l[0] != '#') break;
+      const std::string body = trim(std::string_view(l).substr(1));
+      if (body.empty() || body[0] == '#') continue;  // "#" alone, or a "## free comment"
+      const auto colon = body.find(':');
+      const std::size_t key_col = lines[i].find(body) + 1;
+      if (colon == std::string::npos)
+        throw TrajectoryError(where(name, i + 1, key_col) + "a header line must be '# key: value' (or a '## comment'), got '" +
+                              printable(body) + "'");
+      const std::string key = trim(std::string_view(body).substr(0, colon));
+      const std::string value = trim(std::string_view(body).substr(colon + 1));
+      const std::size_t value_col = key_col + body.find(value, colon + 1);
+      if (value.empty()) throw TrajectoryError(where(name, i + 1, key_col) + "header field '" + key + "' has no value");
+      auto once = [&](bool seen) {
+        if (seen) throw TrajectoryError(where(name, i + 1, key_col) + "header field '" + key + "' is given twice");
+      };
+      if (key == "system") {
+        once(system.has_value());
+        system = value;
+        system_line = i + 1;
+      } else if (key == "inertia") {
+        once(inertia.has_value());
+        const auto f = split_fields(value, value_col - 1);
+        if (f.size() != 3)
+          throw TrajectoryError(where(name, i + 1, value_col) + "inertia needs 3 numbers (I1 I2 I3), got " +
+                                std::to_string(f.size()));
+        inertia = std::array<std::string, 3>{f[0].text, f[1].text, f[2].text};
+        for (const auto& x : f) number(x, name, i + 1, "a moment of inertia");
+        inertia_line = i + 1;
+      } else if (key == "step") {
+        once(step_text.has_value());
+        const auto f = split_fields(value, value_col - 1);
+        if (f.size() != 1) throw TrajectoryError(where(name, i + 1, value_col) + "step needs one number, the step size h");
+        number(f[0], name, i + 1, "the step size");
+        step_text = f[0].text;
+        step_line = i + 1;
+      } else if (key == "method") {
+        once(!tr.method.empty());
+        tr.method = value;
+      } else if (key == "columns") {
+        once(columns.has_value());
+        std::string norm;
+        for (const auto& f : split_fields(value)) norm += (norm.empty() ? "" : " ") + f.text;
+        if (norm != kColumns4 && norm != kColumns13)
+          throw TrajectoryError(where(name, i + 1, value_col) + "columns must be '" + kColumns4 + "' or '" + kColumns13 +
+                                "', got '" + printable(value) + "'");
+        columns = norm;
+      } else {
+        throw TrajectoryError(where(name, i + 1, key_col) + "unknown header field '" + printable(key) +
+                              "' (known: system, inertia, step, method, columns; free comments start with ##)");
+      }
+    }
+  } else if (trim(lines[i])[0] == '#') {
+    // Comment lines before the data of a file without the format line are allowed.
+    while (i < lines.size() && (blank(lines[i]) || trim(lines[i])[0] == '#')) ++i;
+  }
+
+  // Command-line parameters fill in what the header lacks and must agree with what it says.
+  auto merge = [&](auto& field, const auto& given, const char* what, std::size_t line) {
+    if (!given) return;
+    if (field && *field != *given)
+      throw TrajectoryError(where(name, line) + std::string(what) + " in the file differs from --" + what +
+                            " on the command line");
+    field = given;
+  };
+  merge(system, params.system, "system", system_line);
+  merge(inertia, params.inertia, "inertia", inertia_line);
+  merge(step_text, params.step, "step", step_line);
+  if (!system) throw TrajectoryError(name + ": no system: give '# system: rigid_body' in the header or --system rigid_body");
+  if (*system != kSystems)
+    throw TrajectoryError((system_line ? where(name, system_line) : name + ": ") + "unknown system '" + printable(*system) +
+                          "' (known: " + kSystems + ")");
+  if (!inertia) throw TrajectoryError(name + ": no inertia: give '# inertia: I1 I2 I3' in the header or --inertia I1,I2,I3");
+  if (!step_text) throw TrajectoryError(name + ": no step size: give '# step: h' in the header or --step h");
+  tr.system = *system;
+  tr.inertia = *inertia;
+  for (int k = 0; k < 3; ++k) {
+    const double Ik = number({tr.inertia[k], 0}, name, inertia_line, "a moment of inertia");
+    if (!(Ik > 0))
+      throw TrajectoryError((inertia_line ? where(name, inertia_line) : name + ": ") + "the moments of inertia must be positive, got I" +
+                            std::to_string(k + 1) + " = " + printable(tr.inertia[k]));
+  }
+  {
+    double I[3];
+    for (int k = 0; k < 3; ++k) I[k] = number({tr.inertia[k], 0}, name, inertia_line, "a moment of inertia");
+    for (int k = 0; k < 3; ++k)
+      if (I[k] > I[(k + 1) % 3] + I[(k + 2) % 3])
+        tr.warnings.push_back("I" + std::to_string(k + 1) + " is larger than the sum of the other two moments: no rigid "
+                              "body has this inertia (Euler's equations are checked anyway)");
+  }
+  tr.step = number({*step_text, 0}, name, step_line, "the step size");
+  if (!(tr.step > 0))
+    throw TrajectoryError((step_line ? where(name, step_line) : name + ": ") + "the step size must be positive, got " +
+                          printable(*step_text));
+
+  // Data.
+  std::size_t expected_fields = columns ? (*columns == kColumns13 ? 13 : 4) : 0;
+  int max_digits = 1;
+  for (; i < lines.size(); ++i) {
+    const std::string& l = lines[i];
+    if (blank(l)) continue;
+    if (trim(l)[0] == '#') continue;  // comments after the data (np.savetxt footers) are ignored
+    const auto f = split_fields(l);
+    if (expected_fields == 0) {
+      if (f.size() != 4 && f.size() != 13)
+        throw TrajectoryError(where(name, i + 1) + "a row has " + std::to_string(f.size()) + " fields; expected 4 (" +
+                              kColumns4 + ") or 13 (" + kColumns13 + ")");
+      expected_fields = f.size();
+    } else if (f.size() != expected_fields) {
+      throw TrajectoryError(where(name, i + 1) + "a row has " + std::to_string(f.size()) + " fields, expected " +
+                            std::to_string(expected_fields) + " like the " + (tr.rows.empty() ? "columns line" : "rows above") +
+                            " (" + (expected_fields == 13 ? kColumns13 : kColumns4) + ")");
+    }
+    if (tr.rows.size() >= kMaxRows)
+      throw TrajectoryError(where(name, i + 1) + "more than " + std::to_string(kMaxRows) + " rows; write every k-th step only");
+    TrajectoryRow row;
+    row.t = number(f[0], name, i + 1, "t");
+    for (int k = 0; k < 3; ++k) row.Pi[k] = number(f[1 + k], name, i + 1, ("Pi" + std::to_string(k + 1)).c_str());
+    for (std::size_t k = 4; k < f.size(); ++k) {
+      const std::string what = "O" + std::to_string((k - 4) / 3 + 1) + std::to_string((k - 4) % 3 + 1);
+      row.O[k - 4] = number(f[k], name, i + 1, what.c_str());
+    }
+    if (!tr.rows.empty() && !(row.t > tr.rows.back().t))
+      throw TrajectoryError(where(name, i + 1, f[0].column) + "t = " + printable(f[0].text) +
+                            " does not increase (the row before has t = " + to_string_full(tr.rows.back().t) + ")");
+    if (tr.rows.empty())
+      for (const auto& x : f) tr.first_row.push_back(x.text);
+    for (int k = 1; k < 4; ++k) max_digits = std::max(max_digits, significant_digits(f[k].text));
+    tr.rows.push_back(row);
+  }
+  tr.has_O = expected_fields == 13;
+  if (tr.rows.empty()) throw TrajectoryError(name + ": no data rows (a trajectory needs at least two)");
+  if (tr.rows.size() < 2) throw TrajectoryError(name + ": only one data row (a trajectory needs at least two)");
+  tr.digits = std::clamp(max_digits, 1, 17);
+  return tr;
+}
+
+Trajectory read_trajectory(const std::string& path, const TrajectoryParams& params) {
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw TrajectoryError(path + ": is a folder, not a trajectory file");
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw TrajectoryError(path + ": cannot be read");
+  std::ostringstream os;
+  os << f.rdbuf();
+  return parse_trajectory(os.str(), path, params);
+}
+
+double convergence_slope(const std::vector<std::pair<double, double>>& pts, double plateau, std::vector<bool>* used) {
+  if (used) used->assign(pts.size(), false);
+  double sx = 0, sy = 0, sxx = 0, sxy = 0;
+  int n = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const auto [h, e] = pts[i];
+    if (!(h > 0) || !(e > plateau) || !std::isfinite(e)) continue;
+    const double x = std::log(h), y = std::log(e);
+    sx += x;
+    sy += y;
+    sxx += x * x;
+    sxy += x * y;
+    ++n;
+    if (used) (*used)[i] = true;
+  }
+  if (n < 2) return std::nan("");
+  const double d = n * sxx - sx * sx;
+  if (d == 0) return std::nan("");
+  return (n * sxy - sx * sy) / d;
+}
+
+namespace {
+
+// Measured quantities of one trajectory against its reference.
+struct Analysis {
+  Trajectory tr;
+  double roundoff = 0;  // relative size below which a residual is round-off for this file
+  std::vector<double> casimir, energy, orthogonality, det, spatial, error_Pi, error_O;
+  double max_casimir = 0, max_energy = 0, max_orth = 0, max_det = 0, max_spatial = 0, max_error = 0;
+  double scale_Pi = 1;
+};
+
+Analysis analyse(Trajectory tr) {
+  Analysis a;
+  a.tr = std::move(tr);
+  const Trajectory& t = a.tr;
+  const double eps = std::numeric_limits<double>::epsilon();
+  const double eps_data = std::max(eps, 0.5 * std::pow(10.0, 1 - t.digits));
+  const double steps = (t.rows.back().t - t.rows.front().t) / t.step;
+  // Round-off level: printing error of a few units in the last printed digit, plus a rounding
+  // error per step that at worst adds up linearly (4 eps per step).
+  a.roundoff = 64 * eps_data + 4 * std::max(1.0, steps) * eps;
+
+  double I[3];
+  for (int k = 0; k < 3; ++k) I[k] = from_decimal<double>(t.inertia[k]);
+  const auto& r0 = t.rows.front();
+  const double C0 = norm2(r0.Pi);
+  const double H0 = (r0.Pi[0] * r0.Pi[0] / I[0] + r0.Pi[1] * r0.Pi[1] / I[1] + r0.Pi[2] * r0.Pi[2] / I[2]) / 2;
+  const double Cs = C0 > 0 ? C0 : 1, Hs = H0 > 0 ? H0 : 1;
+  a.scale_Pi = std::max({std::abs(r0.Pi[0]), std::abs(r0.Pi[1]), std::abs(r0.Pi[2])});
+  if (a.scale_Pi == 0) a.scale_Pi = 1;
+  std::array<double, 3> pi0{};
+  if (t.has_O)
+    for (int i = 0; i < 3; ++i) pi0[i] = r0.O[3 * i] * r0.Pi[0] + r0.O[3 * i + 1] * r0.Pi[1] + r0.O[3 * i + 2] * r0.Pi[2];
+
+  // The reference, in 50 digits, from the initial state exactly as written.
+  Vec3<Real50> Iq;
+  for (int k = 0; k < 3; ++k) Iq(k) = from_decimal<Real50>(t.inertia[k]);
+  RigidBodyState<Real50> x0{Vec3<Real50>::Zero(), Mat3<Real50>::Identity()};
+  for (int k = 0; k < 3; ++k) x0.Pi(k) = from_decimal<Real50>(t.first_row[1 + k]);
+  if (t.has_O)
+    for (int k = 0; k < 9; ++k) x0.O(k / 3, k % 3) = from_decimal<Real50>(t.first_row[4 + k]);
+  const Real50 t0 = from_decimal<Real50>(t.first_row[0]);
+  std::vector<Real50> times;
+  for (std::size_t i = 0; i < t.rows.size(); ++i)
+    times.push_back(i == 0 ? t0 : Real50(t.rows[i].t));
+  std::vector<RigidBodyState<Real50>> ref;
+  try {
+    ref = reference_rigid_body(Iq, x0, t0, times);
+  } catch (const std::exception& e) {
+    throw TrajectoryError(t.path + ": the reference solution cannot be computed: " + e.what());
+  }
+
+  for (std::size_t i = 0; i < t.rows.size(); ++i) {
+    const auto& r = t.rows[i];
+    const double C = norm2(r.Pi);
+    const double H = (r.Pi[0] * r.Pi[0] / I[0] + r.Pi[1] * r.Pi[1] / I[1] + r.Pi[2] * r.Pi[2] / I[2]) / 2;
+    a.casimir.push_back(std::abs(C - C0) / Cs);
+    a.energy.push_back(std::abs(H - H0) / Hs);
+    double e = 0;
+    for (int k = 0; k < 3; ++k) e = std::max(e, std::abs(r.Pi[k] - ref[i].Pi(k).convert_to<double>()));
+    a.error_Pi.push_back(e / a.scale_Pi);
+    if (t.has_O) {
+      double orth = 0, eo = 0;
+      for (int p = 0; p < 3; ++p)
+        for (int q = 0; q < 3; ++q) {
+          double s = 0;
+          for (int k = 0; k < 3; ++k) s += r.O[3 * k + p] * r.O[3 * k + q];
+          orth = std::max(orth, std::abs(s - (p == q ? 1.0 : 0.0)));
+          eo = std::max(eo, std::abs(r.O[3 * p + q] - ref[i].O(p, q).convert_to<double>()));
+        }
+      const auto& O = r.O;
+      const double det = O[0] * (O[4] * O[8] - O[5] * O[7]) - O[1] * (O[3] * O[8] - O[5] * O[6]) +
+                         O[2] * (O[3] * O[7] - O[4] * O[6]);
+      double sp = 0;
+      for (int p = 0; p < 3; ++p) {
+        const double pi = O[3 * p] * r.Pi[0] + O[3 * p + 1] * r.Pi[1] + O[3 * p + 2] * r.Pi[2];
+        sp = std::max(sp, std::abs(pi - pi0[p]));
+      }
+      a.orthogonality.push_back(orth);
+      a.det.push_back(std::abs(det - 1));
+      a.spatial.push_back(sp / a.scale_Pi);
+      a.error_O.push_back(eo);
+    }
+  }
+  auto mx = [](const std::vector<double>& v) { return v.empty() ? 0.0 : *std::max_element(v.begin(), v.end()); };
+  a.max_casimir = mx(a.casimir);
+  a.max_energy = mx(a.energy);
+  a.max_orth = std::max(mx(a.orthogonality), mx(a.det));
+  a.max_det = mx(a.det);
+  a.max_spatial = mx(a.spatial);
+  a.max_error = std::max(mx(a.error_Pi), mx(a.error_O));
+  return a;
+}
+
+std::string sci(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+Series series_of(const std::string& figure, const std::string& name, const std::string& y_label, const Trajectory& t,
+                 const std::vector<double>& y) {
+  Series s;
+  s.figure = figure;
+  s.name = name;
+  s.x_label = "t";
+  s.y_label = y_label;
+  s.log_y = true;
+  const std::size_t stride = std::max<std::size_t>(1, t.rows.size() / 400);  // at most ~400 points per curve
+  for (std::size_t i = 0; i < t.rows.size(); i += stride) s.points.emplace_back(t.rows[i].t, y[i]);
+  if ((t.rows.size() - 1) % stride) s.points.emplace_back(t.rows.back().t, y.back());
+  return s;
+}
+
+}  // namespace
+
+CheckResult check_trajectories(const std::vector<std::string>& files, const TrajectoryCheckOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  if (files.empty()) throw TrajectoryError("no trajectory file given");
+  for (const auto& claim : o.preserves)
+    if (claim != "casimir" && claim != "energy" && claim != "orthogonality" && claim != "spatial_momentum")
+      throw TrajectoryError("--preserves: unknown invariant '" + claim +
+                            "' (known: casimir, energy, orthogonality, spatial_momentum)");
+  std::vector<Analysis> runs;
+  for (const auto& f : files) runs.push_back(analyse(read_trajectory(f, o.params)));
+
+  CheckResult r;
+  r.subject = files.size() == 1 ? fs::path(files.front()).stem().string() : "trajectories";
+  r.description = runs.front().tr.method.empty() ? "trajectory files" : "trajectories of " + runs.front().tr.method;
+  r.info.source = files.front();
+  for (std::size_t i = 1; i < files.size(); ++i) r.info.source += ", " + files[i];
+  r.selection = "the trajectory checks";
+  r.info.randomised = false;
+  {
+    // The same warning for several files is said once, naming them.
+    std::vector<std::pair<std::string, std::string>> seen;
+    for (const auto& a : runs)
+      for (const auto& w : a.tr.warnings) {
+        auto it = std::find_if(seen.begin(), seen.end(), [&](const auto& x) { return x.first == w; });
+        const std::string file = fs::path(a.tr.path).filename().string();
+        if (it == seen.end()) seen.push_back({w, file});
+        else it->second += ", " + file;
+      }
+    for (const auto& [w, files_] : seen) r.info.warnings.push_back(files_ + ": " + w);
+  }
+
+  auto verdict = [&](const Analysis& a, const std::string& id, const std::string& spec, const std::string& title) {
+    Verdict v;
+    v.subject = r.subject;
+    v.property = id;
+    v.spec = spec;
+    v.title = title;
+    v.scalar = "double";
+    v.integrator = fs::path(a.tr.path).stem().string();
+    v.cases = 1;
+    return v;
+  };
+  // An invariant: measured always; a failure only when it was claimed and is above round-off.
+  auto invariant = [&](const Analysis& a, const std::string& claim, const std::string& id, const std::string& spec,
+                       const std::string& title, double measured, const std::string& what) {
+    Verdict v = verdict(a, id, spec, title);
+    const bool claimed = o.preserves.count(claim) > 0;
+    const bool holds = measured <= a.roundoff;
+    const std::string evidence = "max " + what + " = " + sci(measured) + " over " + std::to_string(a.tr.rows.size()) +
+                                 " rows; round-off level for this file " + sci(a.roundoff) + " (" +
+                                 std::to_string(a.tr.digits) + " digits printed)";
+    v.claims.push_back(ClaimFinding{claim, claimed, holds, evidence});
+    v.outcome = claimed && !holds ? Outcome::Fail : Outcome::Pass;
+    v.message = (claimed ? (holds ? "claimed and conserved to round-off: " : "false claim: not conserved to round-off: ")
+                         : (holds ? "conserved to round-off (not claimed): " : "not conserved to round-off (not claimed): ")) +
+                evidence;
+    v.worst_absolute = measured;
+    v.worst_eps_units = measured / std::numeric_limits<double>::epsilon();
+    v.checks = static_cast<long>(a.tr.rows.size());
+    return v;
+  };
+
+  for (const auto& a : runs) {
+    const std::string run = fs::path(a.tr.path).stem().string();
+    r.verdicts.push_back(invariant(a, "casimir", "trajectory_casimir", "s3.nambu-rigid-body-level-sets",
+                                   "|Pi|^2 stays constant (the motion stays on its sphere)", a.max_casimir,
+                                   "||Pi|^2 - |Pi(0)|^2| / |Pi(0)|^2"));
+    r.verdicts.push_back(invariant(a, "energy", "trajectory_energy", "s3.nambu-rigid-body-level-sets",
+                                   "the energy h = Pi . I^-1 Pi / 2 stays constant", a.max_energy,
+                                   "|h - h(0)| / h(0)"));
+    if (a.tr.has_O) {
+      r.verdicts.push_back(invariant(a, "orthogonality", "trajectory_orthogonality", "s2.reconstruction",
+                                     "O stays in SO(3): O^T O = Id and det O = 1", a.max_orth,
+                                     "max(|O^T O - Id|, |det O - 1|)"));
+      r.verdicts.push_back(invariant(a, "spatial_momentum", "trajectory_spatial_momentum", "s2.noether",
+                                     "the spatial angular momentum pi = O Pi stays constant (Noether)", a.max_spatial,
+                                     "|O Pi - O(0) Pi(0)| / |Pi(0)|"));
+    }
+    // Agreement with the reference solution: a solution of other equations (a sign error, a
+    // wrong inertia) drifts away at order one.
+    Verdict v = verdict(a, "trajectory_reference", "s3.euler-momentum-form",
+                        std::string("agrees with the free rigid body (3.8)") + (a.tr.has_O ? " and (2.10)" : "") +
+                            " from the same initial state, to the tolerance");
+    v.worst_absolute = a.max_error;
+    const bool ok = a.max_error <= o.tolerance;
+    v.outcome = ok ? Outcome::Pass : Outcome::Fail;
+    std::size_t worst = 0;
+    for (std::size_t i = 0; i < a.error_Pi.size(); ++i)
+      if (a.error_Pi[i] > a.error_Pi[worst]) worst = i;
+    v.message = "max error against the 50-digit reference " + sci(a.max_error) + " (relative to |Pi(0)|" +
+                std::string(a.tr.has_O ? ", and in O" : "") + "); allowed " + sci(o.tolerance) + " (--tolerance)";
+    if (!ok) {
+      const auto& row = a.tr.rows[worst];
+      v.message += "\nthe largest error in Pi is at t = " + to_string_full(row.t) + ": the file has Pi = (" +
+                   to_string_full(row.Pi[0]) + ", " + to_string_full(row.Pi[1]) + ", " + to_string_full(row.Pi[2]) +
+                   "); a sign error in Euler's equations or a wrong inertia shows up this way";
+    }
+    v.series.push_back(series_of("error against the reference", run + ": Pi", "error / |Pi(0)|", a.tr, a.error_Pi));
+    if (a.tr.has_O) v.series.push_back(series_of("error against the reference", run + ": O", "error / |Pi(0)|", a.tr, a.error_O));
+    r.verdicts.push_back(v);
+    // Pictures of the invariants over time.
+    Verdict pic = verdict(a, "portrait", "", "invariants over time");
+    pic.outcome = Outcome::Pass;
+    pic.series.push_back(series_of("invariants over time", run + ": |Pi|^2", "relative residual", a.tr, a.casimir));
+    pic.series.push_back(series_of("invariants over time", run + ": energy", "relative residual", a.tr, a.energy));
+    if (a.tr.has_O)
+      pic.series.push_back(series_of("invariants over time", run + ": O^T O - Id", "relative residual", a.tr, a.orthogonality));
+    r.portraits.push_back(pic);
+
+    IntegratorInfo info;
+    info.name = run;
+    info.has_claims = !o.preserves.empty();
+    info.claims.integrator = run;
+    info.claims.casimir = o.preserves.count("casimir") > 0;
+    info.claims.energy = o.preserves.count("energy") > 0;
+    info.claims.orthogonality = o.preserves.count("orthogonality") > 0;
+    info.steps = {"trajectory file, step " + sci(a.tr.step) + (a.tr.method.empty() ? "" : ", " + a.tr.method)};
+    info.scalars = {"double"};
+    r.integrators.push_back(info);
+  }
+
+  // Convergence: several runs of one motion at different step sizes.
+  if (runs.size() >= 2) {
+    const Trajectory& first = runs.front().tr;
+    for (const auto& a : runs) {
+      if (a.tr.inertia != first.inertia)
+        throw TrajectoryError(a.tr.path + ": a different inertia than " + first.path + "; runs compared for the order must be of one motion");
+      if (a.tr.has_O != first.has_O)
+        throw TrajectoryError(a.tr.path + ": O is given in one file and not in the other; compare like with like");
+      for (int k = 1; k < 4; ++k)
+        if (std::abs(a.tr.rows.front().Pi[k - 1] - first.rows.front().Pi[k - 1]) >
+            1e-12 * std::max(1.0, std::abs(first.rows.front().Pi[k - 1])))
+          throw TrajectoryError(a.tr.path + ": starts from a different Pi(0) than " + first.path);
+    }
+    std::map<double, int> steps;
+    for (const auto& a : runs) ++steps[a.tr.step];
+    for (const auto& [h, n] : steps)
+      if (n > 1) throw TrajectoryError("two files have the same step size " + sci(h) + "; the order needs different steps");
+    // Error at the common final time (the latest time every run reaches), largest over rows up to it.
+    double T = runs.front().tr.rows.back().t;
+    for (const auto& a : runs) T = std::min(T, a.tr.rows.back().t);
+    std::vector<std::pair<double, double>> pts;
+    double plateau = 0;
+    for (const auto& a : runs) {
+      double e = 0;
+      for (std::size_t i = 0; i < a.tr.rows.size() && a.tr.rows[i].t <= T * (1 + 1e-12); ++i)
+        e = std::max({e, a.error_Pi[i], a.tr.has_O ? a.error_O[i] : 0.0});
+      pts.emplace_back(a.tr.step, e);
+      plateau = std::max(plateau, 16 * a.roundoff);
+    }
+    std::sort(pts.begin(), pts.end());
+    std::vector<bool> used;
+    const double slope = convergence_slope(pts, plateau, &used);
+    Verdict v;
+    v.subject = r.subject;
+    v.property = "trajectory_order";
+    v.spec = "";
+    v.title = "convergence order: log-log slope of the error up to t = " + sci(T) + " against the step size";
+    v.scalar = "double";
+    v.integrator = "all runs";
+    v.cases = static_cast<int>(runs.size());
+    int n_used = 0;
+    for (bool u : used) n_used += u;
+    std::ostringstream m;
+    m << "measured slope " << (std::isnan(slope) ? std::string("(not measurable)") : sci(slope)) << " from " << n_used << " of "
+      << pts.size() << " step sizes (errors below the round-off plateau " << sci(plateau) << " left out):";
+    for (std::size_t i = 0; i < pts.size(); ++i)
+      m << "\n  h = " << sci(pts[i].first) << ": error " << sci(pts[i].second) << (used[i] ? "" : " (left out)");
+    const bool claimed = o.order > 0;
+    const bool measurable = !std::isnan(slope) && n_used >= 2;
+    const bool holds = measurable && std::abs(slope - o.order) <= 0.2;
+    if (claimed) {
+      v.claims.push_back(ClaimFinding{"order", true, holds,
+                                      "measured slope " + (measurable ? sci(slope) : std::string("not measurable")) +
+                                          ", claimed " + std::to_string(o.order) + " (allowed difference 0.2)"});
+      v.outcome = holds ? Outcome::Pass : Outcome::Fail;
+      if (!measurable)
+        m << "\nfewer than two step sizes lie above the round-off plateau: use larger steps to measure the order";
+    } else {
+      v.outcome = Outcome::Pass;
+      m << "\n(no order claimed: give --order p to have it judged)";
+    }
+    v.message = m.str();
+    Series s;
+    s.figure = "convergence";
+    s.name = "error up to t = " + sci(T);
+    s.x_label = "step size h";
+    s.y_label = "max error / |Pi(0)|";
+    s.log_x = s.log_y = true;
+    s.points = pts;
+    s.reference_slope = o.order;
+    v.series.push_back(s);
+    r.verdicts.push_back(v);
+    IntegratorInfo info;
+    info.name = "all runs";
+    info.has_claims = claimed;
+    info.claims.integrator = "all runs";
+    info.claims.order = o.order;
+    info.steps = {"convergence over " + std::to_string(runs.size()) + " step sizes"};
+    info.scalars = {"double"};
+    r.integrators.push_back(info);
+  } else if (o.order > 0) {
+    r.info.warnings.push_back("--order needs runs at several step sizes (give two or more files); it was not checked");
+  }
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+}  // namespace gm::harness

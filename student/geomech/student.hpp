@@ -1,0 +1,305 @@
+// geomech/student.hpp: plug your own implementation into the geomech property suite.
+//
+// Write a struct whose static member functions are named after the slots of `geomech slots`,
+// preferably as templates on the scalar T, then register it with one macro:
+//
+//   #include <geomech/student.hpp>
+//   using namespace gm;   // Vec3<T>, Mat3<T>, MatX<T>, RigidBodyState<T>, ...
+//
+//   struct MyRigidBody {
+//     template <class T> static Mat3<T> hat(const Vec3<T>& v) { ... }
+//     template <class T> static Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& Pi) { ... }
+//   };
+//
+//   struct Midpoint {                                       // an integrator (optional)
+//     static constexpr const char* name = "midpoint";
+//     static constexpr gm::student::Claims claims{.order = 2, .symmetric = true, .casimir = true};
+//     template <class T>
+//     static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) { ... }
+//   };
+//
+//   GEOMECH_STUDENT(MyRigidBody, Midpoint);                 // the implementation, then its integrators
+//
+// and run `./geomech check my_rigid_body.cpp`. Only the functions you write are checked; every
+// other check is reported NOT PROVIDED, with the reason.
+//
+// Rules of detection (C++20 requires-expressions; nothing you omit is an error):
+// - A slot is filled when `Impl::template name<T>(args...)` (or, in double only, a plain
+//   `Impl::name(args...)`) can be called with the slot's arguments and its result converts to the
+//   slot's result type. Declare the result type; `auto` would make the compiler instantiate the
+//   body just to detect the slot.
+// - A function template is checked in double, in 50-digit floats (Real50) and, for the algebraic
+//   slots, in exact rationals (Rational). A function written for double only is checked in double
+//   and the report lists what that misses. In templates call sqrt, sin, cos, abs unqualified
+//   (`using std::sqrt; sqrt(x)`) so the 50-digit overloads are found.
+// - If a template does not compile for a scalar, `geomech check` drops just that slot in just that
+//   scalar and says so. In your own build you can opt out: `static constexpr const char* skip_exact
+//   = "all";` (or a list of slot names, "hamiltonian_3_4 clebsch_3_21"); `skip_mp50` likewise.
+// - Integrators need `name`; `claims` is optional (nothing claimed); `rigid_body_step` and/or
+//   `manakov_step` are detected like slots. Integrators are never run in rationals.
+// - Write no main(), or guard yours with `#ifndef GEOMECH_STUDENT_CHECK`.
+#pragma once
+
+#include "core/subject.hpp"
+
+#include <concepts>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace gm::student {
+
+// What an integrator claims about itself; the harness verifies each claim.
+struct Claims {
+  int order = 0;               // order of accuracy (0: no claim)
+  bool symmetric = false;      // step(h) followed by step(-h) is the identity
+  bool casimir = false;        // |Pi|^2 (rigid body) is preserved to round-off
+  bool energy = false;         // the energy is preserved to round-off
+  bool orthogonality = false;  // O stays orthogonal to round-off
+  bool spectrum = false;       // Manakov: the eigenvalues of M are preserved to round-off
+  bool poisson = false;        // the step is a Poisson map of the Lie-Poisson bracket
+};
+
+// What one translation unit registered for one scalar (filled by GEOMECH_STUDENT).
+struct PartInfo {
+  std::string registration;                          // the macro's arguments, as written
+  std::string description;                           // Impl::description, if given
+  std::map<std::string, std::string> slot_notes;     // slot -> why it is not filled
+  std::vector<IntegratorClaims> claims;
+  std::vector<std::string> warnings;
+};
+
+void register_part(std::shared_ptr<const Subject<double>> s, PartInfo info);
+void register_part(std::shared_ptr<const Subject<Real50>> s, PartInfo info);
+void register_part(std::shared_ptr<const Subject<Rational>> s, PartInfo info);
+
+namespace detail {
+
+template <class... Ts>
+struct type_list {};
+
+template <class Sig>
+struct signature_of;
+template <class R, class... A>
+struct signature_of<R(A...)> {
+  using result = R;
+  using args = type_list<A...>;
+};
+
+// Whether `name` is a word of the space- or comma-separated `list` ("all" matches everything).
+constexpr bool listed(std::string_view list, std::string_view name) {
+  std::size_t i = 0;
+  while (i < list.size()) {
+    while (i < list.size() && (list[i] == ' ' || list[i] == ',')) ++i;
+    std::size_t j = i;
+    while (j < list.size() && list[j] != ' ' && list[j] != ',') ++j;
+    const std::string_view word = list.substr(i, j - i);
+    if (!word.empty() && (word == name || word == "all")) return true;
+    i = j;
+  }
+  return false;
+}
+
+// One tag per slot, generated from GM_SUBJECT_SLOTS: how to call the student's function of that
+// name, and where the slot lives in Subject<T>. Compiler errors inside a student's function name
+// the tag (gm::student::detail::slot_<name>), which is how `geomech check` tells which slot did
+// not compile for a scalar.
+#define GM_STUDENT_SLOT_TAG(name, sig, place, meaning)                                               \
+  struct slot_##name {                                                                               \
+    static constexpr std::string_view id = #name;                                                    \
+    static constexpr std::string_view signature_text = #sig;                                         \
+    template <class T>                                                                               \
+    using signature = sig;                                                                           \
+    template <class Impl, class T, class... A>                                                       \
+    static auto call_template(A&&... a) -> decltype(Impl::template name<T>(std::forward<A>(a)...)) { \
+      return Impl::template name<T>(std::forward<A>(a)...);                                          \
+    }                                                                                                \
+    template <class Impl, class... A>                                                                \
+    static auto call_plain(A&&... a) -> decltype(Impl::name(std::forward<A>(a)...)) {               \
+      return Impl::name(std::forward<A>(a)...);                                                      \
+    }                                                                                                \
+    template <class Impl, class T>                                                                   \
+    static constexpr bool named_template = requires { &Impl::template name<T>; };                    \
+    template <class Impl>                                                                            \
+    static constexpr bool named = requires { &Impl::name; };                                         \
+    template <class T>                                                                               \
+    static auto& member(Subject<T>& s) {                                                             \
+      return s.name;                                                                                 \
+    }                                                                                                \
+  };
+GM_SUBJECT_SLOTS(GM_STUDENT_SLOT_TAG)
+#undef GM_STUDENT_SLOT_TAG
+
+template <class T>
+constexpr const char* scalar_word() {
+  if constexpr (std::is_same_v<T, double>)
+    return "double";
+  else if constexpr (std::is_same_v<T, Real50>)
+    return "mp50";
+  else
+    return "exact";
+}
+
+// Slots the student (skip_exact / skip_mp50) or the build (GEOMECH_SKIP_SLOTS, set by
+// `geomech check` when a slot does not compile for this scalar) asked to leave out.
+template <class Impl, class T>
+constexpr const char* skipped_by_student(std::string_view slot) {
+  if constexpr (std::is_same_v<T, Rational>) {
+    if constexpr (requires { std::string_view(Impl::skip_exact); })
+      if (listed(Impl::skip_exact, slot)) return "left out by the implementation (skip_exact)";
+  } else if constexpr (std::is_same_v<T, Real50>) {
+    if constexpr (requires { std::string_view(Impl::skip_mp50); })
+      if (listed(Impl::skip_mp50, slot)) return "left out by the implementation (skip_mp50)";
+  }
+  return nullptr;
+}
+
+constexpr bool skipped_by_build(std::string_view slot) {
+#ifdef GEOMECH_SKIP_SLOTS
+  return listed(GEOMECH_SKIP_SLOTS, slot);
+#else
+  (void)slot;
+  return false;
+#endif
+}
+
+template <class Slot, class Impl, class T, class R, class... A>
+void fill_slot(Subject<T>& s, PartInfo& info, type_list<A...>) {
+  if constexpr (skipped_by_student<Impl, T>(Slot::id) != nullptr) {
+    info.slot_notes[std::string(Slot::id)] = skipped_by_student<Impl, T>(Slot::id);
+  } else if constexpr (skipped_by_build(Slot::id)) {
+    info.slot_notes[std::string(Slot::id)] =
+        std::string("does not compile for ") + scalar_word<T>() + " (see the compiler's message in the report)";
+  } else if constexpr (requires(A... a) {
+                         { Slot::template call_template<Impl, T>(a...) } -> std::convertible_to<R>;
+                       }) {
+    Slot::member(s) = [](A... a) -> R { return Slot::template call_template<Impl, T>(a...); };
+  } else if constexpr (std::is_same_v<T, double> && requires(A... a) {
+                         { Slot::template call_plain<Impl>(a...) } -> std::convertible_to<R>;
+                       }) {
+    Slot::member(s) = [](A... a) -> R { return Slot::template call_plain<Impl>(a...); };
+  } else if constexpr (Slot::template named_template<Impl, T> ||
+                       (std::is_same_v<T, double> && Slot::template named<Impl>)) {
+    info.slot_notes[std::string(Slot::id)] =
+        "a function named '" + std::string(Slot::id) + "' exists, but it cannot be called as " +
+        std::string(Slot::signature_text) + " (check its parameters and result type against `geomech slots`)";
+  }
+}
+
+template <class Slot, class Impl, class T>
+void fill(Subject<T>& s, PartInfo& info) {
+  using Sig = signature_of<typename Slot::template signature<T>>;
+  fill_slot<Slot, Impl, T, typename Sig::result>(s, info, typename Sig::args{});
+}
+
+template <class Impl, class T>
+void fill_all(Subject<T>& s, PartInfo& info) {
+#define GM_STUDENT_FILL(name, sig, place, meaning) fill<slot_##name, Impl, T>(s, info);
+  GM_SUBJECT_SLOTS(GM_STUDENT_FILL)
+#undef GM_STUDENT_FILL
+}
+
+template <class Int>
+constexpr bool has_name = requires {
+  { std::string_view(Int::name) };
+};
+
+// An integrator's steps in scalar T (errors inside them name gm_integrator_of).
+template <class Int, class T>
+void gm_integrator_of(Subject<T>& s, PartInfo& info) {
+  static_assert(has_name<Int>,
+                "geomech: every integrator type given to GEOMECH_STUDENT needs "
+                "`static constexpr const char* name = \"...\";`");
+  using RS = RigidBodyState<T>;
+  using MS = ManakovState<T>;
+  Integrator<T> in;
+  in.name = std::string(Int::name);
+  if constexpr (requires(const Vec3<T>& I, const RS& x, const T& h) {
+                  { Int::template rigid_body_step<T>(I, x, h) } -> std::convertible_to<RS>;
+                })
+    in.rigid_body_step = [](const Vec3<T>& I, const RS& x, const T& h) -> RS {
+      return Int::template rigid_body_step<T>(I, x, h);
+    };
+  else if constexpr (std::is_same_v<T, double> && requires(const Vec3<T>& I, const RS& x, const T& h) {
+                       { Int::rigid_body_step(I, x, h) } -> std::convertible_to<RS>;
+                     })
+    in.rigid_body_step = [](const Vec3<T>& I, const RS& x, const T& h) -> RS { return Int::rigid_body_step(I, x, h); };
+  if constexpr (requires(const MatX<T>& A, const MS& x, const T& h) {
+                  { Int::template manakov_step<T>(A, x, h) } -> std::convertible_to<MS>;
+                })
+    in.manakov_step = [](const MatX<T>& A, const MS& x, const T& h) -> MS {
+      return Int::template manakov_step<T>(A, x, h);
+    };
+  else if constexpr (std::is_same_v<T, double> && requires(const MatX<T>& A, const MS& x, const T& h) {
+                       { Int::manakov_step(A, x, h) } -> std::convertible_to<MS>;
+                     })
+    in.manakov_step = [](const MatX<T>& A, const MS& x, const T& h) -> MS { return Int::manakov_step(A, x, h); };
+  if (in.rigid_body_step || in.manakov_step)
+    s.integrators.push_back(std::move(in));
+  else if constexpr (std::is_same_v<T, double>)
+    info.warnings.push_back("integrator '" + std::string(Int::name) +
+                            "' has neither rigid_body_step(I, x, h) nor manakov_step(A, x, h) with the expected "
+                            "signature (see `geomech slots`), so it is not checked");
+}
+
+template <class Int>
+IntegratorClaims claims_of() {
+  IntegratorClaims c;
+  c.integrator = std::string(Int::name);
+  if constexpr (requires { Int::claims; }) {
+    const auto& k = Int::claims;
+    c.order = k.order;
+    c.symmetric = k.symmetric;
+    c.casimir = k.casimir;
+    c.energy = k.energy;
+    c.orthogonality = k.orthogonality;
+    c.spectrum = k.spectrum;
+    c.poisson = k.poisson;
+  }
+  return c;
+}
+
+template <class T, class Impl, class... Ints>
+void register_scalar(const char* registration) {
+  auto s = std::make_shared<Subject<T>>();
+  PartInfo info;
+  info.registration = registration;
+  if constexpr (requires { std::string_view(Impl::description); }) info.description = Impl::description;
+  fill_all<Impl, T>(*s, info);
+  if constexpr (!std::is_same_v<T, Rational>) {
+#ifndef GEOMECH_SKIP_INTEGRATORS
+    (gm_integrator_of<Ints, T>(*s, info), ...);
+#endif
+  }
+  (info.claims.push_back(claims_of<Ints>()), ...);
+  register_part(std::shared_ptr<const Subject<T>>(std::move(s)), std::move(info));
+}
+
+// GEOMECH_STUDENT_ONLY selects one scalar per translation unit (0 double, 1 mp50, 2 exact):
+// `geomech check` compiles the file three times in parallel that way. Without it, all three.
+template <class Impl, class... Ints>
+int register_all(const char* registration) {
+#if !defined(GEOMECH_STUDENT_ONLY) || GEOMECH_STUDENT_ONLY == 0
+  register_scalar<double, Impl, Ints...>(registration);
+#endif
+#if !defined(GEOMECH_STUDENT_ONLY) || GEOMECH_STUDENT_ONLY == 1
+  register_scalar<Real50, Impl, Ints...>(registration);
+#endif
+#if !defined(GEOMECH_STUDENT_ONLY) || GEOMECH_STUDENT_ONLY == 2
+  register_scalar<Rational, Impl, Ints...>(registration);
+#endif
+  return 0;
+}
+
+}  // namespace detail
+}  // namespace gm::student
+
+// GEOMECH_STUDENT(Implementation, Integrator1, Integrator2, ...): registers the implementation
+// (a struct with static member functions named after slots) and its integrators. Use it once.
+#define GEOMECH_STUDENT(...)                                                                                 \
+  [[maybe_unused]] static const int geomech_student_registration_ =                                         \
+      ::gm::student::detail::register_all<__VA_ARGS__>(#__VA_ARGS__)

@@ -1,0 +1,443 @@
+// The example implementations (examples/students) as tests: each example's check program runs,
+// and its report must say exactly what the table below says: which checks fail (and with what
+// words), crash or time out; every other check passes or is not provided. The correct example
+// passes everything. Plus the real `geomech check FILE.cpp` path end to end, and class mode.
+//
+//   example_tests --ctest-script OUT --examples TSV --geomech EXE --source-dir DIR
+//       writes the ctest declarations (run after each build);
+//   example_tests --example NAME --program EXE --source FILE      one example;
+//   example_tests --end-to-end NAME --geomech EXE --source FILE    `geomech check FILE` from scratch;
+//   example_tests --class DIR --geomech EXE                        `geomech check-class DIR`;
+//   example_tests --cmake-package CMAKE --config DIR --source FILE  a student's own CMake project.
+//
+// The end-to-end tests compile (three compilers each) and take the RESOURCE_LOCK "compilers", so
+// they run one at a time and the time they print is that of one check alone.
+//
+// Examples whose bug is a false integrator claim are judged by their claims table; an
+// integrator-scoped property may FAIL for them only because of such a claim.
+#include "harness/process.hpp"
+#include "properties/registry.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+struct Expected {
+  std::string property;
+  std::vector<std::string> scalars;
+  std::string outcome;  // FAIL, CRASH, TIMEOUT, NOT PROVIDED
+  std::string says;     // text the verdict's message must contain
+};
+
+struct ClaimExpected {
+  std::string integrator, claim, status;
+};
+
+struct Example {
+  std::string name;
+  std::string bug;  // what is wrong, for the test log
+  std::vector<Expected> verdicts;
+  std::vector<ClaimExpected> claims;
+  bool false_claims = false;  // the bug is a false claim: integrator properties may FAIL
+  std::vector<std::string> args;
+};
+
+const std::vector<std::string> all3 = {"double", "mp50", "exact"};
+
+const std::vector<Example>& examples() {
+  static const std::vector<Example> list = {
+      {"correct", "nothing: every check it can be given passes, every claim holds", {}, {}, false, {}},
+      {"double_only",
+       "nothing, but written for double only",
+       {{"euler_form_3_8", {"mp50", "exact"}, "NOT PROVIDED", "provided for double only"},
+        {"hamiltonian_gradient_3_5", {"mp50", "exact"}, "NOT PROVIDED", "provided for double only"},
+        {"hat_is_cross_product", {"mp50", "exact"}, "NOT PROVIDED", "provided for double only"}},
+       {},
+       false,
+       {}},
+      {"bug_euler_sign",
+       "Euler's equations with the cross product reversed",
+       {{"euler_form_3_8", all3, "FAIL", "euler_3_8(I, I Omega) = componentwise (2.1) does not hold"},
+        {"euler_flow_is_elliptic_solution", {"double", "mp50"}, "FAIL", "= elliptic solution"}},
+       {},
+       false,
+       {}},
+      {"bug_hat_transposed",
+       "the transposed hat convention",
+       {{"hat_is_cross_product", all3, "FAIL", "does not hold"},
+        {"hat_is_lie_algebra_isomorphism", all3, "FAIL", "[hat(a), hat(b)] = hat(a x b) does not hold"},
+        {"restricted_variation_2_8", all3, "FAIL", "dOmega/ds - dXi/dt = Omega x Xi does not hold"}},
+       {},
+       false,
+       {}},
+      {"bug_reconstruction",
+       "reconstruction as dO/dt = hat(Omega) O",
+       {{"reconstruction_is_left_invariant", all3, "FAIL", "(left-invariant) does not hold"}},
+       {},
+       false,
+       {}},
+      {"bug_pairing_half",
+       "the factor 1/2 of the trace pairing lost",
+       {{"trace_pairing_is_dot_product", all3, "FAIL", "<hat(a), hat(b)> = a . b does not hold"},
+        {"lagrangian_2_13_is_kinetic_energy", all3, "FAIL", "does not hold"},
+        {"symmetric_part_does_not_pair", all3, "FAIL", "<Pi_skew, Omega_hat> = vee(Pi_skew) . Omega does not hold"}},
+       {},
+       false,
+       {}},
+      {"bug_manakov_omega",
+       "Manakov's Omega recovered as A^-1 M / 2",
+       {{"manakov_omega_solves_2_34", all3, "FAIL", "A Omega + Omega A = M for Omega = manakov_Omega(A, M) does not hold"}},
+       {},
+       false,
+       {}},
+      {"bug_hamiltonian_inertia",
+       "the Hamiltonian with I instead of I^-1",
+       {{"hamiltonian_3_3_is_3_4", all3, "FAIL", "does not hold"},
+        {"hamiltonian_gradient_3_5", all3, "FAIL", "does not hold"}},
+       {},
+       false,
+       {}},
+      {"bug_euler_no_division",
+       "(2.1) without the division by I",
+       {{"euler_form_2_1", all3, "FAIL", "I * euler_2_1(I, Omega) = componentwise (2.1) does not hold"}},
+       {},
+       false,
+       {}},
+      {"bug_crash",
+       "an out-of-range index (the process aborts)",
+       {{"vee_inverts_hat", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"},
+        {"restricted_variation_2_8", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"}},
+       {},
+       false,
+       {}},
+      {"bug_hang",
+       "an iteration that never ends",
+       {{"manakov_omega_solves_2_34", all3, "TIMEOUT", "did not finish within 2 s"}},
+       {},
+       false,
+       {"--timeout", "2"}},
+      {"bug_throws",
+       "a stub that throws",
+       {{"lagrangian_2_13_is_kinetic_energy", all3, "FAIL", "lagrangian_2_13: not written yet"}},
+       {},
+       false,
+       {}},
+      {"bug_claims_casimir",
+       "explicit Euler claiming to preserve |Pi|^2 and O^T O = Id",
+       {},
+       {{"explicit_euler", "casimir", "FALSE CLAIM"},
+        {"explicit_euler", "orthogonality", "FALSE CLAIM"},
+        {"explicit_euler", "order", "verified"}},
+       true,
+       {}},
+      {"bug_order_claim",
+       "a first-order Lie-Trotter splitting claiming order 2 and symmetry",
+       {},
+       {{"lie_trotter", "order", "FALSE CLAIM"},
+        {"lie_trotter", "symmetric", "FALSE CLAIM"},
+        {"lie_trotter", "casimir", "verified"},
+        {"lie_trotter", "orthogonality", "verified"}},
+       true,
+       {}},
+  };
+  return list;
+}
+
+const Example* find_example(const std::string& name) {
+  for (const auto& e : examples())
+    if (e.name == name) return &e;
+  return nullptr;
+}
+
+std::string temp_dir(const std::string& tag) {
+  std::string t = (fs::temp_directory_path() / ("geomech-test-" + tag + "-XXXXXX")).string();
+  if (!::mkdtemp(t.data())) throw std::runtime_error("cannot create a temporary directory");
+  return t;
+}
+
+json read_json(const fs::path& p) {
+  std::ifstream f(p);
+  if (!f) throw std::runtime_error("no " + p.string());
+  return json::parse(f);
+}
+
+int failures = 0;
+void check(bool ok, const std::string& what) {
+  if (!ok) {
+    ++failures;
+    std::cout << "  FAILED: " << what << "\n";
+  }
+}
+
+// The report of one example against its expectations.
+void check_report(const Example& e, const json& report, int exit_code) {
+  bool expect_problem = false;
+  for (const auto& x : e.verdicts)
+    if (x.outcome != "NOT PROVIDED") expect_problem = true;
+  for (const auto& c : e.claims)
+    if (c.status == "FALSE CLAIM") expect_problem = true;
+  check(exit_code == (expect_problem ? 1 : 0),
+        "exit status " + std::to_string(exit_code) + ", expected " + (expect_problem ? "1" : "0"));
+
+  std::map<std::pair<std::string, std::string>, const Expected*> expected;
+  for (const auto& x : e.verdicts)
+    for (const auto& s : x.scalars) expected[{x.property, s}] = &x;
+  std::map<std::pair<std::string, std::string>, bool> seen;
+  for (const auto& v : report.at("verdicts")) {
+    const std::string prop = v.at("property"), scalar = v.at("scalar"), outcome = v.at("outcome");
+    const std::string message = v.at("message");
+    auto it = expected.find({prop, scalar});
+    if (it != expected.end()) {
+      seen[{prop, scalar}] = true;
+      check(outcome == it->second->outcome, prop + " in " + scalar + " is " + outcome + ", expected " + it->second->outcome +
+                                                "\n    message: " + message);
+      check(message.find(it->second->says) != std::string::npos,
+            prop + " in " + scalar + ": the message does not say \"" + it->second->says + "\"\n    message: " + message);
+      if (outcome == "FAIL" || outcome == "CRASH" || outcome == "TIMEOUT")
+        check(v.contains("reproduce_command") && !v.at("reproduce_command").get<std::string>().empty(),
+              prop + " in " + scalar + " has no reproduce command");
+      if (outcome == "FAIL" && message.find("Exception") == std::string::npos)
+        check(!v.at("counterexample").empty(), prop + " in " + scalar + " has no counterexample");
+    } else if (!(e.false_claims && outcome == "FAIL" && message.find("false claim") != std::string::npos)) {
+      check(outcome == "PASS" || outcome == "NOT PROVIDED",
+            prop + " in " + scalar + " is " + outcome + "; only PASS or NOT PROVIDED expected\n    message: " + message);
+    }
+    if (outcome == "NOT PROVIDED") check(!message.empty(), prop + " in " + scalar + " is NOT PROVIDED without a reason");
+  }
+  for (const auto& [key, x] : expected)
+    check(seen.count(key) > 0, key.first + " in " + key.second + " is missing from the report");
+
+  for (const auto& c : e.claims) {
+    std::string status = "(no such integrator)";
+    for (const auto& i : report.at("integrators"))
+      if (i.at("name") == c.integrator)
+        for (const auto& row : i.at("claims"))
+          if (row.at("claim") == c.claim) status = row.at("status");
+    check(status == c.status, "claim '" + c.claim + "' of " + c.integrator + " is '" + status + "', expected '" +
+                                  c.status + "'");
+  }
+  // No claim of any integrator may be false unless expected.
+  for (const auto& i : report.at("integrators"))
+    for (const auto& row : i.at("claims")) {
+      bool listed = false;
+      for (const auto& c : e.claims) listed = listed || (c.integrator == i.at("name") && c.claim == row.at("claim"));
+      if (!listed)
+        check(row.at("status") != "FALSE CLAIM",
+              "claim '" + row.at("claim").get<std::string>() + "' of " + i.at("name").get<std::string>() + " is false");
+    }
+}
+
+int run_example(const std::string& name, const std::string& program, const std::string& source) {
+  const Example* e = find_example(name);
+  if (!e) {
+    std::cout << "no expectations for example '" << name << "'\n";
+    return 1;
+  }
+  std::cout << "example " << name << ": " << e->bug << "\n";
+  const std::string dir = temp_dir(name);
+  std::vector<std::string> argv{program, "--quiet", "--jobs", "2", "--report", dir + "/report", "--source", source,
+                                "--reproduce-prefix", "geomech check " + source};
+  if (std::find(e->args.begin(), e->args.end(), "--timeout") == e->args.end())
+    argv.insert(argv.end(), {"--timeout", "60"});
+  argv.insert(argv.end(), e->args.begin(), e->args.end());
+  const auto pr = gm::harness::run_process(gm::harness::ProcessSpec{argv, {}, false});
+  std::cout << pr.output;
+  try {
+    check_report(*e, read_json(fs::path(dir) / "report" / "verdicts.json"), pr.exit_code);
+    check(fs::exists(fs::path(dir) / "report" / "report.md"), "no report.md");
+    check(fs::exists(fs::path(dir) / "report" / "junit.xml"), "no junit.xml");
+  } catch (const std::exception& ex) {
+    check(false, ex.what());
+  }
+  fs::remove_all(dir);
+  std::cout << (failures ? "example report not as expected\n" : "example report as expected\n");
+  return failures ? 1 : 0;
+}
+
+// `geomech check FILE.cpp` from nothing: compile (in a fresh cache), link, check, report.
+int run_end_to_end(const std::string& name, const std::string& geomech, const std::string& source) {
+  const std::string dir = temp_dir("e2e-" + name);
+  std::vector<std::string> argv{geomech, "check", source, "--cache-dir", dir + "/cache", "--report", dir + "/report",
+                                "--jobs", "2", "--quiet"};
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto pr = gm::harness::run_process(gm::harness::ProcessSpec{argv, {}, false});
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cout << pr.output;
+  std::printf("end to end: `geomech check %s` from scratch took %.1f s (compile, link, check, report)\n",
+              fs::path(source).filename().c_str(), seconds);
+  try {
+    const json report = read_json(fs::path(dir) / "report" / "verdicts.json");
+    if (name == "correct") {
+      check(pr.exit_code == 0, "exit status " + std::to_string(pr.exit_code) + ", expected 0");
+      check(report.at("counts").at("PASS").get<int>() > 0, "nothing passed");
+      for (const char* bad : {"FAIL", "CRASH", "TIMEOUT", "ERROR"})
+        check(report.at("counts").at(bad).get<int>() == 0, std::string("some checks are ") + bad);
+      // The second run finds everything up to date.
+      const auto t1 = std::chrono::steady_clock::now();
+      const auto again = gm::harness::run_process(gm::harness::ProcessSpec{argv, {}, false});
+      const double s2 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+      std::printf("the same check again (nothing to compile) took %.1f s\n", s2);
+      check(again.output.find("(up to date)") != std::string::npos, "the second run compiled again");
+    } else if (name == "bug_nan") {
+      // A NaN fails; the slot that needs sqrt is left out of the exact rationals, with the reason.
+      check(pr.exit_code == 1, "exit status " + std::to_string(pr.exit_code) + ", expected 1");
+      bool nan_fail = false, exact_reason = false;
+      for (const auto& v : report.at("verdicts")) {
+        const std::string prop = v.at("property"), scalar = v.at("scalar"), outcome = v.at("outcome"),
+                          message = v.at("message");
+        if (prop == "hamiltonian_3_3_is_3_4" && scalar == "double" && outcome == "FAIL" &&
+            message.find("NaN") != std::string::npos)
+          nan_fail = true;
+        if (prop == "hamiltonian_3_3_is_3_4" && scalar == "exact" && outcome == "NOT PROVIDED" &&
+            message.find("does not compile for exact") != std::string::npos &&
+            message.find("no exact rational value") != std::string::npos)
+          exact_reason = true;
+      }
+      check(nan_fail, "hamiltonian_3_3_is_3_4 does not fail in double with a message about NaN");
+      check(exact_reason, "hamiltonian_3_3_is_3_4 in exact is not NOT PROVIDED with the compiler's reason and hint");
+    } else {
+      check(false, "no end-to-end expectations for " + name);
+    }
+  } catch (const std::exception& ex) {
+    check(false, ex.what());
+  }
+  fs::remove_all(dir);
+  return failures ? 1 : 0;
+}
+
+// `geomech check-class DIR`: one summary table, one report per implementation, the bad ones named.
+int run_class(const std::string& class_dir, const std::string& geomech) {
+  const std::string dir = temp_dir("class");
+  const auto pr = gm::harness::run_process(gm::harness::ProcessSpec{
+      {geomech, "check-class", class_dir, "--report", dir + "/reports", "--parallel", "2", "--scalar", "double"},
+      {},
+      false});
+  std::cout << pr.output;
+  check(pr.exit_code == 1, "exit status " + std::to_string(pr.exit_code) + ", expected 1 (one fails, one does not compile)");
+  std::ifstream f(fs::path(dir) / "reports" / "summary.md");
+  std::stringstream summary;
+  summary << f.rdbuf();
+  const std::string s = summary.str();
+  check(s.find("| alice | PASS |") != std::string::npos, "alice does not pass in the summary");
+  check(s.find("| bob | **FAIL** |") != std::string::npos, "bob does not fail in the summary");
+  check(s.find("| carol | **DOES NOT COMPILE** |") != std::string::npos, "carol is not reported as not compiling");
+  check(s.find("| dave | PASS |") != std::string::npos, "dave (a folder with a header) does not pass");
+  check(s.find("carol: does not compile") != std::string::npos && s.find("error") != std::string::npos,
+        "the summary does not show carol's compiler error");
+  for (const char* who : {"alice", "bob", "dave"})
+    check(fs::exists(fs::path(dir) / "reports" / who / "report.md"), std::string("no report for ") + who);
+  std::cout << s;
+  fs::remove_all(dir);
+  return failures ? 1 : 0;
+}
+
+// A student's own CMake project using the exported GeomechStudentConfig.cmake.
+int run_cmake_package(const std::string& cmake, const std::string& config_dir, const std::string& source) {
+  const fs::path dir = temp_dir("cmake-package");
+  fs::copy_file(source, dir / "student.cpp");
+  std::ofstream(dir / "CMakeLists.txt") << "cmake_minimum_required(VERSION 3.25)\nproject(student CXX)\n"
+                                        << "find_package(GeomechStudent REQUIRED PATHS \"" << config_dir
+                                        << "\" NO_DEFAULT_PATH)\ngeomech_add_student(check student.cpp)\n";
+  using gm::harness::ProcessSpec;
+  const auto configure = gm::harness::run_process(
+      ProcessSpec{{cmake, "-S", dir.string(), "-B", (dir / "build").string(), "-DCMAKE_BUILD_TYPE=Release"}, {}, false});
+  check(configure.exit_code == 0, "the student's project does not configure:\n" + configure.output);
+  const auto build = gm::harness::run_process(ProcessSpec{{cmake, "--build", (dir / "build").string()}, {}, false});
+  check(build.exit_code == 0, "the student's project does not build:\n" + build.output);
+  if (build.exit_code == 0) {
+    const auto run = gm::harness::run_process(
+        ProcessSpec{{(dir / "build" / "check").string(), "--quiet", "--report", (dir / "report").string()}, {}, false});
+    std::cout << run.output;
+    check(run.exit_code == 0, "the student's check program fails");
+    check(run.output.find("PASS") != std::string::npos, "no PASS in the summary");
+  }
+  fs::remove_all(dir);
+  return failures ? 1 : 0;
+}
+
+std::string bracket(const std::string& s) { return "[==[" + s + "]==]"; }
+
+int write_ctest_script(const std::string& out, const std::string& tsv, const std::string& geomech,
+                       const std::string& source_dir, const std::string& cmake, const std::string& config_dir) {
+  std::ifstream in(tsv);
+  if (!in) {
+    std::cerr << "cannot read " << tsv << "\n";
+    return 1;
+  }
+  std::string self = fs::read_symlink("/proc/self/exe").string();
+  std::ostringstream script;
+  script << "# Generated by " << self << " --ctest-script; do not edit.\n";
+  for (std::string line; std::getline(in, line);) {
+    std::istringstream fields(line);
+    std::string name, program, source;
+    if (!std::getline(fields, name, '\t') || !std::getline(fields, program, '\t') || !std::getline(fields, source, '\t'))
+      continue;
+    const Example* e = find_example(name);
+    if (!e) {
+      std::cerr << "example '" << name << "' has no expectations in tests/example_tests.cpp\n";
+      return 1;
+    }
+    const std::string test = "example." + name;
+    script << "add_test(" << bracket(test) << " " << bracket(self) << " --example " << bracket(name) << " --program "
+           << bracket(program) << " --source " << bracket(source) << ")\n";
+    std::string labels = "examples;student";
+    script << "set_tests_properties(" << bracket(test) << " PROPERTIES LABELS " << bracket(labels) << " TIMEOUT 300";
+    script << ")\n";
+  }
+  for (const char* e2e : {"correct", "bug_nan"}) {
+    const std::string test = std::string("student.end_to_end.") + e2e;
+    script << "add_test(" << bracket(test) << " " << bracket(self) << " --end-to-end " << e2e << " --geomech "
+           << bracket(geomech) << " --source " << bracket(source_dir + "/examples/students/" + e2e + ".cpp") << ")\n";
+    script << "set_tests_properties(" << bracket(test) << " PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
+  }
+  script << "add_test(student.cmake_package " << bracket(self) << " --cmake-package " << bracket(cmake) << " --config "
+         << bracket(config_dir) << " --source " << bracket(source_dir + "/tests/class/alice.cpp") << ")\n";
+  script << "set_tests_properties(student.cmake_package PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
+  script << "add_test(student.class_mode " << bracket(self) << " --class " << bracket(source_dir + "/tests/class")
+         << " --geomech " << bracket(geomech) << ")\n";
+  script << "set_tests_properties(student.class_mode PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
+  const std::string tmp = out + ".tmp";
+  {
+    std::ofstream f(tmp, std::ios::trunc);
+    f << script.str();
+    if (!f) return 1;
+  }
+  fs::rename(tmp, out);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::map<std::string, std::string> a;
+  for (int i = 1; i + 1 < argc; i += 2) a[argv[i]] = argv[i + 1];
+  try {
+    if (a.count("--ctest-script"))
+      return write_ctest_script(a["--ctest-script"], a["--examples"], a["--geomech"], a["--source-dir"], a["--cmake"],
+                                a["--config"]);
+    if (a.count("--cmake-package")) return run_cmake_package(a["--cmake-package"], a["--config"], a["--source"]);
+    if (a.count("--example")) return run_example(a["--example"], a["--program"], a["--source"]);
+    if (a.count("--end-to-end")) return run_end_to_end(a["--end-to-end"], a["--geomech"], a["--source"]);
+    if (a.count("--class")) return run_class(a["--class"], a["--geomech"]);
+  } catch (const std::exception& e) {
+    std::cout << "error: " << e.what() << "\n";
+    return 1;
+  }
+  std::cerr << "usage: see the comment at the top of tests/example_tests.cpp\n";
+  return 2;
+}
