@@ -42,7 +42,8 @@ TEST(Spec, EveryMutantIsAUsedNegativeControl) {
 TEST(Spec, GeneratedTableIsCurrent) {
   const Catalogue c = load();
   const std::string expected = catalogue_markdown(c, properties());
-  const std::string path = std::string(GM_SOURCE_DIR) + "/spec/CATALOGUE.md";
+  std::string path = GM_SOURCE_DIR;  // appended, not `+`: GCC 12 at -O1 flags the temporary (a false -Warray-bounds)
+  path += "/spec/CATALOGUE.md";
   std::ifstream in(path);
   std::stringstream got;
   got << in.rdbuf();

@@ -414,4 +414,36 @@ std::vector<T> times_to(const T& t_end, int count) {
   return t;
 }
 
+// The draws and the flows are instantiated once, in dynamics.cpp, for double and Real50: each
+// drags in RapidCheck's generators, the Taylor oracle or the extrapolation integrator over a
+// multiprecision type, which every dynamic property file would otherwise compile again.
+#define GM_DYNAMICS_FOR(PREFIX, T)                                                                          \
+  PREFIX template Vec3<T> draw_inertia<T>();                                                                \
+  PREFIX template Vec3<T> draw_triaxial_inertia<T>();                                                       \
+  PREFIX template Vec3<T> draw_momentum<T>();                                                               \
+  PREFIX template Mat3<T> draw_rotation<T>();                                                               \
+  PREFIX template Vec3<T> draw_generic_inertia<T>();                                                        \
+  PREFIX template T generic_entry<T>();                                                                     \
+  PREFIX template Vec3<T> draw_generic_momentum<T>();                                                       \
+  PREFIX template std::vector<T> draw_generic_manakov_a<T>(int);                                            \
+  PREFIX template MatX<T> draw_generic_skew<T>(int);                                                        \
+  PREFIX template std::vector<T> draw_manakov_a<T>(int);                                                    \
+  PREFIX template MatX<T> draw_skew<T>(int, int);                                                           \
+  PREFIX template T rigid_body_conditioning<T>(const Vec3<T>&, const Vec3<T>&, const T&);                   \
+  PREFIX template std::vector<RigidBodyState<T>> oracle_rigid_body<T>(const Vec3<T>&, const RigidBodyState<T>&, \
+                                                                      const std::vector<T>&);               \
+  PREFIX template std::vector<ManakovState<T>> oracle_manakov<T>(const std::vector<T>&, const ManakovState<T>&, \
+                                                                 const std::vector<T>&);                    \
+  PREFIX template std::vector<RigidBodyState<T>> subject_rigid_body<T>(                                     \
+      const Subject<T>&, const Vec3<T>&, const RigidBodyState<T>&, const std::vector<T>&, long*);           \
+  PREFIX template std::vector<MatX<T>> subject_manakov_M<T>(const Subject<T>&, const MatX<T>&, const MatX<T>&, \
+                                                            const std::vector<T>&, long*);                  \
+  PREFIX template std::vector<Vec3<T>> subject_euler<T>(const Subject<T>&, const Vec3<T>&, const Vec3<T>&,   \
+                                                        const std::vector<T>&, long*);                      \
+  PREFIX template std::vector<ManakovState<T>> subject_manakov<T>(const Subject<T>&, const MatX<T>&,         \
+                                                                  const ManakovState<T>&, const std::vector<T>&, long*);
+
+GM_DYNAMICS_FOR(extern, double)
+GM_DYNAMICS_FOR(extern, Real50)
+
 }  // namespace gm::dyn

@@ -12,4 +12,8 @@ MatX<Rational> cayley_rational(const MatX<Rational>& S) {
   return Eigen::FullPivLU<MatX<Rational>>(Id - S).solve(Id + S);
 }
 
+GM_GENERATORS_FOR(, double)
+GM_GENERATORS_FOR(, Real50)
+GM_GENERATORS_FOR(, Rational)
+
 }  // namespace gm::gen

@@ -173,4 +173,29 @@ rc::Gen<Mat3<T>> inertia_tensor() {
                       });
 }
 
+// Each generator is instantiated once, in generators.cpp, for the three scalars: without this,
+// every property file would instantiate RapidCheck's generator machinery over Real50 and Rational
+// again (measured: ~3 s of compilation per file).
+#define GM_GENERATORS_FOR(PREFIX, T)                                    \
+  PREFIX template rc::Gen<T> scalar<T>(int, int);                       \
+  PREFIX template rc::Gen<T> positive<T>(int, int);                     \
+  PREFIX template rc::Gen<VecX<T>> vec<T>(int, int, int);               \
+  PREFIX template rc::Gen<Vec3<T>> vec3<T>(int, int);                   \
+  PREFIX template rc::Gen<Vec6<T>> vec6<T>(int, int);                   \
+  PREFIX template rc::Gen<Vec3<T>> nonzero_vec3<T>(int, int);           \
+  PREFIX template rc::Gen<MatX<T>> mat<T>(int, int, int, int);          \
+  PREFIX template rc::Gen<Mat3<T>> mat3<T>(int, int);                   \
+  PREFIX template rc::Gen<MatX<T>> skew<T>(int, int, int);              \
+  PREFIX template rc::Gen<Mat3<T>> skew3<T>(int, int);                  \
+  PREFIX template rc::Gen<MatX<T>> symmetric<T>(int, int, int);         \
+  PREFIX template rc::Gen<MatX<T>> rotation<T>(int);                    \
+  PREFIX template rc::Gen<Mat3<T>> rotation3<T>();                      \
+  PREFIX template rc::Gen<Vec3<T>> inertia<T>(int, int);                \
+  PREFIX template rc::Gen<Vec3<T>> triaxial_inertia<T>(int, int);       \
+  PREFIX template rc::Gen<Mat3<T>> inertia_tensor<T>();
+
+GM_GENERATORS_FOR(extern, double)
+GM_GENERATORS_FOR(extern, Real50)
+GM_GENERATORS_FOR(extern, Rational)
+
 }  // namespace gm::gen

@@ -270,5 +270,15 @@ rc::Gen<VecX<T>> point(int n) {
   return vec<T>(n, kPointMax, kPointBits);
 }
 
+// Instantiated once, in polynomial.cpp (RapidCheck's generators over Real50 and Rational are
+// expensive to compile).
+#define GM_POLYNOMIAL_GENERATORS_FOR(PREFIX, T)                         \
+  PREFIX template rc::Gen<Polynomial<T>> polynomial<T>(int, int, int); \
+  PREFIX template rc::Gen<VecX<T>> point<T>(int);
+
+GM_POLYNOMIAL_GENERATORS_FOR(extern, double)
+GM_POLYNOMIAL_GENERATORS_FOR(extern, Real50)
+GM_POLYNOMIAL_GENERATORS_FOR(extern, Rational)
+
 }  // namespace gen
 }  // namespace gm

@@ -41,5 +41,9 @@ std::string describe_failure(std::string_view what, std::string_view kind, const
   return os.str();
 }
 
+GM_REQUIRE_CLOSE_FOR(, double)
+GM_REQUIRE_CLOSE_FOR(, Real50)
+GM_REQUIRE_CLOSE_FOR(, Rational)
+
 }  // namespace detail
 }  // namespace gm

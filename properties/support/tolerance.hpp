@@ -100,16 +100,12 @@ std::string describe_failure(std::string_view what, std::string_view kind, const
 
 }  // namespace detail
 
-// |lhs - rhs| <= k eps(T) scale (entrywise max), exactly 0 in Rational.
-// Use for the `exact` class (algebraic identities) and the `roundoff` class alike: the class
-// is declared by the property; in rationals only exact identities are ever instantiated.
-// lhs and rhs may be scalars of type T or Eigen matrices/expressions over T (rhs is converted to
-// the plain type of lhs).
-template <class A, class B, class T>
-void require_close(std::string_view what, const A& lhs_in, const B& rhs_in, const T& scale, double k) {
-  using X = typename detail::plain_of<A, T>::type;
-  const X lhs = lhs_in;
-  const X rhs = rhs_in;
+namespace detail {
+
+// The comparison on plain values (a scalar T or a plain Eigen matrix over T); instantiated once
+// for the common shapes in tolerance.cpp (see the extern declarations below).
+template <class X, class T>
+void require_close_plain(std::string_view what, const X& lhs, const X& rhs, const T& scale, double k) {
   auto& log = residual_log();
   ++log.checks;
   if (!detail::finite(lhs) || !detail::finite(rhs)) {
@@ -133,6 +129,38 @@ void require_close(std::string_view what, const A& lhs_in, const B& rhs_in, cons
                                                    : to_string_full(allowed) + " = " + std::to_string(k) +
                                                          " eps * scale, scale = " + to_string_full(scale)));
   }
+}
+
+#define GM_REQUIRE_CLOSE_FOR(PREFIX, T)                                                                        \
+  PREFIX template void require_close_plain<T, T>(std::string_view, const T&, const T&, const T&, double);     \
+  PREFIX template void require_close_plain<Vec3<T>, T>(std::string_view, const Vec3<T>&, const Vec3<T>&,     \
+                                                       const T&, double);                                     \
+  PREFIX template void require_close_plain<Vec6<T>, T>(std::string_view, const Vec6<T>&, const Vec6<T>&,     \
+                                                       const T&, double);                                     \
+  PREFIX template void require_close_plain<Mat3<T>, T>(std::string_view, const Mat3<T>&, const Mat3<T>&,     \
+                                                       const T&, double);                                     \
+  PREFIX template void require_close_plain<VecX<T>, T>(std::string_view, const VecX<T>&, const VecX<T>&,     \
+                                                       const T&, double);                                     \
+  PREFIX template void require_close_plain<MatX<T>, T>(std::string_view, const MatX<T>&, const MatX<T>&,     \
+                                                       const T&, double);
+
+GM_REQUIRE_CLOSE_FOR(extern, double)
+GM_REQUIRE_CLOSE_FOR(extern, Real50)
+GM_REQUIRE_CLOSE_FOR(extern, Rational)
+
+}  // namespace detail
+
+// |lhs - rhs| <= k eps(T) scale (entrywise max), exactly 0 in Rational.
+// Use for the `exact` class (algebraic identities) and the `roundoff` class alike: the class
+// is declared by the property; in rationals only exact identities are ever instantiated.
+// lhs and rhs may be scalars of type T or Eigen matrices/expressions over T (rhs is converted to
+// the plain type of lhs).
+template <class A, class B, class T>
+void require_close(std::string_view what, const A& lhs_in, const B& rhs_in, const T& scale, double k) {
+  using X = typename detail::plain_of<A, T>::type;
+  const X lhs = lhs_in;
+  const X rhs = rhs_in;
+  detail::require_close_plain<X, T>(what, lhs, rhs, scale, k);
 }
 
 // A condition that is not a comparison of two values (e.g. a definiteness test); `detail` says
