@@ -51,6 +51,8 @@ CheckConfig config_from(const CheckCliOptions& o) {
   c.run.seed = o.seed;
   c.run.cases = o.cases;
   c.run.case_factor = o.case_factor;
+  if (std::string why; !o.reproduce.empty() && !is_reproduce_string(o.reproduce, &why))
+    throw CLI::ValidationError("--reproduce", "not a reproduce string printed with a failure (" + why + ")");
   c.run.reproduce = o.reproduce;
   c.timeout_seconds = o.timeout;
   c.jobs = o.jobs;

@@ -230,12 +230,19 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
                             std::to_string(k + 1) + " = " + printable(tr.inertia[k]));
   }
   {
+    // No mass distribution has a moment larger than the sum of the other two (the notes' example
+    // I = diag(1, 1/2, 1/3) is of that kind): refused unless --allow-nonphysical says otherwise.
     double I[3];
     for (int k = 0; k < 3; ++k) I[k] = number({tr.inertia[k], 0}, name, inertia_line, "a moment of inertia");
     for (int k = 0; k < 3; ++k)
-      if (I[k] > I[(k + 1) % 3] + I[(k + 2) % 3])
-        tr.warnings.push_back("I" + std::to_string(k + 1) + " is larger than the sum of the other two moments: no rigid "
-                              "body has this inertia (Euler's equations are checked anyway)");
+      if (I[k] > I[(k + 1) % 3] + I[(k + 2) % 3]) {
+        const std::string what = "I" + std::to_string(k + 1) + " is larger than the sum of the other two moments: no "
+                                 "rigid body has this inertia";
+        if (!params.allow_nonphysical)
+          throw TrajectoryError((inertia_line ? where(name, inertia_line) : name + ": ") + what +
+                                " (give --allow-nonphysical to check Euler's equations for it anyway)");
+        tr.warnings.push_back(what + " (Euler's equations are checked anyway, --allow-nonphysical)");
+      }
   }
   tr.step = number({*step_text, 0}, name, step_line, "the step size");
   if (!(tr.step > 0))
@@ -244,6 +251,7 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
 
   // Data.
   std::size_t expected_fields = columns ? (*columns == kColumns13 ? 13 : 4) : 0;
+  std::size_t first_row_line = 0;
   int max_digits = 1;
   for (; i < lines.size(); ++i) {
     const std::string& l = lines[i];
@@ -272,14 +280,21 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
     if (!tr.rows.empty() && !(row.t > tr.rows.back().t))
       throw TrajectoryError(where(name, i + 1, f[0].column) + "t = " + printable(f[0].text) +
                             " does not increase (the row before has t = " + to_string_full(tr.rows.back().t) + ")");
-    if (tr.rows.empty())
+    if (tr.rows.empty()) {
       for (const auto& x : f) tr.first_row.push_back(x.text);
+      first_row_line = i + 1;
+    }
     for (int k = 1; k < 4; ++k) max_digits = std::max(max_digits, significant_digits(f[k].text));
     tr.rows.push_back(row);
   }
   tr.has_O = expected_fields == 13;
   if (tr.rows.empty()) throw TrajectoryError(name + ": no data rows (a trajectory needs at least two)");
   if (tr.rows.size() < 2) throw TrajectoryError(name + ": only one data row (a trajectory needs at least two)");
+  const auto& Pi0 = tr.rows.front().Pi;
+  if (Pi0[0] == 0 && Pi0[1] == 0 && Pi0[2] == 0)
+    throw TrajectoryError(where(name, first_row_line) +
+                          "Pi(0) = 0: zero angular momentum, a body at rest; every invariant is 0 and its relative "
+                          "error undefined, so there is no motion to check");
   tr.digits = std::clamp(max_digits, 1, 17);
   return tr;
 }

@@ -3,7 +3,7 @@
 //
 //   # geomech-trajectory 1
 //   # system: rigid_body
-//   # inertia: 2 1 0.6666666666666666
+//   # inertia: 2 1.5 1
 //   # step: 0.01
 //   # method: implicit midpoint
 //   0    0.4535961214255773 0 0.8912073600614354   1 0 0  0 1 0  0 0 1
@@ -39,6 +39,7 @@ struct TrajectoryParams {
   std::optional<std::string> system;
   std::optional<std::array<std::string, 3>> inertia;  // decimal strings, kept exact
   std::optional<std::string> step;
+  bool allow_nonphysical = false;  // accept moments violating the triangle inequality (--allow-nonphysical)
 };
 
 struct TrajectoryRow {

@@ -309,6 +309,16 @@ std::vector<Verdict> run_property(const Property& p, const SubjectSet& s, Scalar
   return {};
 }
 
+bool is_reproduce_string(const std::string& text, std::string* why) {
+  try {
+    (void)rc::detail::stringToReproduceMap(text);
+    return true;
+  } catch (const std::exception& e) {
+    if (why) *why = e.what();
+    return false;
+  }
+}
+
 std::string reproduce_command(const Verdict& v) {
   std::ostringstream os;
   os << "build/bin/geomech check --subject " << v.subject << " --property " << v.property << " --scalar "

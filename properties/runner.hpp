@@ -62,6 +62,10 @@ std::uint64_t derive_seed(std::uint64_t base, const std::string& property_key);
 // Human-readable verdict, several lines for anything but a pass.
 std::string format_verdict(const Verdict& v);
 
+// Whether `text` is a RapidCheck reproduce string (the value printed after "reproduce="); when it
+// is not, `why` says what is wrong with it.
+bool is_reproduce_string(const std::string& text, std::string* why = nullptr);
+
 // The command line that replays a failing verdict through the `geomech` tool.
 std::string reproduce_command(const Verdict& v);
 

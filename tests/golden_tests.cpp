@@ -860,7 +860,9 @@ TEST(golden_cli, RegenerateIsByteIdenticalAndCheckListsEveryDifference) {
 // ---------------------------------------------------------------------------------------------
 
 std::vector<std::string> labels_for(const std::string& suite, const std::string& name) {
+  if (suite == "cli_arguments") return {"cli", "bad-input"};  // tests/cli_tests.cpp
   std::vector<std::string> labels = {"golden"};
+  if (suite.find("bad_input") != std::string::npos) labels.push_back("bad-input");
   if (suite == "golden_regression_double") labels.push_back("double");
   if (suite == "golden_regression_mp50") labels.push_back("mp50");
   if (suite == "golden_consistency" || suite == "golden_check" || suite.rfind("golden_regression", 0) == 0)

@@ -473,6 +473,10 @@ TEST(TrajectoryFiles, EveryMalformedInputIsRejectedWithFileLineAndColumn) {
       {head + "# columns: t Pi1 Pi2 Pi3\n0 1 0 0 1 0 0 0 1 0 0 0 1\n", "t.txt:6: a row has 13 fields, expected 4 like the columns line"},
       {"0 1 0 0\n1 1 0 0\n", "t.txt: no system"},
       {std::string("0 1\0 0 0\n", 10), "not a text file"},
+      {"# geomech-trajectory 1\n# system: rigid_body\n# inertia: 1 0.5 0.3333333333333333\n# step: 0.1\n0 1 0 0\n1 1 0 0\n",
+       "t.txt:3: I1 is larger than the sum of the other two moments: no rigid body has this inertia (give "
+       "--allow-nonphysical"},
+      {head + "0 0 0 0\n0.1 0 0 0\n", "t.txt:5: Pi(0) = 0: zero angular momentum"},
   };
   for (const auto& [text, expected] : cases) {
     const std::string got = bad(text);
@@ -481,6 +485,17 @@ TEST(TrajectoryFiles, EveryMalformedInputIsRejectedWithFileLineAndColumn) {
   TrajectoryParams p;
   p.step = "0.2";
   EXPECT_NE(bad(kGood, p).find("t.txt:4: step in the file differs from --step"), std::string::npos) << bad(kGood, p);
+}
+
+// The notes' example body (no mass distribution has it) is checked when asked to, with a warning.
+TEST(TrajectoryFiles, NonphysicalInertiaIsCheckedWhenAllowed) {
+  const std::string text =
+      "# geomech-trajectory 1\n# system: rigid_body\n# inertia: 1 0.5 0.3333333333333333\n# step: 0.1\n0 1 0 0\n1 1 0 0\n";
+  TrajectoryParams p;
+  p.allow_nonphysical = true;
+  const Trajectory t = parse_trajectory(text, "t.txt", p);
+  ASSERT_EQ(t.warnings.size(), 1u);
+  EXPECT_NE(t.warnings[0].find("no rigid body has this inertia"), std::string::npos) << t.warnings[0];
 }
 
 TEST(TrajectoryFiles, ARunTooLongForTheReferenceIsRefusedAtOnce) {

@@ -254,6 +254,8 @@ int main(int argc, char** argv) {
   traj->add_option("--report", tr_report, "write report.md, junit.xml, verdicts.json and figures/ into this directory");
   traj->add_option("--junit", tr_junit, "also write the JUnit XML to this file");
   traj->add_flag("--quiet,-q", tr_quiet, "print only the summary");
+  traj->add_flag("--allow-nonphysical", tro.params.allow_nonphysical,
+                 "accept moments of inertia that violate the triangle inequality (no body has them; the notes' examples do)");
 
   auto* list = app.add_subcommand("list", "list the registered properties");
   auto* slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
@@ -268,7 +270,29 @@ int main(int argc, char** argv) {
 
   gm::golden::add_commands(app);  // runs from its own callbacks (golden/cli.hpp)
 
-  CLI11_PARSE(app, argc, argv);
+  // Bad arguments exit with 2, like every other input error of the tool (CLI11's own codes are
+  // 100 and up); --help exits with 0.
+  // A first word that is no command gets named (CLI11 would only say that a command is required).
+  if (argc > 1 && argv[1][0] != '-') {
+    bool known = false;
+    std::string names;
+    for (const auto* sub : app.get_subcommands({})) {
+      known = known || sub->get_name() == argv[1];
+      names += (names.empty() ? "" : ", ") + sub->get_name();
+    }
+    if (!known) {
+      std::cerr << "geomech: unknown command '" << argv[1] << "' (commands: " << names << ")\n";
+      return 2;
+    }
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::RuntimeError& e) {
+    return e.get_exit_code();  // a subcommand that ran from its callback (golden) and set its status
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
   try {
     if (*check) {
       if (!student_file.empty()) {
@@ -299,7 +323,8 @@ int main(int argc, char** argv) {
     if (*subjects) return gm::run_subjects();
     if (*cat) return gm::run_catalogue(markdown, trace, catalogue_path);
   } catch (const CLI::Error& e) {
-    return app.exit(e);
+    app.exit(e);
+    return 2;
   } catch (const std::exception& e) {
     std::cerr << "geomech: " << e.what() << "\n";
     return 2;
