@@ -10,6 +10,7 @@
 // input (the message names the argument, or the file and line).
 #pragma once
 
+#include "golden/arguments.hpp"
 #include "golden/fixture.hpp"
 
 #include <string>
@@ -23,11 +24,6 @@ namespace gm::golden {
 
 void add_commands(CLI::App& app);
 
-// Parsing of the command line's values (also used by the tests).
-// "NAME=v1,v2,..." (commas or spaces between exact numbers) -> a block whose `where` is the
-// argument as typed, e.g. "--param I=2,1,2/3".
-NamedValues parse_block_argument(const std::string& option, const std::string& text);
-// "t1,t2,..." or "start:step:stop" (stop included) -> exact times.
-std::vector<Rational> parse_times_argument(const std::string& text);
+// The values of its arguments are parsed by golden/arguments.hpp.
 
 }  // namespace gm::golden

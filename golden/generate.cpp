@@ -2,6 +2,8 @@
 // the Taylor oracle and the extrapolation solver on Real70.
 #include "golden/generate.hpp"
 
+#include "golden/arguments.hpp"
+
 #include "golden/condition.hpp"
 #include "golden/elliptic_check.hpp"
 #include "golden/extrapolation.hpp"
@@ -122,21 +124,6 @@ std::string two_digits(const R& x) {
 }
 
 }  // namespace
-
-void validate_times(const std::vector<Rational>& times, const std::string& where) {
-  if (times.empty()) throw InputError(where, 0, "no sample times");
-  if (times.size() > kMaxSamples)
-    throw InputError(where, 0, std::to_string(times.size()) + " sample times; at most " + std::to_string(kMaxSamples));
-  for (std::size_t i = 0; i < times.size(); ++i) {
-    const Rational& t = times[i];
-    if (!is_finite_decimal(t)) throw InputError(where, 0, "time " + format_exact(t) + " is not a finite decimal");
-    if (t < 0) throw InputError(where, 0, "time " + format_exact(t) + " is negative (trajectories start at t = 0)");
-    if (t > kMaxRequestTime)
-      throw InputError(where, 0, "time " + format_exact(t) + " is beyond " + std::to_string(kMaxRequestTime));
-    if (i > 0 && !(t > times[i - 1]))
-      throw InputError(where, 0, "sample times must increase: " + format_exact(t) + " after " + format_exact(times[i - 1]));
-  }
-}
 
 Fixture generate(const Request& rq, GenerationReport* report) {
   const auto start = std::chrono::steady_clock::now();

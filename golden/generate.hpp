@@ -11,6 +11,7 @@
 // min(1e-40, 10^-(digits+2) max(1, |x|_max)): the printed digits are then all verified.
 #pragma once
 
+#include "golden/arguments.hpp"
 #include "golden/fixture.hpp"
 #include "golden/systems.hpp"
 
@@ -22,7 +23,6 @@ namespace gm::golden {
 
 inline constexpr int kWorkingDigits = 70;  // Real70
 inline constexpr int kDefaultDigits = 50;
-inline constexpr long kMaxRequestTime = 1000;
 
 struct Request {
   std::string name;   // identifier (also the file name of a fixture)
@@ -54,8 +54,6 @@ class VerificationError : public std::runtime_error {
 // when the checks disagree).
 Fixture generate(const Request& request, GenerationReport* report = nullptr);
 
-// Checks that times are usable for a request: finite decimals, increasing, in [0, 1000].
-// `where` names the argument or file for the message.
-void validate_times(const std::vector<Rational>& times, const std::string& where);
+// validate_times, kMaxRequestTime: golden/arguments.hpp
 
 }  // namespace gm::golden
