@@ -572,7 +572,10 @@ TEST(TrajectoryFiles, ConvergenceSlopeLeavesOutTheRoundoffPlateau) {
   EXPECT_TRUE(std::isnan(convergence_slope({{0.1, 1e-12}}, 1e-8)));
 }
 
-std::vector<std::string> labels(const std::string&, const std::string&) { return {"meta", "harness"}; }
+std::vector<std::string> labels(const std::string& suite, const std::string&) {
+  if (suite == "TrajectoryFiles") return {"meta", "harness", "bad-input"};
+  return {"meta", "harness"};
+}
 
 }  // namespace
 }  // namespace gm::harness
