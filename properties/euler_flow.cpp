@@ -19,11 +19,6 @@
 namespace gm {
 namespace {
 
-// Horizons: t = 20 in double; in 50 digits every flow evaluation costs ~50x more, so t = 10.
-template <class T>
-T horizon() {
-  return std::is_same_v<T, double> ? T(20) : T(10);
-}
 
 template <class T>
 Vec3<T> exact_at(const oracle::FreeRigidBodySolution<T>& sol, const T& t) {
@@ -35,7 +30,7 @@ template <class T>
 void euler_flow_conserves_casimir_and_energy(const Subject<T>& s) {
   const Vec3<T> I = dyn::draw_inertia<T>();
   const Vec3<T> Pi0 = dyn::draw_momentum<T>();
-  const auto times = dyn::times_to(horizon<T>(), 20);
+  const auto times = dyn::times_to(dyn::rigid_body_horizon<T>(), 20);
   const auto Pi = dyn::subject_euler(s, I, Pi0, times);
   const T lambda = dyn::rigid_body_rate(I, Pi0);
   const T C0 = dyn::casimir(Pi0), h0 = dyn::energy(I, Pi0);
@@ -82,7 +77,7 @@ void euler_flow_is_elliptic_solution(const Subject<T>& s) {
   if (dyn::pick<T>(rc::gen::inRange(0, 4)) == 0) separatrix_data(I, Pi0);
   const oracle::FreeRigidBodySolution<T> exact({I(0), I(1), I(2)}, {Pi0(0), Pi0(1), Pi0(2)});
   RC_TAG(oracle::regime_name(exact.regime()));
-  const T t_end = horizon<T>();
+  const T t_end = dyn::rigid_body_horizon<T>();
   const auto times = dyn::times_to(t_end, 10);
   const auto Pi = dyn::subject_euler(s, I, Pi0, times);
   const T lambda = dyn::rigid_body_rate(I, Pi0);
@@ -101,7 +96,7 @@ void manakov_n3_flow_is_euler_flow(const Subject<T>& s) {
   const Vec3<T> I(a[1] + a[2], a[2] + a[0], a[0] + a[1]);
   const Vec3<T> Pi0 = dyn::draw_momentum<T>();
   const oracle::FreeRigidBodySolution<T> exact({I(0), I(1), I(2)}, {Pi0(0), Pi0(1), Pi0(2)});
-  const T t_end = horizon<T>();
+  const T t_end = dyn::rigid_body_horizon<T>();
   const auto times = dyn::times_to(t_end, 10);
   const auto M = dyn::subject_manakov_M(s, dyn::diag_of(a), MatX<T>(truth::skew_of(Pi0)), times);
   const T lambda = dyn::rigid_body_rate(I, Pi0);

@@ -20,10 +20,6 @@
 namespace gm {
 namespace {
 
-template <class T>
-T horizon() {
-  return std::is_same_v<T, double> ? T(20) : T(10);
-}
 
 // Subject flows of the 12-dimensional (Pi, O) system cost ~4x the 3-dimensional one.
 template <class T>
@@ -39,7 +35,7 @@ template <class T>
 void noether_spatial_momentum_conserved(const Subject<T>& s) {
   const Vec3<T> I = dyn::draw_inertia<T>();
   const RigidBodyState<T> x0{dyn::draw_momentum<T>(), dyn::draw_rotation<T>()};
-  const auto times = dyn::times_to(horizon<T>(), 10);
+  const auto times = dyn::times_to(dyn::rigid_body_horizon<T>(), 10);
   const auto xs = dyn::oracle_rigid_body(I, x0, times);
   const Vec3<T> pi0 = s.spatial_momentum(x0.O, x0.Pi);
   const T lambda = dyn::rigid_body_rate(I, x0.Pi);
@@ -90,7 +86,7 @@ template <class T>
 void space_momentum_is_conserved(const Subject<T>& s) {
   const Vec3<T> I = dyn::draw_inertia<T>();
   const RigidBodyState<T> x0{dyn::draw_momentum<T>(), dyn::draw_rotation<T>()};
-  const auto times = dyn::times_to(horizon<T>(), 10);
+  const auto times = dyn::times_to(dyn::rigid_body_horizon<T>(), 10);
   const auto xs = dyn::oracle_rigid_body(I, x0, times);
   auto pi_of = [&](const RigidBodyState<T>& x) {
     const Vec3<T> omega = x.O * x.Pi.cwiseQuotient(I);  // Remark 2.1: Omega = O^-1 omega

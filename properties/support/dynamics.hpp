@@ -406,6 +406,13 @@ std::vector<ManakovState<T>> subject_manakov(const Subject<T>& s, const MatX<T>&
   return out;
 }
 
+// How far the rigid-body flow properties integrate: t = 20 in double; in 50 digits every flow
+// evaluation costs ~50x more, so t = 10.
+template <class T>
+T rigid_body_horizon() {
+  return std::is_same_v<T, double> ? T(20) : T(10);
+}
+
 // Equally spaced times (t_end / count, ..., t_end).
 template <class T>
 std::vector<T> times_to(const T& t_end, int count) {
