@@ -17,6 +17,20 @@ set(GM_STUDENT_OPT_DOUBLE -O1)
 set(GM_STUDENT_OPT_MP50 -O1)
 set(GM_STUDENT_OPT_EXACT -O1)
 
+# A sanitized suite (the preset "sanitize") is linked with the sanitizer runtimes, so student code
+# is compiled and linked with the same instrumentation flags as the suite.
+string(TOUPPER "${CMAKE_BUILD_TYPE}" _gm_build_type)
+separate_arguments(_gm_build_flags UNIX_COMMAND "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${_gm_build_type}}")
+set(_gm_instrumentation "")
+set(_gm_instrumentation_json "")
+foreach(_f IN LISTS _gm_build_flags)
+  if(_f MATCHES "^-f(no-)?sanitize" OR _f STREQUAL "-fno-omit-frame-pointer")
+    list(APPEND _gm_instrumentation ${_f})
+    string(APPEND _gm_instrumentation_json ", \"${_f}\"")
+  endif()
+endforeach()
+string(REGEX REPLACE "^, " "" _gm_link_json "${_gm_instrumentation_json}")
+
 get_target_property(_gm_eigen_inc Eigen3::Eigen INTERFACE_INCLUDE_DIRECTORIES)
 set(_gm_student_includes ${PROJECT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/student ${_gm_eigen_inc} ${Boost_INCLUDE_DIRS})
 list(REMOVE_DUPLICATES _gm_student_includes)
@@ -32,7 +46,8 @@ endforeach()
 file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/student/toolchain.json CONTENT "{
   \"format\": \"geomech-student-toolchain 1\",
   \"cxx\": \"${CMAKE_CXX_COMPILER}\",
-  \"flags\": [\"-std=c++20\", \"-DBOOST_ALL_NO_LIB\", \"-Wall\", \"-Wextra\", \"-Wno-deprecated-copy\", \"-Wno-maybe-uninitialized\"],
+  \"flags\": [\"-std=c++20\", \"-DBOOST_ALL_NO_LIB\", \"-Wall\", \"-Wextra\", \"-Wno-deprecated-copy\", \"-Wno-maybe-uninitialized\"${_gm_instrumentation_json}],
+  \"link_flags\": [${_gm_link_json}],
   \"includes\": [${_gm_inc_json}],
   \"opt\": {\"double\": \"${GM_STUDENT_OPT_DOUBLE}\", \"mp50\": \"${GM_STUDENT_OPT_MP50}\", \"exact\": \"${GM_STUDENT_OPT_EXACT}\"},
   \"driver_object\": \"$<TARGET_OBJECTS:geomech_student_driver>\",
@@ -70,6 +85,8 @@ if(NOT TARGET geomech_student_prebuilt)
     INTERFACE_INCLUDE_DIRECTORIES \"${_gm_inc_cmake}\"
     INTERFACE_COMPILE_DEFINITIONS \"BOOST_ALL_NO_LIB;GEOMECH_STUDENT_CHECK=1\"
     INTERFACE_COMPILE_FEATURES \"cxx_std_20\"
+    INTERFACE_COMPILE_OPTIONS \"${_gm_instrumentation}\"
+    INTERFACE_LINK_OPTIONS \"${_gm_instrumentation}\"
     INTERFACE_LINK_LIBRARIES \"$<TARGET_OBJECTS:geomech_student_driver>;$<TARGET_FILE:geomech_harness>;-Wl,--whole-archive;$<TARGET_FILE:geomech>;-Wl,--no-whole-archive;$<TARGET_LINKER_FILE:rapidcheck>\")
 endif()
 function(geomech_add_student target)

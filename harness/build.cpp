@@ -199,6 +199,7 @@ Toolchain load_toolchain(const std::string& path) {
     if (j.at("format") != "geomech-student-toolchain 1") throw std::runtime_error("unknown format");
     t.cxx = j.at("cxx").get<std::string>();
     t.flags = j.at("flags").get<std::vector<std::string>>();
+    t.link_flags = j.at("link_flags").get<std::vector<std::string>>();
     t.includes = j.at("includes").get<std::vector<std::string>>();
     t.opt = j.at("opt").get<std::map<std::string, std::string>>();
     t.driver_object = j.at("driver_object").get<std::string>();
@@ -442,6 +443,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
 
   // Link.
   std::vector<std::string> link{tc.cxx};
+  link.insert(link.end(), tc.link_flags.begin(), tc.link_flags.end());
   for (int k = 0; k < 3; ++k)
     if (st[k].ok) link.push_back((dir / (std::string(kScalars[k]) + ".o")).string());
   link.push_back(tc.driver_object);

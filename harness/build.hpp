@@ -24,7 +24,8 @@ namespace gm::harness {
 struct Toolchain {
   std::string path;  // where it was read from
   std::string cxx;
-  std::vector<std::string> flags;
+  std::vector<std::string> flags;       // compile flags (with the suite's sanitizer flags, if any)
+  std::vector<std::string> link_flags;  // link flags (the sanitizer runtimes of a sanitized suite)
   std::vector<std::string> includes;
   std::map<std::string, std::string> opt;  // scalar -> optimisation flag
   std::string driver_object;

@@ -40,21 +40,47 @@ struct Running {
   Clock::time_point start;
   std::string result;
   std::string output;
+  std::string sanitizer_report;  // the first line of a sanitizer's report in the output, if any
 };
 
-void append_tail(std::string& buf, const char* data, std::size_t n) {
+// In a sanitized build (ASan, UBSan) the sanitizer catches a crash before the signal does, prints a
+// report and exits or aborts: its first line says what happened. Kept apart from the output's
+// tail, which a long stack trace would push it out of.
+void note_sanitizer_report(const std::string& buf, std::string& report) {
+  if (!report.empty()) return;
+  for (const char* marker : {"ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "ERROR: UndefinedBehaviorSanitizer",
+                             ": runtime error: "}) {
+    const std::size_t at = buf.find(marker);
+    if (at == std::string::npos) continue;
+    const std::size_t end = buf.find('\n', at);
+    if (end == std::string::npos) return;  // the line is not complete yet
+    std::size_t begin = buf.rfind('\n', at);
+    begin = begin == std::string::npos ? 0 : begin + 1;
+    report = buf.substr(begin, end - begin);
+    if (report.rfind("==", 0) == 0) {  // "==1234==ERROR: ..." -> "ERROR: ..."
+      const std::size_t close = report.find("==", 2);
+      if (close != std::string::npos) report.erase(0, close + 2);
+    }
+    return;
+  }
+}
+
+void append_tail(std::string& buf, const char* data, std::size_t n, std::string* sanitizer_report) {
   buf.append(data, n);
+  if (sanitizer_report) note_sanitizer_report(buf, *sanitizer_report);
   if (buf.size() > 2 * kOutputTail) buf.erase(0, buf.size() - kOutputTail);
 }
 
 // Reads what is available; returns false at end of file (or on an error other than EAGAIN).
-bool drain(int fd, std::string& into, bool tail_only) {
+// With sanitizer_report, only the tail of the output is kept, and a sanitizer's report is noted.
+bool drain(int fd, std::string& into, std::string* sanitizer_report = nullptr) {
+  const bool tail_only = sanitizer_report != nullptr;
   char buf[65536];
   for (;;) {
     const ssize_t n = ::read(fd, buf, sizeof buf);
     if (n > 0) {
       if (tail_only)
-        append_tail(into, buf, static_cast<std::size_t>(n));
+        append_tail(into, buf, static_cast<std::size_t>(n), sanitizer_report);
       else
         into.append(buf, static_cast<std::size_t>(n));
       continue;
@@ -122,6 +148,7 @@ TaskResult finish(Running& r, int status) {
     t.status = TaskResult::Status::Crashed;
     t.signal = WTERMSIG(status);
     t.detail = "killed by " + describe_signal(t.signal);
+    if (!r.sanitizer_report.empty()) t.detail += " after the sanitizer's report \"" + r.sanitizer_report + "\"";
     return t;
   }
   t.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -134,7 +161,9 @@ TaskResult finish(Running& r, int status) {
   } else {
     t.status = TaskResult::Status::Crashed;
     t.detail = "exited with status " + std::to_string(t.exit_code) +
-               " without reporting a result (exit() or quick_exit() called by the code under test?)";
+               (r.sanitizer_report.empty()
+                    ? " without reporting a result (exit() or quick_exit() called by the code under test?)"
+                    : " after the sanitizer's report \"" + r.sanitizer_report + "\"");
   }
   return t;
 }
@@ -224,11 +253,11 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
 
     for (auto it = running.begin(); it != running.end();) {
       Running& r = *it;
-      if (r.result_fd >= 0 && !drain(r.result_fd, r.result, false)) {
+      if (r.result_fd >= 0 && !drain(r.result_fd, r.result)) {
         ::close(r.result_fd);
         r.result_fd = -1;
       }
-      if (r.output_fd >= 0 && !drain(r.output_fd, r.output, true)) {
+      if (r.output_fd >= 0 && !drain(r.output_fd, r.output, &r.sanitizer_report)) {
         ::close(r.output_fd);
         r.output_fd = -1;
       }
@@ -237,8 +266,8 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
       bool done = false;
       if (w == r.pid) {
         // It has ended: whatever it wrote is in the pipes (or held open by a descendant).
-        if (r.result_fd >= 0) drain(r.result_fd, r.result, false);
-        if (r.output_fd >= 0) drain(r.output_fd, r.output, true);
+        if (r.result_fd >= 0) drain(r.result_fd, r.result);
+        if (r.output_fd >= 0) drain(r.output_fd, r.output, &r.sanitizer_report);
         ::kill(-r.pid, SIGKILL);  // descendants it may have left behind
         results[r.index] = finish(r, status);
         done = true;
