@@ -37,7 +37,7 @@ struct GaussGrid {
 template <class T>
 std::vector<int> default_rules() {
   if (std::is_same_v<T, double>) return {4, 8, 16, 32};
-  return {4, 8, 16, 32, 64};
+  return {4, 8, 16, 32, 64, 128};
 }
 
 template <class T>
