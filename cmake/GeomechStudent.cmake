@@ -22,31 +22,34 @@ set(GM_STUDENT_OPT_EXACT -O1)
 string(TOUPPER "${CMAKE_BUILD_TYPE}" _gm_build_type)
 separate_arguments(_gm_build_flags UNIX_COMMAND "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${_gm_build_type}}")
 set(_gm_instrumentation "")
-set(_gm_instrumentation_json "")
 foreach(_f IN LISTS _gm_build_flags)
   if(_f MATCHES "^-f(no-)?sanitize" OR _f STREQUAL "-fno-omit-frame-pointer")
     list(APPEND _gm_instrumentation ${_f})
-    string(APPEND _gm_instrumentation_json ", \"${_f}\"")
   endif()
 endforeach()
-string(REGEX REPLACE "^, " "" _gm_link_json "${_gm_instrumentation_json}")
+
+# The elements of a CMake list as JSON strings: a;b -> "a", "b" (the paths and flags here hold no
+# quotes or backslashes).
+function(_gm_json_strings out)
+  list(TRANSFORM ARGN PREPEND "\"")
+  list(TRANSFORM ARGN APPEND "\"")
+  list(JOIN ARGN ", " _joined)
+  set(${out} "${_joined}" PARENT_SCOPE)
+endfunction()
 
 get_target_property(_gm_eigen_inc Eigen3::Eigen INTERFACE_INCLUDE_DIRECTORIES)
 set(_gm_student_includes ${PROJECT_SOURCE_DIR} ${PROJECT_SOURCE_DIR}/student ${_gm_eigen_inc} ${Boost_INCLUDE_DIRS})
 list(REMOVE_DUPLICATES _gm_student_includes)
 list(REMOVE_ITEM _gm_student_includes /usr/include)
-set(_gm_inc_json "")
-foreach(_d IN LISTS _gm_student_includes)
-  if(_gm_inc_json)
-    string(APPEND _gm_inc_json ", ")
-  endif()
-  string(APPEND _gm_inc_json "\"${_d}\"")
-endforeach()
+_gm_json_strings(_gm_inc_json ${_gm_student_includes})
+_gm_json_strings(_gm_flags_json -std=c++20 -DBOOST_ALL_NO_LIB -Wall -Wextra -Wno-deprecated-copy
+                 -Wno-maybe-uninitialized ${_gm_instrumentation})
+_gm_json_strings(_gm_link_json ${_gm_instrumentation})
 
 file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/student/toolchain.json CONTENT "{
   \"format\": \"geomech-student-toolchain 1\",
   \"cxx\": \"${CMAKE_CXX_COMPILER}\",
-  \"flags\": [\"-std=c++20\", \"-DBOOST_ALL_NO_LIB\", \"-Wall\", \"-Wextra\", \"-Wno-deprecated-copy\", \"-Wno-maybe-uninitialized\"${_gm_instrumentation_json}],
+  \"flags\": [${_gm_flags_json}],
   \"link_flags\": [${_gm_link_json}],
   \"includes\": [${_gm_inc_json}],
   \"opt\": {\"double\": \"${GM_STUDENT_OPT_DOUBLE}\", \"mp50\": \"${GM_STUDENT_OPT_MP50}\", \"exact\": \"${GM_STUDENT_OPT_EXACT}\"},

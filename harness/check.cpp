@@ -108,7 +108,7 @@ Verdict abnormal_verdict(const SubjectSet& s, const Item& item, const TaskResult
       break;
     case TaskResult::Status::Crashed:
       v.outcome = Outcome::Crash;
-      if (t.signal != 0 || t.detail.find("the sanitizer's report") != std::string::npos)
+      if (t.signal != 0 || !t.sanitizer_report.empty())
         m << "the process running this check " << (t.signal != 0 ? "was " : "") << t.detail
           << ": the code under test crashed (an index out of range, a null or dangling pointer, unbounded "
              "recursion, a failed assertion, ...). No counterexample could be shrunk; replay the check with the "

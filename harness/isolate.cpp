@@ -144,6 +144,7 @@ TaskResult finish(Running& r, int status) {
   TaskResult t;
   t.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
   t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
+  t.sanitizer_report = r.sanitizer_report;
   if (WIFSIGNALED(status)) {
     t.status = TaskResult::Status::Crashed;
     t.signal = WTERMSIG(status);
@@ -238,7 +239,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
     ::close(op[1]);
     ::fcntl(rp[0], F_SETFL, O_NONBLOCK);
     ::fcntl(op[0], F_SETFL, O_NONBLOCK);
-    running.push_back(Running{i, pid, rp[0], op[0], Clock::now(), {}, {}});
+    running.push_back(Running{i, pid, rp[0], op[0], Clock::now(), {}, {}, {}});
   };
 
   while (next < tasks.size() || !running.empty()) {

@@ -34,6 +34,9 @@ struct TaskResult {
   std::string payload;
   std::string output;  // the tail of what the child wrote to stdout and stderr
   std::string detail;  // how it ended, in words: "killed by signal 11 (SIGSEGV, segmentation fault)"
+  // In a sanitized build, the first line of a sanitizer's report in the output (quoted in `detail`):
+  // the sanitizer catches a crash before the signal does, and exits or aborts.
+  std::string sanitizer_report;
   int signal = 0;
   int exit_code = 0;
   double seconds = 0;

@@ -166,6 +166,22 @@ void euler_variational_principle(const Subject<T>& s) {
   var::require_first_variation_vanishes<T>("Theorem 2.1, Euler's equations (2.1) and l (2.5)", grid, f, fp, scale, 64);
 }
 
+// The constrained variation delta xi = deta/dt + [xi, eta] of Theorem 1.1 (iii), with [xi, eta]
+// the matrix commutator of the subject's hats read back by its vee.
+template <class T>
+VecX<T> constrained_variation(const Subject<T>& s, LieAlgebraId g, const VecX<T>& xi, const VecX<T>& eta,
+                              const VecX<T>& deta_dt) {
+  const MatX<T> X = s.lie_hat(g, xi), E = s.lie_hat(g, eta);
+  return (deta_dt + s.lie_vee(g, (X * E - E * X).eval())).eval();
+}
+
+// (1 + lambda T)^2, the tolerance model's growth (support/dynamics.hpp) for two flows compared, the
+// second counted with the steps the flow actually took.
+template <class T>
+T two_flow_growth(const T& lambda, long steps) {
+  return dyn::growth(lambda, kT<T>) * dyn::growth(lambda, kT<T>, steps);
+}
+
 // ---------------------------------------------------------------------------------------------
 // s1.ep-theorem, Theorem 1.1 (iii) <=> (iv), on so(3), so(4) and sl(2, R): along the flow of the
 // Euler-Poincare equation dmu/dt = ad*_xi mu (the subject's ad*, mu = K xi for l = xi . K xi / 2),
@@ -183,9 +199,7 @@ void ep_first_variation_for(const Subject<T>& s, LieAlgebraId g) {
   flow::Gbs<T> flow([&](const T&, const VecX<T>& mu) { return s.ad_star(g, mu.cwiseQuotient(K), mu); });
   const auto mus = flow.sample(K.cwiseProduct(xi0), T(0), grid.times);
   auto integrand = [&](const VecX<T>& mu, const T& t) {
-    const VecX<T> x = mu.cwiseQuotient(K), e = eta.at(t);
-    const MatX<T> X = s.lie_hat(g, x), E = s.lie_hat(g, e);
-    return T(mu.dot(eta.rate(t) + s.lie_vee(g, (X * E - E * X).eval())));
+    return T(mu.dot(constrained_variation(s, g, mu.cwiseQuotient(K).eval(), eta.at(t), eta.rate(t))));
   };
   std::vector<T> f, fp;
   T big(0);
@@ -198,7 +212,7 @@ void ep_first_variation_for(const Subject<T>& s, LieAlgebraId g) {
   // The EP flow on these algebras with |mu| <= 2 has rates <= 4; no closed-form conditioning here,
   // so (1 + lambda T)^2 as for two flows compared.
   const T lam = T(4) * dyn::at_least_one(norm_inf(mus[0]));
-  const T gr = dyn::growth(lam, kT<T>) * dyn::growth(lam, kT<T>, flow.stats().steps);
+  const T gr = two_flow_growth(lam, flow.stats().steps);
   var::require_first_variation_vanishes<T>(std::string("Theorem 1.1 (iii) on ") + lie_algebra_name(g), grid, f, fp,
                                            T(kT<T> * dyn::at_least_one(big) * gr), 64);
 }
@@ -530,7 +544,7 @@ void right_invariant_for(const Subject<T>& s, LieAlgebraId g) {
   T big(0);
   for (const auto& v : right) big = std::max(big, T(norm_inf(v) * norm_inf(v)));
   const T lam = T(4) * dyn::at_least_one(norm_inf(right[0]));
-  const T gr = dyn::growth(lam, kT<T>) * dyn::growth(lam, kT<T>, steps);
+  const T gr = two_flow_growth(lam, steps);
   const T scale = kT<T> * dyn::at_least_one(big) * deriv::roundoff_factor8<T>() * gr;
   var::require_first_variation_vanishes<T>(std::string("Remark 1.1 on ") + lie_algebra_name(g) +
                                                ": dmu/dt = -ad*_xi mu with dg/dt = xi g",
@@ -564,8 +578,6 @@ void right_invariant_ep_sign(const Subject<T>& s) {
 // singularities close enough to the time axis to slow the Gauss quadratures down).
 template <class T>
 using Vec2 = Eigen::Matrix<T, 2, 1>;
-template <class T>
-using Mat2 = Eigen::Matrix<T, 2, 2>;
 
 template <class T>
 struct ProductSpaceBody {
@@ -580,7 +592,7 @@ struct ProductSpaceBody {
     A.topLeftCorner(d, d) = K.asDiagonal();
     A.topRightCorner(d, 2) = B.transpose();
     A.bottomLeftCorner(2, d) = B;
-    A.bottomRightCorner(2, 2) = Mat2<T>::Identity();
+    A.bottomRightCorner(2, 2) = MatX<T>::Identity(2, 2);
     return A;
   }
   // (xi, dy/dt) from (mu, y, p).
@@ -635,9 +647,7 @@ void ep_product_space_for(const Subject<T>& s, LieAlgebraId g) {
   auto integrand = [&](const VecX<T>& w, const T& t) {
     const Vec2<T> y = w.segment(d, 2);
     const auto [xi, v] = body.velocities(w.head(d), y, w.tail(2));
-    const VecX<T> e = eta.at(t);
-    const MatX<T> X = s.lie_hat(g, xi), E = s.lie_hat(g, e);
-    const VecX<T> dxi = eta.rate(t) + s.lie_vee(g, (X * E - E * X).eval());
+    const VecX<T> dxi = constrained_variation(s, g, xi, eta.at(t), eta.rate(t));
     return T(body.dl_dxi(xi, y, v).dot(dxi) + body.dl_dy(xi, y, v).dot(zeta.at(t)) +
              body.dl_dv(xi, y, v).dot(zeta.rate(t)));
   };
@@ -657,7 +667,7 @@ void ep_product_space_for(const Subject<T>& s, LieAlgebraId g) {
   // The state enters the integrand through the velocities A^-1 (mu - (a . y) c, p), so the state's
   // error is amplified by |A^-1|.
   const T lam = T(4) * dyn::at_least_one(norm_inf(ws[0]));
-  const T gr = dyn::growth(lam, kT<T>) * dyn::growth(lam, kT<T>, flow.stats().steps);
+  const T gr = two_flow_growth(lam, flow.stats().steps);
   const MatX<T> A0inv = body.legendre().inverse();
   const T kappa = dyn::at_least_one(T(A0inv.cwiseAbs().rowwise().sum().maxCoeff()));
   var::require_first_variation_vanishes<T>(std::string("the G x Y exercise with G = ") + lie_algebra_name(g) +
