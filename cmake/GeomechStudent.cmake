@@ -18,12 +18,14 @@ set(GM_STUDENT_OPT_MP50 -O1)
 set(GM_STUDENT_OPT_EXACT -O1)
 
 # A sanitized suite (the preset "sanitize") is linked with the sanitizer runtimes, so student code
-# is compiled and linked with the same instrumentation flags as the suite.
+# is compiled and linked with the same instrumentation flags as the suite, and with -gz: the
+# libraries' debug sections are compressed, and a link without -gz would write them out
+# uncompressed (about 4x larger per student program).
 string(TOUPPER "${CMAKE_BUILD_TYPE}" _gm_build_type)
 separate_arguments(_gm_build_flags UNIX_COMMAND "${CMAKE_CXX_FLAGS} ${CMAKE_CXX_FLAGS_${_gm_build_type}}")
 set(_gm_instrumentation "")
 foreach(_f IN LISTS _gm_build_flags)
-  if(_f MATCHES "^-f(no-)?sanitize" OR _f STREQUAL "-fno-omit-frame-pointer")
+  if(_f MATCHES "^-f(no-)?sanitize" OR _f STREQUAL "-fno-omit-frame-pointer" OR _f STREQUAL "-gz")
     list(APPEND _gm_instrumentation ${_f})
   endif()
 endforeach()
