@@ -585,22 +585,26 @@ struct ProductSpaceBody {
   MatX<T> B;  // 2 x d
   Vec2<T> a;
   VecX<T> c;
-  // The Legendre map (xi, dy/dt) -> (mu, p) = A (xi, dy/dt) + ((a . y) c, 0), A = [K, B^T; B, Id].
-  MatX<T> legendre() const {
+  // The Legendre map (xi, dy/dt) -> (mu, p) = A (xi, dy/dt) + ((a . y) c, 0), A = [K, B^T; B, Id]:
+  // A is constant, so it is factored once, not at every evaluation of the vector field.
+  Eigen::PartialPivLU<MatX<T>> legendre;
+
+  ProductSpaceBody(VecX<T> K_, MatX<T> B_, Vec2<T> a_, VecX<T> c_)
+      : K(std::move(K_)), B(std::move(B_)), a(std::move(a_)), c(std::move(c_)) {
     const int d = static_cast<int>(K.size());
     MatX<T> A = MatX<T>::Zero(d + 2, d + 2);
     A.topLeftCorner(d, d) = K.asDiagonal();
     A.topRightCorner(d, 2) = B.transpose();
     A.bottomLeftCorner(2, d) = B;
     A.bottomRightCorner(2, 2) = MatX<T>::Identity(2, 2);
-    return A;
+    legendre.compute(A);
   }
   // (xi, dy/dt) from (mu, y, p).
   std::pair<VecX<T>, Vec2<T>> velocities(const VecX<T>& mu, const Vec2<T>& y, const Vec2<T>& p) const {
     const int d = static_cast<int>(K.size());
     VecX<T> rhs(d + 2);
     rhs << (mu - a.dot(y) * c), p;
-    const VecX<T> x = legendre().partialPivLu().solve(rhs);
+    const VecX<T> x = legendre.solve(rhs);
     return {x.head(d), Vec2<T>(x.tail(2))};
   }
   VecX<T> dl_dxi(const VecX<T>& xi, const Vec2<T>& y, const Vec2<T>& v) const {
@@ -613,18 +617,18 @@ struct ProductSpaceBody {
 template <class T>
 void ep_product_space_for(const Subject<T>& s, LieAlgebraId g) {
   const int d = g == LieAlgebraId::so4 ? 6 : 3;
-  ProductSpaceBody<T> body;
-  body.K = VecX<T>(d);
-  for (int k = 0; k < d; ++k) body.K(k) = dyn::pick<T>(dyn::quarter<T>(2, 8));
+  VecX<T> K(d);
+  for (int k = 0; k < d; ++k) K(k) = dyn::pick<T>(dyn::quarter<T>(2, 8));
   const auto eighth = [] { return T(dyn::pick<T>(dyn::quarter<T>(-1, 1)) / T(2)); };  // -1/8, 0 or 1/8
-  body.B = MatX<T>(2, d);
-  body.c = VecX<T>(d);
+  MatX<T> B(2, d);
+  VecX<T> c(d);
   for (int j = 0; j < d; ++j) {
-    body.B(0, j) = eighth();
-    body.B(1, j) = eighth();
-    body.c(j) = eighth();
+    B(0, j) = eighth();
+    B(1, j) = eighth();
+    c(j) = eighth();
   }
-  body.a = Vec2<T>(eighth(), eighth());
+  Vec2<T> a(eighth(), eighth());
+  const ProductSpaceBody<T> body(std::move(K), std::move(B), std::move(a), std::move(c));
   const VecX<T> mu0 = dyn::pick<T>(gen::vec<T>(d, 32, 6));
   const Vec2<T> y0 = dyn::pick<T>(gen::vec<T>(2, 32, 6)), p0 = dyn::pick<T>(gen::vec<T>(2, 32, 6));
   const auto eta = draw_bump<T, Eigen::Dynamic>(d);
