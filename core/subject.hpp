@@ -110,6 +110,7 @@ class Slot<R(A...)> {
   X(hamiltonian_3_3, T(const Vec3<T>& I, const Vec3<T>& Pi), "(3.3)", "h = Pi . Omega - l(Omega)")   \
   X(hamiltonian_3_4, T(const Vec3<T>& I, const Vec3<T>& Pi), "(3.4)", "h = Pi . I^-1 Pi / 2")        \
   X(hamiltonian_2_21, T(const Vec3<T>& I, const Mat3<T>& Pi_hat), "(2.21)", "h = <Pi, Omega_hat> - l") \
+  X(casimir, T(const Vec3<T>& Pi), "(2.27), sec. 3.3", "c(Pi) = |Pi|^2/2, a Casimir of the bracket (3.6)")       \
   /* Poisson brackets (evaluated from gradients at a point) */                                       \
   X(lie_poisson_2_23, T(const Mat3<T>& Pi_hat, const Mat3<T>& df_hat, const Mat3<T>& dh_hat),       \
     "(2.23), (3.10)", "{f,h} = -<Pi, [df, dh]>, gradients as skew matrices")                         \

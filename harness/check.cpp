@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <set>
 #include <sstream>
 
 #include <unistd.h>
@@ -189,6 +190,55 @@ std::vector<IntegratorInfo> integrator_info(const SubjectSet& s) {
   return out;
 }
 
+// Which property exercised which provided slot and integrator; what nothing exercised; what
+// could not be checked at all (issue 13: a check that ran nothing is not a pass).
+void account_for_slots(CheckResult& result, const SubjectSet& s, const CheckConfig& cfg) {
+  result.narrowed = !cfg.properties.empty() || !cfg.spec_prefix.empty() || cfg.scalars.size() < 3 ||
+                    !cfg.integrator.empty() || !cfg.run.reproduce.empty();
+  std::map<std::string, std::set<std::string>> by_slot;
+  for (const auto& v : result.verdicts) {
+    if (v.outcome == Outcome::NotProvided) continue;
+    const Property* p = find_property(v.property);
+    if (!p) continue;
+    const auto kind = scalar_from_name(v.scalar);
+    for (const auto& need : p->needs)
+      if (kind && is_slot_name(need) && subject_provides(s, *kind, need)) by_slot[need].insert(p->id);
+    if (!v.integrator.empty()) by_slot["integrator " + v.integrator].insert(p->id);
+  }
+  for (const auto& [slot, ps] : by_slot) result.exercised[slot] = std::vector<std::string>(ps.begin(), ps.end());
+  const std::string why = result.narrowed ? "by the selected properties" : "by any property";
+  std::set<std::string> provided;
+  for (const auto& [scalar, slots] : result.provided) provided.insert(slots.begin(), slots.end());
+  for (const auto& slot : provided)
+    if (!by_slot.count(slot))
+      result.unexercised.push_back("slot '" + slot + "' is provided but was not exercised " + why);
+  for (const auto& i : result.integrators)
+    if (!by_slot.count("integrator " + i.name))
+      result.unexercised.push_back("integrator '" + i.name + "' is provided but was not exercised " + why);
+
+  result.unchecked = result.info.unchecked;
+  if (result.narrowed) return;  // a replay or a selection: unselected claims are "not selected", not unchecked
+  for (const auto& i : result.integrators) {
+    if (!i.has_claims) continue;
+    auto check_claim = [&](const std::string& claim, bool claimed) {
+      if (!claimed) return;
+      for (const auto& v : result.verdicts)
+        if (v.integrator == i.name)
+          for (const auto& f : v.claims)
+            if (f.claim == claim) return;
+      result.unchecked.push_back("integrator '" + i.name + "' claims " + claim +
+                                 ", and no property could check that claim (is its step provided in double?)");
+    };
+    check_claim("order", i.claims.order > 0);
+    check_claim("symmetric", i.claims.symmetric);
+    check_claim("casimir", i.claims.casimir);
+    check_claim("energy", i.claims.energy);
+    check_claim("orthogonality", i.claims.orthogonality);
+    check_claim("spectrum", i.claims.spectrum);
+    check_claim("poisson", i.claims.poisson);
+  }
+}
+
 }  // namespace
 
 int scalar_rank(const std::string& scalar) {
@@ -209,8 +259,18 @@ int CheckResult::count(Outcome o) const {
   return static_cast<int>(std::count_if(verdicts.begin(), verdicts.end(), [o](const Verdict& v) { return v.outcome == o; }));
 }
 
+int CheckResult::ran() const { return static_cast<int>(verdicts.size()) - count(Outcome::NotProvided); }
+
 bool CheckResult::ok() const {
-  return count(Outcome::Fail) + count(Outcome::Crash) + count(Outcome::Timeout) + count(Outcome::Error) == 0;
+  return count(Outcome::Fail) + count(Outcome::Crash) + count(Outcome::Timeout) + count(Outcome::Error) == 0 &&
+         ran() > 0 && unchecked.empty();
+}
+
+std::string CheckResult::verdict_word() const {
+  if (count(Outcome::Fail) + count(Outcome::Crash) + count(Outcome::Timeout) + count(Outcome::Error) > 0) return "FAIL";
+  if (ran() == 0) return "NOTHING CHECKED";
+  if (!unchecked.empty()) return "UNCHECKED";
+  return "PASS";
 }
 
 std::string reproduce_command(const CheckResult& r, const Verdict& v) {
@@ -328,6 +388,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     if (a.scalar != b.scalar) return scalar_rank(a.scalar) < scalar_rank(b.scalar);
     return a.integrator < b.integrator;
   });
+  account_for_slots(result, s, cfg);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -24,6 +24,10 @@ struct SubjectInfo {
   std::map<std::string, std::string> scalar_unavailable;                // scalar -> reason
   std::map<std::string, std::map<std::string, std::string>> slot_notes;  // scalar -> slot -> reason
   std::vector<std::string> warnings;                                    // shown at the top of the report
+  // What the implementation wrote but the suite could not check (an integrator whose step has
+  // the wrong signature, a slot function that cannot be called as the slot expects). Each one
+  // fails the check: a claim that could not be checked is not a pass.
+  std::vector<std::string> unchecked;
   bool randomised = true;  // verdicts come from random cases (seeds, replay by --property); false for trajectory files
 };
 
@@ -60,9 +64,24 @@ struct CheckResult {
   std::vector<IntegratorInfo> integrators;
   std::vector<Verdict> portraits;  // integrator pictures: verdict-shaped carriers of figure series
   double seconds = 0;
+  bool narrowed = false;  // a selection of properties, scalars or integrators, not the whole suite
+
+  // Which properties exercised each provided slot ("integrator NAME" for an integrator's step):
+  // the properties that ran (not NOT PROVIDED) and need it.
+  std::map<std::string, std::vector<std::string>> exercised;
+  // Provided slots and integrators that no property exercised (warnings, never silence).
+  std::vector<std::string> unexercised;
+  // Everything that could not be checked: SubjectInfo::unchecked, plus claims no property checked
+  // in a full run. Non-empty means the check fails.
+  std::vector<std::string> unchecked;
 
   int count(Outcome o) const;
-  bool ok() const;            // no FAIL, CRASH, TIMEOUT or ERROR
+  int ran() const;            // verdicts that are not NOT PROVIDED
+  // No FAIL, CRASH, TIMEOUT or ERROR, at least one check ran, and nothing was left unchecked:
+  // a run that checked nothing is not a pass.
+  bool ok() const;
+  // PASS, FAIL, NOTHING CHECKED or UNCHECKED (what the console, report and class table say).
+  std::string verdict_word() const;
   int exit_code() const { return ok() ? 0 : 1; }
 };
 

@@ -192,7 +192,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
         else
           ++c[3];
       }
-      result = row.exit_code == 0 ? "PASS" : "FAIL";
+      result = row.exit_code == 0 ? "PASS" : row.report.value("verdict", std::string("FAIL"));
     }
     if (result != "PASS") ++bad;
     md << "| " << row.impl.name << " | " << (result == "PASS" ? result : "**" + result + "**") << " |";

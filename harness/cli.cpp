@@ -101,7 +101,7 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
   const Catalogue* c = cat ? &*cat : nullptr;
   const CheckResult r = run_check(subject, info, cfg);
   if (o.quiet) {
-    std::cout << r.subject << ": " << (r.ok() ? "PASS" : "FAIL") << " (" << r.count(Outcome::Pass) << " PASS, "
+    std::cout << r.subject << ": " << r.verdict_word() << " (" << r.count(Outcome::Pass) << " PASS, "
               << r.count(Outcome::Fail) << " FAIL, " << r.count(Outcome::NotProvided) << " NOT PROVIDED, "
               << r.count(Outcome::Crash) << " CRASH, " << r.count(Outcome::Timeout) << " TIMEOUT, "
               << r.count(Outcome::Error) << " ERROR)\n";

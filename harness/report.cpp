@@ -189,7 +189,8 @@ std::vector<ClaimRow> claim_rows(const CheckResult& r, const IntegratorInfo& int
     }
     row.claimed = declared != "no" ? declared : claimed ? "yes" : "no";
     if (!found)
-      row.status = claimed ? "claimed, not checked by any property" : "-";
+      row.status = claimed ? (r.narrowed ? "claimed, not selected in this run" : "claimed, NOT CHECKED by any property")
+                           : "-";
     else if (claimed)
       row.status = holds ? "verified" : "FALSE CLAIM";
     else
@@ -228,6 +229,35 @@ std::vector<Figure> report_figures(const CheckResult& r) {
   std::vector<Figure> out;
   for (const auto& [file, g] : groups) out.push_back(Figure{file, svg_plot(g.title, g.series), g.integrator});
   return out;
+}
+
+RootCauses root_causes(const CheckResult& r) {
+  RootCauses rc;
+  for (const auto& v : r.verdicts) {
+    if (!is_problem(v.outcome)) continue;
+    const Property* p = property_of(v);
+    if (p && p->needs.size() == 1 && p->scope == Scope::Subject && !rc.broken.count(p->needs.front()))
+      rc.broken[p->needs.front()] = &v;
+  }
+  for (const auto& [slot, direct] : rc.broken) rc.explained.insert(direct->property);
+  std::set<std::string> listed;
+  for (const auto& v : r.verdicts) {
+    if (!is_problem(v.outcome) || rc.explained.count(v.property)) continue;
+    const Property* p = property_of(v);
+    if (!p) continue;
+    for (const auto& need : p->needs)
+      if (rc.broken.count(need)) {
+        if (listed.insert(need + "/" + v.property).second) rc.downstream[need].push_back(row_name(v));
+        rc.caused.insert(v.property);
+      }
+  }
+  rc.explained.insert(rc.caused.begin(), rc.caused.end());
+  for (const auto& [slot, direct] : rc.broken) rc.order.push_back(slot);
+  std::stable_sort(rc.order.begin(), rc.order.end(), [&](const std::string& a, const std::string& b) {
+    auto n = [&](const std::string& s) { auto it = rc.downstream.find(s); return it == rc.downstream.end() ? 0 : it->second.size(); };
+    return n(a) > n(b);
+  });
+  return rc;
 }
 
 std::string console_report(const CheckResult& r, const Catalogue* c, bool details) {
@@ -271,11 +301,33 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     os << ")\n";
   }
   os << "\nsummary: " << summary_counts(r) << "  (" << seconds_text(r.seconds) << ")\n";
+  {
+    const RootCauses rc = root_causes(r);
+    for (const auto& slot : rc.order) {
+      const Verdict* direct = rc.broken.at(slot);
+      os << "FIRST FIX: slot '" << slot << "' is wrong: its own check " << direct->property << " fails in "
+         << direct->scalar << ": " << first_line(direct->message) << "\n";
+      auto it = rc.downstream.find(slot);
+      if (it != rc.downstream.end())
+        os << "           (" << it->second.size() << " other failing properties call '" << slot << "')\n";
+    }
+  }
+  if (r.ran() == 0)
+    os << "NOTHING CHECKED: no property could run on what this implementation provides"
+       << (r.narrowed ? " with this selection" : "") << "; a check that ran nothing is not a pass (exit status 1)\n";
+  for (const auto& u : r.unchecked) os << "UNCHECKED: " << u << "\n";
+  if (!r.unchecked.empty()) os << "(what could not be checked fails the check: exit status 1)\n";
+  if (r.narrowed && !r.unexercised.empty())
+    os << "(" << r.unexercised.size() << " provided slots and integrators were not exercised by this selection)\n";
+  else
+    for (const auto& w : r.unexercised) os << "warning: " << w << "\n";
   for (const auto& integ : r.integrators) {
-    os << "\nintegrator '" << integ.name << "' claims:";
+    std::ostringstream rows;
+    rows << std::left;
     for (const auto& row : claim_rows(r, integ))
-      if (row.status != "-") os << "\n  " << std::setw(18) << row.claim << std::setw(6) << row.claimed << row.status;
-    os << "\n";
+      if (row.status != "-" && row.status.find("not selected") == std::string::npos)
+        rows << "\n  " << std::setw(18) << row.claim << std::setw(6) << row.claimed << row.status;
+    if (!rows.str().empty()) os << "\nintegrator '" << integ.name << "' claims:" << rows.str() << "\n";
   }
   if (details) {
     bool header = false;
@@ -309,8 +361,16 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   md << "# geomech report: " << r.subject << "\n\n";
   if (!r.description.empty()) md << r.description << "\n\n";
   if (!r.info.source.empty()) md << "Source: `" << r.info.source << "`\n\n";
-  md << "**Result: " << (r.ok() ? "PASS" : "FAIL") << "** - " << summary_counts(r) << ". Exit status "
+  md << "**Result: " << r.verdict_word() << "** - " << summary_counts(r) << ". Exit status "
      << r.exit_code() << ".\n\n";
+  if (r.ran() == 0)
+    md << "Nothing was checked: no property could run on what this implementation provides"
+       << (r.narrowed ? " with this selection" : "") << ". A check that ran nothing is not a pass.\n\n";
+  if (!r.unchecked.empty()) {
+    md << "## Not checked (this fails the check)\n\n";
+    for (const auto& u : r.unchecked) md << "- " << md_cell(u) << "\n";
+    md << "\n";
+  }
   md << "Checked " << r.selection << " with seed " << r.seed << " in " << seconds_text(r.seconds)
      << ". Residuals are in units of eps * scale (eps of the scalar; the scale is the size of the inputs).";
   if (!r.info.reproduce_prefix.empty()) md << " Re-run: `" << r.info.reproduce_prefix << "`.";
@@ -325,10 +385,25 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   for (const auto& v : r.verdicts)
     if (is_problem(v.outcome)) problems.push_back(&v);
   if (!problems.empty()) {
-    // One line per property (and integrator) and outcome, naming the scalars it happened in.
+    // One line per property (and integrator) and outcome, naming the scalars it happened in;
+    // ordered by root cause (issue 13): a slot whose own direct property fails comes first, with
+    // the properties that fail only because they call it grouped under it.
     md << "## What to fix\n\n";
+    const RootCauses rc = root_causes(r);
+    for (const auto& slot : rc.order) {
+      const Verdict* direct = rc.broken.at(slot);
+      md << "- **slot `" << slot << "` is wrong**: its own check `" << direct->property << "` fails in [" << direct->scalar
+         << "](#" << anchor_of(*direct) << "): " << md_cell(first_line(direct->message)) << "\n";
+      auto it = rc.downstream.find(slot);
+      if (it != rc.downstream.end() && !it->second.empty()) {
+        md << "  - these fail too, and call `" << slot << "` (fix it first): ";
+        for (std::size_t i = 0; i < it->second.size(); ++i) md << (i ? ", " : "") << "`" << it->second[i] << "`";
+        md << "\n";
+      }
+    }
     std::vector<std::pair<std::string, std::vector<const Verdict*>>> groups;
     for (const Verdict* v : problems) {
+      if (rc.explained.count(v->property)) continue;
       const std::string key = row_name(*v) + "|" + outcome_name(v->outcome);
       auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == key; });
       if (it == groups.end()) groups.push_back({key, {v}});
@@ -452,6 +527,19 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     md << "\n";
   }
   md << "\n";
+  // Issue 13: for each provided slot, the properties that exercised it; a provided slot that
+  // nothing exercised is a warning, never silence.
+  if (!r.exercised.empty() || !r.unexercised.empty()) {
+    md << "## What exercised each slot\n\n| slot or integrator | properties that ran on it |\n|---|---|\n";
+    for (const auto& [slot, ps] : r.exercised) {
+      md << "| `" << slot << "` | ";
+      for (std::size_t i = 0; i < ps.size(); ++i) md << (i ? ", " : "") << "`" << ps[i] << "`";
+      md << " |\n";
+    }
+    md << "\n";
+    for (const auto& w : r.unexercised) md << "- **warning:** " << md_cell(w) << "\n";
+    if (!r.unexercised.empty()) md << "\n";
+  }
 
   if (!problems.empty()) {
     md << "## Details\n\n";
@@ -539,6 +627,10 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   j["seconds"] = number_to_json(r.seconds);
   j["exit_code"] = r.exit_code();
   j["warnings"] = r.info.warnings;
+  j["verdict"] = r.verdict_word();
+  j["unchecked"] = r.unchecked;
+  j["unexercised"] = r.unexercised;
+  j["exercised"] = r.exercised;
   j["scalar_unavailable"] = r.info.scalar_unavailable;
   j["provided"] = r.provided;
   json counts;

@@ -8,6 +8,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -27,6 +29,17 @@ struct Figure {
   std::string integrator;  // the integrator it belongs to, if any
 };
 std::vector<Figure> report_figures(const CheckResult& r);
+
+// Root causes (issue 13): slots whose own direct property (one that needs that slot alone) has a
+// problem, and for each the other failing properties that call it.
+struct RootCauses {
+  std::map<std::string, const Verdict*> broken;                   // slot -> its failing direct verdict
+  std::map<std::string, std::vector<std::string>> downstream;     // slot -> failing properties that need it
+  std::set<std::string> caused;                                    // those properties
+  std::set<std::string> explained;                                 // direct + caused
+  std::vector<std::string> order;  // broken slots, the one most other failures call first
+};
+RootCauses root_causes(const CheckResult& r);
 
 std::string console_report(const CheckResult& r, const Catalogue* catalogue, bool details = true);
 std::string markdown_report(const CheckResult& r, const Catalogue* catalogue);

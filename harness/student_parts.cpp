@@ -1,11 +1,13 @@
 #include "harness/student_parts.hpp"
 
 #include "harness/cli.hpp"
+#include "harness/slot_names.hpp"
 
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <set>
+#include <sstream>
 
 namespace gm::student {
 
@@ -103,6 +105,8 @@ SubjectSet assemble(const std::string& name_in, harness::SubjectInfo& info, cons
       if (!info.slot_notes[scalar].count(slot)) info.slot_notes[scalar][slot] = why;
     for (const auto& w : part->warnings)
       if (seen_warnings.insert(w).second) info.warnings.push_back(w);
+    for (const auto& u : part->unchecked)
+      if (seen_warnings.insert(u).second) info.unchecked.push_back(u);
     if (!fills_anything(*subject)) return;  // nothing here: the runner reports each check NOT PROVIDED, with the reason
     out = subject;
   };
@@ -120,7 +124,7 @@ SubjectSet assemble(const std::string& name_in, harness::SubjectInfo& info, cons
           ": write `template <class T> static Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& Pi)` and so on");
   }
   for (const auto& [slot, why] : info.slot_notes["double"])
-    if (why.rfind("a function named", 0) == 0) info.warnings.push_back("slot '" + slot + "': " + why);
+    if (why.rfind("a function named", 0) == 0) info.unchecked.push_back("slot '" + slot + "': " + why);
   return s;
 }
 
@@ -167,6 +171,13 @@ int student_main(int argc, char** argv) {
   }
   info.reproduce_prefix = prefix;
   const SubjectSet s = assemble(name, info, notes);
+  if (!source.empty()) {  // functions named like a slot but not one (issue 13): say which slot they mean
+    std::ifstream in(source);
+    std::ostringstream text;
+    text << in.rdbuf();
+    for (const auto& advice : harness::slot_name_advice(harness::cpp_function_names(text.str())))
+      info.warnings.push_back(advice);
+  }
 
   if (describe) {
     std::cout << "implementation: " << s.name << " (" << s.description << ")\n";
@@ -191,6 +202,7 @@ int student_main(int argc, char** argv) {
     for (const auto& [scalar, slots] : info.slot_notes)
       for (const auto& [slot, why] : slots) std::cout << "note: " << scalar << " " << slot << ": " << why << "\n";
     for (const auto& w : info.warnings) std::cout << "warning: " << w << "\n";
+    for (const auto& u : info.unchecked) std::cout << "unchecked: " << u << "\n";
     return 0;
   }
   try {

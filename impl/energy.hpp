@@ -52,4 +52,11 @@ T hamiltonian_2_21(const Vec3<T>& I, const Mat3<T>& Pi_hat) {
   return pairing3<T>(Pi_hat, Omega_hat) - lagrangian_2_13<T>(I, Omega_hat);
 }
 
+// (2.27): c(Pi) = |Pi|^2 / 2, with which the Lie-Poisson bracket (3.6) is the Nambu bracket
+// {c, f, h}; it Poisson-commutes with every function, a Casimir (section 3.3).
+template <class T>
+T casimir(const Vec3<T>& Pi) {
+  return Pi.dot(Pi) / T(2);
+}
+
 }  // namespace gm::ref

@@ -46,6 +46,7 @@ Subject<T> make_reference_subject() {
   s.hamiltonian_3_3 = ref::hamiltonian_3_3<T>;
   s.hamiltonian_3_4 = ref::hamiltonian_3_4<T>;
   s.hamiltonian_2_21 = ref::hamiltonian_2_21<T>;
+  s.casimir = ref::casimir<T>;
 
   s.lie_poisson_2_23 = ref::lie_poisson_2_23<T>;
   s.lie_poisson_3_6 = ref::lie_poisson_3_6<T>;

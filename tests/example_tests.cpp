@@ -55,6 +55,11 @@ struct Example {
   std::vector<ClaimExpected> claims;
   bool false_claims = false;  // the bug is a false claim: integrator properties may FAIL
   std::vector<std::string> args;
+  // The first item of "What to fix" in report.md must contain this (issue 13: the slot that is
+  // wrong comes first); empty: not asserted.
+  std::string first_fix = {};
+  std::vector<std::string> report_says = {};  // lines report.md must contain
+  int exit_code = -1;                          // expected exit status when not 0/1 by the verdicts
 };
 
 const std::vector<std::string> all3 = {"double", "mp50", "exact"};
@@ -72,71 +77,81 @@ const std::vector<Example>& examples() {
        {}},
       {"bug_euler_sign",
        "Euler's equations with the cross product reversed",
-       {{"euler_form_3_8", all3, "FAIL", "euler_3_8(I, I Omega) = componentwise (2.1) does not hold"},
+       {{"definition_euler_3_8", all3, "FAIL", "slot euler_3_8: dPi/dt = Pi x I^-1 Pi, (3.8) does not hold"}, {"euler_form_3_8", all3, "FAIL", "euler_3_8(I, I Omega) = componentwise (2.1) does not hold"},
         {"euler_flow_is_elliptic_solution", {"double", "mp50"}, "FAIL", "= elliptic solution"}},
        {},
        false,
-       {}},
+       {},
+       "slot `euler_3_8` is wrong"},
       {"bug_hat_transposed",
        "the transposed hat convention",
-       {{"hat_is_cross_product", all3, "FAIL", "does not hold"},
+       {{"definition_hat", all3, "FAIL", "slot hat: hat(v) = (-v_i eps_ijk), (2.11) does not hold"}, {"definition_vee", all3, "FAIL", "slot vee: vee(S) = (S_32, S_13, S_21) for skew S, (2.11) does not hold"}, {"hat_is_cross_product", all3, "FAIL", "does not hold"},
         {"hat_is_lie_algebra_isomorphism", all3, "FAIL", "[hat(a), hat(b)] = hat(a x b) does not hold"},
         {"restricted_variation_2_8", all3, "FAIL", "dOmega/ds - dXi/dt = Omega x Xi does not hold"}},
        {},
        false,
-       {}},
+       {},
+       "slot `hat` is wrong"},
       {"bug_reconstruction",
        "reconstruction as dO/dt = hat(Omega) O",
-       {{"reconstruction_is_left_invariant", all3, "FAIL", "(left-invariant) does not hold"}},
+       {{"definition_reconstruction_2_10", all3, "FAIL", "slot reconstruction_2_10: dO/dt = O Omega_hat, (2.10) does not hold"}, {"reconstruction_is_left_invariant", all3, "FAIL", "(left-invariant) does not hold"}},
        {},
        false,
-       {}},
+       {},
+       "slot `reconstruction_2_10` is wrong"},
       {"bug_pairing_half",
        "the factor 1/2 of the trace pairing lost",
-       {{"trace_pairing_is_dot_product", all3, "FAIL", "<hat(a), hat(b)> = a . b does not hold"},
+       {{"definition_pairing", all3, "FAIL", "slot pairing: <A, B> = tr(A^T B)/2, (2.15) does not hold"}, {"definition_lagrangian_2_13", all3, "FAIL", "slot lagrangian_2_13"}, {"trace_pairing_is_dot_product", all3, "FAIL", "<hat(a), hat(b)> = a . b does not hold"},
         {"lagrangian_2_13_is_kinetic_energy", all3, "FAIL", "does not hold"},
         {"symmetric_part_does_not_pair", all3, "FAIL", "<Pi_skew, Omega_hat> = vee(Pi_skew) . Omega does not hold"}},
        {},
        false,
-       {}},
+       {},
+       "slot `pairing` is wrong"},
       {"bug_manakov_omega",
        "Manakov's Omega recovered as A^-1 M / 2",
-       {{"manakov_omega_solves_2_34", all3, "FAIL", "A Omega + Omega A = M for Omega = manakov_Omega(A, M) does not hold"}},
+       {{"definition_manakov_Omega", all3, "FAIL", "slot manakov_Omega: A Omega + Omega A = M, (2.34)"}, {"manakov_omega_solves_2_34", all3, "FAIL", "A Omega + Omega A = M for Omega = manakov_Omega(A, M) does not hold"}},
        {},
        false,
-       {}},
+       {},
+       "slot `manakov_Omega` is wrong"},
       {"bug_hamiltonian_inertia",
        "the Hamiltonian with I instead of I^-1",
-       {{"hamiltonian_3_3_is_3_4", all3, "FAIL", "does not hold"},
+       {{"definition_hamiltonian_3_4", all3, "FAIL", "slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4) does not hold"}, {"hamiltonian_3_3_is_3_4", all3, "FAIL", "does not hold"},
         {"hamiltonian_gradient_3_5", all3, "FAIL", "does not hold"}},
        {},
        false,
-       {}},
+       {},
+       "slot `hamiltonian_3_4` is wrong"},
       {"bug_euler_no_division",
        "(2.1) without the division by I",
-       {{"euler_form_2_1", all3, "FAIL", "I * euler_2_1(I, Omega) = componentwise (2.1) does not hold"}},
+       {{"definition_euler_2_1", all3, "FAIL", "slot euler_2_1: dOmega/dt = I^-1 (I Omega x Omega), (2.1) does not hold"}, {"euler_form_2_1", all3, "FAIL", "I * euler_2_1(I, Omega) = componentwise (2.1) does not hold"}},
        {},
        false,
-       {}},
+       {},
+       "slot `euler_2_1` is wrong"},
       {"bug_crash",
        "an out-of-range index (the process aborts)",
-       {{"vee_inverts_hat", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"},
+       {{"definition_vee", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"}, {"vee_inverts_hat", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"},
         {"restricted_variation_2_8", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"}},
        {},
        false,
-       {}},
+       {},
+       "slot `vee` is wrong"},
       {"bug_hang",
        "an iteration that never ends",
-       {{"manakov_omega_solves_2_34", all3, "TIMEOUT", "did not finish within 2 s"}},
+       {{"definition_manakov_Omega", all3, "TIMEOUT", "did not finish within 2 s"}, {"manakov_omega_solves_2_34", all3, "TIMEOUT", "did not finish within 2 s"}},
        {},
        false,
-       {"--timeout", "2"}},
+       {"--timeout", "2"},
+       "slot `manakov_Omega` is wrong"},
       {"bug_throws",
        "a stub that throws",
-       {{"lagrangian_2_13_is_kinetic_energy", all3, "FAIL", "lagrangian_2_13: not written yet"}},
+       {{"definition_lagrangian_2_13", all3, "FAIL", "lagrangian_2_13: not written yet"}, {"lagrangian_2_13_is_kinetic_energy", all3, "FAIL", "lagrangian_2_13: not written yet"}},
        {},
        false,
-       {}},
+       {},
+       "slot `lagrangian_2_13` is wrong"},
       {"bug_claims_casimir",
        "explicit Euler claiming to preserve |Pi|^2 and O^T O = Id",
        {},
@@ -154,6 +169,47 @@ const std::vector<Example>& examples() {
         {"lie_trotter", "orthogonality", "verified"}},
        true,
        {}},
+      // Issue 13: a slot provided alone, wrongly, fails its own direct property.
+      {"bug_energy_alone",
+       "only the energy (3.4), without its 1/2",
+       {{"definition_hamiltonian_3_4", all3, "FAIL", "slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4) does not hold"}},
+       {},
+       false,
+       {},
+       "slot `hamiltonian_3_4` is wrong"},
+      {"bug_momentum_map_alone",
+       "only the momentum map, written J = q x p",
+       {{"definition_momentum_map", all3, "FAIL", "slot momentum_map: J(q, p) = p x q"}},
+       {},
+       false,
+       {},
+       "slot `momentum_map` is wrong"},
+      {"bug_bracket_sign_alone",
+       "only the Lie-Poisson bracket (3.6), with the wrong sign (its axioms still hold)",
+       {{"definition_lie_poisson_3_6", all3, "FAIL", "slot lie_poisson_3_6: {f, h} = -Pi . (df x dh), (3.6) does not hold"}},
+       {},
+       false,
+       {},
+       "slot `lie_poisson_3_6` is wrong"},
+      {"bug_integrator_signature",
+       "an integrator whose step cannot be called as the slot expects: its claims cannot be checked",
+       {},
+       {},
+       false,
+       {},
+       "",
+       {"**Result: UNCHECKED**", "integrator 'explicit_euler_pi_only' has neither rigid_body_step"},
+       1},
+      {"bug_slot_names",
+       "right formulas under names that are not slot names: nothing is checked",
+       {},
+       {},
+       false,
+       {},
+       "",
+       {"**Result: NOTHING CHECKED**", "`energy` is not a slot name", "did you mean `hamiltonian_3_4`",
+        "`euler` is not a slot name", "did you mean `euler_3_8`", "`omega35` is not a slot name"},
+       1},
   };
   return list;
 }
@@ -191,8 +247,9 @@ void check_report(const Example& e, const json& report, int exit_code) {
     if (x.outcome != "NOT PROVIDED") expect_problem = true;
   for (const auto& c : e.claims)
     if (c.status == "FALSE CLAIM") expect_problem = true;
-  check(exit_code == (expect_problem ? 1 : 0),
-        "exit status " + std::to_string(exit_code) + ", expected " + (expect_problem ? "1" : "0"));
+  const int expected_exit = e.exit_code >= 0 ? e.exit_code : expect_problem ? 1 : 0;
+  check(exit_code == expected_exit,
+        "exit status " + std::to_string(exit_code) + ", expected " + std::to_string(expected_exit));
 
   std::map<std::pair<std::string, std::string>, const Expected*> expected;
   for (const auto& x : e.verdicts)
@@ -260,6 +317,19 @@ int run_example(const std::string& name, const std::string& program, const std::
   try {
     check_report(*e, read_json(fs::path(dir) / "report" / "verdicts.json"), pr.exit_code);
     check(fs::exists(fs::path(dir) / "report" / "report.md"), "no report.md");
+    std::ifstream md_in(fs::path(dir) / "report" / "report.md");
+    std::ostringstream md_text;
+    md_text << md_in.rdbuf();
+    const std::string md = md_text.str();
+    for (const auto& says : e->report_says)
+      check(md.find(says) != std::string::npos, "report.md does not say \"" + says + "\"");
+    if (!e->first_fix.empty()) {
+      const auto at = md.find("## What to fix\n\n");
+      const std::string first =
+          at == std::string::npos ? "(no What to fix section)" : md.substr(at + 16, md.find('\n', at + 16) - at - 16);
+      check(first.find(e->first_fix) != std::string::npos,
+            "the first item of What to fix is \"" + first + "\", expected it to say \"" + e->first_fix + "\"");
+    }
     check(fs::exists(fs::path(dir) / "report" / "junit.xml"), "no junit.xml");
   } catch (const std::exception& ex) {
     check(false, ex.what());

@@ -16,6 +16,7 @@
 #include "harness/isolate.hpp"
 #include "harness/process.hpp"
 #include "harness/report.hpp"
+#include "harness/slot_names.hpp"
 #include "harness/trajectory.hpp"
 #include "impl/reference_subject.hpp"
 #include "properties/runner.hpp"
@@ -28,6 +29,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <thread>
 #include <iomanip>
 #include <iostream>
@@ -132,7 +134,7 @@ int run_trajectory_check(const std::vector<std::string>& files, const harness::T
   } catch (const std::exception&) {
   }
   if (quiet)
-    std::cout << r.subject << ": " << (r.ok() ? "PASS" : "FAIL") << " (" << r.count(Outcome::Pass) << " PASS, "
+    std::cout << r.subject << ": " << r.verdict_word() << " (" << r.count(Outcome::Pass) << " PASS, "
               << r.count(Outcome::Fail) << " FAIL)\n";
   else
     std::cout << harness::console_report(r, cat ? &*cat : nullptr);
@@ -171,6 +173,8 @@ int run_subjects() {
 int run_slots() {
   for (const auto& s : subject_slots())
     std::cout << s.name << "  " << s.signature << "\n    " << s.place << ": " << s.meaning << "\n";
+  std::cout << "\nBy concept (slot names are the notes' equation numbers):\n";
+  for (const auto& c : harness::slot_concepts()) std::cout << "  " << std::left << std::setw(40) << c.concept_name << c.slot << "\n";
   return 0;
 }
 
@@ -251,7 +255,7 @@ int main(int argc, char** argv) {
   traj->add_option("--tolerance", tro.tolerance,
                    "allowed error against the reference, relative to |Pi(0)| (default 0.05: catches wrong equations)")
       ->check(CLI::PositiveNumber);
-  traj->add_option("--report", tr_report, "write report.md, junit.xml, verdicts.json and figures/ into this directory");
+  traj->add_option("--report", tr_report, "write report.md, junit.xml, verdicts.json and figures/ here (default: geomech-reports/trajectory-<first file>)");
   traj->add_option("--junit", tr_junit, "also write the JUnit XML to this file");
   traj->add_flag("--quiet,-q", tr_quiet, "print only the summary");
   traj->add_flag("--allow-nonphysical", tro.params.allow_nonphysical,
@@ -316,6 +320,9 @@ int main(int argc, char** argv) {
       if (!tr_inertia.empty()) tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
       if (!tr_step.empty()) tro.params.step = tr_step;
       tro.preserves.insert(tr_preserves.begin(), tr_preserves.end());
+      // A report by default, as `geomech check` writes one (issue 13): named after the first file.
+      if (tr_report.empty())
+        tr_report = "geomech-reports/trajectory-" + std::filesystem::path(trajectory_files.front()).stem().string();
       return gm::run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);
     }
     if (*list) return gm::run_list();

@@ -114,6 +114,12 @@ struct RigidBody {
     return P.dot(W) - lagrangian_2_5<T>(I, W);
   }
 
+  // (2.27): the Casimir c(Pi) = |Pi|^2 / 2 of the bracket (3.6).
+  template <class T>
+  static T casimir(const Vec3<T>& P) {
+    return P.dot(P) / T(2);
+  }
+
   // (3.4): h = (1/2) Pi . I^-1 Pi.
   template <class T>
   static T hamiltonian_3_4(const Vec3<T>& I, const Vec3<T>& P) {

@@ -41,6 +41,16 @@ std::string describe_failure(std::string_view what, std::string_view kind, const
   return os.str();
 }
 
+std::string double_precision_hint(const char* scalar, double relative) {
+  if (!(relative >= 1e-19 && relative <= 1e-11)) return {};
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.2g", relative);
+  return std::string("\n  hint: the residual is ") + buf + " of the inputs' size in a " + scalar +
+         " run: that is double-precision round-off (about 1e-16), so part of this computation seems to be done in "
+         "double (a cast or conversion to double, a double constant such as 0.1, std::sqrt or std::sin called on a "
+         "double, or a hard-coded tolerance like 1e-12)";
+}
+
 GM_REQUIRE_CLOSE_FOR(, double)
 GM_REQUIRE_CLOSE_FOR(, Real50)
 GM_REQUIRE_CLOSE_FOR(, Rational)

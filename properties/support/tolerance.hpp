@@ -98,6 +98,10 @@ std::string describe_failure(std::string_view what, std::string_view kind, const
                              const std::string& rhs, const std::string& diff, const std::string& residual,
                              double units, const std::string& allowed);
 
+// Issue 12: a residual of the size of double round-off (relative 1e-19 .. 1e-11) in a 50-digit or
+// exact run means part of the computation is done in double; the message says so. Empty otherwise.
+std::string double_precision_hint(const char* scalar, double relative_residual);
+
 }  // namespace detail
 
 namespace detail {
@@ -122,12 +126,16 @@ void require_close_plain(std::string_view what, const X& lhs, const X& rhs, cons
     log.worst_check = std::string(what);
   }
   if (residual > allowed) {
+    std::string hint;
+    if constexpr (!std::is_same_v<T, double>)
+      if (scale != T(0)) hint = double_precision_hint(ScalarInfo<T>::name, to_double(T(residual / scale)));
     fail(detail::describe_failure(what, is_exact_v<T> ? "exact" : "roundoff", show_value(lhs),
                                      show_value(rhs), show_value(detail::difference(lhs, rhs)),
                                      to_string_full(residual), units,
                                      is_exact_v<T> ? std::string("0 (exact arithmetic)")
                                                    : to_string_full(allowed) + " = " + std::to_string(k) +
-                                                         " eps * scale, scale = " + to_string_full(scale)));
+                                                         " eps * scale, scale = " + to_string_full(scale)) +
+         hint);
   }
 }
 

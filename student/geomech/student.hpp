@@ -71,6 +71,7 @@ struct PartInfo {
   std::map<std::string, std::string> slot_notes;     // slot -> why it is not filled
   std::vector<IntegratorClaims> claims;
   std::vector<std::string> warnings;
+  std::vector<std::string> unchecked;                // written, but cannot be called as its slot expects
 };
 
 void register_part(std::shared_ptr<const Subject<double>> s, PartInfo info);
@@ -241,9 +242,10 @@ void gm_integrator_of(Subject<T>& s, PartInfo& info) {
   if (in.rigid_body_step || in.manakov_step)
     s.integrators.push_back(std::move(in));
   else if constexpr (std::is_same_v<T, double>)
-    info.warnings.push_back("integrator '" + std::string(Int::name) +
-                            "' has neither rigid_body_step(I, x, h) nor manakov_step(A, x, h) with the expected "
-                            "signature (see `geomech slots`), so it is not checked");
+    info.unchecked.push_back("integrator '" + std::string(Int::name) +
+                             "' has neither rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) "
+                             "nor manakov_step(const MatX<T>& A, const ManakovState<T>& x, const T& h) with the "
+                             "expected signature (see `geomech slots`), so none of its claims can be checked");
 }
 
 template <class Int>

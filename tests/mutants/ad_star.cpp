@@ -59,3 +59,24 @@ GM_MUTANT(so4_bracket_R6_sign_slip, "so(4) bracket in R^6 with u1 x v2 + u2 x v1
 });
 
 }  // namespace gm
+
+namespace gm {
+
+// sl(2, R) read with b and c exchanged: [[a, c], [b, -a]] (a transposed convention); right on
+// so(3) and so(4), wrong only on the third algebra.
+GM_MUTANT(lie_hat_sl2_transposed, "lie_hat for sl(2, R) building [[a, c], [b, -a]] (transposed)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.lie_hat = [](LieAlgebraId g, const VecX<T>& x) -> MatX<T> {
+    const MatX<T> m = ref::lie_hat<T>(g, x);
+    return g == LieAlgebraId::sl2 ? MatX<T>(m.transpose()) : m;
+  };
+});
+
+GM_MUTANT(lie_vee_sl2_transposed, "lie_vee for sl(2, R) reading (m00, m10, m01) (transposed)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.lie_vee = [](LieAlgebraId g, const MatX<T>& m) -> VecX<T> {
+    return g == LieAlgebraId::sl2 ? ref::lie_vee<T>(g, MatX<T>(m.transpose())) : ref::lie_vee<T>(g, m);
+  };
+});
+
+}  // namespace gm

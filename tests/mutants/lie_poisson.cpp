@@ -80,3 +80,16 @@ GM_MUTANT(lie_poisson_2_23_with_symmetric_part,
           });
 
 }  // namespace gm
+
+namespace gm {
+
+// Minus a Poisson bracket is a Poisson bracket: bilinearity, skew-symmetry, Leibniz and Jacobi
+// all hold for it, so only the comparison with (2.23) itself (definition_lie_poisson_2_23) sees it.
+GM_MUTANT(lie_poisson_2_23_sign_flipped, "(2.23) written {f, h} = +<Pi, [df, dh]>", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.lie_poisson_2_23 = [](const Mat3<T>& P, const Mat3<T>& F, const Mat3<T>& H) -> T {
+    return -ref::lie_poisson_2_23<T>(P, F, H);
+  };
+});
+
+}  // namespace gm

@@ -1,6 +1,7 @@
 #include "tests/mutants/mutants.hpp"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 
 namespace gm {
@@ -20,6 +21,18 @@ void register_mutant(Mutant m) {
 }
 
 const std::vector<Mutant>& mutants() { return mutable_mutants(); }
+
+static std::map<std::string, std::vector<ScalarKind>>& restrictions() {
+  static std::map<std::string, std::vector<ScalarKind>> r;
+  return r;
+}
+
+void mutant_wrong_only_in(const std::string& name, std::vector<ScalarKind> kinds) { restrictions()[name] = std::move(kinds); }
+
+bool mutant_wrong_in(const std::string& name, ScalarKind k) {
+  auto it = restrictions().find(name);
+  return it == restrictions().end() || std::find(it->second.begin(), it->second.end(), k) != it->second.end();
+}
 
 const Mutant* find_mutant(std::string_view name) {
   for (const auto& m : mutants())

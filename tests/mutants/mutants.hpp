@@ -33,6 +33,16 @@ const std::vector<Mutant>& mutants();
 const Mutant* find_mutant(std::string_view name);
 void register_mutant(Mutant m);
 
+// A mistake that only exists in some scalars: a computation done in double is exact in double,
+// so its negative control can only fail in mp50 and exact. Listed with GM_MUTANT_WRONG_ONLY_IN;
+// everywhere else the mutant is right by construction (an equivalent mutant there).
+void mutant_wrong_only_in(const std::string& name, std::vector<ScalarKind> kinds);
+// Whether the mutant is wrong in scalar k (true unless restricted).
+bool mutant_wrong_in(const std::string& name, ScalarKind k);
+struct MutantScalarsRegistrar {
+  MutantScalarsRegistrar(const char* name, std::vector<ScalarKind> kinds) { mutant_wrong_only_in(name, std::move(kinds)); }
+};
+
 struct MutantRegistrar {
   template <class Patch>
   MutantRegistrar(const char* name, const char* description, Patch patch) {
@@ -58,5 +68,7 @@ struct MutantSetRegistrar {
 
 #define GM_MUTANT(name, description, ...) \
   static const ::gm::MutantRegistrar gm_mutant_##name{#name, description, __VA_ARGS__}
+#define GM_MUTANT_WRONG_ONLY_IN(name, ...) \
+  static const ::gm::MutantScalarsRegistrar gm_mutant_scalars_##name{#name, {__VA_ARGS__}}
 #define GM_MUTANT_SET(name, description, ...) \
   static const ::gm::MutantSetRegistrar gm_mutant_set_##name{#name, description, __VA_ARGS__}

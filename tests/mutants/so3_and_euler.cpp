@@ -116,3 +116,19 @@ GM_MUTANT(hamiltonian_2_21_sign_flipped, "(2.21) written h = l(Omega_hat) - <Pi,
 });
 
 }  // namespace gm
+
+namespace gm {
+
+GM_MUTANT(casimir_without_half, "the Casimir written |Pi|^2 without the 1/2 of (2.27)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.casimir = [](const Vec3<T>& P) -> T { return P.dot(P); };
+});
+
+// The energy of the notes' body I = diag(1, 1/2, 1/3) in place of the Casimir: conserved by that
+// body's motion, but not a Casimir (it does not commute with every function).
+GM_MUTANT(casimir_weighted, "the Casimir written (Pi1^2 + 2 Pi2^2 + 3 Pi3^2)/2 (an energy, not a Casimir)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.casimir = [](const Vec3<T>& P) -> T { return (P(0) * P(0) + T(2) * P(1) * P(1) + T(3) * P(2) * P(2)) / T(2); };
+});
+
+}  // namespace gm

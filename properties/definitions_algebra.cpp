@@ -1,0 +1,253 @@
+// Every algebraic slot checked on its own (issue 13): each property below needs exactly one slot
+// and compares it with the notes' formula, written here from the definition (support/truth.hpp),
+// never with another slot of the same subject. So a subject that provides any subset of slots
+// has each of them checked, and an error shared by two slots cannot cancel out. Inputs come from
+// every regime (support/regimes.hpp): axes, zero components, tiny and huge magnitudes, and for
+// so(n) every dimension n = 2..6.
+//
+// Tolerances: exact (0) in rationals; in floats k eps * scale, scale the product of the sizes of
+// the inputs that are multiplied, k the number of roundings of the formula on both sides.
+#include "properties/registry.hpp"
+#include "properties/support/named_inputs.hpp"
+#include "properties/support/regimes.hpp"
+#include "properties/support/tolerance.hpp"
+#include "properties/support/truth.hpp"
+
+namespace gm {
+namespace {
+
+// (2.11): hat(v) is the matrix with hat(v)_jk = -v_i eps_ijk.
+template <class T>
+void definition_hat(const Subject<T>& s) {
+  const Vec3<T> v = *gen::regime_vec3<T>();
+  showing_inputs([&] { return named("v", v); },
+                 [&] { require_close("slot hat: hat(v) = (-v_i eps_ijk), (2.11)", s.hat(v), truth::skew_of(v), norm_inf(v), 0); });
+}
+
+// vee inverts (2.11) on skew matrices.
+template <class T>
+void definition_vee(const Subject<T>& s) {
+  const Vec3<T> v = *gen::regime_vec3<T>();
+  const Mat3<T> S = truth::skew_of(v);
+  showing_inputs([&] { return named("S", S); },
+                 [&] { require_close("slot vee: vee(S) = (S_32, S_13, S_21) for skew S, (2.11)", s.vee(S), v, norm_inf(v), 0); });
+}
+
+// (2.15): <A, B> = tr(A^T B) / 2, for any n x n matrices (n = 2..6), not only skew ones. The sum
+// has n^2 products: k = 2 n^2 + 2.
+template <class T>
+void definition_pairing(const Subject<T>& s) {
+  const int n = *rc::gen::inRange(2, 7);
+  const int e = *rc::gen::inRange(-30, 31);
+  const MatX<T> A = (*gen::mat<T>(n, n) * gen::pow2<T>(e)).eval();
+  const MatX<T> B = *gen::mat<T>(n, n);
+  showing_inputs([&] { return named("A", A) + named("B", B); }, [&] {
+    require_close("slot pairing: <A, B> = tr(A^T B)/2, (2.15)", s.pairing(A, B), T(A.cwiseProduct(B).sum() / T(2)),
+                  T(norm_inf(A) * norm_inf(B) * T(n * n)), 2.0 * n * n + 2);
+  });
+}
+
+// hat_n for every n = 2..6, in the coordinates `geomech slots` documents (first three as (2.11)).
+template <class T>
+void definition_hat_n(const Subject<T>& s) {
+  const int n = *rc::gen::inRange(2, 7);
+  const VecX<T> v = *gen::regime_vec<T>(truth::so_dimension(n));
+  showing_inputs([&] { return named("v", v) + "    n = " + std::to_string(n) + "\n"; }, [&] {
+    require_close("slot hat_n: hat_n(v, n) is the so(n) matrix of v (n = " + std::to_string(n) + ")", s.hat_n(v, n),
+                  truth::so_n_matrix<T>(v, n), norm_inf(v), 0);
+  });
+}
+
+template <class T>
+void definition_vee_n(const Subject<T>& s) {
+  const int n = *rc::gen::inRange(2, 7);
+  const VecX<T> v = *gen::regime_vec<T>(truth::so_dimension(n));
+  const MatX<T> m = truth::so_n_matrix<T>(v, n);
+  showing_inputs([&] { return named("m", m); }, [&] {
+    require_close("slot vee_n: vee_n(m) are the so(n) coordinates of m (n = " + std::to_string(n) + ")", s.vee_n(m), v,
+                  norm_inf(v), 0);
+  });
+}
+
+LieAlgebraId draw_algebra() {
+  static const LieAlgebraId all[] = {LieAlgebraId::so3, LieAlgebraId::so4, LieAlgebraId::sl2};
+  return all[*rc::gen::inRange(0, 3)];
+}
+
+template <class T>
+void definition_lie_hat(const Subject<T>& s) {
+  const LieAlgebraId g = draw_algebra();
+  const VecX<T> x = *gen::regime_vec<T>(truth::algebra_dimension(g));
+  showing_inputs([&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("x", x); }, [&] {
+    require_close(std::string("slot lie_hat: the matrix of x in ") + lie_algebra_name(g), s.lie_hat(g, x),
+                  truth::algebra_matrix<T>(g, x), norm_inf(x), 0);
+  });
+}
+
+template <class T>
+void definition_lie_vee(const Subject<T>& s) {
+  const LieAlgebraId g = draw_algebra();
+  const VecX<T> x = *gen::regime_vec<T>(truth::algebra_dimension(g));
+  const MatX<T> m = truth::algebra_matrix<T>(g, x);
+  showing_inputs([&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("m", m); }, [&] {
+    require_close(std::string("slot lie_vee: the coordinates of m in ") + lie_algebra_name(g), s.lie_vee(g, m), x,
+                  norm_inf(x), 0);
+  });
+}
+
+// Theorem 1.1 (iv): <ad*_xi mu, eta> = <mu, [xi, eta]>; component k is mu . [xi, e_k]. Both sides
+// sum d n products of |xi| |mu| (d the dimension, n the matrix size): k = 4 d n.
+template <class T>
+void definition_ad_star(const Subject<T>& s) {
+  const LieAlgebraId g = draw_algebra();
+  const int d = truth::algebra_dimension(g);
+  const VecX<T> xi = *gen::regime_vec<T>(d);
+  const VecX<T> mu = *gen::regime_vec<T>(d);
+  const int n = g == LieAlgebraId::so4 ? 4 : g == LieAlgebraId::so3 ? 3 : 2;
+  showing_inputs([&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("xi", xi) + named("mu", mu); },
+                 [&] {
+                   require_close(std::string("slot ad_star: <ad*_xi mu, e_k> = <mu, [xi, e_k]> in ") + lie_algebra_name(g),
+                                 s.ad_star(g, xi, mu), truth::ad_star_by_definition<T>(g, xi, mu),
+                                 T(norm_inf(xi) * norm_inf(mu)), 4.0 * d * n);
+                 });
+}
+
+// SO(4) exercise: the bracket of R^6 is the commutator read through hat_4.
+template <class T>
+void definition_so4_bracket_R6(const Subject<T>& s) {
+  const VecX<T> a = *gen::regime_vec<T>(6);
+  const VecX<T> b = *gen::regime_vec<T>(6);
+  const MatX<T> A = truth::so_n_matrix<T>(a, 4), B = truth::so_n_matrix<T>(b, 4);
+  showing_inputs([&] { return named("a", a) + named("b", b); }, [&] {
+    require_close("slot so4_bracket_R6: [a, b] = vee_4([hat_4(a), hat_4(b)])", VecX<T>(s.so4_bracket_R6(Vec6<T>(a), Vec6<T>(b))),
+                  truth::so_n_coordinates<T>(MatX<T>(A * B - B * A)), T(norm_inf(a) * norm_inf(b)), 16);
+  });
+}
+
+template <class T>
+void definition_ad_star_so4_R6(const Subject<T>& s) {
+  const VecX<T> xi = *gen::regime_vec<T>(6);
+  const VecX<T> mu = *gen::regime_vec<T>(6);
+  showing_inputs([&] { return named("xi", xi) + named("mu", mu); }, [&] {
+    require_close("slot ad_star_so4_R6: <ad*_xi mu, e_k> = <mu, [xi, e_k]> in so(4) = R^6",
+                  VecX<T>(s.ad_star_so4_R6(Vec6<T>(xi), Vec6<T>(mu))),
+                  truth::ad_star_by_definition<T>(LieAlgebraId::so4, xi, mu), T(norm_inf(xi) * norm_inf(mu)), 96);
+  });
+}
+
+// The triple product -a . (b x c) of the brackets (3.6), (2.23), (3.13): six products, k = 8.
+template <class T>
+T minus_triple(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  return -a.dot(truth::cross(b, c));
+}
+
+template <class T>
+T size3(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
+  return norm_inf(a) * norm_inf(b) * norm_inf(c);
+}
+
+// (3.6): {f, h}(Pi) = -Pi . (df x dh).
+template <class T>
+void definition_lie_poisson_3_6(const Subject<T>& s) {
+  const Vec3<T> Pi = *gen::regime_vec3<T>(), df = *gen::regime_vec3<T>(), dh = *gen::regime_vec3<T>();
+  showing_inputs([&] { return named("Pi", Pi) + named("df/dPi", df) + named("dh/dPi", dh); }, [&] {
+    require_close("slot lie_poisson_3_6: {f, h} = -Pi . (df x dh), (3.6)", s.lie_poisson_3_6(Pi, df, dh),
+                  minus_triple(Pi, df, dh), size3(Pi, df, dh), 8);
+  });
+}
+
+// (2.23): {f, h} = -<Pi, [df, dh]> with skew matrices; in vectors, -Pi . (df x dh) by (2.25).
+// The matrix form sums more products: k = 24.
+template <class T>
+void definition_lie_poisson_2_23(const Subject<T>& s) {
+  const Vec3<T> Pi = *gen::regime_vec3<T>(), df = *gen::regime_vec3<T>(), dh = *gen::regime_vec3<T>();
+  const Mat3<T> P = truth::skew_of(Pi), F = truth::skew_of(df), H = truth::skew_of(dh);
+  showing_inputs([&] { return named("Pi_hat", P) + named("df_hat", F) + named("dh_hat", H); }, [&] {
+    require_close("slot lie_poisson_2_23: {f, h} = -<Pi, [df, dh]> = -Pi . (df x dh), (2.23)",
+                  s.lie_poisson_2_23(P, F, H), minus_triple(Pi, df, dh), size3(Pi, df, dh), 24);
+  });
+}
+
+// (3.13): {f, h} = -grad c . (grad f x grad h).
+template <class T>
+void definition_nambu_3_13(const Subject<T>& s) {
+  const Vec3<T> dc = *gen::regime_vec3<T>(), df = *gen::regime_vec3<T>(), dh = *gen::regime_vec3<T>();
+  showing_inputs([&] { return named("grad c", dc) + named("grad f", df) + named("grad h", dh); }, [&] {
+    require_close("slot nambu_3_13: {f, h} = -grad c . (grad f x grad h), (3.13)", s.nambu_3_13(dc, df, dh),
+                  minus_triple(dc, df, dh), size3(dc, df, dh), 8);
+  });
+}
+
+// (3.14): dx/dt = grad c x grad h.
+template <class T>
+void definition_nambu_motion_3_14(const Subject<T>& s) {
+  const Vec3<T> dc = *gen::regime_vec3<T>(), dh = *gen::regime_vec3<T>();
+  showing_inputs([&] { return named("grad c", dc) + named("grad h", dh); }, [&] {
+    require_close("slot nambu_motion_3_14: dx/dt = grad c x grad h, (3.14)", s.nambu_motion_3_14(dc, dh),
+                  truth::cross(dc, dh), T(norm_inf(dc) * norm_inf(dh)), 4);
+  });
+}
+
+// Section 3.5: {f, h} = df/dq . dh/dp - df/dp . dh/dq, so that {q_i, p_j} = delta_ij.
+template <class T>
+void definition_canonical_bracket(const Subject<T>& s) {
+  const Vec3<T> fq = *gen::regime_vec3<T>(), fp = *gen::regime_vec3<T>();
+  const Vec3<T> hq = *gen::regime_vec3<T>(), hp = *gen::regime_vec3<T>();
+  showing_inputs([&] { return named("df/dq", fq) + named("df/dp", fp) + named("dh/dq", hq) + named("dh/dp", hp); }, [&] {
+    require_close("slot canonical_bracket: {f, h} = df/dq . dh/dp - df/dp . dh/dq", s.canonical_bracket(fq, fp, hq, hp),
+                  T(fq.dot(hp) - fp.dot(hq)), T(norm_inf(fq) * norm_inf(hp) + norm_inf(fp) * norm_inf(hq)), 8);
+  });
+}
+
+// The momentum-map section: J(q, p) = p x q, the cotangent lift of SO(3) acting on R^3.
+template <class T>
+void definition_momentum_map(const Subject<T>& s) {
+  const Vec3<T> q = *gen::regime_vec3<T>(), p = *gen::regime_vec3<T>();
+  showing_inputs([&] { return named("q", q) + named("p", p); }, [&] {
+    require_close("slot momentum_map: J(q, p) = p x q (the momentum-map section)", s.momentum_map(q, p),
+                  truth::cross(p, q), T(norm_inf(q) * norm_inf(p)), 4);
+  });
+}
+
+}  // namespace
+
+#define GM_DEFINITION(slot, entry, statement, tolerance_class, ...)                                    \
+  GM_PROPERTY(definition_##slot, all_scalars,                                                          \
+              {.id = "definition_" #slot,                                                              \
+               .spec = entry,                                                                          \
+               .title = "slot " #slot " alone: " statement,                                            \
+               .tolerance = ToleranceClass::tolerance_class,                                           \
+               .needs = {#slot},                                                                       \
+               .negative_controls = {__VA_ARGS__}})
+
+GM_DEFINITION(hat, "s2.hat-map", "hat(v) = (-v_i eps_ijk), (2.11), on axes, zeros, tiny and huge v", Exact,
+              "hat_transposed", "hat_scaled");
+GM_DEFINITION(vee, "s2.hat-map", "vee inverts (2.11) on skew matrices", Exact, "vee_reads_upper_triangle");
+GM_DEFINITION(pairing, "s2.trace-pairing", "<A, B> = tr(A^T B)/2 for n x n matrices, n = 2..6", Exact,
+              "pairing_without_half", "pairing_upper_triangle");
+GM_DEFINITION(hat_n, "s1.so4-hat", "hat_n(v, n) in the documented so(n) coordinates, n = 2..6", Exact,
+              "hat_n_written_for_so4");
+GM_DEFINITION(vee_n, "s1.so4-hat", "vee_n inverts hat_n for n = 2..6", Exact, "vee_n_written_for_so4");
+GM_DEFINITION(lie_hat, "s1.ad-star-coordinates", "coordinates to matrices in so(3), so(4), sl(2, R)", Exact,
+              "lie_hat_sl2_transposed");
+GM_DEFINITION(lie_vee, "s1.ad-star-coordinates", "matrices to coordinates in so(3), so(4), sl(2, R)", Exact,
+              "lie_vee_sl2_transposed");
+GM_DEFINITION(ad_star, "s1.ad-star-definition", "<ad*_xi mu, eta> = <mu, [xi, eta]> on so(3), so(4), sl(2, R)",
+              Exact, "ad_star_is_ad", "ad_star_sign_flipped", "ad_star_sl2_transpose_pairing");
+GM_DEFINITION(so4_bracket_R6, "s1.so4-hat", "[a, b] = vee_4([hat_4 a, hat_4 b])", Exact, "so4_bracket_R6_sign_slip");
+GM_DEFINITION(ad_star_so4_R6, "s1.so4-ep-r6", "ad* of so(4) = R^6 from its definition", Exact,
+              "ad_star_so4_R6_sign_slip");
+GM_DEFINITION(lie_poisson_3_6, "s3.lie-poisson-euler", "{f, h} = -Pi . (df x dh), (3.6)", Exact,
+              "lie_poisson_3_6_sign_flipped", "lie_poisson_3_6_cyclic_index_slip");
+GM_DEFINITION(lie_poisson_2_23, "s2.lie-poisson-matrix", "{f, h} = -<Pi, [df, dh]>, (2.23)", Exact,
+              "lie_poisson_2_23_one_sided_product", "lie_poisson_2_23_sign_flipped");
+GM_DEFINITION(nambu_3_13, "s3.nambu-motion", "{f, h} = -grad c . (grad f x grad h), (3.13)", Exact,
+              "nambu_3_13_sign_flipped", "nambu_3_13_cyclic_index_slip");
+GM_DEFINITION(nambu_motion_3_14, "s3.nambu-motion", "dx/dt = grad c x grad h, (3.14)", Exact,
+              "nambu_motion_3_14_reversed", "nambu_motion_3_14_half_cross");
+GM_DEFINITION(canonical_bracket, "s3.clebsch-poisson", "{f, h} = f_q . h_p - f_p . h_q on T*R^3", Exact,
+              "canonical_bracket_sign_flipped", "canonical_bracket_symmetric");
+GM_DEFINITION(momentum_map, "mm.hamiltonian-action", "J(q, p) = p x q", Exact, "momentum_map_reversed",
+              "momentum_map_sign_slip");
+
+}  // namespace gm
