@@ -339,7 +339,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
       os << "\n  " << v.title;
       std::istringstream lines(v.message);
       for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
-      if (!v.counterexample.empty()) {
+      if (!v.counterexample.empty() && v.message.find("inputs, by the notes' names:") == std::string::npos) {
         os << "\n  counterexample (shrunk):";
         for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
       }

@@ -181,10 +181,17 @@ void definition_nambu_3_16(const Subject<T>& s) {
   const Vec3<T> a = *gen::regime_vec3<T>();
   const Vec3<T> x = *gen::regime_vec3<T>();
   const Vec3<T> expected(-a(0) * a(2) * x(1) * x(2), -a(1) * a(2) * x(2) * x(0), a(0) * a(1) * x(0) * x(1));
-  showing_inputs([&] { return named("a", a) + named("x", x); }, [&] {
-    require_close("slot nambu_3_16: the system (3.16)", s.nambu_3_16(a, x), expected,
-                  T(a.squaredNorm() * x.squaredNorm()), 6);
-  });
+  const Vec3<T> got = s.nambu_3_16(a, x);
+  // The printed answer of the exercise: grad(a1 x1^2 + a3 x3^2) x grad(a2 x2^2 + a3 x3^2) / 4.
+  const Vec3<T> dA(T(2) * a(0) * x(0), T(0), T(2) * a(2) * x(2)), dB(T(0), T(2) * a(1) * x(1), T(2) * a(2) * x(2));
+  const Vec3<T> printed = truth::cross(dA, dB) / T(4);
+  const T scale = T(a.squaredNorm() * x.squaredNorm());
+  recognising_erratum(
+      [&] { return printed != expected && (got - printed).cwiseAbs().maxCoeff() <= T(8) * eps<T>() * scale; },
+      "s3.nambu-3.16", "the answer grad(a1 x1^2 + a3 x3^2) x grad(a2 x2^2 + a3 x3^2) / 4", [&] {
+        showing_inputs([&] { return named("a", a) + named("x", x); },
+                       [&] { require_close("slot nambu_3_16: the system (3.16)", got, expected, scale, 6); });
+      });
 }
 
 // (3.21): with Pi = P x Q and Omega = I^-1 Pi, dQ/dt = Q x Omega and dP/dt = P x Omega.
@@ -220,10 +227,15 @@ template <class T>
 void definition_spatial_momentum(const Subject<T>& s) {
   const Mat3<T> O = *gen::regime_rotation3<T>();
   const Vec3<T> P = *gen::regime_vec3<T>();
-  showing_inputs([&] { return named("O", O) + named("Pi", P); }, [&] {
-    require_close("slot spatial_momentum: pi = O Pi (Theorem 2.2; (2.30) as printed is an erratum)",
-                  s.spatial_momentum(O, P), Vec3<T>(O * P), norm_inf(P), 6);
-  });
+  const Vec3<T> pi = s.spatial_momentum(O, P);
+  recognising_erratum(
+      [&] { return (pi - O.transpose() * P).cwiseAbs().maxCoeff() <= T(8) * eps<T>() * norm_inf(P); }, "s2.noether",
+      "(2.30) pi = O^-1 Pi O, i.e. O^T Pi", [&] {
+        showing_inputs([&] { return named("O", O) + named("Pi", P); }, [&] {
+          require_close("slot spatial_momentum: pi = O Pi (Theorem 2.2; (2.30) as printed is an erratum)", pi,
+                        Vec3<T>(O * P), norm_inf(P), 6);
+        });
+      });
 }
 
 // Remark 2.1: I_space = O I O^-1 = O diag(I) O^T.

@@ -104,12 +104,20 @@ void definition_manakov_clebsch_3_23(const Subject<T>& s) {
   const MatX<T> W = b.R * Wb * b.R.transpose();
   const auto [dQ, dP] = s.manakov_clebsch_3_23(b.A, Q, P);
   const T omega_size = T(b.spread * norm_inf(M) / b.d.minCoeff());
-  showing_inputs([&] { return body_text(b) + named("Q", Q) + named("P", P); }, [&] {
-    require_close("slot manakov_clebsch_3_23: dQ/dt = Q Omega, M = Q^T P - P^T Q, (3.23)", dQ, MatX<T>(Q * W),
-                  T(T(n) * norm_inf(Q) * omega_size), 16.0 * n * n);
-    require_close("slot manakov_clebsch_3_23: dP/dt = P Omega, M = Q^T P - P^T Q, (3.23)", dP, MatX<T>(P * W),
-                  T(T(n) * norm_inf(P) * omega_size), 16.0 * n * n);
-  });
+  // The closing exercise as printed, M = (P^T Q - Q^T P)/2 = -M/2: Omega and both rates scale by -1/2.
+  recognising_erratum(
+      [&] {
+        return !M.isZero() &&
+               (dQ + Q * W / T(2)).cwiseAbs().maxCoeff() <= T(64 * n * n) * eps<T>() * T(T(n) * norm_inf(Q) * omega_size);
+      },
+      "mm.manakov-clebsch", "M = (P^T Q - Q^T P)/2", [&] {
+        showing_inputs([&] { return body_text(b) + named("Q", Q) + named("P", P); }, [&] {
+          require_close("slot manakov_clebsch_3_23: dQ/dt = Q Omega, M = Q^T P - P^T Q, (3.23)", dQ, MatX<T>(Q * W),
+                        T(T(n) * norm_inf(Q) * omega_size), 16.0 * n * n);
+          require_close("slot manakov_clebsch_3_23: dP/dt = P Omega, M = Q^T P - P^T Q, (3.23)", dP, MatX<T>(P * W),
+                        T(T(n) * norm_inf(P) * omega_size), 16.0 * n * n);
+        });
+      });
 }
 
 }  // namespace

@@ -344,7 +344,7 @@ std::string format_verdict(const Verdict& v) {
     std::istringstream lines(v.message);
     for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
   }
-  if (!v.counterexample.empty()) {
+  if (!v.counterexample.empty() && v.message.find("inputs, by the notes' names:") == std::string::npos) {
     os << "\n  counterexample (shrunk):";
     for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
   }
