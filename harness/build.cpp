@@ -183,6 +183,8 @@ std::string default_toolchain_path() {
   if (!ec) {
     const fs::path candidate = exe.parent_path().parent_path() / "student" / "toolchain.json";
     if (fs::exists(candidate)) return candidate.string();
+    const fs::path installed = exe.parent_path().parent_path() / "share" / "geomech-spec" / "toolchain.json";
+    if (fs::exists(installed)) return installed.string();
   }
   return "student/toolchain.json";
 }
@@ -209,6 +211,23 @@ Toolchain load_toolchain(const std::string& path) {
     t.cache_dir = j.at("cache_dir").get<std::string>();
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": not a valid student toolchain description (" + e.what() + ")");
+  }
+  // An installed toolchain (share/geomech-spec/toolchain.json) names its files relative to itself,
+  // so that the installed tree can be moved (cmake --install --prefix, a Debian package).
+  const fs::path here = fs::absolute(path).parent_path();
+  auto resolve = [&](std::string& p) {
+    if (!p.empty() && fs::path(p).is_relative()) p = (here / p).lexically_normal().string();
+  };
+  resolve(t.driver_object);
+  resolve(t.harness_library);
+  resolve(t.property_library);
+  for (auto& i : t.includes) resolve(i);
+  if (t.cache_dir.empty()) {  // per user: $XDG_CACHE_HOME/geomech-spec, ~/.cache/geomech-spec
+    const char* xdg = std::getenv("XDG_CACHE_HOME");
+    const char* home = std::getenv("HOME");
+    t.cache_dir = xdg && *xdg   ? std::string(xdg) + "/geomech-spec"
+                  : home && *home ? std::string(home) + "/.cache/geomech-spec"
+                                  : (fs::temp_directory_path() / "geomech-spec-cache").string();
   }
   for (const auto& p : {t.driver_object, t.harness_library, t.property_library})
     if (!fs::exists(p))

@@ -26,7 +26,16 @@ const SpecEntry* Catalogue::find(std::string_view id) const {
 
 std::string default_catalogue_path() {
   if (const char* p = std::getenv("GEOMECH_CATALOGUE"); p && *p) return p;
-  return std::string(GM_SOURCE_DIR) + "/spec/catalogue.json";
+  const std::string in_source = std::string(GM_SOURCE_DIR) + "/spec/catalogue.json";
+  std::error_code ec;
+  if (std::filesystem::exists(in_source, ec)) return in_source;
+  // An installed tool: <prefix>/bin/geomech and <prefix>/share/geomech-spec/spec/catalogue.json.
+  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const auto installed = exe.parent_path().parent_path() / "share" / "geomech-spec" / "spec" / "catalogue.json";
+    if (std::filesystem::exists(installed, ec)) return installed.string();
+  }
+  return in_source;
 }
 
 namespace {
