@@ -76,8 +76,90 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
   return out;
 }
 
+
+// The summary table (summary.md and the console) of a class's rows, sharded or not.
+static int summarise_class(const std::string& class_dir, const std::vector<Row>& rows, const std::string& report_dir) {
+  // The summary table.
+  const auto& areas = area_names();
+  std::ostringstream md, console;
+  md << "# geomech class report: " << class_dir << "\n\n"
+     << rows.size() << " implementations. Each cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or "
+        "ERROR), then the checks not provided (n/p). Details in each implementation's report.\n\n"
+     << "| implementation | result |";
+  for (const auto& a : areas) md << " " << a << " |";
+  md << " report |\n|---|---|";
+  for (std::size_t i = 0; i < areas.size(); ++i) md << "---|";
+  md << "---|\n";
+  console << "\n" << std::left << std::setw(26) << "implementation" << std::setw(18) << "result";
+  for (const auto& a : areas) console << std::setw(20) << a;
+  console << "\n" << std::string(26 + 18 + 20 * areas.size(), '-') << "\n";
+  int bad = 0;
+  for (const auto& row : rows) {
+    std::string result;
+    std::map<std::string, std::array<int, 4>> by_area;  // pass, run, np, problems
+    if (!row.built && row.problem.empty()) {
+      result = "DOES NOT COMPILE";
+    } else if (!row.problem.empty()) {
+      result = "NOT CHECKED";
+    } else {
+      for (const auto& v : row.report.at("verdicts")) {
+        auto& c = by_area[v.value("area", "?")];
+        const std::string out = v.at("outcome").get<std::string>();
+        if (out == "NOT PROVIDED") {
+          ++c[2];
+          continue;
+        }
+        ++c[1];
+        if (out == "PASS")
+          ++c[0];
+        else
+          ++c[3];
+      }
+      result = row.exit_code == 0 ? "PASS" : row.report.value("verdict", std::string("FAIL"));
+    }
+    if (result != "PASS") ++bad;
+    md << "| " << row.impl.name << " | " << (result == "PASS" ? result : "**" + result + "**") << " |";
+    console << std::setw(26) << row.impl.name << std::setw(18) << result;
+    for (const auto& a : areas) {
+      auto it = by_area.find(a);
+      const std::string c = it == by_area.end() ? "-" : cell(it->second[0], it->second[1], it->second[2], it->second[3]);
+      md << " " << c << " |";
+      console << std::setw(20) << c;
+    }
+    const std::string link = row.impl.name + "/report.md";
+    md << " " << (row.built && row.problem.empty() ? "[" + link + "](" + link + ")" : "-") << " |\n";
+    console << "\n";
+  }
+  md << "\n";
+  for (const auto& row : rows) {
+    if (!row.built && row.problem.empty()) {
+      md << "## " << row.impl.name << ": does not compile\n\n```\n" << row.build_message << "\n```\n\n";
+      console << "\n" << row.impl.name << " does not compile:\n" << row.build_message << "\n";
+    } else if (!row.problem.empty()) {
+      md << "## " << row.impl.name << ": not checked\n\n```\n" << row.problem << "\n```\n\n";
+      console << "\n" << row.impl.name << ": " << row.problem << "\n";
+    }
+  }
+  write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
+  std::cout << console.str() << "\nsummary: " << report_dir << "/summary.md; one report per implementation in "
+            << report_dir << "/<name>/report.md\n";
+  return bad == 0 ? 0 : 1;
+}
+
+
+std::vector<Implementation> shard_of(const std::vector<Implementation>& all, int k, int n) {
+  std::vector<Implementation> out;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (static_cast<int>(i % static_cast<std::size_t>(n)) == k - 1) out.push_back(all[i]);
+  return out;
+}
+
 int run_class(const ClassOptions& o, const Toolchain& tc) {
-  const auto impls = find_implementations(o.dir);
+  const auto all_impls = find_implementations(o.dir);
+  if (o.shard_n < 1 || o.shard_k < 1 || o.shard_k > o.shard_n)
+    throw std::runtime_error("--shard K/N needs 1 <= K <= N (got " + std::to_string(o.shard_k) + "/" +
+                             std::to_string(o.shard_n) + ")");
+  const auto impls = shard_of(all_impls, o.shard_k, o.shard_n);
   const std::string report_dir =
       o.report_dir.empty() ? "geomech-reports/" + fs::path(o.dir).lexically_normal().filename().string() : o.report_dir;
   std::error_code ec;
@@ -85,8 +167,10 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
   const std::string front = o.front_door.empty() ? "geomech" : o.front_door;
 
-  std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir << ", " << o.jobs
-            << " at a time\n";
+  std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir;
+  if (o.shard_n > 1)
+    std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << all_impls.size() << ")";
+  std::cerr << ", " << o.jobs << " at a time\n";
   std::vector<std::function<std::string()>> tasks;
   for (const auto& impl : impls) {
     tasks.push_back([&, impl]() {
@@ -156,71 +240,94 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     rows.push_back(row);
   }
 
-  // The summary table.
-  const auto& areas = area_names();
-  std::ostringstream md, console;
-  md << "# geomech class report: " << o.dir << "\n\n"
-     << impls.size() << " implementations. Each cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or "
-        "ERROR), then the checks not provided (n/p). Details in each implementation's report.\n\n"
-     << "| implementation | result |";
-  for (const auto& a : areas) md << " " << a << " |";
-  md << " report |\n|---|---|";
-  for (std::size_t i = 0; i < areas.size(); ++i) md << "---|";
-  md << "---|\n";
-  console << "\n" << std::left << std::setw(26) << "implementation" << std::setw(18) << "result";
-  for (const auto& a : areas) console << std::setw(20) << a;
-  console << "\n" << std::string(26 + 18 + 20 * areas.size(), '-') << "\n";
-  int bad = 0;
-  for (const auto& row : rows) {
-    std::string result;
-    std::map<std::string, std::array<int, 4>> by_area;  // pass, run, np, problems
-    if (!row.built && row.problem.empty()) {
-      result = "DOES NOT COMPILE";
-    } else if (!row.problem.empty()) {
-      result = "NOT CHECKED";
-    } else {
-      for (const auto& v : row.report.at("verdicts")) {
-        auto& c = by_area[v.value("area", "?")];
-        const std::string out = v.at("outcome").get<std::string>();
-        if (out == "NOT PROVIDED") {
-          ++c[2];
-          continue;
+  // What a merge needs to rebuild the summary: the rows, with the class and the shard they belong to.
+  json shard;
+  shard["format"] = "geomech-class-shard 1";
+  shard["class"] = o.dir;
+  shard["implementations"] = all_impls.size();
+  shard["shard"] = {o.shard_k, o.shard_n};
+  shard["rows"] = json::array();
+  for (const auto& row : rows)
+    shard["rows"].push_back({{"name", row.impl.name}, {"source", row.impl.source}, {"built", row.built},
+                             {"build_message", row.build_message}, {"build_seconds", row.build_seconds},
+                             {"exit_code", row.exit_code}, {"check_seconds", row.check_seconds},
+                             {"problem", row.problem}});
+  write_file_atomically((fs::path(report_dir) / "class-shard.json").string(), shard.dump(1));
+  if (o.shard_n > 1)
+    std::cerr << "geomech check-class: shard " << o.shard_k << "/" << o.shard_n << " written to " << report_dir
+              << "; combine the shards with `geomech merge-class OUT SHARD_DIR...`\n";
+  return summarise_class(o.dir, rows, report_dir);
+}
+
+int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir) {
+  if (shard_dirs.empty()) throw std::runtime_error("merge-class: no shard folders given");
+  std::vector<Row> rows;
+  std::string klass;
+  std::size_t total = 0;
+  int n = 0;
+  std::set<int> seen;
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec) throw std::runtime_error("cannot create " + out_dir + ": " + ec.message());
+  for (const auto& dir : shard_dirs) {
+    const fs::path file = fs::path(dir) / "class-shard.json";
+    std::ifstream f(file);
+    if (!f) throw std::runtime_error(file.string() + ": no shard result here (run check-class --shard K/N first)");
+    json j;
+    try {
+      j = json::parse(f);
+      if (j.at("format") != "geomech-class-shard 1") throw std::runtime_error("unknown format");
+    } catch (const std::exception& e) {
+      throw std::runtime_error(file.string() + ": not a class shard result (" + e.what() + ")");
+    }
+    const int k = j.at("shard").at(0), nn = j.at("shard").at(1);
+    if (n == 0) {
+      n = nn;
+      klass = j.at("class");
+      total = j.at("implementations");
+    } else if (nn != n || j.at("class") != klass) {
+      throw std::runtime_error(file.string() + ": shard " + std::to_string(k) + "/" + std::to_string(nn) + " of " +
+                               j.at("class").get<std::string>() + " does not belong with shards of " +
+                               std::to_string(n) + " of " + klass);
+    }
+    if (!seen.insert(k).second) throw std::runtime_error(file.string() + ": shard " + std::to_string(k) + " given twice");
+    for (const auto& r : j.at("rows")) {
+      Row row;
+      row.impl = {r.at("name"), r.at("source")};
+      row.built = r.at("built");
+      row.build_message = r.at("build_message");
+      row.build_seconds = r.at("build_seconds");
+      row.exit_code = r.at("exit_code");
+      row.check_seconds = r.at("check_seconds");
+      row.problem = r.at("problem");
+      const fs::path report = fs::path(dir) / row.impl.name;
+      if (row.built && row.problem.empty()) {
+        std::ifstream rf(report / "verdicts.json");
+        try {
+          row.report = json::parse(rf);
+        } catch (const std::exception& e) {
+          row.problem = std::string("its report cannot be read: ") + e.what();
         }
-        ++c[1];
-        if (out == "PASS")
-          ++c[0];
-        else
-          ++c[3];
       }
-      result = row.exit_code == 0 ? "PASS" : row.report.value("verdict", std::string("FAIL"));
-    }
-    if (result != "PASS") ++bad;
-    md << "| " << row.impl.name << " | " << (result == "PASS" ? result : "**" + result + "**") << " |";
-    console << std::setw(26) << row.impl.name << std::setw(18) << result;
-    for (const auto& a : areas) {
-      auto it = by_area.find(a);
-      const std::string c = it == by_area.end() ? "-" : cell(it->second[0], it->second[1], it->second[2], it->second[3]);
-      md << " " << c << " |";
-      console << std::setw(20) << c;
-    }
-    const std::string link = row.impl.name + "/report.md";
-    md << " " << (row.built && row.problem.empty() ? "[" + link + "](" + link + ")" : "-") << " |\n";
-    console << "\n";
-  }
-  md << "\n";
-  for (const auto& row : rows) {
-    if (!row.built && row.problem.empty()) {
-      md << "## " << row.impl.name << ": does not compile\n\n```\n" << row.build_message << "\n```\n\n";
-      console << "\n" << row.impl.name << " does not compile:\n" << row.build_message << "\n";
-    } else if (!row.problem.empty()) {
-      md << "## " << row.impl.name << ": not checked\n\n```\n" << row.problem << "\n```\n\n";
-      console << "\n" << row.impl.name << ": " << row.problem << "\n";
+      if (fs::exists(report) && fs::absolute(report) != fs::absolute(fs::path(out_dir) / row.impl.name)) {
+        fs::remove_all(fs::path(out_dir) / row.impl.name, ec);
+        fs::copy(report, fs::path(out_dir) / row.impl.name, fs::copy_options::recursive, ec);
+        if (ec) throw std::runtime_error("cannot copy " + report.string() + " into " + out_dir + ": " + ec.message());
+      }
+      rows.push_back(std::move(row));
     }
   }
-  write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
-  std::cout << console.str() << "\nsummary: " << report_dir << "/summary.md; one report per implementation in "
-            << report_dir << "/<name>/report.md\n";
-  return bad == 0 ? 0 : 1;
+  if (static_cast<int>(seen.size()) != n) {
+    std::string missing;
+    for (int k = 1; k <= n; ++k)
+      if (!seen.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+    throw std::runtime_error("merge-class: shards " + missing + " of " + std::to_string(n) + " are missing");
+  }
+  if (rows.size() != total)
+    throw std::runtime_error("merge-class: the shards hold " + std::to_string(rows.size()) + " implementations, the class " +
+                             std::to_string(total));
+  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.impl.name < b.impl.name; });
+  return summarise_class(klass, rows, out_dir);
 }
 
 }  // namespace gm::harness

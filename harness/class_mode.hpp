@@ -23,6 +23,10 @@ struct ClassOptions {
   std::string front_door;          // how to call geomech in printed commands (e.g. "./geomech")
   CheckCliOptions check;           // forwarded to every implementation's check
   BuildOptions build;              // how each implementation is compiled (jobs is set to 1)
+  // --shard K/N: only the K-th of N deterministic shares of the class (the implementations sorted
+  // by name, every N-th from the K-th on); `merge_class` combines the shards' report folders.
+  int shard_k = 1;
+  int shard_n = 1;
 };
 
 struct Implementation {
@@ -35,5 +39,13 @@ struct Implementation {
 std::vector<Implementation> find_implementations(const std::string& dir);
 
 int run_class(const ClassOptions& o, const Toolchain& tc);
+
+// The K-th of N shares of a class (1 <= K <= N): implementations i with i mod N = K - 1.
+std::vector<Implementation> shard_of(const std::vector<Implementation>& all, int k, int n);
+
+// `geomech merge-class OUT SHARD_DIR...`: the shards' results (class-shard.json and one report per
+// implementation in each shard folder) as one class report in OUT, with the same summary table as
+// an unsharded run. Throws std::runtime_error for a missing, repeated or foreign shard.
+int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir);
 
 }  // namespace gm::harness

@@ -427,6 +427,51 @@ int run_class(const std::string& class_dir, const std::string& geomech) {
   return failures ? 1 : 0;
 }
 
+// `check-class --shard K/N` and `merge-class` (issue 17): the class in two shards, merged, gives
+// the same summary table and the same verdicts as one unsharded run.
+int run_class_shards(const std::string& class_dir, const std::string& geomech) {
+  const std::string dir = temp_dir("class-shards");
+  auto run = [&](std::vector<std::string> args) {
+    std::vector<std::string> argv{geomech};
+    argv.insert(argv.end(), args.begin(), args.end());
+    const auto pr = gm::harness::run_process(gm::harness::ProcessSpec{argv, {}, false});
+    std::cout << pr.output;
+    return pr;
+  };
+  const std::vector<std::string> common{"--parallel", "2", "--scalar", "double"};
+  auto with = [&](std::vector<std::string> a) {
+    a.insert(a.end(), common.begin(), common.end());
+    return a;
+  };
+  const auto whole = run(with({"check-class", class_dir, "--report", dir + "/whole"}));
+  const auto s1 = run(with({"check-class", class_dir, "--report", dir + "/shard1", "--shard", "1/2"}));
+  const auto s2 = run(with({"check-class", class_dir, "--report", dir + "/shard2", "--shard", "2/2"}));
+  const auto merged = run({"merge-class", dir + "/merged", dir + "/shard2", dir + "/shard1"});
+  check(merged.exit_code == whole.exit_code, "merge-class exits " + std::to_string(merged.exit_code) +
+                                                 ", the unsharded run " + std::to_string(whole.exit_code));
+  auto read = [](const fs::path& p) {
+    std::ifstream f(p);
+    std::stringstream ss;
+    ss << f.rdbuf();
+    return ss.str();
+  };
+  const std::string a = read(fs::path(dir) / "whole" / "summary.md"), b = read(fs::path(dir) / "merged" / "summary.md");
+  check(!a.empty() && a == b, "the merged summary differs from the unsharded one:\n--- unsharded\n" + a + "\n--- merged\n" + b);
+  const std::string s1sum = read(fs::path(dir) / "shard1" / "summary.md");
+  check(s1sum.find("| alice |") != std::string::npos && s1sum.find("| bob |") == std::string::npos,
+        "shard 1/2 should hold alice and carol (every second implementation from the first)");
+  for (const char* who : {"alice", "bob", "dave"}) {
+    const json x = read_json(fs::path(dir) / "whole" / who / "verdicts.json");
+    const json y = read_json(fs::path(dir) / "merged" / who / "verdicts.json");
+    check(x.at("counts") == y.at("counts"), std::string("the counts of ") + who + " differ after the merge");
+  }
+  const auto missing = run({"merge-class", dir + "/bad", dir + "/shard1"});
+  check(missing.exit_code == 2 && missing.output.find("shards 2 of 2 are missing") != std::string::npos,
+        "merging one shard of two is not refused with a clear message");
+  fs::remove_all(dir);
+  return failures ? 1 : 0;
+}
+
 // A student's own CMake project using the exported GeomechStudentConfig.cmake.
 int run_cmake_package(const std::string& cmake, const std::string& config_dir, const std::string& source) {
   const fs::path dir = temp_dir("cmake-package");
@@ -492,6 +537,9 @@ int write_ctest_script(const std::string& out, const std::string& tsv, const std
   script << "add_test(student.class_mode " << bracket(self) << " --class " << bracket(source_dir + "/tests/class")
          << " --geomech " << bracket(geomech) << ")\n";
   script << "set_tests_properties(student.class_mode PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
+  script << "add_test(student.class_shards_merge " << bracket(self) << " --class-shards " << bracket(source_dir + "/tests/class")
+         << " --geomech " << bracket(geomech) << ")\n";
+  script << "set_tests_properties(student.class_shards_merge PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 900 RESOURCE_LOCK compilers)\n";
   const std::string tmp = out + ".tmp";
   {
     std::ofstream f(tmp, std::ios::trunc);
@@ -515,6 +563,7 @@ int main(int argc, char** argv) {
     if (a.count("--example")) return run_example(a["--example"], a["--program"], a["--source"]);
     if (a.count("--end-to-end")) return run_end_to_end(a["--end-to-end"], a["--geomech"], a["--source"]);
     if (a.count("--class")) return run_class(a["--class"], a["--geomech"]);
+    if (a.count("--class-shards")) return run_class_shards(a["--class-shards"], a["--geomech"]);
   } catch (const std::exception& e) {
     std::cout << "error: " << e.what() << "\n";
     return 1;

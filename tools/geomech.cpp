@@ -235,6 +235,13 @@ int main(int argc, char** argv) {
   klass->add_option("--timeout-per-implementation", class_opts.timeout_per_implementation,
                     "seconds allowed to build and check one implementation (default 1800)");
   gm::harness::add_check_options(*klass, class_opts.check);
+  std::string shard;
+  klass->add_option("--shard", shard, "K/N: check only the K-th of N deterministic shares of the folder (CI matrix, Slurm array)");
+  std::vector<std::string> merge_dirs;
+  std::string merge_out;
+  auto* merge = app.add_subcommand("merge-class", "combine the report folders of check-class --shard K/N runs into one class report");
+  merge->add_option("out", merge_out, "the folder for the combined report")->required();
+  merge->add_option("shards", merge_dirs, "the shards' report folders")->required();
 
   gm::harness::TrajectoryCheckOptions tro;
   std::vector<std::string> trajectory_files, tr_inertia, tr_preserves;
@@ -307,7 +314,20 @@ int main(int argc, char** argv) {
       }
       return gm::run_builtin_check(subject, co);
     }
+    if (*merge) return gm::harness::merge_class(merge_dirs, merge_out);
     if (*klass) {
+      if (!shard.empty()) {
+        const auto slash = shard.find('/');
+        try {
+          if (slash == std::string::npos) throw std::invalid_argument("no /");
+          class_opts.shard_k = std::stoi(shard.substr(0, slash));
+          class_opts.shard_n = std::stoi(shard.substr(slash + 1));
+        } catch (const std::exception&) {
+          throw CLI::ValidationError("--shard", "'" + shard + "' is not K/N (for example 2/8)");
+        }
+        if (class_opts.shard_n < 1 || class_opts.shard_k < 1 || class_opts.shard_k > class_opts.shard_n)
+          throw CLI::ValidationError("--shard", "'" + shard + "' needs 1 <= K <= N");
+      }
       if (class_opts.check.report_dir.size()) class_opts.report_dir = class_opts.check.report_dir;
       class_opts.check.report_dir.clear();
       class_opts.front_door = gm::front_door();
