@@ -73,6 +73,28 @@ bool nothing_ran(const std::map<std::string, const Verdict*>& by_scalar) {
   return true;
 }
 
+// The table cell of a verdict (issue 13): an integrator property reports what it found about the
+// claim it checks: the measured order where the slope belongs, and "not held (unclaimed)" for an
+// invariant the integrator does not keep and does not claim ("unclaimed, not held"), not a bare PASS.
+std::string verdict_cell(const Verdict& v, bool exact_column) {
+  std::string cell = outcome_name(v.outcome);
+  if (v.outcome != Outcome::Pass) return cell;
+  for (const auto& f : v.claims) {
+    if (f.claim == "order") {
+      const auto at = f.evidence.find("measured order ");
+      if (at != std::string::npos) {
+        const std::string num = f.evidence.substr(at + 15, f.evidence.find_first_of(", ", at + 15) - at - 15);
+        return cell + " p = " + num;
+      }
+      continue;
+    }
+    if (!f.claimed && !f.holds) return "unclaimed, not held";
+    if (!f.claimed && f.holds) cell = "unclaimed, holds";
+  }
+  if (!exact_column && v.checks > 0 && cell == "PASS") cell += " " + eps_text(v.worst_eps_units);
+  return cell;
+}
+
 std::string summary_counts(const CheckResult& r) {
   std::ostringstream os;
   bool first = true;
@@ -286,11 +308,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     for (const char* s : scalars) {
       auto it = by.find(s);
       std::string cell = "-";
-      if (it != by.end()) {
-        cell = outcome_name(it->second->outcome);
-        if (it->second->outcome == Outcome::Pass && std::string(s) != "exact" && it->second->checks > 0)
-          cell += " " + eps_text(it->second->worst_eps_units);
-      }
+      if (it != by.end()) cell = verdict_cell(*it->second, std::string(s) == "exact");
       os << std::setw(20) << cell;
     }
     os << "\n";
@@ -439,11 +457,8 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
         continue;
       }
       const Verdict& v = *it->second;
-      std::string cell = outcome_name(v.outcome);
-      if (is_problem(v.outcome))
-        cell = "[**" + cell + "**](#" + anchor_of(v) + ")";
-      else if (v.outcome == Outcome::Pass && std::string(s) != "exact" && v.checks > 0)
-        cell += " (" + eps_text(v.worst_eps_units) + ")";
+      std::string cell = verdict_cell(v, std::string(s) == "exact");
+      if (is_problem(v.outcome)) cell = "[**" + cell + "**](#" + anchor_of(v) + ")";
       md << " " << cell << " |";
     }
     md << "\n";
