@@ -8,6 +8,7 @@
 //   geomech slots      the subject slots an implementation can provide
 //   geomech subjects   the built-in subjects: the reference and its negative controls
 //   geomech catalogue  the spec catalogue: Markdown table, traceability check
+//   geomech mutants    mutation score: single-mistake variants of the reference through the properties
 //   geomech golden     golden trajectories: regenerate/check the fixtures, make your own (golden/cli.hpp)
 #include "golden/cli.hpp"
 #include "harness/build.hpp"
@@ -19,6 +20,7 @@
 #include "harness/slot_names.hpp"
 #include "harness/trajectory.hpp"
 #include "impl/reference_subject.hpp"
+#include "mutation/runner.hpp"
 #include "properties/runner.hpp"
 #include "spec/catalogue.hpp"
 #include "tests/mutants/mutants.hpp"
@@ -279,6 +281,24 @@ int main(int argc, char** argv) {
   cat->add_flag("--check", trace, "check traceability between catalogue, notes and properties");
   cat->add_option("--file", catalogue_path, "catalogue file (default: the source tree's spec/catalogue.json)");
 
+  gm::mutation::MutantsOptions mo;
+  auto* mut = app.add_subcommand(
+      "mutants", "mutation score: run the properties on single-mistake variants of the reference (docs: DESIGN.md, mutants)");
+  mut->add_option("--slot", mo.slot, "only the mutants of this slot (rigid_body_step / manakov_step for integrators)");
+  mut->add_option("--mutant", mo.mutant, "only this mutant (e.g. euler_3_8:negate_result)");
+  mut->add_flag("--verbose", mo.verbose, "every property's verdict on each mutant (no early stop)");
+  mut->add_option("--case-factor", mo.case_factor, "multiplies the properties' case counts (default 0.3)")
+      ->check(CLI::PositiveNumber);
+  mut->add_option("--seed", mo.seed, "base seed (default fixed)");
+  mut->add_option("--jobs,-j", mo.jobs, "mutants run at once, each in its own process (default 2)")->check(CLI::Range(1, 256));
+  mut->add_option("--timeout", mo.timeout_seconds, "seconds allowed per mutant (default 900)")->check(CLI::PositiveNumber);
+  mut->add_option("--min-score", mo.min_score, "exit 1 when the score in the full reference is below this (default 0.98)")
+      ->check(CLI::Range(0.0, 1.0));
+  mut->add_option("--report", mo.report_dir, "write mutants.md and mutants.json into this directory");
+  mut->add_option("--equivalent", mo.equivalent_file, "equivalent mutants (default: spec/equivalent_mutants.json)");
+  bool no_alone = false;
+  mut->add_flag("--no-alone", no_alone, "skip the run with the mutated slot alone");
+
   gm::golden::add_commands(app);  // runs from its own callbacks (golden/cli.hpp)
 
   // Bad arguments exit with 2, like every other input error of the tool (CLI11's own codes are
@@ -344,6 +364,11 @@ int main(int argc, char** argv) {
       if (tr_report.empty())
         tr_report = "geomech-reports/trajectory-" + std::filesystem::path(trajectory_files.front()).stem().string();
       return gm::run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);
+    }
+    if (*mut) {
+      mo.alone = !no_alone;
+      mo.front_door = gm::front_door();
+      return gm::mutation::mutants_command(mo);
     }
     if (*list) return gm::run_list();
     if (*slots) return gm::run_slots();

@@ -1,0 +1,75 @@
+// `geomech mutants`: runs the properties on every mutant of mutation/catalogue.hpp, twice (in the
+// full reference, and with the mutated slot alone), and reports the kill score per slot and per
+// spec entry. Equivalent mutants (spec/equivalent_mutants.json, each with its argument in
+// writing) are left out of the denominator.
+#pragma once
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gm::mutation {
+
+struct MutantsOptions {
+  double case_factor = 0.3;
+  std::uint64_t seed = 20261123;
+  std::string slot;            // only mutants of this slot
+  std::string mutant;          // only this mutant
+  bool verbose = false;        // every property's verdict, no early stop
+  int jobs = 2;
+  double timeout_seconds = 900;
+  double min_score = 0.98;
+  std::string report_dir;
+  std::string equivalent_file; // default: spec/equivalent_mutants.json in the source tree
+  bool alone = true;           // also run the "alone" mode
+  std::string front_door = "geomech";
+};
+
+struct ModeResult {
+  bool ran = false;
+  bool killed = false;
+  std::string killed_by;                // "property [scalar] OUTCOME: first line of the message"
+  std::vector<std::string> properties;  // properties that ran (not NOT PROVIDED)
+  std::vector<std::string> undeclared;  // properties that called a slot they do not declare (alone mode)
+  std::vector<std::string> log;         // verbose: one line per verdict
+  std::string error;
+};
+
+struct MutantResult {
+  std::string name, slot, op, op_class, description, integrator;
+  bool equivalent = false;
+  std::string equivalence_argument;
+  std::vector<std::string> spec_entries;  // spec entries of the properties that apply to it
+  ModeResult full, alone;
+  double seconds = 0;
+};
+
+struct Tally {
+  int mutants = 0, killed = 0, equivalent = 0, survived = 0;
+  double score() const { return mutants - equivalent > 0 ? double(killed) / (mutants - equivalent) : 1.0; }
+};
+
+struct MutantsRun {
+  std::vector<MutantResult> results;
+  std::vector<std::string> baseline_failures;  // properties failing on the reference itself (left out)
+  std::map<std::string, std::string> equivalent;  // name -> argument
+  std::vector<std::string> unknown_equivalents;   // names in the file that are no mutant
+  double seconds = 0;
+  MutantsOptions options;
+};
+
+// Equivalent mutants: name -> argument. Throws on a malformed file.
+std::map<std::string, std::string> load_equivalent(const std::string& path);
+std::string default_equivalent_path();
+
+MutantsRun run_mutants(const MutantsOptions& o);
+Tally tally(const MutantsRun& r, bool alone, const std::string& slot = "", const std::string& spec = "");
+std::string console_table(const MutantsRun& r);
+std::string markdown_report(const MutantsRun& r);
+std::string json_report(const MutantsRun& r);
+
+// The command's whole behaviour: run, print, write the report; returns the exit code.
+int mutants_command(const MutantsOptions& o);
+
+}  // namespace gm::mutation
