@@ -37,10 +37,10 @@ void definition_vee(const Subject<T>& s) {
 // has n^2 products: k = 2 n^2 + 2.
 template <class T>
 void definition_pairing(const Subject<T>& s) {
-  const int n = *rc::gen::inRange(2, 7);
-  const int e = *rc::gen::inRange(-30, 31);
+  const int n = *gen::uniform(2, 7);
+  const int e = *gen::uniform(-30, 31);
   const MatX<T> A = (*gen::mat<T>(n, n) * gen::pow2<T>(e)).eval();
-  const MatX<T> B = *gen::mat<T>(n, n);
+  const MatX<T> B = *gen::uniform(0, 2) ? MatX<T>(*gen::mat<T>(n, n) / T(3)) : MatX<T>(*gen::mat<T>(n, n));
   showing_inputs([&] { return named("A", A) + named("B", B); }, [&] {
     require_close("slot pairing: <A, B> = tr(A^T B)/2, (2.15)", s.pairing(A, B), T(A.cwiseProduct(B).sum() / T(2)),
                   T(norm_inf(A) * norm_inf(B) * T(n * n)), 2.0 * n * n + 2);
@@ -50,7 +50,7 @@ void definition_pairing(const Subject<T>& s) {
 // hat_n for every n = 2..6, in the coordinates `geomech slots` documents (first three as (2.11)).
 template <class T>
 void definition_hat_n(const Subject<T>& s) {
-  const int n = *rc::gen::inRange(2, 7);
+  const int n = *gen::uniform(2, 7);
   const VecX<T> v = *gen::regime_vec<T>(truth::so_dimension(n));
   showing_inputs([&] { return named("v", v) + "    n = " + std::to_string(n) + "\n"; }, [&] {
     require_close("slot hat_n: hat_n(v, n) is the so(n) matrix of v (n = " + std::to_string(n) + ")", s.hat_n(v, n),
@@ -60,7 +60,7 @@ void definition_hat_n(const Subject<T>& s) {
 
 template <class T>
 void definition_vee_n(const Subject<T>& s) {
-  const int n = *rc::gen::inRange(2, 7);
+  const int n = *gen::uniform(2, 7);
   const VecX<T> v = *gen::regime_vec<T>(truth::so_dimension(n));
   const MatX<T> m = truth::so_n_matrix<T>(v, n);
   showing_inputs([&] { return named("m", m); }, [&] {
@@ -71,7 +71,7 @@ void definition_vee_n(const Subject<T>& s) {
 
 LieAlgebraId draw_algebra() {
   static const LieAlgebraId all[] = {LieAlgebraId::so3, LieAlgebraId::so4, LieAlgebraId::sl2};
-  return all[*rc::gen::inRange(0, 3)];
+  return all[*gen::uniform(0, 3)];
 }
 
 template <class T>
@@ -218,7 +218,8 @@ void definition_momentum_map(const Subject<T>& s) {
                .title = "slot " #slot " alone: " statement,                                            \
                .tolerance = ToleranceClass::tolerance_class,                                           \
                .needs = {#slot},                                                                       \
-               .negative_controls = {__VA_ARGS__}})
+               .negative_controls = {__VA_ARGS__},                                                     \
+               .cases = {.d = 200, .mp = 100, .q = 50}})
 
 GM_DEFINITION(hat, "s2.hat-map", "hat(v) = (-v_i eps_ijk), (2.11), on axes, zeros, tiny and huge v", Exact,
               "hat_transposed", "hat_scaled");

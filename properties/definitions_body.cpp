@@ -252,11 +252,14 @@ void definition_inertia_space(const Subject<T>& s) {
 // (2.3) for N = 1..5 point masses m_k at the columns X_k of X.
 template <class T>
 void draw_masses(VecX<T>& m, MatX<T>& X) {
-  const int N = *rc::gen::inRange(1, 6);
-  const int e = *rc::gen::inRange(-20, 21);
+  const int N = *gen::uniform(1, 6);
+  const int e = *gen::uniform(-20, 21);
+  const int em = *gen::uniform(-30, 31);  // masses in every binade, tiny ones included
+  const bool thirds = *gen::uniform(0, 4) == 3;
   m = *gen::vec<T>(N, 64, 2);
-  for (int k = 0; k < N; ++k) m(k) = abs_value(m(k)) + T(1);
+  for (int k = 0; k < N; ++k) m(k) = (abs_value(m(k)) + T(1)) * gen::pow2<T>(em);
   X = (*gen::mat<T>(3, N) * gen::pow2<T>(e)).eval();
+  if (thirds) X = (X / T(3)).eval();
 }
 
 template <class T>
@@ -304,7 +307,8 @@ void definition_inertia_bilinear_2_3(const Subject<T>& s) {
                .title = "slot " #slot " alone: " statement,                                            \
                .tolerance = ToleranceClass::Exact,                                                     \
                .needs = {#slot},                                                                       \
-               .negative_controls = {__VA_ARGS__}})
+               .negative_controls = {__VA_ARGS__},                                                     \
+               .cases = {.d = 200, .mp = 100, .q = 50}})
 
 GM_BODY_DEFINITION(euler_2_1, "s2.euler-equations", "(2.1) on symmetric and spherical tops, axes, tiny and huge Omega",
                    "euler_2_1_sign_error", "euler_2_1_missing_division", "euler_2_1_symmetric_top_branch");

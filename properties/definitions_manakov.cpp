@@ -19,11 +19,13 @@ MatX<T> commutator_of(const MatX<T>& X, const MatX<T>& Y) {
   return X * Y - Y * X;
 }
 
-// A skew Omega of size n, scaled by 2^e (e in [-20, 20]) half of the time.
+// A skew Omega of size n, scaled by 2^e (e in [-20, 20]) half of the time, and in thirds (not
+// representable in double) a quarter of the time.
 template <class T>
 MatX<T> draw_omega(int n) {
-  const int e = *rc::gen::inRange(0, 2) ? *rc::gen::inRange(-20, 21) : 0;
-  return (*gen::skew<T>(n) * gen::pow2<T>(e)).eval();
+  const int e = *gen::uniform(0, 2) ? *gen::uniform(-20, 21) : 0;
+  const bool thirds = *gen::uniform(0, 4) == 3;
+  return (*gen::skew<T>(n) * gen::pow2<T>(e) / T(thirds ? 3 : 1)).eval();
 }
 
 template <class T>
@@ -34,7 +36,7 @@ std::string body_text(const gen::ManakovBody<T>& b) {
 // (2.34): M = A Omega + Omega A.
 template <class T>
 void definition_manakov_M(const Subject<T>& s) {
-  const int n = *rc::gen::inRange(3, 7);
+  const int n = *gen::uniform(3, 7);
   const auto b = *gen::manakov_body<T>(n);
   const MatX<T> W = draw_omega<T>(n);
   showing_inputs([&] { return body_text(b) + named("Omega", W); }, [&] {
@@ -48,7 +50,7 @@ void definition_manakov_M(const Subject<T>& s) {
 // condition: k = 8 n^2.
 template <class T>
 void definition_manakov_Omega(const Subject<T>& s) {
-  const int n = *rc::gen::inRange(3, 7);
+  const int n = *gen::uniform(3, 7);
   const auto b = *gen::manakov_body<T>(n);
   const MatX<T> W = draw_omega<T>(n);
   const MatX<T> M = b.A * W + W * b.A;
@@ -64,7 +66,7 @@ void definition_manakov_Omega(const Subject<T>& s) {
 // (2.34), (2.36): dM/dt = [M, Omega] with Omega from M.
 template <class T>
 void definition_manakov_2_34(const Subject<T>& s) {
-  const int n = *rc::gen::inRange(3, 7);
+  const int n = *gen::uniform(3, 7);
   const auto b = *gen::manakov_body<T>(n);
   const MatX<T> W = draw_omega<T>(n);
   const MatX<T> M = b.A * W + W * b.A;
@@ -78,7 +80,7 @@ void definition_manakov_2_34(const Subject<T>& s) {
 // Proposition 2.4's Lagrangian: l(Omega) = -tr(Omega A Omega) / 2.
 template <class T>
 void definition_manakov_lagrangian(const Subject<T>& s) {
-  const int n = *rc::gen::inRange(3, 7);
+  const int n = *gen::uniform(3, 7);
   const auto b = *gen::manakov_body<T>(n);
   const MatX<T> W = draw_omega<T>(n);
   showing_inputs([&] { return body_text(b) + named("Omega", W); }, [&] {
@@ -92,7 +94,7 @@ void definition_manakov_lagrangian(const Subject<T>& s) {
 // computed here through A's eigenvectors: Omega = R W R^T with W_ij = (R^T M R)_ij / (d_i + d_j).
 template <class T>
 void definition_manakov_clebsch_3_23(const Subject<T>& s) {
-  const int n = *rc::gen::inRange(3, 7);
+  const int n = *gen::uniform(3, 7);
   const auto b = *gen::manakov_body<T>(n);
   const MatX<T> Q = *gen::mat<T>(n, n);
   const MatX<T> P = *gen::mat<T>(n, n);

@@ -77,9 +77,11 @@ const Property* find_property(std::string_view id);
 struct AllScalars {};         // double, Real50 and Rational
 struct FloatScalars {};       // double and Real50
 struct IntegratorScalars {};  // double and Real50, once per integrator of the subject
+struct IntegratorMp50Scalars {};  // Real50 only (a check only 50 digits can make: the 50-digit floor)
 inline constexpr AllScalars all_scalars{};
 inline constexpr FloatScalars float_scalars{};
 inline constexpr IntegratorScalars integrator_scalars{};
+inline constexpr IntegratorMp50Scalars integrator_mp50_scalars{};
 
 void register_property(Property p);
 
@@ -106,6 +108,15 @@ struct Registrar {
     p.int_d = [body](const Subject<double>& s, const Integrator<double>& i, const IntegratorClaims& c) {
       body(s, i, c);
     };
+    p.int_mp = [body](const Subject<Real50>& s, const Integrator<Real50>& i, const IntegratorClaims& c) {
+      body(s, i, c);
+    };
+    register_property(std::move(p));
+  }
+  template <class Body>
+  Registrar(IntegratorMp50Scalars, PropertyDef def, Body body) {
+    Property p{std::move(def)};
+    p.scope = Scope::Integrator;
     p.int_mp = [body](const Subject<Real50>& s, const Integrator<Real50>& i, const IntegratorClaims& c) {
       body(s, i, c);
     };

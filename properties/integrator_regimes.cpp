@@ -1,0 +1,227 @@
+// Integrators outside the generic case (issue 12): the states and bodies real code has branches
+// for, and the 50-digit floor.
+//
+// 1. Convergence in every regime. The properties of integrator_claims.cpp draw generic states
+//    (distinct moments, every |Pi_i| >= 1/8), so a "fast path" for a body spinning about a
+//    principal axis, or a branch for a symmetric top, is never entered. Here the state is drawn
+//    from: a relative equilibrium (Pi along a principal axis: it must stay one, O turning about
+//    that axis), a state near one, a symmetric top (two equal moments), a spherical top, and a
+//    momentum scaled by 2^k (time scaled with it). The error at a fixed time against the Taylor
+//    oracle (oracle/, independent of every subject) must converge: at least at the claimed order
+//    where one is claimed (order at least p: a regime may be easier, never harder), and at least
+//    at order 1 - 0.1 otherwise (an integrator of (2.20) that does not converge is wrong whatever
+//    it claims).
+// 2. The 50-digit floor. One step of h = 2^-40 from a generic state, in 50 digits: a method of
+//    any order p >= 1 has a local error C h^(p+1) <= C 2^-80 ~ 1e-24 |x|, and the oracle is exact
+//    to ~1e-48; a step that is computed (in part) in double shows an error near 1e-16 |x|.
+//    Only a 50-digit run can see this, so the property runs in mp50 only.
+//
+// Spec entries: the flows of (2.20) and Manakov's (M, O) (s3.euler-flow, s2.manakov-flow).
+#include "properties/registry.hpp"
+#include "properties/support/claims.hpp"
+#include "properties/support/convergence.hpp"
+#include "properties/support/dynamics.hpp"
+#include "properties/support/figures.hpp"
+#include "properties/support/named_inputs.hpp"
+#include "properties/support/regimes.hpp"
+#include "properties/support/tolerance.hpp"
+
+#include <cstdio>
+
+namespace gm {
+namespace {
+
+std::string fmt(const char* f, double a, double b = 0) {
+  char buf[240];
+  std::snprintf(buf, sizeof buf, f, a, b);
+  return buf;
+}
+
+const char* kRegimeNames[] = {"generic", "relative equilibrium (Pi along a principal axis)",
+                              "near a relative equilibrium", "symmetric top (two equal moments)", "spherical top",
+                              "momentum scaled by 2^k"};
+
+struct RegimeDraw {
+  int regime;
+  int axis;
+  int k;
+};
+
+template <class T>
+struct RigidBodyRegime {
+  Vec3<T> I;
+  RigidBodyState<T> x0;
+  T t_end;
+  int regime;
+};
+
+// A body and a state from one of the regimes above; t_end = 1 / max(1, |Omega|) so that the
+// motion turns by at most about a radian whatever the scale.
+template <class T>
+RigidBodyRegime<T> draw_rigid_body_regime() {
+  RigidBodyRegime<T> r;
+  r.regime = dyn::pick<T>(gen::uniform(0, 6));
+  const int axis = dyn::pick<T>(gen::uniform(0, 3));
+  r.I = dyn::draw_generic_inertia<T>();
+  Vec3<T> P = dyn::draw_generic_momentum<T>();
+  switch (r.regime) {
+    case 1: {  // along a principal axis
+      const T p = P(axis);
+      P = Vec3<T>::Zero();
+      P(axis) = p;
+      break;
+    }
+    case 2: {  // near one: the other components 2^-k times smaller, k in [10, 40]
+      const int k = dyn::pick<T>(gen::uniform(10, 41));
+      for (int i = 0; i < 3; ++i)
+        if (i != axis) P(i) *= gen::pow2<T>(-k);
+      break;
+    }
+    case 3: {  // symmetric top: the two moments other than `axis` equal
+      r.I((axis + 2) % 3) = r.I((axis + 1) % 3);
+      break;
+    }
+    case 4:  // spherical top
+      r.I = Vec3<T>::Constant(r.I(0));
+      break;
+    case 5: {  // scaled momentum
+      const int k = dyn::pick<T>(gen::uniform(-20, 21));
+      P *= gen::pow2<T>(k);
+      break;
+    }
+    default:
+      break;
+  }
+  r.x0 = RigidBodyState<T>{P, dyn::draw_rotation<T>()};
+  const T rate = dyn::at_least_one(T(norm_inf(P) / r.I.minCoeff()));
+  r.t_end = T(1) / rate;
+  return r;
+}
+
+template <class T>
+RigidBodyState<T> run_steps(const Integrator<T>& in, const Vec3<T>& I, RigidBodyState<T> x, const T& h, int steps) {
+  for (int n = 0; n < steps; ++n) x = in.rigid_body_step(I, x, h);
+  return x;
+}
+
+// Distance of states relative to the momentum's size (Pi part) and absolute for O (entries <= 1).
+template <class T>
+T relative_distance(const RigidBodyState<T>& a, const RigidBodyState<T>& b, const T& pi_size) {
+  return std::max(T(max_abs((a.Pi - b.Pi).eval()) / pi_size), T(max_abs((a.O - b.O).eval())));
+}
+
+template <class T>
+void integrator_converges_in_every_regime(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  const RigidBodyRegime<T> r = draw_rigid_body_regime<T>();
+  const T pi_size = norm_inf(r.x0.Pi);
+  const RigidBodyState<T> exact = dyn::oracle_rigid_body(r.I, r.x0, {r.t_end}).front();
+  std::vector<double> hs, errs, floors;
+  for (int N : {8, 16, 32, 64, 128}) {
+    const T h = r.t_end / T(N);
+    const T err = relative_distance(run_steps(in, r.I, r.x0, h, N), exact, pi_size);
+    hs.push_back(to_double(T(h / r.t_end)));
+    errs.push_back(to_double(err));
+    floors.push_back(64.0 * eps_double<T>() * N);
+  }
+  const auto fit = conv::loglog_slope(hs, errs, floors);
+  const std::string regime = kRegimeNames[r.regime];
+  const std::string inputs = "    regime: " + regime + "\n" + named("I", r.I) + named("Pi", r.x0.Pi) + named("O", r.x0.O) +
+                             "    t = " + to_string_full(r.t_end) + ", h = t/8 ... t/128\n";
+  if (fit.used < 3) {
+    // Exact in this regime (errors at round-off for every step), or not converging at all: an
+    // error that is large at every step is the latter.
+    require(in.name + ": the error at t converges to 0 as h -> 0 (" + regime + ")", errs.back() <= floors.back(),
+            fmt("error %.3g at the smallest step, far above round-off, and not decreasing\n", errs.back()) + fit.table +
+                "  inputs, by the notes' names:\n" + inputs);
+    return;
+  }
+  const double needed = c.order > 0 ? c.order - 0.1 : 0.9;
+  const bool holds = fit.slope >= needed;
+  if (c.order > 0)
+    judge_claim("order", true, holds,
+                in.name + fmt(": measured order %.3f in the regime '", fit.slope) + regime +
+                    fmt("', claimed %g", c.order) + " (" + ScalarInfo<T>::name + ")");
+  require(in.name + ": in the regime '" + regime + "' the error at t converges at order >= " + fmt("%.1f", needed) +
+              (c.order > 0 ? fmt(" (claimed order %g)", c.order) : std::string(" (any convergent method)")),
+          holds,
+          fmt("measured slope %.4f\n", fit.slope) + fit.table + "  inputs, by the notes' names:\n" + inputs +
+              "  a step that treats this regime separately (a 'fast path' for steady rotation about a principal "
+              "axis, a branch for I1 = I2) is the usual cause");
+}
+
+// The 50-digit floor (see the top of this file). Generic state, one step of h = 2^-40; the error
+// relative to the state's size must be below 2^-60 (~8.7e-19): a first-order method's local
+// error is ~C 2^-80 with C of the size of |Omega|^2 <= 64 here, and double round-off is 2^-53.
+template <class T>
+void integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims&) {
+  const Vec3<T> I = dyn::draw_generic_inertia<T>();
+  const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+  const T h = gen::pow2<T>(-40);
+  const RigidBodyState<T> exact = dyn::oracle_rigid_body(I, x0, {h}).front();
+  const RigidBodyState<T> step = in.rigid_body_step(I, x0, h);
+  const T err = relative_distance(step, exact, T(norm_inf(x0.Pi)));
+  const T bound = gen::pow2<T>(-60);
+  require(in.name + ": one step of h = 2^-40 in 50 digits is accurate far below double round-off", err <= bound,
+          "the error of the step is " + to_string_full(err) + " of the state's size, where any method of order >= 1 has "
+              "at most ~1e-24 (local error C h^2) and the bound is 2^-60 = " + to_string_full(bound) +
+              ": part of the step seems to be computed in double precision (a cast to double, a double constant, "
+              "std::sqrt or std::cos on a double, or an iteration stopped at a tolerance like 1e-12)\n"
+              "  inputs, by the notes' names:\n" +
+              named("I", I) + named("Pi", x0.Pi) + named("O", x0.O) + "    h = 2^-40\n");
+}
+
+// Manakov's (M, O), n = 3..4 (the oracle's cost grows like n^4), A = diag(a) (the oracle's body).
+template <class T>
+void manakov_integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims&) {
+  const int n = dyn::pick<T>(gen::uniform(3, 5));
+  const auto a = dyn::draw_generic_manakov_a<T>(n);
+  const MatX<T> A = dyn::diag_of(a);
+  const ManakovState<T> x0{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
+  const T h = gen::pow2<T>(-40);
+  const ManakovState<T> exact = dyn::oracle_manakov(a, x0, {h}).front();
+  const ManakovState<T> step = in.manakov_step(A, x0, h);
+  const T size = norm_inf(x0.M);
+  const T err = std::max(T(max_abs((step.M - exact.M).eval()) / size), T(max_abs((step.O - exact.O).eval())));
+  const T bound = gen::pow2<T>(-60);
+  require(in.name + ": one Manakov step of h = 2^-40 in 50 digits is accurate far below double round-off", err <= bound,
+          "the error of the step is " + to_string_full(err) + " of the state's size, where any method of order >= 1 has "
+              "at most ~1e-24 and the bound is 2^-60: part of the step seems to be computed in double precision\n"
+              "  inputs, by the notes' names:\n" +
+              named("A", A) + named("M", x0.M) + named("O", x0.O) + "    h = 2^-40\n");
+}
+
+}  // namespace
+
+GM_PROPERTY(integrator_converges_in_every_regime, integrator_scalars,
+            {.id = "integrator_converges_in_every_regime",
+             .spec = "s3.euler-flow",
+             .title = "the step converges to the flow of (2.20) at its claimed order (at least order 1 if none) at "
+                      "relative equilibria and near them, for symmetric and spherical tops, at every scale",
+             .tolerance = ToleranceClass::Truncation,
+             .needs = {},
+             .negative_controls = {"principal_axis_fast_path", "symmetric_top_branch"},
+             .cases = {.d = 30, .mp = 3, .q = 0},
+             .step = StepKind::RigidBody});
+
+GM_PROPERTY(integrator_50_digit_floor, integrator_mp50_scalars,
+            {.id = "integrator_50_digit_floor",
+             .spec = "s3.euler-flow",
+             .title = "in 50 digits one step of h = 2^-40 is accurate far below double round-off (no part of the "
+                      "step is computed in double)",
+             .tolerance = ToleranceClass::Truncation,
+             .needs = {},
+             .negative_controls = {"rk4_double_inside"},
+             .cases = {.d = 0, .mp = 5, .q = 0},
+             .step = StepKind::RigidBody});
+
+GM_PROPERTY(manakov_integrator_50_digit_floor, integrator_mp50_scalars,
+            {.id = "manakov_integrator_50_digit_floor",
+             .spec = "s2.manakov-flow",
+             .title = "in 50 digits one Manakov step of h = 2^-40 is accurate far below double round-off",
+             .tolerance = ToleranceClass::Truncation,
+             .needs = {},
+             .negative_controls = {"rk4_double_inside"},
+             .cases = {.d = 0, .mp = 3, .q = 0},
+             .step = StepKind::Manakov});
+
+}  // namespace gm

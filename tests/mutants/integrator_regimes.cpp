@@ -1,0 +1,94 @@
+// Negative controls for integrators that are wrong only outside the generic case (issue 12):
+// each wraps a reference integrator and keeps its claims, the way a real mistake sits in an
+// otherwise working step.
+#include "impl/integrators.hpp"
+#include "impl/so3.hpp"
+#include "tests/mutants/mutants.hpp"
+
+#include <cmath>
+
+namespace gm {
+namespace {
+
+// exp(theta hat(e_axis)): the rotation by theta about a coordinate axis.
+template <class T>
+Mat3<T> axis_rotation(int axis, const T& theta) {
+  using std::cos;
+  using std::sin;
+  Mat3<T> R = Mat3<T>::Identity();
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+  R(i, i) = cos(theta);
+  R(j, j) = cos(theta);
+  R(j, i) = sin(theta);
+  R(i, j) = -sin(theta);
+  return R;
+}
+
+template <class T>
+int principal_axis_of(const Vec3<T>& P) {
+  int nonzero = 0, axis = -1;
+  for (int i = 0; i < 3; ++i)
+    if (P(i) != T(0)) ++nonzero, axis = i;
+  return nonzero == 1 ? axis : -1;
+}
+
+}  // namespace
+
+// A "fast path" for steady rotation: with Pi along a principal axis the student returns the
+// exact steady rotation, but turns O the wrong way, O exp(-h hat(Omega)) (the sign of (2.10)
+// mixed up in the special case only). Generic states never take the branch.
+GM_MUTANT(principal_axis_fast_path,
+          "implicit midpoint with a fast path for Pi along a principal axis that turns O the wrong way", [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            if constexpr (!is_exact_v<T>) {
+              for (auto& in : s.integrators)
+                if (in.name == "implicit_midpoint")
+                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
+                    const int axis = principal_axis_of(x.Pi);
+                    if (axis < 0) return ref::implicit_midpoint_step<T>(I, x, h);
+                    const T omega = x.Pi(axis) / I(axis);
+                    return {x.Pi, (x.O * axis_rotation<T>(axis, T(-h * omega))).eval()};
+                  };
+            }
+          });
+
+// A branch for the symmetric top: when two moments are equal the student treats the body as a
+// sphere with the mean moment (Pi constant): right for a sphere, wrong for a symmetric top.
+GM_MUTANT(symmetric_top_branch,
+          "Lie-Poisson splitting with a branch for I1 = I2 (or any two equal moments) that freezes Pi as for a sphere",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            if constexpr (!is_exact_v<T>) {
+              for (auto& in : s.integrators)
+                if (in.name == "lie_poisson_splitting")
+                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
+                    if (I(0) != I(1) && I(1) != I(2) && I(0) != I(2)) return ref::lie_poisson_splitting_step<T>(I, x, h);
+                    const T mean = (I(0) + I(1) + I(2)) / T(3);
+                    const Vec3<T> sphere(mean, mean, mean);
+                    return ref::lie_poisson_splitting_step<T>(sphere, x, h);
+                  };
+            }
+          });
+
+// RK4 with every stage computed in double: exact in double, and stalled near 1e-16 in 50 digits.
+GM_MUTANT(rk4_double_inside, "classical RK4 computing its stages in double precision whatever the scalar", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  if constexpr (!is_exact_v<T>) {
+    for (auto& in : s.integrators)
+      if (in.name == "rk4") {
+        in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
+          const RigidBodyState<double> y = ref::rk4_step<double>(
+              convert_matrix<double>(I), {convert_matrix<double>(x.Pi), convert_matrix<double>(x.O)}, to_double(h));
+          return {convert_matrix<T>(y.Pi), convert_matrix<T>(y.O)};
+        };
+        in.manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) -> ManakovState<T> {
+          const ManakovState<double> y = ref::manakov_rk4_step<double>(
+              convert_matrix<double>(A), {convert_matrix<double>(x.M), convert_matrix<double>(x.O)}, to_double(h));
+          return {convert_matrix<T>(y.M), convert_matrix<T>(y.O)};
+        };
+      }
+  }
+});
+GM_MUTANT_WRONG_ONLY_IN(rk4_double_inside, ScalarKind::MP50);
+
+}  // namespace gm
