@@ -31,6 +31,10 @@ T attitude_horizon() {
 // s2.noether: Theorem 2.2, (2.29)-(2.30). The subject's spatial_momentum slot, evaluated along the
 // exact motion, must be constant. pi = O Pi (= Ad*_{O^-1} Pi) is; the formula printed in (2.30),
 // pi = O^-1 Pi O, i.e. O^T Pi, is not (the literal variant fails this property).
+// Constancy alone would pass a function returning a constant, so the value is also compared with
+// the conserved quantity of the notes, pi = Ad*_{O^-1} Pi = O Pi ((2.29), corrected (2.30)), at
+// t = 0: pi(t) = O(0) Pi(0) along the oracle's motion (the slot on its own, off the flow, is
+// checked by definition_spatial_momentum).
 template <class T>
 void noether_spatial_momentum_conserved(const Subject<T>& s) {
   const Vec3<T> I = dyn::draw_inertia<T>();
@@ -38,6 +42,7 @@ void noether_spatial_momentum_conserved(const Subject<T>& s) {
   const auto times = dyn::times_to(dyn::rigid_body_horizon<T>(), 10);
   const auto xs = dyn::oracle_rigid_body(I, x0, times);
   const Vec3<T> pi0 = s.spatial_momentum(x0.O, x0.Pi);
+  const Vec3<T> pi_notes = x0.O * x0.Pi;  // Ad*_{O^-1} Pi = O Pi at t = 0 (2.29)-(2.30)
   const T lambda = dyn::rigid_body_rate(I, x0.Pi);
   const T size = dyn::at_least_one(norm_inf(x0.Pi));
   Series ser{"Noether: spatial momentum", std::string("|pi(t) - pi(0)| (") + ScalarInfo<T>::name + ")", "t",
@@ -47,6 +52,10 @@ void noether_spatial_momentum_conserved(const Subject<T>& s) {
     // O Pi is an invariant of degree 2 of the oracle's flow: k = 128 (support/dynamics.hpp).
     require_close("spatial_momentum(O(t), Pi(t)) = spatial_momentum(O(0), Pi(0)) along (2.20)", pi, pi0,
                   T(size * dyn::growth(lambda, times[i])), 128);
+    // The same drift bound: O(t) Pi(t) - O(0) Pi(0) is the drift of the same degree-2 invariant,
+    // plus the slot's own rounding of a 3-term product (far below it): k = 128.
+    require_close("spatial_momentum(O(t), Pi(t)) = O(0) Pi(0), the conserved pi = Ad*_{O^-1} Pi of (2.29)-(2.30)",
+                  pi, pi_notes, T(size * dyn::growth(lambda, times[i])), 128);
     ser.points.emplace_back(to_double(times[i]), to_double(max_abs((pi - pi0).eval())));
   }
   record_series(ser);
@@ -210,6 +219,10 @@ void hamilton_pontryagin_and_clebsch_are_one_motion(const Subject<T>& s) {
   qp0 << Q0, P0;
   const auto qp = clebsch.sample(qp0, T(0), times);
   const auto hp = dyn::subject_rigid_body(s, I, RigidBodyState<T>{Pi0, Mat3<T>::Identity()}, times);
+  // The suite's own motion (the Taylor oracle of the notes' (3.8) and (2.10), oracle/fields.hpp):
+  // each of the two systems is also compared with it, so an error shared by the subject's
+  // (2.20) and (3.21) (e.g. both built on a wrong Omega) is caught.
+  const auto ref = dyn::oracle_rigid_body(I, RigidBodyState<T>{Pi0, Mat3<T>::Identity()}, times);
   const T lambda = dyn::rigid_body_rate(I, Pi0);
   const T kappa = dyn::rigid_body_conditioning(I, Pi0, t_end);
   const T size = dyn::at_least_one(T(norm_inf(Q0) * norm_inf(P0)));
@@ -224,6 +237,14 @@ void hamilton_pontryagin_and_clebsch_are_one_motion(const Subject<T>& s) {
                   T(dyn::at_least_one(norm_inf(Q0)) * g * g * kappa), 64);
     require_close("P(t) = O(t)^-1 P(0)", P, (hp[i].O.transpose() * P0).eval(),
                   T(dyn::at_least_one(norm_inf(P0)) * g * g * kappa), 64);
+    // Against the oracle, the same two-flow bounds.
+    require_close("Pi(t) of the subject's (2.20) = Pi(t) of the oracle's (3.8)", hp[i].Pi, ref[i].Pi,
+                  T(size * g * kappa), 64);
+    require_close("O(t) of the subject's (2.20) = O(t) of the oracle's (2.10)", hp[i].O, ref[i].O, T(g * g * kappa), 64);
+    require_close("P(t) x Q(t) of the subject's (3.21) = Pi(t) of the oracle's (3.8)", truth::cross(P, Q), ref[i].Pi,
+                  T(size * g * kappa), 64);
+    require_close("Q(t) of the subject's (3.21) = O(t)^-1 Q(0) with the oracle's O (3.20)", Q,
+                  (ref[i].O.transpose() * Q0).eval(), T(dyn::at_least_one(norm_inf(Q0)) * g * g * kappa), 64);
   }
 }
 
@@ -232,10 +253,10 @@ void hamilton_pontryagin_and_clebsch_are_one_motion(const Subject<T>& s) {
 GM_PROPERTY(noether_spatial_momentum_conserved, float_scalars,
             {.id = "noether_spatial_momentum_conserved",
              .spec = "s2.noether",
-             .title = "Theorem 2.2: the subject's spatial momentum Ad*_{O^-1} Pi is constant along the motion (2.20)",
+             .title = "Theorem 2.2: the subject's spatial momentum is constant along the motion (2.20) and equals pi = O Pi",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"spatial_momentum"},
-             .negative_controls = {"spatial_momentum_as_printed_2_30"},
+             .negative_controls = {"spatial_momentum_as_printed_2_30", "spatial_momentum_constant"},
              .cases = {.d = 20, .mp = 2, .q = 0}});
 
 GM_PROPERTY(noether_endpoint_term_2_28, all_scalars,
@@ -286,10 +307,10 @@ GM_PROPERTY(hamilton_pontryagin_and_clebsch_are_one_motion, float_scalars,
             {.id = "hamilton_pontryagin_and_clebsch_are_one_motion",
              .spec = "s3.clebsch-reconstruction",
              .title = "(3.20)-(3.21): from Pi(0) = P(0) x Q(0), the subject's Clebsch flow and (2.20) flow agree: "
-                      "P x Q = Pi, Q = O^-1 Q(0), P = O^-1 P(0)",
+                      "P x Q = Pi, Q = O^-1 Q(0), P = O^-1 P(0), and both agree with the oracle's motion",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"clebsch_3_21", "euler_3_8", "reconstruction_2_10"},
-             .negative_controls = {"clebsch_3_21_Q_sign"},
+             .negative_controls = {"clebsch_3_21_Q_sign", "rigid_body_and_clebsch_time_reversed"},
              .cases = {.d = 10, .mp = 2, .q = 0}});
 
 }  // namespace gm

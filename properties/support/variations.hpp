@@ -72,12 +72,9 @@ T integrate(const GaussGrid<T>& g, std::size_t rule, const std::vector<T>& f) {
 // the perturbation, a body at rest): it is discarded, not failed, so that shrinking a real
 // failure never ends on such a case.
 template <class T>
-void require_first_variation_vanishes(const std::string& what, const GaussGrid<T>& g, const std::vector<T>& f,
-                                      const std::vector<T>& f_perturbed, const T& scale, double k) {
+void require_vanishing_and_convergence(const std::string& what, const GaussGrid<T>& g, const std::vector<T>& f,
+                                       const T& scale, double k) {
   const T allowed = T(k) * eps<T>() * scale;
-  const T perturbed = integrate(g, g.rules.size() - 1, f_perturbed);
-  if (!(abs_value(perturbed) > T(1000) * allowed))
-    RC_DISCARD("the perturbed curve's first variation is not clearly non-zero: this case cannot tell a solution");
   std::vector<T> values;
   for (std::size_t r = 0; r < g.rules.size(); ++r) values.push_back(integrate(g, r, f));
   Series ser{"first variation: " + what, std::string("|delta S| (") + ScalarInfo<T>::name + ")", "Gauss points",
@@ -95,6 +92,38 @@ void require_first_variation_vanishes(const std::string& what, const GaussGrid<T
     if (abs_value(values[r - 1]) > allowed && abs_value(values[r]) > allowed)
       require(what + ": the first variation converges as the quadrature is refined",
               abs_value(values[r]) < abs_value(values[r - 1]), "it does not:\n" + table);
+}
+
+template <class T>
+void require_first_variation_vanishes(const std::string& what, const GaussGrid<T>& g, const std::vector<T>& f,
+                                      const std::vector<T>& f_perturbed, const T& scale, double k) {
+  const T allowed = T(k) * eps<T>() * scale;
+  const T perturbed = integrate(g, g.rules.size() - 1, f_perturbed);
+  if (!(abs_value(perturbed) > T(1000) * allowed))
+    RC_DISCARD("the perturbed curve's first variation is not clearly non-zero: this case cannot tell a solution");
+  require_vanishing_and_convergence(what, g, f, scale, k);
+}
+
+// Both directions of an "if and only if" between the equations and stationarity (Theorem 1.1
+// (iii) <=> (iv), Proposition 2.4): along the solution delta S = 0 for the variation of `f` (as
+// above), and the perturbed curve, which does not solve the equations, is not stationary: for
+// some variation among those of `f_perturbed` (the drawn one and the coordinate bumps
+// t (T - t) e_j, t^2 (T - t) e_j, which no non-zero continuous residual of the equations can be
+// orthogonal to all at once unless it is degenerate), delta S is clearly non-zero (> 1000 times
+// the round-off bound). A failing assertion, not a discard: a subject for which a non-solution is
+// stationary (e.g. a Lagrangian that does not depend on the velocity) fails it.
+template <class T>
+void require_first_variation_vanishes_iff(const std::string& what, const GaussGrid<T>& g, const std::vector<T>& f,
+                                          const std::vector<std::vector<T>>& f_perturbed, const T& scale, double k) {
+  const T allowed = T(k) * eps<T>() * scale;
+  T best(0);
+  for (const auto& fp : f_perturbed) best = std::max(best, abs_value(integrate(g, g.rules.size() - 1, fp)));
+  char detail[200];
+  std::snprintf(detail, sizeof detail, "max |delta S| over %zu variations = %.6g, round-off bound %.6g",
+                f_perturbed.size(), to_double(best), to_double(allowed));
+  require(what + ": converse: a curve that does not solve the equations has a non-zero first variation",
+          best > T(1000) * allowed, detail);
+  require_vanishing_and_convergence(what, g, f, scale, k);
 }
 
 }  // namespace gm::var

@@ -79,4 +79,20 @@ GM_MUTANT(lie_vee_sl2_transposed, "lie_vee for sl(2, R) reading (m00, m10, m01) 
   };
 });
 
+// Remark 3.2 needs the bracket of a Lie algebra: ad* built from constants that are skew in their
+// lower indices but break the Jacobi identity: [e_0, e_1] gains an extra e_0 component
+// (c^0_01 = 1, c^0_10 = -1). On so(3): [e_1, [e_2, e_3]] + ... = [e_3, e_1] = e_2 != 0 in the
+// notes' numbering. The Lie-Poisson bracket (3.10) built from it is still bilinear, skew and
+// Leibniz, and fails only Jacobi (3.2).
+GM_MUTANT(ad_star_not_a_lie_algebra, "ad* from structure constants with an extra c^0_01 = 1 (skew, but no Jacobi identity)",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            s.ad_star = [](LieAlgebraId g, const VecX<T>& xi, const VecX<T>& mu) -> VecX<T> {
+              VecX<T> out = ref::ad_star<T>(g, xi, mu);
+              out(1) += xi(0) * mu(0);  // c^0_01 = 1: k = 1, j = 0, i = 0
+              out(0) -= xi(1) * mu(0);  // c^0_10 = -1: k = 0, j = 1, i = 0
+              return out;
+            };
+          });
+
 }  // namespace gm
