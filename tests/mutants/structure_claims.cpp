@@ -53,7 +53,7 @@ GM_MUTANT_SET(rk4_claims_noether, "classical RK4 claiming Noether (the spatial m
 
 // Explicit Euler, x <- x + h f(x), added to the subject and claiming bounded long-time energy.
 // Each step multiplies |Pi|^2 by 1 + h^2 |Omega_perp|^2 > 1 (Pi x Omega is orthogonal to Pi), so
-// the Casimir and with it the energy grow without bound. (RK4 is not used here: at h = 1/8 its
+// the Casimir and with it the energy grow without bound. (RK4 is not used here: at h = 1/8 or 1/4 its
 // energy drift on the rigid body can stay below 1e-11 over 10^5 steps for some states, too small
 // to be told from an oscillation in every case and scalar; the report still classifies it.)
 struct AddExplicitEuler {
