@@ -192,6 +192,9 @@ struct IntegratorClaims {
   bool orthogonality = false;    // keeps O orthogonal to round-off
   bool spectrum = false;         // keeps the spectrum of M (Manakov) to round-off
   bool poisson = false;          // is a Poisson map for the Lie-Poisson bracket
+  bool noether = false;          // keeps the spatial momentum O Pi (Manakov: O M O^T) to round-off (Thm 2.2)
+  bool equivariant = false;      // step(Pi, R O) = (Pi', R O') for every rotation R (left invariance)
+  bool bounded_energy = false;   // long runs: energy error bounded, no secular drift
 };
 
 // A subject in every scalar it supports. A subject written only for double has mp and q empty

@@ -236,6 +236,9 @@ void account_for_slots(CheckResult& result, const SubjectSet& s, const CheckConf
     check_claim("orthogonality", i.claims.orthogonality);
     check_claim("spectrum", i.claims.spectrum);
     check_claim("poisson", i.claims.poisson);
+    check_claim("noether", i.claims.noether);
+    check_claim("equivariant", i.claims.equivariant);
+    check_claim("bounded_energy", i.claims.bounded_energy);
   }
 }
 

@@ -134,10 +134,14 @@ std::string claimed_text(const IntegratorClaims& c, const std::string& claim) {
   if (claim == "orthogonality") b = c.orthogonality;
   if (claim == "spectrum") b = c.spectrum;
   if (claim == "poisson") b = c.poisson;
+  if (claim == "noether") b = c.noether;
+  if (claim == "equivariant") b = c.equivariant;
+  if (claim == "bounded_energy") b = c.bounded_energy;
   return b ? "yes" : "no";
 }
 
-const char* kClaims[] = {"order", "symmetric", "casimir", "energy", "orthogonality", "spectrum", "poisson"};
+const char* kClaims[] = {"order",   "symmetric", "casimir",     "energy",        "orthogonality",
+                         "spectrum", "poisson",  "noether",     "equivariant",   "bounded_energy"};
 
 std::string md_cell(const std::string& s) {
   std::string out;

@@ -41,19 +41,34 @@ std::vector<IntegratorClaims> reference_integrator_claims() {
   // no spectrum claim. Not claimed Poisson: the midpoint rule is not a Poisson map for the
   // Lie-Poisson bracket (3.6) in general.
   c.push_back({.integrator = "implicit_midpoint", .order = 2, .symmetric = true, .casimir = true, .energy = true,
-               .orthogonality = true, .spectrum = false, .poisson = false});
+               .orthogonality = true, .spectrum = false, .poisson = false, .noether = false, .equivariant = true,
+               .bounded_energy = true});
+  // (Structure claims, properties/integrator_structure.cpp.) Every method here updates O only by
+  // right multiplication, O_{n+1} = O_n U(Pi_n, h) (RK4: each stage is linear in O and multiplied
+  // on the right), and the Pi- or M-part does not depend on O: step(Pi, R O) = (Pi', R O'), so all
+  // claim `equivariant`. An energy kept exactly is a fortiori bounded, so midpoint and the
+  // isospectral method claim `bounded_energy`. Midpoint keeps O Pi (bilinear, a quadratic
+  // invariant), but Manakov's O M O^T is cubic in (M, O) and for n >= 4 the midpoint rule does not
+  // keep it (for n = 3 it does, O hat(Pi) O^T = hat(O Pi)): no `noether` claim for midpoint.
   // Strang splitting into the exact flows of Pi_i^2 / (2 I_i): symmetric, order 2, Casimir and
   // orthogonality (rotations), Poisson (exact Hamiltonian flows composed). Energy error O(h^2).
   c.push_back({.integrator = "lie_poisson_splitting", .order = 2, .symmetric = true, .casimir = true,
-               .energy = false, .orthogonality = true, .spectrum = false, .poisson = true});
+               .energy = false, .orthogonality = true, .spectrum = false, .poisson = true, .noether = true,
+               .equivariant = true, .bounded_energy = true});
+  // Splitting: each sub-flow keeps O Pi (Noether). Bounded energy: on the sphere |Pi| = const the
+  // step is an area-preserving (Poisson) map O(h^2)-close to the flow of a one-degree-of-freedom
+  // system, so backward error analysis gives a modified energy h + O(h^2) kept up to exponentially
+  // small terms: |h - h0| = O(h^2) with no drift over exponentially long times.
   // Classical RK4: order 4, nothing else.
-  c.push_back({.integrator = "rk4", .order = 4});
+  c.push_back({.integrator = "rk4", .order = 4, .equivariant = true});
   // Isospectral Cayley (Manakov only): symmetric, order 2, the whole spectrum of M (hence
   // tr(M^2)), orthogonality of O, and the energy E(M) = -tr(Omega(M) M)/4: Omega(.) is linear and
   // self-adjoint for the trace pairing, so E(M1) - E(M0) = -tr(W (M1 - M0))/2 with W = Omega(M_*),
   // and tr(W U^T M0 U) = tr(U W U^T M0) = tr(W M0) because U = cay(h W) commutes with W.
   c.push_back({.integrator = "isospectral_cayley", .order = 2, .symmetric = true, .casimir = true, .energy = true,
-               .orthogonality = true, .spectrum = true, .poisson = false});
+               .orthogonality = true, .spectrum = true, .poisson = false, .noether = true, .equivariant = true,
+               .bounded_energy = true});
+  // Isospectral Noether: O_{n+1} M_{n+1} O_{n+1}^T = O_n U U^T M_n U U^T O_n^T = O_n M_n O_n^T.
   return c;
 }
 

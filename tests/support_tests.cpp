@@ -1,13 +1,16 @@
 // The property machinery itself: scalars, comparisons (NaN never passes, exact means zero,
 // roundoff scales with eps), generators (exactly representable, rotations exactly orthogonal).
 #include "properties/support/generators.hpp"
+#include "properties/support/long_time.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include "tests/support/rc_failure.hpp"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
+#include <vector>
 
 namespace gm {
 namespace {
@@ -119,6 +122,32 @@ TEST(Generators, IntegersShrinkTowardZero) {
   EXPECT_EQ(gen::zigzag(1), 1);
   EXPECT_EQ(gen::zigzag(2), -1);
   EXPECT_EQ(gen::zigzag(3), 2);
+}
+
+// The long-time energy classifier (support/long_time.hpp) on synthetic errors: a linear drift
+// under an oscillation, a pure oscillation (a window shorter than its period included), round-off,
+// and a blow-up.
+TEST(LongTime, ClassifiesDriftOscillationRoundoffAndBlowup) {
+  std::vector<double> t, drift, wave, slow, tiny, blowup;
+  for (int k = 0; k <= 20000; ++k) {
+    const double s = k / 8.0;
+    t.push_back(s);
+    drift.push_back(1e-6 * std::sin(s) + 1e-9 * s);  // drift 2.5e-6 over the run > 2 x amplitude 1e-6
+    wave.push_back(1e-4 * (1 - std::cos(s)));
+    slow.push_back(1e-4 * std::sin(s / 40));         // period ~250: 10 periods in the run, windows of ~125
+    tiny.push_back(1e-14 * std::sin(s));
+    blowup.push_back(k < 15000 ? 1e-3 * std::exp(s / 100) : std::numeric_limits<double>::infinity());
+  }
+  using longtime::EnergyKind;
+  const double budget = 32.0 * 20000 * std::numeric_limits<double>::epsilon();
+  EXPECT_EQ(longtime::classify_energy_error(t, drift, budget).kind, EnergyKind::Drifting);
+  EXPECT_EQ(longtime::classify_energy_error(t, wave, budget).kind, EnergyKind::Bounded);
+  EXPECT_EQ(longtime::classify_energy_error(t, slow, budget).kind, EnergyKind::Bounded);
+  EXPECT_EQ(longtime::classify_energy_error(t, tiny, budget).kind, EnergyKind::Conserved);
+  EXPECT_EQ(longtime::classify_energy_error(t, blowup, budget).kind, EnergyKind::Drifting);
+  const auto c = longtime::classify_energy_error(t, drift, budget);
+  EXPECT_NEAR(c.slope, 1e-9, 2e-10);  // the fitted drift of the window maxima
+  EXPECT_NE(c.evidence().find("drifting"), std::string::npos);
 }
 
 }  // namespace

@@ -62,6 +62,9 @@ struct Claims {
   bool orthogonality = false;  // O stays orthogonal to round-off
   bool spectrum = false;       // Manakov: the eigenvalues of M are preserved to round-off
   bool poisson = false;        // the step is a Poisson map of the Lie-Poisson bracket
+  bool noether = false;        // the spatial momentum O Pi (Manakov: O M O^T) is kept to round-off
+  bool equivariant = false;    // step(Pi, R O) = (Pi', R O'): commutes with rotating the attitude
+  bool bounded_energy = false; // over long runs the energy error stays bounded (no secular drift)
 };
 
 // What one translation unit registered for one scalar (filled by GEOMECH_STUDENT).
@@ -261,6 +264,9 @@ IntegratorClaims claims_of() {
     c.orthogonality = k.orthogonality;
     c.spectrum = k.spectrum;
     c.poisson = k.poisson;
+    c.noether = k.noether;
+    c.equivariant = k.equivariant;
+    c.bounded_energy = k.bounded_energy;
   }
   return c;
 }
