@@ -322,14 +322,19 @@ def main():
         if fn is None or not callable(fn):
             continue
         functions[name] = (fn, sig)
+        # A function that fails even in float is kept in every scalar: its error (with the
+        # traceback) then shows in the properties that call it. One that works in float but not in
+        # mpf or Fraction is checked only where it works, and the report says why.
+        base = probe(fn, sig, "double") if table.get("probe", True) else None
+        if base is not None:
+            warnings.append("slot '%s' %s (with the harness's probe arguments)" % (name, base))
         for scalar in scalars:
-            why = probe(fn, sig, scalar) if table.get("probe", True) else None
+            why = None if (base is not None or scalar == "double" or not table.get("probe", True)) \
+                else probe(fn, sig, scalar)
             if why is None:
                 slots[scalar].append(name)
             else:
                 notes.setdefault(scalar, {})[name] = why
-                if scalar == "double":
-                    warnings.append("slot '%s' %s" % (name, why))
     integrators = []
     steps = {}
     for iname, obj, isteps in find_integrators(mod):
@@ -338,9 +343,9 @@ def main():
             if scalar not in scalars:
                 continue
             ok = True
-            for s in (isteps if table.get("probe", True) else []):
+            for s in (isteps if table.get("probe", True) and scalar != "double" else []):
                 why = probe(get(obj, s), STEP_SIGS[s], scalar)
-                if why is not None:
+                if why is not None and probe(get(obj, s), STEP_SIGS[s], "double") is None:
                     ok = False
                     notes.setdefault(scalar, {})["%s.%s" % (iname, s)] = why
             if ok:
