@@ -381,7 +381,10 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
   if (p.extension() == ".py") {
     if (language) *language = "python";
     const char* py = std::getenv("GEOMECH_PYTHON");
-    return {py && *py ? py : "python3", "-u", src + "/student/python/geomech_server.py", file};
+    // Debian's interpreter, where python3-mpmath and python3-numpy are installed (not whatever
+    // python3 comes first on PATH); $GEOMECH_PYTHON overrides.
+    const std::string deflt = fs::exists("/usr/bin/python3", ec) ? "/usr/bin/python3" : "python3";
+    return {py && *py ? py : deflt, "-u", src + "/student/python/geomech_server.py", file};
   }
   if (p.extension() == ".m" || (fs::is_directory(p, ec) && !fs::is_empty(p, ec))) {
     if (language) *language = "octave";

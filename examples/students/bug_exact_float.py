@@ -1,6 +1,6 @@
-"""Buggy for exact and 50-digit checks: the Hamiltonian multiplies by the float 0.5, so the
-result is only double precision. Expected: hamiltonian_3_4 checked in double only, the report
-notes why it is not available in mp50 and exact."""
+"""Limited: the Hamiltonian multiplies by the float literal 0.5, so with Fractions the result is a
+float, not exact (with mpmath.mpf it stays an mpf, 0.5 being exact in binary). Expected: PASS,
+hamiltonian_3_4 is not checked in exact and the report says why (a Python float)."""
 from correct import *  # noqa: F401,F403
 from correct import dot, omega_3_5
 
