@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -81,6 +82,30 @@ TEST(RemoteSubject, EachProcessHasItsOwnServer) {
   ::waitpid(pid, &status, 0);
   EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0);
   EXPECT_EQ(s.d->hamiltonian_3_4(Vec3<double>(2, 1, 1), Vec3<double>(0, 0, 2)), 2.0);
+}
+
+TEST(RemoteSubject, OctaveCorrectMatchesPython) {
+  if (std::system("command -v octave-cli > /dev/null 2>&1") != 0) GTEST_SKIP() << "octave-cli is not installed";
+  harness::SubjectInfo oi, pi;
+  std::string language, why;
+  auto oc = std::make_shared<Connection>(
+      server_command(std::string(GM_SOURCE_DIR) + "/examples/students/correct.m", &language, &why), language);
+  const SubjectSet o = remote_subject(oc, "correct_m", oi);
+  const SubjectSet p = remote_subject(python("correct.py"), "correct_py", pi);
+  ASSERT_TRUE(o.d);
+  EXPECT_FALSE(o.mp);
+  EXPECT_FALSE(o.q);
+  const Vec3<double> I(2, 1, 0.5), P(0.25, -1.5, 3), Q(1, 2, 3);
+  EXPECT_EQ(o.d->euler_3_8(I, P), p.d->euler_3_8(I, P));
+  const auto a = o.d->clebsch_3_21(I, Q, P), b = p.d->clebsch_3_21(I, Q, P);
+  EXPECT_EQ(a.first, b.first);
+  EXPECT_EQ(a.second, b.second);
+  ASSERT_EQ(o.d->integrators.size(), 1u);
+  const RigidBodyState<double> x{P, Mat3<double>::Identity()};
+  const auto y = o.d->integrators[0].rigid_body_step(I, x, 0.01);
+  const auto z = p.d->integrators[0].rigid_body_step(I, x, 0.01);
+  EXPECT_LT((y.Pi - z.Pi).norm(), 1e-14);
+  EXPECT_LT((y.O - z.O).norm(), 1e-14);
 }
 
 TEST(RemoteSubject, RoundTripCost) {
