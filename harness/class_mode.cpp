@@ -55,7 +55,8 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
   if (!fs::is_directory(dir, ec)) throw std::runtime_error(dir + " is not a folder");
   std::vector<Implementation> out;
   for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (e.is_regular_file() && e.path().extension() == ".cpp") {
+    if (e.is_regular_file() && (e.path().extension() == ".cpp" || e.path().extension() == ".py" ||
+                                e.path().extension() == ".m")) {
       out.push_back({e.path().stem().string(), e.path().string()});
     } else if (e.is_directory()) {
       std::vector<fs::path> sources;
@@ -72,7 +73,7 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
       throw std::runtime_error("two implementations in " + dir + " are both named '" + out[i].name +
                                "' (a file and a folder); rename one");
   if (out.empty())
-    throw std::runtime_error(dir + " holds no implementation (*.cpp files, or folders with one .cpp using GEOMECH_STUDENT)");
+    throw std::runtime_error(dir + " holds no implementation (*.cpp, *.py or *.m files, or folders with one .cpp using GEOMECH_STUDENT)");
   return out;
 }
 
@@ -175,6 +176,27 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   for (const auto& impl : impls) {
     tasks.push_back([&, impl]() {
       json j;
+      const std::string ext = fs::path(impl.source).extension().string();
+      if (ext == ".py" || ext == ".m") {
+        // Python and Octave: `geomech check FILE` runs the protocol server (docs/PROTOCOL.md).
+        CheckCliOptions co = o.check;
+        co.jobs = 1;
+        co.quiet = true;
+        co.report_dir = (fs::path(report_dir) / impl.name).string();
+        std::vector<std::string> argv{fs::read_symlink("/proc/self/exe").string(), "check", impl.source};
+        const auto args = to_args(co);
+        argv.insert(argv.end(), args.begin(), args.end());
+        const ProcessResult pr = run_process(ProcessSpec{argv, {}, false});
+        j["built"] = true;
+        j["build_seconds"] = 0.0;
+        j["exit_code"] = pr.exit_code;
+        j["check_seconds"] = pr.seconds;
+        if (pr.exit_code != 0 && pr.exit_code != 1)
+          j["problem"] = "the check ended with " +
+                         (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
+                         pr.output.substr(0, 2000);
+        return j.dump(-1, ' ', false, json::error_handler_t::replace);
+      }
       BuildOptions bo = o.build;
       bo.jobs = 1;
       bo.name = impl.name;

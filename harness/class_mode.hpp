@@ -1,7 +1,8 @@
 // Class mode: a folder of implementations checked in parallel, one report per implementation and
 // one summary table (implementation x area of the notes).
 //
-// Implementations are the *.cpp files directly in the folder, and each sub-folder holding exactly
+// Implementations are the *.cpp, *.py and *.m files directly in the folder (Python and Octave run
+// through docs/PROTOCOL.md), and each sub-folder holding exactly
 // one .cpp that uses GEOMECH_STUDENT (a student's own folder, with headers beside it). Each is
 // built and checked in its own process, `jobs` at a time; a student whose code does not compile,
 // crashes or hangs gets a row saying so, and the others are unaffected.

@@ -200,7 +200,7 @@ GM_PROPERTY(integrator_converges_in_every_regime, integrator_scalars,
              .tolerance = ToleranceClass::Truncation,
              .needs = {},
              .negative_controls = {"principal_axis_fast_path", "symmetric_top_branch"},
-             .cases = {.d = 30, .mp = 3, .q = 0},
+             .cases = {.d = 60, .mp = 20, .q = 0},
              .step = StepKind::RigidBody});
 
 GM_PROPERTY(integrator_50_digit_floor, integrator_mp50_scalars,

@@ -587,6 +587,7 @@ TEST(TrajectoryFiles, ConvergenceSlopeLeavesOutTheRoundoffPlateau) {
 
 std::vector<std::string> labels(const std::string& suite, const std::string&) {
   if (suite == "TrajectoryFiles") return {"meta", "harness", "bad-input"};
+  if (suite == "RemoteSubject" || suite == "ProtocolCodec") return {"meta", "harness", "protocol", "python"};
   return {"meta", "harness"};
 }
 

@@ -1,7 +1,8 @@
 // geomech: the command-line front end of the suite.
 //
 //   geomech check      run every property against a subject and print the report:
-//                      `geomech check FILE.cpp` for anyone's implementation (see docs/STUDENTS.md)
+//                      `geomech check FILE.cpp` for anyone's implementation (see docs/STUDENTS.md),
+//                      `geomech check FILE.py` / `FILE.m` for Python and Octave (docs/PROTOCOL.md)
 //   geomech check-class  a folder of implementations, in parallel, with a summary table
 //   geomech check-trajectory  trajectory files written by programs in any language
 //   geomech list       the registered properties with their spec entries
@@ -16,6 +17,8 @@
 #include "harness/cli.hpp"
 #include "harness/isolate.hpp"
 #include "harness/process.hpp"
+#include "harness/protocol_codec.hpp"
+#include "harness/remote_subject.hpp"
 #include "harness/report.hpp"
 #include "harness/slot_names.hpp"
 #include "harness/trajectory.hpp"
@@ -102,6 +105,84 @@ int run_student_check(const std::string& file, harness::CheckCliOptions o, const
   return pr.exit_code;
 }
 
+// `geomech check mine.py` / `mine.m` / a folder of .m files: the implementation runs as a child
+// process speaking docs/PROTOCOL.md; the check runs here, with the remote subject.
+bool is_remote_file(const std::string& file) {
+  std::string language, why;
+  return !protocol::server_command(file, &language, &why).empty();
+}
+
+int run_remote_check(const std::string& file, harness::CheckCliOptions o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string language, why;
+  const auto cmd = protocol::server_command(file, &language, &why);
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) {
+    std::cerr << "geomech check: " << file << ": no such file\n";
+    return 2;
+  }
+  auto conn = std::make_shared<protocol::Connection>(cmd, language);
+  harness::SubjectInfo info;
+  info.source = file;
+  info.reproduce_prefix = front_door() + " check " + harness::shell_quote(file);
+  const std::string name = std::filesystem::path(file).lexically_normal().stem().string().empty()
+                               ? std::filesystem::path(file).lexically_normal().parent_path().filename().string()
+                               : std::filesystem::path(file).lexically_normal().stem().string();
+  SubjectSet s;
+  try {
+    s = protocol::remote_subject(conn, name, info);
+  } catch (const std::exception& e) {
+    std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+    return 2;
+  }
+  std::cerr << "geomech: " << language << " implementation " << file << " started and described itself in " << std::fixed
+            << std::setprecision(2) << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
+            << " s\n";
+  const bool narrowed = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" || !o.integrator.empty() ||
+                        !o.reproduce.empty();
+  if (o.report_dir.empty() && !narrowed) o.report_dir = "geomech-reports/" + name;
+  const int status = harness::run_check_cli(s, info, o);
+  std::cerr << "geomech: checked " << name << " in " << std::fixed << std::setprecision(1)
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+  return status;
+}
+
+// `geomech bench-protocol mine.py`: the round-trip cost of one slot call, one at a time and batched.
+int run_protocol_bench(const std::string& file, int calls) {
+  std::string language, why;
+  const auto cmd = protocol::server_command(file, &language, &why);
+  if (cmd.empty()) {
+    std::cerr << "geomech bench-protocol: " << file << ": " << why << "\n";
+    return 2;
+  }
+  auto t0 = std::chrono::steady_clock::now();
+  protocol::Connection conn(cmd, language);
+  const auto d = protocol::parse_hello(conn.hello());
+  const double start = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cout << language << " server: start and handshake " << std::fixed << std::setprecision(3) << start << " s\n";
+  for (const char* scalar : {"double", "mp50", "exact"}) {
+    auto it = d.slots.find(scalar);
+    const bool has = it != d.slots.end();
+    if (!has || !it->second.count("euler_3_8")) continue;
+    auto v = [&](double a, double b, double c) {
+      Vec3<double> x(a, b, c);
+      if (std::string(scalar) == "double") return protocol::encode<double>(x);
+      if (std::string(scalar) == "mp50") return protocol::encode<Real50>(Vec3<Real50>(x.cast<Real50>()));
+      return protocol::encode<Rational>(Vec3<Rational>(Rational(a), Rational(b), Rational(c)));
+    };
+    const protocol::Call c{"euler_3_8", scalar, nlohmann::json::array({v(2, 1, 0.5), v(0.25, -1.5, 3)}), ""};
+    t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < calls; ++i) conn.call(c);
+    const double one = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / calls;
+    t0 = std::chrono::steady_clock::now();
+    conn.call_batch(std::vector<protocol::Call>(calls, c));
+    const double batched = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / calls;
+    std::cout << scalar << ": euler_3_8, " << calls << " calls: " << std::setprecision(1) << one * 1e6
+              << " us per call one at a time, " << batched * 1e6 << " us per call in one batch\n";
+  }
+  return 0;
+}
+
 // `geomech check-trajectory FILE...`: trajectories written by programs in any language.
 int run_trajectory_check(const std::vector<std::string>& files, const harness::TrajectoryCheckOptions& o,
                          const std::string& report_dir, const std::string& junit, bool quiet) {
@@ -172,11 +253,65 @@ int run_subjects() {
   return 0;
 }
 
-int run_slots() {
+// The slot's signature in Python or MATLAB terms, from the C++ signature text.
+std::string other_language_signature(const SlotInfo& s, bool python) {
+  const std::string sig = s.signature;
+  const auto open = sig.find('(', sig.find('>') == std::string::npos ? 0 : 0);
+  std::string result = sig.substr(0, open);
+  std::string args = sig.substr(open + 1, sig.rfind(')') - open - 1);
+  auto describe = [&](std::string t) -> std::string {
+    auto has = [&](const char* w) { return t.find(w) != std::string::npos; };
+    if (has("Vec3Pair")) return python ? "(3-list, 3-list)" : "{3x1, 3x1}";
+    if (has("MatXPair")) return python ? "(matrix, matrix)" : "{matrix, matrix}";
+    if (has("Vec3")) return python ? "3-list" : "3x1";
+    if (has("Vec6")) return python ? "6-list" : "6x1";
+    if (has("VecX")) return python ? "list" : "column";
+    if (has("Mat3")) return python ? "3x3 list of rows" : "3x3";
+    if (has("MatX")) return python ? "list of rows" : "matrix";
+    if (has("LieAlgebraId")) return "'so3'|'so4'|'sl2'";
+    if (has("int")) return "int";
+    return "scalar";
+  };
+  std::string out;
+  std::size_t depth = 0, start = 0;
+  std::vector<std::string> parts;
+  for (std::size_t i = 0; i <= args.size(); ++i) {
+    if (i == args.size() || (args[i] == ',' && depth == 0)) {
+      parts.push_back(args.substr(start, i - start));
+      start = i + 1;
+    } else if (args[i] == '<') {
+      ++depth;
+    } else if (args[i] == '>') {
+      --depth;
+    }
+  }
+  for (const auto& p : parts) {
+    auto q = p;
+    while (!q.empty() && q.back() == ' ') q.pop_back();
+    const auto sp = q.find_last_of(" &");
+    const std::string pname = q.substr(sp + 1);
+    out += (out.empty() ? "" : ", ") + pname + (python ? ": " : " %") + describe(q);
+  }
+  if (python) return "def " + std::string(s.name) + "(" + out + ") -> " + describe(result);
+  return "function r = " + std::string(s.name) + "(" + out + ")  % r: " + describe(result);
+}
+
+int run_slots(const std::string& language) {
+  if (language.empty()) {
+    for (const auto& s : subject_slots())
+      std::cout << s.name << "  " << s.signature << "\n    " << s.place << ": " << s.meaning << "\n";
+    std::cout << "\nBy concept (slot names are the notes' equation numbers):\n";
+    for (const auto& c : harness::slot_concepts())
+      std::cout << "  " << std::left << std::setw(40) << c.concept_name << c.slot << "\n";
+    return 0;
+  }
+  const bool python = language == "python";
+  std::cout << (python ? "## Python: functions named after the slots (scalars: float, mpmath.mpf, fractions.Fraction)\n\n"
+                       : "## Octave / MATLAB: functions named after the slots (double only)\n\n")
+            << "```" << (python ? "python" : "matlab") << "\n";
   for (const auto& s : subject_slots())
-    std::cout << s.name << "  " << s.signature << "\n    " << s.place << ": " << s.meaning << "\n";
-  std::cout << "\nBy concept (slot names are the notes' equation numbers):\n";
-  for (const auto& c : harness::slot_concepts()) std::cout << "  " << std::left << std::setw(40) << c.concept_name << c.slot << "\n";
+    std::cout << other_language_signature(s, python) << "\n    " << (python ? "# " : "% ") << s.place << ": " << s.meaning << "\n";
+  std::cout << "```\n";
   return 0;
 }
 
@@ -272,6 +407,14 @@ int main(int argc, char** argv) {
 
   auto* list = app.add_subcommand("list", "list the registered properties");
   auto* slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
+  bool slots_python = false, slots_octave = false;
+  slots->add_flag("--python", slots_python, "as Python functions (docs/STUDENTS.md, Python section)");
+  slots->add_flag("--octave", slots_octave, "as Octave/MATLAB functions");
+  std::string bench_file;
+  int bench_calls = 1000;
+  auto* bench = app.add_subcommand("bench-protocol", "round-trip cost of a slot call to a .py/.m implementation");
+  bench->add_option("file", bench_file, "a .py or .m implementation providing euler_3_8")->required();
+  bench->add_option("--calls", bench_calls, "calls per measurement (default 1000)");
   auto* subjects = app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
 
   bool markdown = false, trace = false;
@@ -328,6 +471,7 @@ int main(int argc, char** argv) {
     if (*check) {
       if (!student_file.empty()) {
         if (check->count("--subject")) throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
+        if (gm::is_remote_file(student_file)) return gm::run_remote_check(student_file, co);
         bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
         bo.exact = co.scalar == "all" || co.scalar == "exact";
         return gm::run_student_check(student_file, co, bo);
@@ -371,7 +515,8 @@ int main(int argc, char** argv) {
       return gm::mutation::mutants_command(mo);
     }
     if (*list) return gm::run_list();
-    if (*slots) return gm::run_slots();
+    if (*slots) return gm::run_slots(slots_python ? "python" : slots_octave ? "octave" : "");
+    if (*bench) return gm::run_protocol_bench(bench_file, bench_calls);
     if (*subjects) return gm::run_subjects();
     if (*cat) return gm::run_catalogue(markdown, trace, catalogue_path);
   } catch (const CLI::Error& e) {

@@ -1,0 +1,403 @@
+#!/usr/bin/env python3
+"""geomech slot server for Python implementations (protocol: docs/PROTOCOL.md, version 1).
+
+    python3 geomech_server.py mine.py
+
+Imports mine.py, finds the functions named after the harness's slots (the slot table comes from
+the harness in $GEOMECH_SLOT_TABLE; `geomech slots --python` prints it for people), probes each in
+the three scalars (float, mpmath.mpf at the harness's 50-digit precision, fractions.Fraction),
+writes the handshake line, then answers one request line with one reply line until its input ends.
+
+Nothing from the student's code may reach stdout: print() during import and calls goes to stderr.
+"""
+import importlib.util
+import json
+import os
+import sys
+import traceback
+from fractions import Fraction
+
+PROTOCOL = "geomech-slots"
+VERSION = 1
+
+try:
+    import mpmath
+    from mpmath.libmp import to_str as _mpf_to_str
+except ImportError:  # pragma: no cover - mp50 is then unavailable
+    mpmath = None
+
+numpy = None  # set after the student's module is loaded, if it imported numpy (importing it costs ~0.2 s)
+
+_out = sys.stdout
+sys.stdout = sys.stderr  # the student's print() must not break the protocol
+
+MP_BITS = 168
+
+
+class State(dict):
+    """A state {"Pi": ..., "O": ...} (or {"M": ..., "O": ...}) read as x["Pi"] or x.Pi."""
+
+    def __getattr__(self, k):
+        try:
+            return self[k]
+        except KeyError:
+            raise AttributeError(k)
+
+
+class Inexact(Exception):
+    pass
+
+
+# ---- signatures ----------------------------------------------------------------------------------
+
+def split_top(text):
+    parts, depth, cur = [], 0, ""
+    for ch in text:
+        if ch in "<(":
+            depth += 1
+        elif ch in ">)":
+            depth -= 1
+        if ch == "," and depth == 0:
+            parts.append(cur)
+            cur = ""
+        else:
+            cur += ch
+    if cur.strip():
+        parts.append(cur)
+    return parts
+
+
+def kind_of(type_text):
+    t = type_text.replace("const", "").replace("&", "").strip()
+    t = t.split()[0] if t.split() else t
+    if "<" in t:
+        t = t[: t.index("<")]
+    return t  # T, Vec3, Mat3, Vec6, VecX, MatX, int, LieAlgebraId, Vec3Pair, MatXPair, RigidBodyState, ...
+
+
+def parse_signature(sig):
+    """'Mat3<T>(const Vec3<T>& v)' -> ('Mat3', ['Vec3'])"""
+    depth = 0
+    for i, ch in enumerate(sig):
+        if ch == "<":
+            depth += 1
+        elif ch == ">":
+            depth -= 1
+        elif ch == "(" and depth == 0:
+            result = sig[:i]
+            args = sig[i + 1: sig.rindex(")")]
+            return kind_of(result), [kind_of(a) for a in split_top(args)]
+    raise ValueError("bad signature " + sig)
+
+
+# ---- numbers -------------------------------------------------------------------------------------
+
+def make_scalar(scalar, text):
+    if scalar == "double":
+        return float(Fraction(text)) if "/" in str(text) else float(text)
+    if scalar == "mp50":
+        mpmath.mp.prec = MP_BITS
+        if "/" in str(text):
+            f = Fraction(text)
+            return mpmath.mpf(f.numerator) / f.denominator
+        return mpmath.mpf(text)
+    return Fraction(text)
+
+
+def decode(kind, scalar, v):
+    if kind == "T":
+        return make_scalar(scalar, v)
+    if kind in ("int", "LieAlgebraId"):
+        return v
+    if kind in ("Vec3", "Vec6", "VecX"):
+        return [make_scalar(scalar, x) for x in v]
+    if kind in ("Mat3", "MatX"):
+        return [[make_scalar(scalar, x) for x in row] for row in v]
+    if kind == "RigidBodyState":
+        return State(Pi=decode("Vec3", scalar, v["Pi"]), O=decode("Mat3", scalar, v["O"]))
+    if kind == "ManakovState":
+        return State(M=decode("MatX", scalar, v["M"]), O=decode("MatX", scalar, v["O"]))
+    raise ValueError("unknown argument kind " + kind)
+
+
+def encode_number(scalar, x):
+    if isinstance(x, bool):
+        raise TypeError("a bool where a number was expected")
+    if isinstance(x, int):
+        return str(x)
+    if numpy is not None and isinstance(x, numpy.generic):
+        if isinstance(x, numpy.integer):
+            return str(int(x))
+        x = float(x)
+    if isinstance(x, Fraction):
+        if scalar == "double":
+            return repr(float(x))
+        return "%d/%d" % (x.numerator, x.denominator)
+    if mpmath is not None and isinstance(x, mpmath.mpf):
+        if scalar == "exact":
+            raise Inexact("an mpmath.mpf in an exact (Fraction) computation: the result is rounded, not exact")
+        if scalar == "double":
+            return repr(float(x))
+        return _mpf_to_str(x._mpf_, 60)
+    if isinstance(x, float):
+        if scalar == "mp50":
+            raise Inexact("a Python float in a 50-digit computation (math.sqrt, math.cos, numpy or a float "
+                          "literal like 0.5 round to double precision); write generic code, e.g. x / 2")
+        if scalar == "exact":
+            raise Inexact("a Python float in an exact (Fraction) computation (math.sqrt, numpy or a float "
+                          "literal like 0.5 make the result inexact)")
+        return repr(x)
+    if mpmath is not None and isinstance(x, mpmath.mpc):
+        raise TypeError("a complex number where a real was expected")
+    if isinstance(x, complex):
+        raise TypeError("a complex number where a real was expected")
+    try:
+        return repr(float(x)) if scalar == "double" else str(x)
+    except Exception:
+        raise TypeError("not a number: %r" % (x,))
+
+
+def encode(kind, scalar, x):
+    if numpy is not None and isinstance(x, numpy.ndarray):
+        x = x.tolist()
+    if kind == "T":
+        return encode_number(scalar, x)
+    if kind in ("Vec3", "Vec6", "VecX"):
+        seq = list(x)
+        if seq and numpy is not None and isinstance(seq[0], numpy.ndarray):
+            seq = [e.tolist() for e in seq]
+        # a column vector written as a list of 1-lists is accepted
+        if seq and all(isinstance(e, (list, tuple)) and len(e) == 1 for e in seq):
+            seq = [e[0] for e in seq]
+        return [encode_number(scalar, e) for e in seq]
+    if kind in ("Mat3", "MatX"):
+        out = []
+        for row in x:
+            if numpy is not None and isinstance(row, numpy.ndarray):
+                row = row.tolist()
+            out.append([encode_number(scalar, e) for e in row])
+        return out
+    if kind == "Vec3Pair":
+        a, b = x
+        return [encode("Vec3", scalar, a), encode("Vec3", scalar, b)]
+    if kind == "MatXPair":
+        a, b = x
+        return [encode("MatX", scalar, a), encode("MatX", scalar, b)]
+    if kind in ("RigidBodyState", "ManakovState"):
+        keys = ("Pi", "O") if kind == "RigidBodyState" else ("M", "O")
+        vk = "Vec3" if kind == "RigidBodyState" else "MatX"
+        mk = "Mat3" if kind == "RigidBodyState" else "MatX"
+        if isinstance(x, dict):
+            a, b = x[keys[0]], x[keys[1]]
+        elif hasattr(x, keys[0]):
+            a, b = getattr(x, keys[0]), getattr(x, keys[1])
+        else:
+            a, b = x
+        return {keys[0]: encode(vk, scalar, a), keys[1]: encode(mk, scalar, b)}
+    raise ValueError("unknown result kind " + kind)
+
+
+# ---- the student's module ------------------------------------------------------------------------
+
+def load(path):
+    spec = importlib.util.spec_from_file_location("student_impl", path)
+    mod = importlib.util.module_from_spec(spec)
+    sys.path.insert(0, os.path.dirname(os.path.abspath(path)))
+    spec.loader.exec_module(mod)
+    return mod
+
+
+def student_traceback(exc):
+    """The traceback without the server's own frames."""
+    tb = exc.__traceback__
+    while tb is not None and tb.tb_frame.f_code.co_filename == __file__:
+        tb = tb.tb_next
+    return "".join(traceback.format_exception(type(exc), exc, tb)).rstrip()
+
+
+def get(obj, key, default=None):
+    if isinstance(obj, dict):
+        return obj.get(key, default)
+    return getattr(obj, key, default)
+
+
+def find_integrators(mod):
+    found = []
+    seen = set()
+    candidates = list(getattr(mod, "INTEGRATORS", []) or [])
+    for k, v in vars(mod).items():
+        if k.startswith("_"):
+            continue
+        if isinstance(v, type) and getattr(v, "__module__", None) != mod.__name__:
+            continue
+        if isinstance(v, (type, dict)) or (not callable(v) and hasattr(v, "__dict__")):
+            candidates.append(v)
+    for c in candidates:
+        if id(c) in seen:
+            continue
+        seen.add(id(c))
+        steps = [s for s in ("rigid_body_step", "manakov_step") if callable(get(c, s))]
+        if not steps or not get(c, "name"):
+            continue
+        found.append((str(get(c, "name")), c, steps))
+    return found
+
+
+def sample(kind, scalar, k=0):
+    """Arguments for probing: consistent shapes (VecX of length 3, MatX 3 x 3, n = 3, so3)."""
+    f = lambda p, q=1: make_scalar(scalar, "%d/%d" % (p, q))
+    if kind == "T":
+        return f(3 + k, 2)
+    if kind == "int":
+        return 3
+    if kind == "LieAlgebraId":
+        return "so3"
+    if kind == "Vec3" or kind == "VecX":
+        return [f(2 + k), f(3, 2), f(5, 4)]
+    if kind == "Vec6":
+        return [f(1 + i + k, 2) for i in range(6)]
+    if kind == "Mat3" or kind == "MatX":
+        return [[f(2 + k), f(0), f(0)], [f(0), f(3), f(0)], [f(0), f(0), f(5)]]
+    if kind == "RigidBodyState":
+        return State(Pi=sample("Vec3", scalar, 1), O=[[f(1 if i == j else 0) for j in range(3)] for i in range(3)])
+    if kind == "ManakovState":
+        M = [[f(0), f(1), f(-1)], [f(-1), f(0), f(1, 2)], [f(1), f(-1, 2), f(0)]]
+        return State(M=M, O=[[f(1 if i == j else 0) for j in range(3)] for i in range(3)])
+    raise ValueError(kind)
+
+
+STEP_SIGS = {
+    "rigid_body_step": ("RigidBodyState", ["Vec3", "RigidBodyState", "T"]),
+    "manakov_step": ("ManakovState", ["MatX", "ManakovState", "T"]),
+}
+
+
+def probe(fn, sig, scalar):
+    """None when fn works in this scalar, else the reason."""
+    result, args = sig
+    try:
+        vals = [sample(a, scalar, i) for i, a in enumerate(args)]
+        if args and args[-1] == "T" and result in ("RigidBodyState", "ManakovState"):
+            vals[-1] = make_scalar(scalar, "1/64")
+        encode(result, scalar, fn(*vals))
+        return None
+    except Inexact as e:
+        return str(e)
+    except Exception as e:
+        tb = student_traceback(e).splitlines()
+        return "fails in %s: %s" % ({"double": "float", "mp50": "mpmath.mpf", "exact": "Fraction"}[scalar],
+                                   tb[-1] if tb else repr(e))
+
+
+def main():
+    global MP_BITS
+    if len(sys.argv) != 2:
+        _out.write(json.dumps({"fatal": "usage: geomech_server.py FILE.py"}) + "\n")
+        return 2
+    table = json.loads(os.environ.get("GEOMECH_SLOT_TABLE", "{}") or "{}")
+    MP_BITS = int(table.get("mp50_bits", 168))
+    sigs = {s["name"]: parse_signature(s["signature"]) for s in table.get("slots", [])}
+    for k, v in table.get("steps", {}).items():
+        STEP_SIGS[k] = parse_signature(v)
+    scalars = ["double", "mp50", "exact"] if mpmath is not None else ["double", "exact"]
+    warnings = []
+    if mpmath is None:
+        warnings.append("mpmath is not installed (apt-get install python3-mpmath): nothing is checked in 50 digits")
+    try:
+        mod = load(sys.argv[1])
+    except BaseException as e:
+        _out.write(json.dumps({"protocol": PROTOCOL, "version": VERSION, "language": "python",
+                               "fatal": "importing %s failed:\n%s" % (sys.argv[1], student_traceback(e))}) + "\n")
+        _out.flush()
+        return 1
+
+    global numpy
+    numpy = sys.modules.get("numpy")
+    functions = {}
+    slots = {s: [] for s in scalars}
+    notes = {}
+    for name, sig in sigs.items():
+        fn = getattr(mod, name, None)
+        if fn is None or not callable(fn):
+            continue
+        functions[name] = (fn, sig)
+        # A function that fails even in float is kept in every scalar: its error (with the
+        # traceback) then shows in the properties that call it. One that works in float but not in
+        # mpf or Fraction is checked only where it works, and the report says why.
+        base = probe(fn, sig, "double") if table.get("probe", True) else None
+        if base is not None:
+            warnings.append("slot '%s' %s (with the harness's probe arguments)" % (name, base))
+        for scalar in scalars:
+            why = None if (base is not None or scalar == "double" or not table.get("probe", True)) \
+                else probe(fn, sig, scalar)
+            if why is None:
+                slots[scalar].append(name)
+            else:
+                notes.setdefault(scalar, {})[name] = why
+    integrators = []
+    steps = {}
+    for iname, obj, isteps in find_integrators(mod):
+        iscalars = []
+        for scalar in ("double", "mp50"):
+            if scalar not in scalars:
+                continue
+            ok = True
+            for s in (isteps if table.get("probe", True) and scalar != "double" else []):
+                why = probe(get(obj, s), STEP_SIGS[s], scalar)
+                if why is not None and probe(get(obj, s), STEP_SIGS[s], "double") is None:
+                    ok = False
+                    notes.setdefault(scalar, {})["%s.%s" % (iname, s)] = why
+            if ok:
+                iscalars.append(scalar)
+        claims = get(obj, "claims", None)
+        entry = {"name": iname, "steps": isteps, "scalars": iscalars}
+        if claims:
+            entry["claims"] = dict(claims)
+        integrators.append(entry)
+        for s in isteps:
+            steps[(iname, s)] = get(obj, s)
+    description = getattr(mod, "description", None) or ((mod.__doc__ or "").strip().splitlines() or [""])[0]
+    hello = {"protocol": PROTOCOL, "version": VERSION, "language": "python",
+             "language_version": sys.version.split()[0], "description": description,
+             "slots": slots, "integrators": integrators, "notes": notes, "warnings": warnings,
+             "mp50_bits": MP_BITS}
+    _out.write(json.dumps(hello) + "\n")
+    _out.flush()
+
+    for line in sys.stdin:
+        if not line.strip():
+            continue
+        try:
+            req = json.loads(line)
+        except ValueError as e:
+            _out.write(json.dumps({"fatal": "request is not JSON: %s" % e}) + "\n")
+            _out.flush()
+            continue
+        results = []
+        for call in req.get("calls", []):
+            slot, scalar = call.get("slot"), call.get("scalar")
+            try:
+                if call.get("integrator"):
+                    fn = steps.get((call["integrator"], slot))
+                    sig = STEP_SIGS.get(slot)
+                    if fn is None:
+                        raise LookupError("no integrator %r with a %s" % (call["integrator"], slot))
+                else:
+                    fn, sig = functions.get(slot, (None, None))
+                    if fn is None:
+                        raise LookupError("no function named %r" % slot)
+                args = [decode(k, scalar, a) for k, a in zip(sig[1], call.get("args", []))]
+                value = fn(*args)
+                results.append({"ok": encode(sig[0], scalar, value)})
+            except Inexact as e:
+                results.append({"error": "%s returned %s" % (slot, e)})
+            except Exception as e:
+                tb = student_traceback(e)
+                results.append({"error": tb.splitlines()[-1] if tb else repr(e), "traceback": tb})
+        _out.write(json.dumps({"id": req.get("id"), "results": results}) + "\n")
+        _out.flush()
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
