@@ -44,6 +44,9 @@ file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/student/installed-toolchain.json CONTEN
 ")
 install(FILES ${CMAKE_BINARY_DIR}/student/installed-toolchain.json DESTINATION ${GM_INSTALL_DATADIR} RENAME toolchain.json)
 
+# A sanitized build's libraries link only into programs built with the same instrumentation
+# (cmake/GeomechStudent.cmake), so its package config carries those flags (empty in Release).
+string(JOIN ";" GM_INSTALLED_INSTRUMENTATION ${_gm_instrumentation})
 configure_package_config_file(cmake/GeomechSpecConfig.cmake.in ${CMAKE_BINARY_DIR}/GeomechSpecConfig.cmake
   INSTALL_DESTINATION ${GM_INSTALL_CMAKEDIR}
   PATH_VARS GM_INSTALL_LIBDIR GM_INSTALL_INCLUDEDIR CMAKE_INSTALL_BINDIR)

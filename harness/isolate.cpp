@@ -31,6 +31,10 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 constexpr std::size_t kOutputTail = 4096;
+// A child whose output has begun a sanitizer's report is dying, not hanging: symbolising the report's
+// stack (the DWARF of a large binary, compressed with -gz) can take seconds on a loaded machine, so
+// such a child gets this long past the timeout to finish its report before it is stopped.
+constexpr Clock::duration kSanitizerGrace = std::chrono::seconds(120);
 
 struct Running {
   std::size_t index;
@@ -272,17 +276,24 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         ::kill(-r.pid, SIGKILL);  // descendants it may have left behind
         results[r.index] = finish(r, status);
         done = true;
-      } else if (Clock::now() - r.start > timeout) {
+      } else if (Clock::now() - r.start > timeout &&
+                 (r.sanitizer_report.empty() || Clock::now() - r.start > timeout + kSanitizerGrace)) {
         ::kill(-r.pid, SIGKILL);
         ::kill(r.pid, SIGKILL);
         ::waitpid(r.pid, &status, 0);
         TaskResult t;
-        t.status = TaskResult::Status::TimedOut;
         t.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
         t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
+        t.sanitizer_report = r.sanitizer_report;
         char buf[96];
-        std::snprintf(buf, sizeof buf, "did not finish within %.0f s and was stopped", o.timeout_seconds);
-        t.detail = buf;
+        if (r.sanitizer_report.empty()) {
+          t.status = TaskResult::Status::TimedOut;
+          std::snprintf(buf, sizeof buf, "did not finish within %.0f s and was stopped", o.timeout_seconds);
+          t.detail = buf;
+        } else {  // it was dying, not hanging: the sanitizer had reported an error
+          t.status = TaskResult::Status::Crashed;
+          t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
+        }
         results[r.index] = t;
         done = true;
       }
