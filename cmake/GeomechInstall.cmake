@@ -16,6 +16,7 @@ set(GM_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/GeomechSpec)
 install(TARGETS geomech_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(FILES $<TARGET_FILE:geomech> $<TARGET_FILE:geomech_harness> DESTINATION ${GM_INSTALL_LIBDIR})
 install(FILES $<TARGET_OBJECTS:geomech_student_driver> DESTINATION ${GM_INSTALL_LIBDIR} RENAME geomech_student_driver.o)
+install(FILES $<TARGET_OBJECTS:geomech_server_driver> DESTINATION ${GM_INSTALL_LIBDIR} RENAME geomech_server_driver.o)
 install(DIRECTORY core/ DESTINATION ${GM_INSTALL_INCLUDEDIR}/core FILES_MATCHING PATTERN "*.hpp")
 install(FILES student/geomech/student.hpp DESTINATION ${GM_INSTALL_INCLUDEDIR}/geomech)
 install(FILES spec/catalogue.json DESTINATION ${GM_INSTALL_DATADIR}/spec)
@@ -36,6 +37,7 @@ file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/student/installed-toolchain.json CONTEN
   \"includes\": [${_gm_installed_inc_json}],
   \"opt\": {\"double\": \"${GM_STUDENT_OPT_DOUBLE}\", \"mp50\": \"${GM_STUDENT_OPT_MP50}\", \"exact\": \"${GM_STUDENT_OPT_EXACT}\"},
   \"driver_object\": \"${_gm_rel_lib}/geomech_student_driver.o\",
+  \"server_object\": \"${_gm_rel_lib}/geomech_server_driver.o\",
   \"harness_library\": \"${_gm_rel_lib}/$<TARGET_FILE_NAME:geomech_harness>\",
   \"property_library\": \"${_gm_rel_lib}/$<TARGET_FILE_NAME:geomech>\",
   \"other_libraries\": [\"$<TARGET_LINKER_FILE:rapidcheck>\"],

@@ -8,6 +8,9 @@
 
 add_library(geomech_student_driver OBJECT ${PROJECT_SOURCE_DIR}/student/driver.cpp)
 target_link_libraries(geomech_student_driver PRIVATE geomech_harness)
+# 1b. The main() of the C++ protocol server of untrusted mode (student/cpp/server_driver.cpp).
+add_library(geomech_server_driver OBJECT ${PROJECT_SOURCE_DIR}/student/cpp/server_driver.cpp)
+target_link_libraries(geomech_server_driver PRIVATE geomech_harness)
 
 # Optimisation of student code: -O1 for every scalar. Measured on examples/students/correct.cpp
 # (CPU seconds to compile double / mp50 / exact): -O0 4.9 / 6.7 / 5.6, -O1 4.7 / 7.4 / 6.2,
@@ -56,6 +59,7 @@ file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/student/toolchain.json CONTENT "{
   \"includes\": [${_gm_inc_json}],
   \"opt\": {\"double\": \"${GM_STUDENT_OPT_DOUBLE}\", \"mp50\": \"${GM_STUDENT_OPT_MP50}\", \"exact\": \"${GM_STUDENT_OPT_EXACT}\"},
   \"driver_object\": \"$<TARGET_OBJECTS:geomech_student_driver>\",
+  \"server_object\": \"$<TARGET_OBJECTS:geomech_server_driver>\",
   \"harness_library\": \"$<TARGET_FILE:geomech_harness>\",
   \"property_library\": \"$<TARGET_FILE:geomech>\",
   \"other_libraries\": [\"$<TARGET_LINKER_FILE:rapidcheck>\"],

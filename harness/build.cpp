@@ -3,6 +3,7 @@
 #include "core/subject.hpp"
 #include "harness/process.hpp"
 #include "harness/report.hpp"
+#include "harness/sandbox.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -19,6 +20,41 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
+
+// What a sandboxed compile may read and write: the suite's headers (of a source tree, only its
+// core/ and student/ folders: the compiler can be told to read any file through #include), the
+// prebuilt files, and the build folder (handed to the sandbox's user).
+SandboxSpec compiler_sandbox(const Toolchain& tc, const fs::path& dir) {
+  SandboxSpec spec;
+  std::error_code ec;
+  auto add = [&](const fs::path& p) {
+    if (p.empty() || !fs::exists(p, ec)) return;
+    const std::string s = fs::weakly_canonical(p, ec).string();
+    if (s.rfind("/usr/", 0) == 0) return;  // the system is visible already
+    spec.read_only.push_back(s);
+  };
+  for (const auto& inc : tc.includes) {
+    if (fs::exists(fs::path(inc) / "core" / "subject.hpp", ec) && fs::exists(fs::path(inc) / "golden", ec)) {
+      add(fs::path(inc) / "core");  // the suite's source tree: its headers alone
+      add(fs::path(inc) / "student");
+    } else {
+      add(inc);
+    }
+  }
+  for (const auto& f : {tc.driver_object, tc.server_object, tc.harness_library, tc.property_library}) add(f);
+  for (const auto& f : tc.other_libraries) add(f);
+  spec.writable = dir.string();
+  spec.chdir = dir.string();
+  spec.limits.memory_mb = 8192;   // a 50-digit instantiation compiles in about 1.5 GB
+  spec.limits.file_mb = 2048;     // a sanitized suite's objects and programs reach hundreds of MB
+  spec.limits.scratch_mb = 2048;  // the compiler's temporary files (a tmpfs: memory used as needed)
+  if (sandbox_uid() != ::geteuid()) {  // root hands the folder to nobody
+    ::chown(dir.c_str(), sandbox_uid(), sandbox_uid());
+    for (const auto& e : fs::recursive_directory_iterator(dir, ec)) ::lchown(e.path().c_str(), sandbox_uid(), sandbox_uid());
+  }
+  return spec;
+}
+
 
 const char* kScalars[] = {"double", "mp50", "exact"};
 
@@ -205,6 +241,7 @@ Toolchain load_toolchain(const std::string& path) {
     t.includes = j.at("includes").get<std::vector<std::string>>();
     t.opt = j.at("opt").get<std::map<std::string, std::string>>();
     t.driver_object = j.at("driver_object").get<std::string>();
+    t.server_object = j.value("server_object", "");
     t.harness_library = j.at("harness_library").get<std::string>();
     t.property_library = j.at("property_library").get<std::string>();
     t.other_libraries = j.at("other_libraries").get<std::vector<std::string>>();
@@ -219,6 +256,7 @@ Toolchain load_toolchain(const std::string& path) {
     if (!p.empty() && fs::path(p).is_relative()) p = (here / p).lexically_normal().string();
   };
   resolve(t.driver_object);
+  resolve(t.server_object);
   resolve(t.harness_library);
   resolve(t.property_library);
   for (auto& i : t.includes) resolve(i);
@@ -291,13 +329,45 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   }
   r.source = source.string();
   r.name = o.name.empty() ? source.stem().string() : o.name;
-  const fs::path dir =
-      fs::path(o.cache_dir.empty() ? tc.cache_dir : o.cache_dir) / (r.name + "-" + hex(fnv1a(r.source)));
+  const fs::path dir = fs::path(o.cache_dir.empty() ? tc.cache_dir : o.cache_dir) /
+                       (r.name + "-" + hex(fnv1a(r.source)) + (o.sandbox ? "-sandboxed" : ""));
   fs::create_directories(dir, ec);
   if (ec) {
     r.message = "cannot create the build directory " + dir.string() + ": " + ec.message();
     return r;
   }
+  // Sandboxed (untrusted mode, issue 14): the compiler sees a copy of the one source file, the
+  // suite's headers and the prebuilt files, and writes only into `dir` (harness/sandbox.hpp).
+  fs::path compiled_source = source;
+  SandboxSpec sandbox;
+  if (o.sandbox) {
+    if (o.server && tc.server_object.empty()) {
+      r.message = "the toolchain " + tc.path + " has no server_object: rebuild the suite (`./geomech build`)";
+      return r;
+    }
+    // The file and the headers beside it (a submission's own, or a header shared by a class
+    // folder): not the other sources of its folder, which may be other students' submissions.
+    fs::create_directories(dir / "src", ec);
+    compiled_source = dir / "src" / source.filename();
+    std::vector<fs::path> copies{source};
+    for (const auto& e : fs::directory_iterator(source.parent_path(), ec))
+      if (e.is_regular_file() && (e.path().extension() == ".hpp" || e.path().extension() == ".h"))
+        copies.push_back(e.path());
+    for (const auto& from : copies) {
+      const fs::path to = dir / "src" / from.filename();
+      std::error_code copy_ec;
+      if (read_text(to) != read_text(from)) {
+        fs::remove(to, copy_ec);
+        fs::copy_file(from, to, copy_ec);
+      }
+      if (copy_ec) {
+        r.message = "cannot copy " + from.string() + " into " + (dir / "src").string() + ": " + copy_ec.message();
+        return r;
+      }
+    }
+    sandbox = compiler_sandbox(tc, dir);
+  }
+  auto run_argv = [&](const std::vector<std::string>& argv) { return o.sandbox ? sandboxed(argv, sandbox) : argv; };
 
   auto compile_cmd = [&](int k, const std::set<std::string>& skip, bool skip_integrators) {
     const std::string scalar = kScalars[k];
@@ -309,13 +379,13 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     cmd.push_back("-DGEOMECH_STUDENT_CHECK=1");
     if (!skip.empty()) cmd.push_back("-DGEOMECH_SKIP_SLOTS=\"" + join(skip) + "\"");
     if (skip_integrators) cmd.push_back("-DGEOMECH_SKIP_INTEGRATORS=1");
-    cmd.push_back("-I" + source.parent_path().string());
+    cmd.push_back("-I" + compiled_source.parent_path().string());
     for (const auto& inc : tc.includes) cmd.push_back("-I" + inc);
     cmd.push_back("-MMD");
     cmd.push_back("-MF");
     cmd.push_back((dir / (scalar + ".d")).string());
     cmd.push_back("-c");
-    cmd.push_back(r.source);
+    cmd.push_back(compiled_source.string());
     cmd.push_back("-o");
     cmd.push_back((dir / (scalar + ".o")).string());
     return cmd;
@@ -374,9 +444,12 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       if (!st[k].done) todo.push_back(k);
     if (todo.empty()) break;
     std::vector<ProcessSpec> specs;
+    std::vector<std::string> commands;
     for (int k : todo) {
       ProcessSpec p;
       p.argv = compile_cmd(k, st[k].skip, st[k].skip_integrators);
+      commands.push_back(shell_join(p.argv));  // the cache's key: without the sandbox's wrapping
+      p.argv = run_argv(p.argv);
       specs.push_back(p);
       const std::string label = std::string("compiling for ") + kScalars[k] +
                                 (st[k].skip.empty() ? "" : " without " + join(st[k].skip)) +
@@ -393,7 +466,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       std::ofstream(dir / (scalar + ".log"), std::ios::trunc) << shell_join(specs[i].argv) << "\n\n" << pr.output;
       if (pr.started && pr.exit_code == 0) {
         st[k].done = st[k].ok = true;
-        std::ofstream(dir / (scalar + ".cmd"), std::ios::trunc) << shell_join(specs[i].argv);
+        std::ofstream(dir / (scalar + ".cmd"), std::ios::trunc) << commands[i];
         continue;
       }
       if (!pr.started) {
@@ -465,28 +538,32 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   link.insert(link.end(), tc.link_flags.begin(), tc.link_flags.end());
   for (int k = 0; k < 3; ++k)
     if (st[k].ok) link.push_back((dir / (std::string(kScalars[k]) + ".o")).string());
-  link.push_back(tc.driver_object);
+  // The check program links the properties (whole archive: their registrations); the protocol
+  // server of untrusted mode links only the registry and the protocol from the same libraries.
+  const std::string& main_object = o.server ? tc.server_object : tc.driver_object;
+  link.push_back(main_object);
   link.push_back(tc.harness_library);
-  link.push_back("-Wl,--whole-archive");
+  if (!o.server) link.push_back("-Wl,--whole-archive");
   link.push_back(tc.property_library);
-  link.push_back("-Wl,--no-whole-archive");
+  if (!o.server) link.push_back("-Wl,--no-whole-archive");
   for (const auto& l : tc.other_libraries) link.push_back(l);
-  const fs::path program = dir / "check";
+  const fs::path program = dir / (o.server ? "server" : "check");
+  const fs::path link_file = dir / (o.server ? "link-server.cmd" : "link.cmd");
   link.push_back("-o");
   link.push_back(program.string());
   const std::string link_cmd = shell_join(link);
-  bool link_current = fs::exists(program) && read_text(dir / "link.cmd") == link_cmd && !compiled_anything;
+  bool link_current = fs::exists(program) && read_text(link_file) == link_cmd && !compiled_anything;
   if (link_current) {
     const auto t = mtime(program);
-    for (const auto& in : {tc.driver_object, tc.harness_library, tc.property_library})
+    for (const auto& in : {main_object, tc.harness_library, tc.property_library})
       if (mtime(in) > t) link_current = false;
     for (int k = 0; k < 3; ++k)
       if (st[k].ok && mtime(dir / (std::string(kScalars[k]) + ".o")) > t) link_current = false;
   }
   if (!link_current) {
     r.log.push_back(std::string("linking") + (o.verbose ? ": " + link_cmd : ""));
-    fs::remove(dir / "link.cmd", ec);
-    const ProcessResult pr = run_process(ProcessSpec{link, {}, false});
+    fs::remove(link_file, ec);
+    const ProcessResult pr = run_process(ProcessSpec{run_argv(link), {}, false});
     if (!pr.started || pr.exit_code != 0) {
       std::string hint;
       if (pr.output.find("multiple definition of `main'") != std::string::npos)
@@ -496,7 +573,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       r.message = "the program could not be linked:\n" + trim_lines(pr.output, 30) + hint;
       return r;
     }
-    std::ofstream(dir / "link.cmd", std::ios::trunc) << link_cmd;
+    std::ofstream(link_file, std::ios::trunc) << link_cmd;
   }
   r.cached = !compiled_anything && link_current;
 

@@ -29,6 +29,7 @@ struct Toolchain {
   std::vector<std::string> includes;
   std::map<std::string, std::string> opt;  // scalar -> optimisation flag
   std::string driver_object;
+  std::string server_object;  // main() of the C++ protocol server (untrusted mode); may be absent
   std::string harness_library;
   std::string property_library;
   std::vector<std::string> other_libraries;
@@ -50,6 +51,8 @@ struct BuildOptions {
   bool force = false;           // ignore the cache
   bool mp50 = true;             // compile the 50-digit instantiation (double is always compiled)
   bool exact = true;            // compile the exact-rational instantiation
+  bool server = false;          // link the protocol server (untrusted mode) instead of the check program
+  bool sandbox = false;         // compile and link inside the sandbox, from a copy of the source
 };
 
 struct BuildResult {

@@ -1,4 +1,5 @@
 #include "harness/class_mode.hpp"
+#include "harness/sandbox.hpp"
 
 #include "harness/isolate.hpp"
 #include "harness/process.hpp"
@@ -168,7 +169,10 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
   const std::string front = o.front_door.empty() ? "geomech" : o.front_door;
 
-  std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir;
+  if (o.untrusted)
+    if (const std::string why = sandbox_unavailable(); !why.empty()) throw std::runtime_error(why);
+  std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir
+            << (o.untrusted ? " (untrusted mode: each sandboxed)" : " (trusted: in-process)");
   if (o.shard_n > 1)
     std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << all_impls.size() << ")";
   std::cerr << ", " << o.jobs << " at a time\n";
@@ -177,13 +181,31 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     tasks.push_back([&, impl]() {
       json j;
       const std::string ext = fs::path(impl.source).extension().string();
-      if (ext == ".py" || ext == ".m") {
-        // Python and Octave: `geomech check FILE` runs the protocol server (docs/PROTOCOL.md).
+      if (o.untrusted && ext != ".py" && ext != ".m") {
+        // C++ in untrusted mode: the protocol server is compiled here (sandboxed), so that a file
+        // that does not compile is reported as such; `geomech check --untrusted` then finds it built.
+        BuildOptions bo = o.build;
+        bo.jobs = 1;
+        bo.name = impl.name;
+        bo.server = bo.sandbox = true;
+        const BuildResult b = build_student(impl.source, tc, bo);
+        if (!b.ok) {
+          j["built"] = false;
+          j["build_message"] = b.message;
+          j["build_seconds"] = b.seconds;
+          return j.dump(-1, ' ', false, json::error_handler_t::replace);
+        }
+      }
+      if (ext == ".py" || ext == ".m" || o.untrusted) {
+        // Python and Octave, and every language in untrusted mode: `geomech check FILE` runs the
+        // implementation as a protocol server (docs/PROTOCOL.md), sandboxed when untrusted.
         CheckCliOptions co = o.check;
         co.jobs = 1;
         co.quiet = true;
         co.report_dir = (fs::path(report_dir) / impl.name).string();
         std::vector<std::string> argv{fs::read_symlink("/proc/self/exe").string(), "check", impl.source};
+        if (o.untrusted) argv.insert(argv.end(), {"--untrusted", "--name", impl.name});
+        if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
         const auto args = to_args(co);
         argv.insert(argv.end(), args.begin(), args.end());
         const ProcessResult pr = run_process(ProcessSpec{argv, {}, false});

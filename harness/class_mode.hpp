@@ -24,6 +24,9 @@ struct ClassOptions {
   std::string front_door;          // how to call geomech in printed commands (e.g. "./geomech")
   CheckCliOptions check;           // forwarded to every implementation's check
   BuildOptions build;              // how each implementation is compiled (jobs is set to 1)
+  // Untrusted mode (the default, issue 14): every implementation is compiled and run in the
+  // sandbox as its own process behind the slot protocol (`geomech check FILE --untrusted`).
+  bool untrusted = true;
   // --shard K/N: only the K-th of N deterministic shares of the class (the implementations sorted
   // by name, every N-th from the K-th on); `merge_class` combines the shards' report folders.
   int shard_k = 1;

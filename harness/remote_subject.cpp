@@ -114,6 +114,26 @@ void Connection::ensure_started() {
   }
 }
 
+std::string Connection::how_it_ended(const std::string& otherwise) {
+  int status = 0;
+  for (int i = 0; i < 25 && child_ > 0; ++i) {  // up to half a second for it to be reaped
+    if (::waitpid(child_, &status, WNOHANG) == child_) {
+      child_ = -1;
+      if (WIFEXITED(status)) {
+        const int code = WEXITSTATUS(status);
+        std::string how = "exited with status " + std::to_string(code);
+        // A sandbox (bwrap) or a shell passes on a signal's death as 128 + the signal's number.
+        if (code > 128 && code < 128 + 65) how += " (128 + " + std::to_string(code - 128) + ": " + strsignal(code - 128) + ")";
+        return how;
+      }
+      if (WIFSIGNALED(status)) return std::string("was killed by signal ") + strsignal(WTERMSIG(status));
+      return otherwise;
+    }
+    ::usleep(20000);
+  }
+  return otherwise;
+}
+
 std::string Connection::stderr_tail() {
   std::string s;
   if (child_err_ < 0) return s;
@@ -139,18 +159,9 @@ std::string Connection::read_line() {
     const ssize_t n = ::read(from_child_, buf, sizeof buf);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
-      int status = 0;
-      std::string how = "closed its output";
-      ::usleep(20000);
-      if (child_ > 0 && ::waitpid(child_, &status, WNOHANG) == child_) {
-        child_ = -1;
-        if (WIFEXITED(status))
-          how = "exited with status " + std::to_string(WEXITSTATUS(status));
-        else if (WIFSIGNALED(status))
-          how = std::string("was killed by signal ") + strsignal(WTERMSIG(status));
-      }
+      const std::string how = how_it_ended("closed its output");
       const std::string tail = stderr_tail();
-      throw RemoteError("the implementation's process (" + (argv_.empty() ? std::string("?") : argv_[0]) + ") " + how +
+      throw RemoteError("the implementation's process (" + (argv_.empty() ? std::string("?") : argv_.back()) + ") " + how +
                         (tail.empty() ? std::string() : ":\n" + tail));
     }
     buffer_.append(buf, static_cast<std::size_t>(n));
@@ -181,8 +192,11 @@ std::vector<Reply> Connection::call_batch(const std::vector<Call>& calls) {
     const ssize_t n = ::write(to_child_, text.data() + done, text.size() - done);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) {
+      const std::string how = how_it_ended("stopped reading its input");
       const std::string tail = stderr_tail();
-      throw RemoteError("cannot send a request to the implementation (it has exited?)" +
+      throw RemoteError("cannot send a request: the implementation's process (" +
+                        (argv_.empty() ? std::string("?") : argv_.back()) + ") " + how +
+                        " (a server answers every request and ends only when its input ends)" +
                         (tail.empty() ? std::string() : ":\n" + tail));
     }
     done += static_cast<std::size_t>(n);
@@ -273,7 +287,12 @@ RemoteDescription parse_hello(const json& h) {
         x.claims.orthogonality = c.value("orthogonality", false);
         x.claims.spectrum = c.value("spectrum", false);
         x.claims.poisson = c.value("poisson", false);
-        static const std::set<std::string> known{"order", "symmetric", "casimir", "energy", "orthogonality", "spectrum", "poisson"};
+        x.claims.noether = c.value("noether", false);
+        x.claims.equivariant = c.value("equivariant", false);
+        x.claims.bounded_energy = c.value("bounded_energy", false);
+        static const std::set<std::string> known{"order",         "symmetric", "casimir", "energy",
+                                                 "orthogonality", "spectrum",  "poisson", "noether",
+                                                 "equivariant",   "bounded_energy"};
         for (const auto& [k, v] : c.items())
           if (!known.count(k)) d.warnings.push_back("integrator '" + x.name + "' claims '" + k + "', which is not a claim the harness knows (ignored)");
       }
@@ -284,6 +303,11 @@ RemoteDescription parse_hello(const json& h) {
       for (const auto& [slot, why] : slots.items()) d.notes[scalar][slot] = why.is_string() ? why.get<std::string>() : why.dump();
   if (h.contains("warnings"))
     for (const auto& w : h["warnings"]) d.warnings.push_back(w.is_string() ? w.get<std::string>() : w.dump());
+  if (h.contains("unchecked"))
+    for (const auto& w : h["unchecked"]) d.unchecked.push_back(w.is_string() ? w.get<std::string>() : w.dump());
+  if (h.contains("scalar_unavailable") && h["scalar_unavailable"].is_object())
+    for (const auto& [scalar, why] : h["scalar_unavailable"].items())
+      d.scalar_unavailable[scalar] = why.is_string() ? why.get<std::string>() : why.dump();
   return d;
 }
 
@@ -363,6 +387,8 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   for (const auto& [scalar, slots] : d.notes)
     for (const auto& [slot, why] : slots) info.slot_notes[scalar][slot] = why;
   for (const auto& w : d.warnings) info.warnings.push_back(w);
+  for (const auto& u : d.unchecked) info.unchecked.push_back(u);
+  for (const auto& [scalar, why] : d.scalar_unavailable) info.scalar_unavailable[scalar] = why;
   for (const char* scalar : {"double", "mp50", "exact"}) {
     const bool have = (std::string(scalar) == "double" ? s.d != nullptr
                        : std::string(scalar) == "mp50" ? s.mp != nullptr

@@ -83,6 +83,7 @@ class Connection {
   void ensure_started();
   std::string read_line();
   std::string stderr_tail();
+  std::string how_it_ended(const std::string& otherwise);  // "exited with status 0", ...
 
   std::vector<std::string> argv_;
   std::string language_;
@@ -111,6 +112,8 @@ struct RemoteDescription {
   std::vector<Integrator> integrators;
   std::map<std::string, std::map<std::string, std::string>> notes;  // scalar -> slot -> reason
   std::vector<std::string> warnings;
+  std::vector<std::string> unchecked;                      // written but not checkable (fails the check)
+  std::map<std::string, std::string> scalar_unavailable;  // scalar -> why nothing is provided there
 };
 
 // Throws RemoteError for a handshake that is not this protocol (wrong name or version, bad fields).

@@ -405,7 +405,7 @@ int run_end_to_end(const std::string& name, const std::string& geomech, const st
 int run_class(const std::string& class_dir, const std::string& geomech) {
   const std::string dir = temp_dir("class");
   const auto pr = gm::harness::run_process(gm::harness::ProcessSpec{
-      {geomech, "check-class", class_dir, "--report", dir + "/reports", "--parallel", "2", "--scalar", "double"},
+      {geomech, "check-class", class_dir, "--report", dir + "/reports", "--parallel", "2", "--scalar", "double", "--trusted"},
       {},
       false});
   std::cout << pr.output;
@@ -438,7 +438,7 @@ int run_class_shards(const std::string& class_dir, const std::string& geomech) {
     std::cout << pr.output;
     return pr;
   };
-  const std::vector<std::string> common{"--parallel", "2", "--scalar", "double"};
+  const std::vector<std::string> common{"--parallel", "2", "--scalar", "double", "--trusted"};
   auto with = [&](std::vector<std::string> a) {
     a.insert(a.end(), common.begin(), common.end());
     return a;

@@ -20,7 +20,9 @@
 #include "harness/protocol_codec.hpp"
 #include "harness/remote_subject.hpp"
 #include "harness/report.hpp"
+#include "harness/sandbox.hpp"
 #include "harness/slot_names.hpp"
+#include "harness/student_registry.hpp"
 #include "harness/trajectory.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/runner.hpp"
@@ -35,6 +37,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <thread>
 #include <iomanip>
 #include <iostream>
@@ -112,28 +115,33 @@ bool is_remote_file(const std::string& file) {
   return !protocol::server_command(file, &language, &why).empty();
 }
 
-int run_remote_check(const std::string& file, harness::CheckCliOptions o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  std::string language, why;
-  const auto cmd = protocol::server_command(file, &language, &why);
-  std::error_code ec;
-  if (!std::filesystem::exists(file, ec)) {
-    std::cerr << "geomech check: " << file << ": no such file\n";
-    return 2;
-  }
+// The check of an implementation that runs as its own process (`cmd`, speaking the protocol).
+// `build_notes` is what compiling it found (C++ in untrusted mode), `how` the reproduce command's options.
+int run_protocol_check(const std::string& file, const std::vector<std::string>& cmd, const std::string& language,
+                       harness::CheckCliOptions o, const nlohmann::json& build_notes, const std::string& how,
+                       std::chrono::steady_clock::time_point t0, const std::string& name_in = "") {
   auto conn = std::make_shared<protocol::Connection>(cmd, language);
   harness::SubjectInfo info;
   info.source = file;
-  info.reproduce_prefix = front_door() + " check " + harness::shell_quote(file);
-  const std::string name = std::filesystem::path(file).lexically_normal().stem().string().empty()
+  info.reproduce_prefix = front_door() + " check " + harness::shell_quote(file) + how;
+  const std::string name = !name_in.empty() ? name_in
+                           : std::filesystem::path(file).lexically_normal().stem().string().empty()
                                ? std::filesystem::path(file).lexically_normal().parent_path().filename().string()
                                : std::filesystem::path(file).lexically_normal().stem().string();
+  student::apply_build_notes(info, build_notes);  // what the compiler found
   SubjectSet s;
   try {
     s = protocol::remote_subject(conn, name, info);
   } catch (const std::exception& e) {
     std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
     return 2;
+  }
+  if (language == "c++") {  // functions named like a slot but not one (issue 13)
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    for (const auto& advice : harness::slot_name_advice(harness::cpp_function_names(text.str())))
+      info.warnings.push_back(advice);
   }
   std::cerr << "geomech: " << language << " implementation " << file << " started and described itself in " << std::fixed
             << std::setprecision(2) << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
@@ -145,6 +153,71 @@ int run_remote_check(const std::string& file, harness::CheckCliOptions o) {
   std::cerr << "geomech: checked " << name << " in " << std::fixed << std::setprecision(1)
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
   return status;
+}
+
+int run_remote_check(const std::string& file, harness::CheckCliOptions o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string language, why;
+  const auto cmd = protocol::server_command(file, &language, &why);
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) {
+    std::cerr << "geomech check: " << file << ": no such file\n";
+    return 2;
+  }
+  return run_protocol_check(file, cmd, language, o, nlohmann::json(), "", t0);
+}
+
+// Untrusted mode (issue 14): the implementation runs as its own process in the sandbox, behind the
+// protocol; a C++ file is compiled (sandboxed too) into a protocol server that links the student's
+// code and nothing of the judge. Verdicts are computed here alone.
+int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, harness::BuildOptions bo) {
+  const auto t0 = std::chrono::steady_clock::now();
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(file, ec)) {
+    std::cerr << "geomech check: " << file << ": no such file\n";
+    return 2;
+  }
+  if (const std::string why = harness::sandbox_unavailable(); !why.empty()) {
+    std::cerr << "geomech check: " << why << "\n";
+    return 2;
+  }
+  harness::SandboxSpec spec;
+  spec.env = {{"GEOMECH_SLOT_TABLE", protocol::slot_table_json()}};
+  std::string language, why;
+  std::vector<std::string> cmd = protocol::server_command(file, &language, &why);
+  nlohmann::json notes;
+  if (!cmd.empty()) {
+    // Python or Octave: the interpreter and its libraries are in /usr; the server script and the
+    // student's file are shown read-only, nothing else.
+    for (std::size_t i = 1; i < cmd.size(); ++i)
+      if (fs::exists(cmd[i], ec)) {
+        cmd[i] = fs::canonical(cmd[i], ec).string();
+        spec.read_only.push_back(cmd[i]);
+      }
+  } else if (fs::path(file).extension() == ".cpp" || fs::path(file).extension() == ".cc") {
+    const harness::Toolchain tc = harness::load_toolchain(harness::default_toolchain_path());
+    bo.server = true;
+    bo.sandbox = true;
+    const harness::BuildResult b = harness::build_student(file, tc, bo);
+    for (const auto& line : b.log) std::cerr << "geomech: " << line << " (sandboxed)\n";
+    if (!b.ok) {
+      std::cerr << "geomech check: " << file << ": " << b.message << "\n";
+      return 2;
+    }
+    std::cerr << "geomech: built " << b.name << "'s protocol server" << (b.cached ? " (up to date)" : "") << " in "
+              << std::fixed << std::setprecision(1) << b.seconds << " s\n";
+    notes = b.notes;
+    language = "c++";
+    cmd = {b.program};
+    spec.read_only.push_back(b.program);
+    for (const auto& f : tc.flags)
+      if (f.find("-fsanitize=") == 0 && f.find("address") != std::string::npos) spec.limits.memory_mb = 0;
+  } else {
+    std::cerr << "geomech check: " << file << ": untrusted mode checks .cpp, .py and .m files\n";
+    return 2;
+  }
+  return run_protocol_check(file, harness::sandboxed(cmd, spec), language, o, notes, " --untrusted", t0, bo.name);
 }
 
 // `geomech bench-protocol mine.py`: the round-trip cost of one slot call, one at a time and batched.
@@ -361,6 +434,11 @@ int main(int argc, char** argv) {
   check->add_flag("--verbose", bo.verbose, "print the compiler commands");
   check->add_flag("--rebuild", bo.force, "compile again even if nothing changed");
   check->add_option("--cache-dir", bo.cache_dir, "where compiled implementations are kept (default: in the build tree)");
+  check->add_option("--name", bo.name, "the implementation's name in the report (default: the file's name)");
+  bool untrusted = false;
+  check->add_flag("--untrusted", untrusted,
+                  "run the implementation as its own sandboxed process behind the slot protocol (docs/UNTRUSTED.md): "
+                  "it cannot touch the verdicts, the machine or other files");
   gm::harness::add_check_options(*check, co);
 
   gm::harness::ClassOptions class_opts;
@@ -371,6 +449,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 256));
   klass->add_option("--timeout-per-implementation", class_opts.timeout_per_implementation,
                     "seconds allowed to build and check one implementation (default 1800)");
+  klass->add_option("--cache-dir", class_opts.build.cache_dir, "where compiled implementations are kept (default: in the build tree)");
+  bool trusted = false;
+  klass->add_flag("--trusted", trusted,
+                  "check the implementations in-process, without the sandbox (faster; only for code you trust: "
+                  "a submission can then forge its verdicts)");
   gm::harness::add_check_options(*klass, class_opts.check);
   std::string shard;
   klass->add_option("--shard", shard, "K/N: check only the K-th of N deterministic shares of the folder (CI matrix, Slurm array)");
@@ -471,9 +554,10 @@ int main(int argc, char** argv) {
     if (*check) {
       if (!student_file.empty()) {
         if (check->count("--subject")) throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
-        if (gm::is_remote_file(student_file)) return gm::run_remote_check(student_file, co);
         bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
         bo.exact = co.scalar == "all" || co.scalar == "exact";
+        if (untrusted) return gm::run_untrusted_check(student_file, co, bo);
+        if (gm::is_remote_file(student_file)) return gm::run_remote_check(student_file, co);
         return gm::run_student_check(student_file, co, bo);
       }
       return gm::run_builtin_check(subject, co);
@@ -497,6 +581,7 @@ int main(int argc, char** argv) {
       class_opts.front_door = gm::front_door();
       class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
       class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
+      class_opts.untrusted = !trusted;
       return gm::harness::run_class(class_opts, gm::harness::load_toolchain(gm::harness::default_toolchain_path()));
     }
     if (*traj) {

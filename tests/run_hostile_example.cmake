@@ -1,0 +1,56 @@
+# ctest: one hostile submission (examples/hostile) checked in untrusted mode (issue 14).
+#   cmake -DGEOMECH=<geomech> -DFILE=<file> -DSTATUS=<exit status> -DREGEX=<regex the report must match> [-DREGEX2=<another>]
+#         -DSOURCE=<suite source dir> -DOUT=<scratch dir> [-DARGS=<check options, ;-separated>] -P run_hostile_example.cmake
+# Asserts the verdict (exit status, a line of the report) and that nothing outside the sandbox
+# changed: no file appeared in the suite's golden/ or in the victim folder the submission aims at,
+# and (when run as root, where submissions run as nobody) no process of the sandbox's user is left.
+set(victim /tmp/geomech-hostile-victim)
+file(REMOVE_RECURSE ${victim} ${OUT})
+file(MAKE_DIRECTORY ${victim})
+# Writable by anyone: if the sandbox let the submission out, its write would land here.
+file(CHMOD ${victim} DIRECTORY_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_WRITE
+     GROUP_EXECUTE WORLD_READ WORLD_WRITE WORLD_EXECUTE)
+file(GLOB_RECURSE golden_before LIST_DIRECTORIES true ${SOURCE}/golden/*)
+execute_process(COMMAND ${GEOMECH} check ${FILE} --untrusted --report ${OUT} --cache-dir ${OUT}-cache ${ARGS}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(all "${out}${err}")
+if(EXISTS ${OUT}/report.md)
+  file(READ ${OUT}/report.md report)
+  string(APPEND all "${report}")
+endif()
+if(NOT rc STREQUAL "${STATUS}")
+  message(FATAL_ERROR "expected exit status ${STATUS}, got ${rc}:\n${all}")
+endif()
+foreach(r "${REGEX}" "${REGEX2}")
+  if(NOT r STREQUAL "" AND NOT all MATCHES "${r}")
+    message(FATAL_ERROR "the report does not match '${r}':\n${all}")
+  endif()
+endforeach()
+file(GLOB_RECURSE golden_after LIST_DIRECTORIES true ${SOURCE}/golden/*)
+if(NOT golden_before STREQUAL golden_after)
+  message(FATAL_ERROR "the suite's golden/ changed during the check")
+endif()
+file(GLOB victim_files ${victim}/*)
+if(victim_files)
+  message(FATAL_ERROR "the submission wrote outside its sandbox: ${victim_files}")
+endif()
+if(EXISTS ${OUT}/../pwned OR EXISTS ${SOURCE}/pwned)
+  message(FATAL_ERROR "the submission wrote a file beside its report or in the source tree")
+endif()
+execute_process(COMMAND id -u OUTPUT_VARIABLE uid OUTPUT_STRIP_TRAILING_WHITESPACE)
+if(uid STREQUAL "0")
+  # The sandbox's PID namespace is torn down by the kernel after its first process is killed:
+  # allow it 15 s.
+  foreach(i RANGE 15)
+    execute_process(COMMAND ps -u 65534 -o pid=,args= OUTPUT_VARIABLE left OUTPUT_STRIP_TRAILING_WHITESPACE)
+    if(left STREQUAL "")
+      break()
+    endif()
+    execute_process(COMMAND sleep 1)
+  endforeach()
+  if(NOT left STREQUAL "")
+    message(FATAL_ERROR "processes of the sandbox's user outlived the check:\n${left}")
+  endif()
+endif()
+file(REMOVE_RECURSE ${victim})
+message(STATUS "exit ${rc}; report matches '${REGEX}'; nothing outside the sandbox changed")

@@ -1,0 +1,27 @@
+# ctest: `geomech check-class` checks in untrusted mode by default (issue 14).
+#   cmake -DGEOMECH=<geomech> -DSOURCE=<suite source dir> -DOUT=<scratch dir> -P run_untrusted_class.cmake
+# A class of three: alice (correct), mallory (a wrong hat that forges a PASS verdict and exits)
+# and carol (does not compile). The summary must show alice passing, mallory failing and carol not
+# compiling, and the run must say it is sandboxed.
+file(REMOVE_RECURSE ${OUT})
+file(MAKE_DIRECTORY ${OUT}/class)
+configure_file(${SOURCE}/examples/students/correct.cpp ${OUT}/class/alice.cpp COPYONLY)
+configure_file(${SOURCE}/examples/students/correct.hpp ${OUT}/class/correct.hpp COPYONLY)
+configure_file(${SOURCE}/examples/hostile/forged_verdict.cpp ${OUT}/class/mallory.cpp COPYONLY)
+file(WRITE ${OUT}/class/carol.cpp "#include <geomech/student.hpp>\nstruct Carol { int hat( };\n")
+execute_process(COMMAND ${GEOMECH} check-class ${OUT}/class --report ${OUT}/reports --cache-dir ${OUT}/cache
+                        --parallel 2 --scalar double --property hat_is_cross_product
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 1)
+  message(FATAL_ERROR "expected exit status 1, got ${rc}:\n${out}${err}")
+endif()
+if(NOT err MATCHES "untrusted mode: each sandboxed")
+  message(FATAL_ERROR "check-class did not say it runs in untrusted mode:\n${err}")
+endif()
+file(READ ${OUT}/reports/summary.md summary)
+foreach(row "| alice | PASS |" "| mallory | \\*\\*FAIL\\*\\* |" "| carol | \\*\\*DOES NOT COMPILE\\*\\* |")
+  if(NOT summary MATCHES "${row}")
+    message(FATAL_ERROR "the summary has no row '${row}':\n${summary}")
+  endif()
+endforeach()
+message(STATUS "check-class, untrusted by default:\n${summary}")
