@@ -1,20 +1,18 @@
 // Hostile (issue 14): code that reaches outside its sandbox. On every call of hat it tries to
 // write into the suite's source tree (golden/, found from where it was compiled), into
-// /tmp/geomech-hostile-victim (created by the test), into its working directory's parent, to read
-// /etc/shadow and to open a network connection. Each attempt that is refused is collected, and
-// hat then throws with the list: a submission that needs what the sandbox withholds fails that
+// /tmp/geomech-hostile-victim (created by the test) and into its working directory's parent; it
+// reads /etc/shadow and looks for a network interface (sending nothing). Each attempt that is
+// refused is collected, and hat then throws with the list: a submission that needs what the sandbox withholds fails that
 // check, and nothing outside the sandbox changes (the test looks).
 #include <geomech/student.hpp>
 
-#include <arpa/inet.h>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <netinet/in.h>
+#include <net/if.h>
 #include <stdexcept>
 #include <string>
-#include <sys/socket.h>
 #include <unistd.h>
 
 using namespace gm;
@@ -40,14 +38,15 @@ std::string attack() {
   try_write("../pwned");
   std::ifstream shadow("/etc/shadow");
   if (!shadow.good()) blocked += " read /etc/shadow;";
-  const int s = ::socket(AF_INET, SOCK_STREAM, 0);
-  sockaddr_in a{};
-  a.sin_family = AF_INET;
-  a.sin_port = htons(53);
-  ::inet_pton(AF_INET, "1.1.1.1", &a.sin_addr);
-  if (s < 0 || ::connect(s, reinterpret_cast<sockaddr*>(&a), sizeof a) != 0)
-    blocked += std::string(" connect to 1.1.1.1:53 (") + std::strerror(errno) + ");";
-  if (s >= 0) ::close(s);
+  // The network, without sending anything anywhere: the interfaces it can see. Any machine has one
+  // besides loopback; a sandbox's own network namespace has only its private loopback.
+  std::string interfaces;
+  if (struct if_nameindex* ifs = ::if_nameindex()) {
+    for (auto* i = ifs; i->if_index != 0; ++i)
+      if (std::string(i->if_name) != "lo") interfaces += std::string(" ") + i->if_name;
+    ::if_freenameindex(ifs);
+  }
+  if (interfaces.empty()) blocked += " network (no interface but a private loopback);";
   return blocked;
 }
 }  // namespace
