@@ -33,9 +33,16 @@ std::string eps_text(double units) {
   return buf;
 }
 
+// The first line that says something: RapidCheck puts "Exception thrown with message:" on a line of
+// its own before the exception's text, which is what a student needs to see first.
 std::string first_line(const std::string& s) {
-  const auto n = s.find('\n');
-  return n == std::string::npos ? s : s.substr(0, n);
+  std::size_t at = 0;
+  for (;;) {
+    const auto n = s.find('\n', at);
+    const std::string line = n == std::string::npos ? s.substr(at) : s.substr(at, n - at);
+    if (n == std::string::npos || (line != "Exception thrown with message:" && !line.empty())) return line;
+    at = n + 1;
+  }
 }
 
 std::string file_safe(const std::string& s) {
