@@ -176,6 +176,17 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   if (o.shard_n > 1)
     std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << all_impls.size() << ")";
   std::cerr << ", " << o.jobs << " at a time\n";
+  // How one implementation's check ended, into its row's JSON: status 0 or 1 is a verdict, anything
+  // else (a crash, a refusal, a bad option) is a problem shown in the summary.
+  auto record_check = [](json& j, const ProcessResult& pr, const std::string& what) {
+    j["exit_code"] = pr.exit_code;
+    j["check_seconds"] = pr.seconds;
+    if (pr.exit_code != 0 && pr.exit_code != 1)
+      j["problem"] = what + " ended with " +
+                     (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
+                     pr.output.substr(0, 2000);
+    return j.dump(-1, ' ', false, json::error_handler_t::replace);
+  };
   std::vector<std::function<std::string()>> tasks;
   for (const auto& impl : impls) {
     tasks.push_back([&, impl]() {
@@ -195,6 +206,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
           j["build_seconds"] = b.seconds;
           return j.dump(-1, ' ', false, json::error_handler_t::replace);
         }
+        j["build_seconds"] = b.seconds;
       }
       if (ext == ".py" || ext == ".m" || o.untrusted) {
         // Python and Octave, and every language in untrusted mode: `geomech check FILE` runs the
@@ -208,16 +220,9 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
         if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
         const auto args = to_args(co);
         argv.insert(argv.end(), args.begin(), args.end());
-        const ProcessResult pr = run_process(ProcessSpec{argv, {}, false});
         j["built"] = true;
-        j["build_seconds"] = 0.0;
-        j["exit_code"] = pr.exit_code;
-        j["check_seconds"] = pr.seconds;
-        if (pr.exit_code != 0 && pr.exit_code != 1)
-          j["problem"] = "the check ended with " +
-                         (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
-                         pr.output.substr(0, 2000);
-        return j.dump(-1, ' ', false, json::error_handler_t::replace);
+        if (!j.contains("build_seconds")) j["build_seconds"] = 0.0;  // the sandboxed build above, if any
+        return record_check(j, run_process(ProcessSpec{argv, {}, false}), "the check");
       }
       BuildOptions bo = o.build;
       bo.jobs = 1;
@@ -236,14 +241,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
       argv.insert(argv.end(), args.begin(), args.end());
       argv.insert(argv.end(), {"--name", impl.name, "--source", impl.source, "--build-notes", b.notes_file,
                                "--reproduce-prefix", front + " check " + shell_quote(impl.source)});
-      const ProcessResult pr = run_process(ProcessSpec{argv, {}, false});
-      j["exit_code"] = pr.exit_code;
-      j["check_seconds"] = pr.seconds;
-      if (pr.exit_code != 0 && pr.exit_code != 1)
-        j["problem"] = "the check program ended with " +
-                       (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
-                       pr.output.substr(0, 2000);
-      return j.dump(-1, ' ', false, json::error_handler_t::replace);
+      return record_check(j, run_process(ProcessSpec{argv, {}, false}), "the check program");
     });
   }
   IsolationOptions io;
