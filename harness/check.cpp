@@ -135,6 +135,23 @@ Verdict abnormal_verdict(const SubjectSet& s, const Item& item, const TaskResult
   return v;
 }
 
+// The verdicts a child returns must be those of the check it ran. Anything else was written on the
+// result channel by someone other than the property: in-process, the code under test shares the
+// child with its judge and can write there (issue 14). This catches a forgery that does not know
+// which check it interrupts; one that does can only be stopped by untrusted mode.
+void check_verdicts_belong_to(const std::vector<Verdict>& vs, const Item& item) {
+  if (vs.empty()) throw std::runtime_error("no verdict in the check's result");
+  for (const auto& v : vs)
+    if (v.property != item.property->id || v.scalar != scalar_name(item.kind) ||
+        (!item.integrator.empty() && v.integrator != item.integrator))
+      throw std::runtime_error("the result names the check " + v.property + " in " + v.scalar +
+                               (v.integrator.empty() ? "" : " of " + v.integrator) + ", but the harness ran " +
+                               item.property->id + " in " + std::string(scalar_name(item.kind)) +
+                               (item.integrator.empty() ? "" : " of " + item.integrator) +
+                               ": something other than the property wrote on the result channel, such as code "
+                               "under test forging its own verdict; check it with --untrusted");
+}
+
 // NOT PROVIDED verdicts say why in terms a student can act on.
 void explain_not_provided(Verdict& v, const Property& p, const SubjectSet& s, const SubjectInfo& info) {
   if (v.outcome != Outcome::NotProvided) return;
@@ -369,6 +386,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     if (t.status == TaskResult::Status::Ok) {
       try {
         vs = verdicts_from_string(t.payload);
+        check_verdicts_belong_to(vs, item);
       } catch (const std::exception& e) {
         TaskResult bad = t;
         bad.status = TaskResult::Status::Ok;

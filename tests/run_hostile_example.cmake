@@ -1,9 +1,49 @@
 # ctest: one hostile submission (examples/hostile) checked in untrusted mode (issue 14).
 #   cmake -DGEOMECH=<geomech> -DFILE=<file> -DSTATUS=<exit status> -DREGEX=<regex the report must match> [-DREGEX2=<another>]
-#         -DSOURCE=<suite source dir> -DOUT=<scratch dir> [-DARGS=<check options, ;-separated>] -P run_hostile_example.cmake
+#         -DSOURCE=<suite source dir> -DOUT=<scratch dir> [-DARGS=<check options, ;-separated>]
+#         [-DCONTROL=ON -DEXPECT_FILES=<;-separated paths>] -P run_hostile_example.cmake
+#   (with CONTROL, an empty STATUS means any exit status)
 # Asserts the verdict (exit status, a line of the report) and that nothing outside the sandbox
 # changed: no file appeared in the suite's golden/ or in the victim folder the submission aims at,
 # and (when run as root, where submissions run as nobody) no process of the sandbox's user is left.
+#
+# CONTROL=ON is the negative control of that test: the same submission checked in-process, where
+# nothing stands between it and the machine. Its copy is compiled from a scratch folder outside
+# the source tree (/tmp/geomech-hostile-control, with a golden/ of its own and a work/ folder it
+# runs in), so that an escape lands there and not in the suite. The control asserts that the attack
+# worked: the report matches REGEX (a forged verdict was believed) and every EXPECT_FILES exists
+# (an escape wrote it). If the control ever stops showing the attack, the untrusted test proves nothing.
+if(CONTROL)
+  set(scratch /tmp/geomech-hostile-control)
+  set(victim /tmp/geomech-hostile-victim)
+  file(REMOVE_RECURSE ${scratch} ${victim} ${OUT})
+  file(MAKE_DIRECTORY ${scratch}/src ${scratch}/golden ${scratch}/work ${victim})
+  get_filename_component(name ${FILE} NAME)
+  configure_file(${FILE} ${scratch}/src/${name} COPYONLY)
+  execute_process(COMMAND ${GEOMECH} check ${scratch}/src/${name} --report ${OUT} --cache-dir ${OUT}-cache ${ARGS}
+                  WORKING_DIRECTORY ${scratch}/work
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(all "${out}${err}")
+  if(EXISTS ${OUT}/report.md)
+    file(READ ${OUT}/report.md report)
+    string(APPEND all "${report}")
+  endif()
+  if(NOT STATUS STREQUAL "" AND NOT rc STREQUAL "${STATUS}")
+    message(FATAL_ERROR "control: expected exit status ${STATUS} in-process, got ${rc}:\n${all}")
+  endif()
+  if(NOT all MATCHES "${REGEX}")
+    message(FATAL_ERROR "control: in-process the attack did not show ('${REGEX}' not in the report):\n${all}")
+  endif()
+  foreach(f ${EXPECT_FILES})
+    if(NOT EXISTS ${f})
+      message(FATAL_ERROR "control: in-process the submission did not write ${f}:\n${all}")
+    endif()
+  endforeach()
+  file(REMOVE_RECURSE ${scratch} ${victim})
+  message(STATUS "control, in-process: exit ${rc}; the report matches '${REGEX}'; files written outside: ${EXPECT_FILES}")
+  return()
+endif()
+
 set(victim /tmp/geomech-hostile-victim)
 file(REMOVE_RECURSE ${victim} ${OUT})
 file(MAKE_DIRECTORY ${victim})
