@@ -329,7 +329,9 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   }
   r.source = source.string();
   r.name = o.name.empty() ? source.stem().string() : o.name;
-  const fs::path dir = fs::path(o.cache_dir.empty() ? tc.cache_dir : o.cache_dir) /
+  // Absolute: the sandbox binds the folder and runs the compiler in it from its own root, where a
+  // path relative to our working folder would name nothing.
+  const fs::path dir = fs::absolute(o.cache_dir.empty() ? tc.cache_dir : o.cache_dir) /
                        (r.name + "-" + hex(fnv1a(r.source)) + (o.sandbox ? "-sandboxed" : ""));
   fs::create_directories(dir, ec);
   if (ec) {

@@ -9,8 +9,10 @@ configure_file(${SOURCE}/examples/students/correct.cpp ${OUT}/class/alice.cpp CO
 configure_file(${SOURCE}/examples/students/correct.hpp ${OUT}/class/correct.hpp COPYONLY)
 configure_file(${SOURCE}/examples/hostile/forged_verdict.cpp ${OUT}/class/mallory.cpp COPYONLY)
 file(WRITE ${OUT}/class/carol.cpp "#include <geomech/student.hpp>\nstruct Carol { int hat( };\n")
-execute_process(COMMAND ${GEOMECH} check-class ${OUT}/class --report ${OUT}/reports --cache-dir ${OUT}/cache
+# Run from OUT with relative folders, as a lecturer would type them.
+execute_process(COMMAND ${GEOMECH} check-class class --report reports --cache-dir cache
                         --parallel 2 --scalar double --property hat_is_cross_product
+                WORKING_DIRECTORY ${OUT}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 1)
   message(FATAL_ERROR "expected exit status 1, got ${rc}:\n${out}${err}")
