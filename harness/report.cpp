@@ -567,6 +567,21 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     if (!r.unexercised.empty()) md << "\n";
   }
 
+  // Issue 18: a discarded case is not a check. Every verdict that discarded some says how many.
+  std::vector<const Verdict*> discarding;
+  for (const auto& v : r.verdicts)
+    if (v.discarded > 0) discarding.push_back(&v);
+  if (!discarding.empty()) {
+    md << "## Discarded cases\n\n"
+       << "A discarded case checked nothing: its draw could not test the statement (for instance a perturbed "
+          "curve that happens to be stationary). The counts of passing cases above leave them out.\n\n"
+       << "| check | scalar | cases passed | discarded | first reason |\n|---|---|---|---|---|\n";
+    for (const Verdict* v : discarding)
+      md << "| `" << row_name(*v) << "` | " << v->scalar << " | " << v->cases << " | " << v->discarded << " | "
+         << md_cell(v->discard_reason) << " |\n";
+    md << "\n";
+  }
+
   if (!problems.empty()) {
     md << "## Details\n\n";
     for (const Verdict* v : problems) {

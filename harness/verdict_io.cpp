@@ -45,6 +45,8 @@ json to_json(const Verdict& v) {
   j["reproduce"] = v.reproduce;
   j["seed"] = v.seed;
   j["cases"] = v.cases;
+  j["discarded"] = v.discarded;
+  j["discard_reason"] = v.discard_reason;
   j["worst_eps_units"] = number_to_json(v.worst_eps_units);
   j["worst_absolute"] = number_to_json(v.worst_absolute);
   j["worst_check"] = v.worst_check;
@@ -86,6 +88,8 @@ Verdict verdict_from_json(const json& j) {
   v.reproduce = j.at("reproduce").get<std::string>();
   v.seed = j.at("seed").get<std::uint64_t>();
   v.cases = j.at("cases").get<int>();
+  v.discarded = j.value("discarded", 0);  // absent from reports written before it was counted
+  v.discard_reason = j.value("discard_reason", std::string());
   v.worst_eps_units = number_from_json(j.at("worst_eps_units"));
   v.worst_absolute = number_from_json(j.at("worst_absolute"));
   v.worst_check = j.at("worst_check").get<std::string>();

@@ -48,9 +48,21 @@ std::uint64_t derive_seed(std::uint64_t base, const std::string& property_key) {
 
 namespace {
 
+// Prints nothing; counts the discarded cases (issue 18: a discarded case is not a check, and the
+// verdict says how many there were).
 class SilentListener : public rc::detail::TestListener {
  public:
-  void onTestCaseFinished(const rc::detail::CaseDescription&) override {}
+  int discarded = 0;
+  std::string first_reason;
+  void onTestCaseFinished(const rc::detail::CaseDescription& d) override {
+    if (d.result.type != rc::detail::CaseResult::Type::Discard) return;
+    if (discarded++ > 0) return;
+    // RapidCheck writes "file:line:\nRC_DISCARD(...)\n\nreason": keep the reason, its last line.
+    const std::string& text = d.result.description;
+    const auto end = text.find_last_not_of("\n");
+    const auto start = end == std::string::npos ? std::string::npos : text.rfind('\n', end);
+    first_reason = end == std::string::npos ? text : text.substr(start == std::string::npos ? 0 : start + 1, end + 1 - (start == std::string::npos ? 0 : start + 1));
+  }
   void onShrinkTried(const rc::detail::CaseDescription&, bool) override {}
   void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
 };
@@ -189,6 +201,8 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   v.worst_absolute = log.worst_absolute;
   v.worst_check = log.worst_check;
   v.checks = log.checks;
+  v.discarded = listener.discarded;
+  v.discard_reason = listener.first_reason;
 
   rc::detail::SuccessResult success;
   rc::detail::FailureResult failure;
@@ -334,6 +348,7 @@ std::string format_verdict(const Verdict& v) {
      << (v.integrator.empty() ? "" : ", " + v.integrator) << "]  spec " << v.spec;
   if (v.outcome == Outcome::Pass) {
     os << "  (" << v.cases << " cases";
+    if (v.discarded > 0) os << ", " << v.discarded << " discarded";
     if (v.scalar != "exact" && v.checks > 0) os << ", worst residual " << eps_buf << " eps";
     os << ")";
     for (const auto& n : v.notes) os << "\n  note: " << n;

@@ -38,6 +38,8 @@ struct Verdict {
   std::string reproduce;      // value for RC_PARAMS="reproduce=..."
   std::uint64_t seed = 0;
   int cases = 0;              // cases that passed before the verdict
+  int discarded = 0;          // cases RapidCheck discarded (RC_DISCARD, RC_PRE): they checked nothing
+  std::string discard_reason; // the first discarded case's reason
   double worst_eps_units = 0; // worst residual / (eps * scale)
   double worst_absolute = 0;
   std::string worst_check;

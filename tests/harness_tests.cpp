@@ -346,6 +346,29 @@ TEST(Reports, VerdictsSurviveJsonWithNonFiniteNumbersAndBadBytes) {
   EXPECT_FALSE(back[0].claims[0].holds);
 }
 
+// Issue 18: the count of discarded cases crosses the JSON, and a verdict written before it was
+// counted (no "discarded" field) still reads, as 0.
+TEST(Reports, DiscardedCasesSurviveJson) {
+  Verdict v;
+  v.property = "p";
+  v.outcome = Outcome::Pass;
+  v.discarded = 7;
+  v.discard_reason = "a degenerate draw";
+  const auto back = verdicts_from_string(verdicts_to_string({v}));
+  ASSERT_EQ(back.size(), 1u);
+  EXPECT_EQ(back[0].discarded, 7);
+  EXPECT_EQ(back[0].discard_reason, "a degenerate draw");
+  auto j = nlohmann::json::parse(verdicts_to_string({v}));
+  j[0].erase("discarded");
+  j[0].erase("discard_reason");
+  const auto old = verdicts_from_string(j.dump());
+  EXPECT_EQ(old[0].discarded, 0);
+  CheckResult r;
+  r.verdicts = {v};
+  const std::string md = markdown_report(r, nullptr);
+  EXPECT_NE(md.find("| 7 | a degenerate draw |"), std::string::npos) << md;
+}
+
 TEST(Reports, SvgLeavesOutWhatCannotBeDrawnAndSaysSo) {
   Series s;
   s.figure = "f";

@@ -1,0 +1,58 @@
+// The property runner's own bookkeeping (properties/runner.cpp). Issue 18: a discarded case is not
+// a check, so a verdict counts its discarded cases and keeps the first reason (the verdict's JSON
+// carries them: tests/harness_tests.cpp).
+#include "impl/reference_subject.hpp"
+#include "properties/registry.hpp"
+#include "properties/runner.hpp"
+#include "properties/support/tolerance.hpp"
+
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+namespace gm {
+namespace {
+
+// A property that discards about half of its draws and checks 1 = 1 on the others.
+Property half_discarding() {
+  Property p{PropertyDef{.id = "half_discarding",
+                         .spec = "s2.hat-map",
+                         .title = "a test property that discards every other case",
+                         .tolerance = ToleranceClass::Exact,
+                         .needs = {},
+                         .negative_controls = {},
+                         .cases = {.d = 40, .mp = 0, .q = 0}}};
+  p.d = [](const Subject<double>&) {
+    static int calls = 0;  // every other case (a size-independent rule: RapidCheck's first draws are small)
+    if (calls++ % 2 == 0) RC_DISCARD("the draw was 0");
+    require_close("1 = 1", 1.0, 1.0, 1.0, 1);
+  };
+  return p;
+}
+
+TEST(Runner, DiscardedCasesAreCountedInTheVerdict) {
+  RunOptions o;
+  o.honour_rc_params = false;
+  const auto vs = run_property(half_discarding(), reference_subject(), ScalarKind::Double, o);
+  ASSERT_EQ(vs.size(), 1u);
+  const Verdict& v = vs[0];
+  EXPECT_EQ(v.outcome, Outcome::Pass) << format_verdict(v);
+  EXPECT_EQ(v.cases, 40);
+  EXPECT_GT(v.discarded, 0) << "half of the draws are discarded";
+  EXPECT_EQ(v.discard_reason, "the draw was 0");
+  EXPECT_NE(format_verdict(v).find(std::to_string(v.discarded) + " discarded"), std::string::npos) << format_verdict(v);
+}
+
+// The negative control: a property that discards nothing reports 0.
+TEST(Runner, APropertyThatDiscardsNothingReportsNone) {
+  Property p = half_discarding();
+  p.d = [](const Subject<double>&) { require_close("1 = 1", 1.0, 1.0, 1.0, 1); };
+  RunOptions o;
+  o.honour_rc_params = false;
+  const auto vs = run_property(p, reference_subject(), ScalarKind::Double, o);
+  ASSERT_EQ(vs.size(), 1u);
+  EXPECT_EQ(vs[0].discarded, 0);
+  EXPECT_EQ(format_verdict(vs[0]).find("discarded"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace gm
