@@ -13,6 +13,20 @@
 # runs in), so that an escape lands there and not in the suite. The control asserts that the attack
 # worked: the report matches REGEX (a forged verdict was believed) and every EXPECT_FILES exists
 # (an escape wrote it). If the control ever stops showing the attack, the untrusted test proves nothing.
+# Runs `geomech check` on `file` in the folder `dir` with the given options, then the test's ARGS;
+# sets rc (its exit status) and all (its output and report.md) in the caller.
+function(gm_check file dir)
+  execute_process(COMMAND ${GEOMECH} check ${file} ${ARGN} --report ${OUT} --cache-dir ${OUT}-cache ${ARGS}
+                  WORKING_DIRECTORY ${dir} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(text "${out}${err}")
+  if(EXISTS ${OUT}/report.md)
+    file(READ ${OUT}/report.md report)
+    string(APPEND text "${report}")
+  endif()
+  set(rc "${code}" PARENT_SCOPE)
+  set(all "${text}" PARENT_SCOPE)
+endfunction()
+
 if(CONTROL)
   set(scratch /tmp/geomech-hostile-control)
   set(victim /tmp/geomech-hostile-victim)
@@ -20,14 +34,7 @@ if(CONTROL)
   file(MAKE_DIRECTORY ${scratch}/src ${scratch}/golden ${scratch}/work ${victim})
   get_filename_component(name ${FILE} NAME)
   configure_file(${FILE} ${scratch}/src/${name} COPYONLY)
-  execute_process(COMMAND ${GEOMECH} check ${scratch}/src/${name} --report ${OUT} --cache-dir ${OUT}-cache ${ARGS}
-                  WORKING_DIRECTORY ${scratch}/work
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  set(all "${out}${err}")
-  if(EXISTS ${OUT}/report.md)
-    file(READ ${OUT}/report.md report)
-    string(APPEND all "${report}")
-  endif()
+  gm_check(${scratch}/src/${name} ${scratch}/work)
   if(NOT STATUS STREQUAL "" AND NOT rc STREQUAL "${STATUS}")
     message(FATAL_ERROR "control: expected exit status ${STATUS} in-process, got ${rc}:\n${all}")
   endif()
@@ -51,13 +58,7 @@ file(MAKE_DIRECTORY ${victim})
 file(CHMOD ${victim} DIRECTORY_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_WRITE
      GROUP_EXECUTE WORLD_READ WORLD_WRITE WORLD_EXECUTE)
 file(GLOB_RECURSE golden_before LIST_DIRECTORIES true ${SOURCE}/golden/*)
-execute_process(COMMAND ${GEOMECH} check ${FILE} --untrusted --report ${OUT} --cache-dir ${OUT}-cache ${ARGS}
-                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-set(all "${out}${err}")
-if(EXISTS ${OUT}/report.md)
-  file(READ ${OUT}/report.md report)
-  string(APPEND all "${report}")
-endif()
+gm_check(${FILE} ${CMAKE_CURRENT_BINARY_DIR} --untrusted)
 if(NOT rc STREQUAL "${STATUS}")
   message(FATAL_ERROR "expected exit status ${STATUS}, got ${rc}:\n${all}")
 endif()
