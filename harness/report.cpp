@@ -346,6 +346,14 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
        << (r.narrowed ? " with this selection" : "") << "; a check that ran nothing is not a pass (exit status 1)\n";
   for (const auto& u : r.unchecked) os << "UNCHECKED: " << u << "\n";
   if (!r.unchecked.empty()) os << "(what could not be checked fails the check: exit status 1)\n";
+  {  // issue 18: a discarded case checked nothing; say how many there were
+    int checks = 0, cases = 0;
+    for (const auto& v : r.verdicts)
+      if (v.discarded > 0) ++checks, cases += v.discarded;
+    if (checks > 0)
+      os << "discarded: " << cases << " drawn cases in " << checks
+         << " checks could not test their statement and checked nothing (report.md lists them)\n";
+  }
   if (r.narrowed && !r.unexercised.empty())
     os << "(" << r.unexercised.size() << " provided slots and integrators were not exercised by this selection)\n";
   else
@@ -574,7 +582,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   if (!discarding.empty()) {
     md << "## Discarded cases\n\n"
        << "A discarded case checked nothing: its draw could not test the statement (for instance a perturbed "
-          "curve that happens to be stationary). The counts of passing cases above leave them out.\n\n"
+          "curve that happens to be stationary). The cases counted as passed leave them out.\n\n"
        << "| check | scalar | cases passed | discarded | first reason |\n|---|---|---|---|---|\n";
     for (const Verdict* v : discarding)
       md << "| `" << row_name(*v) << "` | " << v->scalar << " | " << v->cases << " | " << v->discarded << " | "

@@ -48,6 +48,24 @@ std::uint64_t derive_seed(std::uint64_t base, const std::string& property_key) {
 
 namespace {
 
+// RapidCheck describes a discard as "file:line:\nRC_DISCARD(...)\n\nreason" or, for RC_PRE,
+// "file:line:\nRC_PRE(condition)\n\nExpands to:\nvalues". The reason is the text after the blank
+// line for RC_DISCARD, and the condition that did not hold for RC_PRE.
+std::string discard_reason(const std::string& text) {
+  const auto head_end = text.find('\n');
+  const auto blank = text.find("\n\n");
+  if (head_end == std::string::npos || blank == std::string::npos || blank < head_end) return text;
+  const std::string macro = text.substr(head_end + 1, blank - head_end - 1);
+  std::string rest = text.substr(blank + 2);
+  while (!rest.empty() && rest.back() == '\n') rest.pop_back();
+  if (rest.rfind("Expands to:", 0) == 0 || rest.empty()) {
+    std::string condition = macro;
+    if (condition.rfind("RC_PRE(", 0) == 0 && condition.back() == ')') condition = condition.substr(7, condition.size() - 8);
+    return "the precondition " + condition + " does not hold";
+  }
+  return rest;
+}
+
 // Prints nothing; counts the discarded cases (issue 18: a discarded case is not a check, and the
 // verdict says how many there were).
 class SilentListener : public rc::detail::TestListener {
@@ -57,11 +75,7 @@ class SilentListener : public rc::detail::TestListener {
   void onTestCaseFinished(const rc::detail::CaseDescription& d) override {
     if (d.result.type != rc::detail::CaseResult::Type::Discard) return;
     if (discarded++ > 0) return;
-    // RapidCheck writes "file:line:\nRC_DISCARD(...)\n\nreason": keep the reason, its last line.
-    const std::string& text = d.result.description;
-    const auto end = text.find_last_not_of("\n");
-    const auto start = end == std::string::npos ? std::string::npos : text.rfind('\n', end);
-    first_reason = end == std::string::npos ? text : text.substr(start == std::string::npos ? 0 : start + 1, end + 1 - (start == std::string::npos ? 0 : start + 1));
+    first_reason = discard_reason(d.result.description);
   }
   void onShrinkTried(const rc::detail::CaseDescription&, bool) override {}
   void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}

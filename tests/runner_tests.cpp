@@ -42,6 +42,25 @@ TEST(Runner, DiscardedCasesAreCountedInTheVerdict) {
   EXPECT_NE(format_verdict(v).find(std::to_string(v.discarded) + " discarded"), std::string::npos) << format_verdict(v);
 }
 
+// RC_PRE's discards are reported by the condition that did not hold (RapidCheck's own text for
+// them is the macro and the values it expanded to).
+TEST(Runner, APreconditionDiscardNamesItsCondition) {
+  Property p = half_discarding();
+  p.d = [](const Subject<double>&) {
+    static int calls = 0;
+    const int parity = calls++ % 2;
+    RC_PRE(parity == 1);
+    require_close("1 = 1", 1.0, 1.0, 1.0, 1);
+  };
+  RunOptions o;
+  o.honour_rc_params = false;
+  const auto vs = run_property(p, reference_subject(), ScalarKind::Double, o);
+  ASSERT_EQ(vs.size(), 1u);
+  EXPECT_EQ(vs[0].outcome, Outcome::Pass) << format_verdict(vs[0]);
+  EXPECT_GT(vs[0].discarded, 0);
+  EXPECT_EQ(vs[0].discard_reason, "the precondition parity == 1 does not hold");
+}
+
 // The negative control: a property that discards nothing reports 0.
 TEST(Runner, APropertyThatDiscardsNothingReportsNone) {
   Property p = half_discarding();
