@@ -138,18 +138,27 @@ Verdict abnormal_verdict(const SubjectSet& s, const Item& item, const TaskResult
 // The verdicts a child returns must be those of the check it ran. Anything else was written on the
 // result channel by someone other than the property: in-process, the code under test shares the
 // child with its judge and can write there (issue 14). This catches a forgery that does not know
-// which check it interrupts; one that does can only be stopped by untrusted mode.
+// which check it interrupts; one that does can only be stopped by untrusted mode. (A verdict with
+// no integrator is the runner's "not provided" for an integrator check: it belongs.)
+struct ForeignResult : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 void check_verdicts_belong_to(const std::vector<Verdict>& vs, const Item& item) {
   if (vs.empty()) throw std::runtime_error("no verdict in the check's result");
+  auto name = [](const std::string& property, const std::string& scalar, const std::string& integrator) {
+    return property + " in " + scalar + (integrator.empty() ? "" : " of " + integrator);
+  };
   for (const auto& v : vs)
     if (v.property != item.property->id || v.scalar != scalar_name(item.kind) ||
-        (!item.integrator.empty() && v.integrator != item.integrator))
-      throw std::runtime_error("the result names the check " + v.property + " in " + v.scalar +
-                               (v.integrator.empty() ? "" : " of " + v.integrator) + ", but the harness ran " +
-                               item.property->id + " in " + std::string(scalar_name(item.kind)) +
-                               (item.integrator.empty() ? "" : " of " + item.integrator) +
-                               ": something other than the property wrote on the result channel, such as code "
-                               "under test forging its own verdict; check it with --untrusted");
+        (!item.integrator.empty() && !v.integrator.empty() && v.integrator != item.integrator))
+      throw ForeignResult(
+          "this check's result was not written by the property: it names the check " +
+          name(v.property, v.scalar, v.integrator) + ", but the harness ran " +
+          name(item.property->id, scalar_name(item.kind), item.integrator) +
+          ". The code under test wrote on the harness's result channel (a forged verdict), so nothing is known "
+          "about this check. Checking submissions, a lecturer uses untrusted mode (the default of check-class), "
+          "where the code under test cannot reach that channel.");
 }
 
 // NOT PROVIDED verdicts say why in terms a student can act on.
@@ -327,11 +336,12 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
       if (!p.runs_in(k)) continue;
       if (p.scope == Scope::Integrator) {
         auto names = integrators_for(p, s, k);
+        const bool has_any = !names.empty();
         if (!cfg.integrator.empty()) std::erase_if(names, [&](const std::string& n) { return n != cfg.integrator; });
-        if (!names.empty()) {
-          for (const auto& n : names) items.push_back(Item{&p, k, n});
-          continue;
-        }
+        for (const auto& n : names) items.push_back(Item{&p, k, n});
+        // With --integrator, a property none of whose integrators is the one asked for is left
+        // out (it used to run all of them); with no integrator at all the runner says so.
+        if (has_any) continue;
       }
       items.push_back(Item{&p, k, {}});
     }
@@ -387,6 +397,9 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
       try {
         vs = verdicts_from_string(t.payload);
         check_verdicts_belong_to(vs, item);
+      } catch (const ForeignResult& e) {
+        vs = {abnormal_verdict(s, item, t, cfg.run)};  // an ERROR, with the seed and timing of this check
+        vs.back().message = e.what();
       } catch (const std::exception& e) {
         TaskResult bad = t;
         bad.status = TaskResult::Status::Ok;

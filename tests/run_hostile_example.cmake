@@ -12,7 +12,8 @@
 # the source tree (/tmp/geomech-hostile-control, with a golden/ of its own and a work/ folder it
 # runs in), so that an escape lands there and not in the suite. The control asserts that the attack
 # worked: the report matches REGEX (a forged verdict was believed) and every EXPECT_FILES exists
-# (an escape wrote it). If the control ever stops showing the attack, the untrusted test proves nothing.
+# (an escape wrote it). An empty STATUS or REGEX asserts nothing of its own. If the control ever
+# stops showing the attack, the untrusted test proves nothing.
 # Runs `geomech check` on `file` in the folder `dir` with the given options, then the test's ARGS;
 # sets rc (its exit status) and all (its output and report.md) in the caller.
 function(gm_check file dir)
@@ -38,7 +39,7 @@ if(CONTROL)
   if(NOT STATUS STREQUAL "" AND NOT rc STREQUAL "${STATUS}")
     message(FATAL_ERROR "control: expected exit status ${STATUS} in-process, got ${rc}:\n${all}")
   endif()
-  if(NOT all MATCHES "${REGEX}")
+  if(NOT REGEX STREQUAL "" AND NOT all MATCHES "${REGEX}")
     message(FATAL_ERROR "control: in-process the attack did not show ('${REGEX}' not in the report):\n${all}")
   endif()
   foreach(f ${EXPECT_FILES})
@@ -47,7 +48,8 @@ if(CONTROL)
     endif()
   endforeach()
   file(REMOVE_RECURSE ${scratch} ${victim})
-  message(STATUS "control, in-process: exit ${rc}; the report matches '${REGEX}'; files written outside: ${EXPECT_FILES}")
+  message(STATUS "control, in-process: exit ${rc} (expected: '${STATUS}'); the report matches: '${REGEX}'; "
+                 "files written outside the submission's folder: '${EXPECT_FILES}'")
   return()
 endif()
 
