@@ -10,14 +10,16 @@
 //   Hamilton's canonical equations dq/dt = dh~/dp, dp/dt = -dh~/dq.
 //
 // (Archimedes: the projection of the sphere onto its circumscribed cylinder keeps area, so
-// dq ^ dp is the sphere's area form divided by r, which is the symplectic form of the leaf.)
+// dq ^ dp is the sphere's area form divided by r, oriented by the inward normal: e_q x e_p = -x,
+// which is where the minus sign of (3.13) goes.)
 // The bracket at x depends on f and h only through grad f(x) and grad h(x), and the chain rule
 // gives df~/dq = grad f . e_q, df~/dp = grad f . e_p with e_q = dx/dq = (-q/rho cos, -q/rho sin, 1)
 // and e_p = dx/dp = (-rho sin, rho cos, 0): the statement is checked for arbitrary gradients.
-// Points with rational rho, q and (cos, sin) = ((1 - t^2), 2 t) / (1 + t^2) make it exact in
-// rationals.
+// Points with rational rho, q and (cos, sin) = +-((1 - t^2), 2 t) / (1 + t^2), t = tan(azimuth / 2)
+// up to 4 (azimuths within 152 degrees of 0, or of 180 with the sign), make it exact in rationals.
 #include "properties/registry.hpp"
 #include "properties/support/generators.hpp"
+#include "properties/support/named_inputs.hpp"
 #include "properties/support/tolerance.hpp"
 
 namespace gm {
@@ -36,9 +38,10 @@ SpherePoint<T> draw_sphere_point() {
   SpherePoint<T> s;
   s.rho = *gen::positive<T>();
   s.q = *gen::scalar<T>();
-  const T t = *gen::scalar<T>(4, 4);
-  s.cos = (T(1) - t * t) / (T(1) + t * t);
-  s.sin = T(2) * t / (T(1) + t * t);
+  const T t = *gen::scalar<T>(64, 4);
+  const T side = *rc::gen::element(1, -1) == 1 ? T(1) : T(-1);  // the other half of the circle
+  s.cos = side * (T(1) - t * t) / (T(1) + t * t);
+  s.sin = side * T(2) * t / (T(1) + t * t);
   s.x = Vec3<T>(s.rho * s.cos, s.rho * s.sin, s.q);
   s.e_q = Vec3<T>(-s.q / s.rho * s.cos, -s.q / s.rho * s.sin, T(1));
   s.e_p = Vec3<T>(-s.rho * s.sin, s.rho * s.cos, T(0));
@@ -47,20 +50,24 @@ SpherePoint<T> draw_sphere_point() {
 
 // {f, h} of (3.13) with grad c = x equals the canonical bracket of the restrictions in (q, p).
 // Round-off: the triple product x . a x b (k = 12 on |x| |a| |b|) against two products of
-// directional derivatives, each of size |a| |b| (|q| + rho) <= 2 |a| |b| |x|: k = 32 in all.
+// directional derivatives, each of size |a| |b| (|q| + rho) <= 3 |a| |b| |x|_inf: k = 32 in all.
 template <class T>
 void nambu_level_sphere_bracket_is_canonical(const Subject<T>& s) {
   const SpherePoint<T> P = draw_sphere_point<T>();
   const Vec3<T> a = *gen::vec3<T>(), b = *gen::vec3<T>();  // grad f(x), grad h(x)
   const T canonical = a.dot(P.e_q) * b.dot(P.e_p) - a.dot(P.e_p) * b.dot(P.e_q);
-  require_close("on the sphere |x| = r, {f, h} of (3.13) with c = |x|^2/2 = df~/dq dh~/dp - df~/dp dh~/dq in "
-                "(q, p) = (x_3, azimuth)",
-                s.nambu_3_13(P.x, a, b), canonical, T(norm_inf(P.x) * norm_inf(a) * norm_inf(b)), 32);
-  // The coordinate functions themselves: grad q = e_3, grad theta = (-x_2, x_1, 0) / rho^2.
+  // The coordinate functions themselves: grad q = e_3, grad p = grad azimuth = (-x_2, x_1, 0) / rho^2.
   const Vec3<T> grad_q(T(0), T(0), T(1));
   const Vec3<T> grad_p(-P.x(1) / (P.rho * P.rho), P.x(0) / (P.rho * P.rho), T(0));
-  require_close("{x_3, theta} = 1 on the sphere (q = x_3, p = theta canonical)", s.nambu_3_13(P.x, grad_q, grad_p),
-                T(1), T(1), 16);
+  showing_inputs(
+      [&] { return named("x (grad c = x)", P.x) + named("x_3", P.q) + named("rho", P.rho) + named("grad f", a) + named("grad h", b); },
+      [&] {
+        require_close("with c = |x|^2/2, on the sphere through x: {f, h} of (3.13) equals the canonical bracket "
+                      "df~/dq dh~/dp - df~/dp dh~/dq in (q, p) = (x_3, azimuth)",
+                      s.nambu_3_13(P.x, a, b), canonical, T(norm_inf(P.x) * norm_inf(a) * norm_inf(b)), 32);
+        require_close("with c = |x|^2/2: {x_3, azimuth} = 1 (q = x_3 and p = azimuth are canonical)",
+                      s.nambu_3_13(P.x, grad_q, grad_p), T(1), T(1), 16);
+      });
 }
 
 // The motion (3.14) with c = |x|^2/2 stays on the sphere and is Hamilton's equations in (q, p):
@@ -73,13 +80,15 @@ void nambu_level_sphere_motion_is_canonical(const Subject<T>& s) {
   const Vec3<T> dh = *gen::vec3<T>();
   const Vec3<T> v = s.nambu_motion_3_14(P.x, dh);
   const T size_x = norm_inf(P.x), size_h = norm_inf(dh);
-  require_close("(3.14) with c = |x|^2/2 is tangent to the sphere: x . dx/dt = 0", T(P.x.dot(v)), T(0),
-                T(size_x * size_x * size_h), 8);
-  require_close("(3.14) restricted to the sphere: dq/dt = dx_3/dt = dh~/dp", v(2), T(dh.dot(P.e_p)),
-                T(size_x * size_h), 8);
   const T dp_dt = (P.x(0) * v(1) - P.x(1) * v(0)) / (P.rho * P.rho);
-  require_close("(3.14) restricted to the sphere: dp/dt = d(azimuth)/dt = -dh~/dq", dp_dt, T(-dh.dot(P.e_q)),
-                T(size_h * (T(1) + size_x / P.rho)), 32);
+  showing_inputs([&] { return named("x (grad c = x)", P.x) + named("grad h", dh) + named("dx/dt", v); }, [&] {
+    require_close("with c = |x|^2/2, (3.14) is tangent to the sphere: x . dx/dt = 0", T(P.x.dot(v)), T(0),
+                  T(size_x * size_x * size_h), 8);
+    require_close("with c = |x|^2/2, (3.14) on the sphere is Hamilton's dq/dt = dh~/dp (q = x_3)", v(2),
+                  T(dh.dot(P.e_p)), T(size_x * size_h), 8);
+    require_close("with c = |x|^2/2, (3.14) on the sphere is Hamilton's dp/dt = -dh~/dq (p = azimuth)", dp_dt,
+                  T(-dh.dot(P.e_q)), T(size_h * (T(1) + size_x / P.rho)), 32);
+  });
 }
 
 }  // namespace
