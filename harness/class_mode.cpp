@@ -93,8 +93,8 @@ static int summarise_class(const std::string& class_dir, const std::vector<Row>&
   for (std::size_t i = 0; i < areas.size(); ++i) md << "---|";
   md << "---|\n";
   console << "\n" << std::left << std::setw(26) << "implementation" << std::setw(18) << "result";
-  for (const auto& a : areas) console << std::setw(20) << a;
-  console << "\n" << std::string(26 + 18 + 20 * areas.size(), '-') << "\n";
+  for (const auto& a : areas) console << std::setw(24) << a;
+  console << "\n" << std::string(26 + 18 + 24 * areas.size(), '-') << "\n";
   int bad = 0;
   for (const auto& row : rows) {
     std::string result;
@@ -121,12 +121,12 @@ static int summarise_class(const std::string& class_dir, const std::vector<Row>&
     }
     if (result != "PASS") ++bad;
     md << "| " << row.impl.name << " | " << (result == "PASS" ? result : "**" + result + "**") << " |";
-    console << std::setw(26) << row.impl.name << std::setw(18) << result;
+    console << std::setw(26) << row.impl.name + " " << std::setw(18) << result + " ";
     for (const auto& a : areas) {
       auto it = by_area.find(a);
       const std::string c = it == by_area.end() ? "-" : cell(it->second[0], it->second[1], it->second[2], it->second[3]);
       md << " " << c << " |";
-      console << std::setw(20) << c;
+      console << std::setw(24) << c + " ";  // a cell wider than its column still ends with a space
     }
     const std::string link = row.impl.name + "/report.md";
     md << " " << (row.built && row.problem.empty() ? "[" + link + "](" + link + ")" : "-") << " |\n";
