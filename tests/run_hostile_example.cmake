@@ -14,6 +14,10 @@
 # worked: the report matches REGEX (a forged verdict was believed) and every EXPECT_FILES exists
 # (an escape wrote it). An empty STATUS or REGEX asserts nothing of its own. If the control ever
 # stops showing the attack, the untrusted test proves nothing.
+
+# The folder the hostile examples aim at (escape.cpp names it).
+set(victim /tmp/geomech-hostile-victim)
+
 # Runs `geomech check` on `file` in the folder `dir` with the given options, then the test's ARGS;
 # sets rc (its exit status) and all (its output and report.md) in the caller.
 function(gm_check file dir)
@@ -30,7 +34,6 @@ endfunction()
 
 if(CONTROL)
   set(scratch /tmp/geomech-hostile-control)
-  set(victim /tmp/geomech-hostile-victim)
   file(REMOVE_RECURSE ${scratch} ${victim} ${OUT})
   file(MAKE_DIRECTORY ${scratch}/src ${scratch}/golden ${scratch}/work ${victim})
   get_filename_component(name ${FILE} NAME)
@@ -53,7 +56,6 @@ if(CONTROL)
   return()
 endif()
 
-set(victim /tmp/geomech-hostile-victim)
 file(REMOVE_RECURSE ${victim} ${OUT})
 file(MAKE_DIRECTORY ${victim})
 # Writable by anyone: if the sandbox let the submission out, its write would land here.

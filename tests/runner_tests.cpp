@@ -29,12 +29,17 @@ Property half_discarding() {
   return p;
 }
 
-TEST(Runner, DiscardedCasesAreCountedInTheVerdict) {
+// The one verdict of `p` in double on the reference subject, RC_PARAMS ignored.
+Verdict run_in_double(const Property& p) {
   RunOptions o;
   o.honour_rc_params = false;
-  const auto vs = run_property(half_discarding(), reference_subject(), ScalarKind::Double, o);
-  ASSERT_EQ(vs.size(), 1u);
-  const Verdict& v = vs[0];
+  const auto vs = run_property(p, reference_subject(), ScalarKind::Double, o);
+  EXPECT_EQ(vs.size(), 1u);
+  return vs.empty() ? Verdict{} : vs[0];
+}
+
+TEST(Runner, DiscardedCasesAreCountedInTheVerdict) {
+  const Verdict v = run_in_double(half_discarding());
   EXPECT_EQ(v.outcome, Outcome::Pass) << format_verdict(v);
   EXPECT_EQ(v.cases, 40);
   EXPECT_GT(v.discarded, 0) << "half of the draws are discarded";
@@ -52,25 +57,19 @@ TEST(Runner, APreconditionDiscardNamesItsCondition) {
     RC_PRE(parity == 1);
     require_close("1 = 1", 1.0, 1.0, 1.0, 1);
   };
-  RunOptions o;
-  o.honour_rc_params = false;
-  const auto vs = run_property(p, reference_subject(), ScalarKind::Double, o);
-  ASSERT_EQ(vs.size(), 1u);
-  EXPECT_EQ(vs[0].outcome, Outcome::Pass) << format_verdict(vs[0]);
-  EXPECT_GT(vs[0].discarded, 0);
-  EXPECT_EQ(vs[0].discard_reason, "the precondition parity == 1 does not hold");
+  const Verdict v = run_in_double(p);
+  EXPECT_EQ(v.outcome, Outcome::Pass) << format_verdict(v);
+  EXPECT_GT(v.discarded, 0);
+  EXPECT_EQ(v.discard_reason, "the precondition parity == 1 does not hold");
 }
 
 // The negative control: a property that discards nothing reports 0.
 TEST(Runner, APropertyThatDiscardsNothingReportsNone) {
   Property p = half_discarding();
   p.d = [](const Subject<double>&) { require_close("1 = 1", 1.0, 1.0, 1.0, 1); };
-  RunOptions o;
-  o.honour_rc_params = false;
-  const auto vs = run_property(p, reference_subject(), ScalarKind::Double, o);
-  ASSERT_EQ(vs.size(), 1u);
-  EXPECT_EQ(vs[0].discarded, 0);
-  EXPECT_EQ(format_verdict(vs[0]).find("discarded"), std::string::npos);
+  const Verdict v = run_in_double(p);
+  EXPECT_EQ(v.discarded, 0);
+  EXPECT_EQ(format_verdict(v).find("discarded"), std::string::npos);
 }
 
 }  // namespace
