@@ -179,6 +179,7 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   if (env.max_success) cases = *env.max_success;
   params.maxSuccess = cases < 1 ? 1 : cases;
   params.maxSize = 100;
+  params.disableShrinking = !o.shrink;
 
   rc::detail::TestMetadata metadata;
   metadata.id = v.key();

@@ -23,6 +23,7 @@ struct RunOptions {
   double case_factor = 1.0;   // multiplies the default case counts
   std::string reproduce;      // RapidCheck reproduce string (the value after "reproduce=")
   bool honour_rc_params = true;  // read seed / max_success / reproduce from $RC_PARAMS
+  bool shrink = true;            // shrink a failure to a small case (a negative control only needs the failure)
 };
 
 struct Verdict {

@@ -30,9 +30,10 @@ Property half_discarding() {
 }
 
 // The one verdict of `p` in double on the reference subject, RC_PARAMS ignored.
-Verdict run_in_double(const Property& p) {
+Verdict run_in_double(const Property& p, bool shrink = true) {
   RunOptions o;
   o.honour_rc_params = false;
+  o.shrink = shrink;
   const auto vs = run_property(p, reference_subject(), ScalarKind::Double, o);
   EXPECT_EQ(vs.size(), 1u);
   return vs.empty() ? Verdict{} : vs[0];
@@ -70,6 +71,24 @@ TEST(Runner, APropertyThatDiscardsNothingReportsNone) {
   const Verdict v = run_in_double(p);
   EXPECT_EQ(v.discarded, 0);
   EXPECT_EQ(format_verdict(v).find("discarded"), std::string::npos);
+}
+
+// Negative controls run without shrinking (tests/property_tests.cpp): the failure is still a
+// failure, found on the same first failing case, and only the shrinking is left out. The control: with
+// shrinking, the same failure ends on the smallest failing value.
+TEST(Runner, WithoutShrinkingAFailureStaysAFailure) {
+  Property p = half_discarding();
+  p.d = [](const Subject<double>&) {
+    const int k = *rc::gen::inRange(0, 1000);
+    require("k < 10", k < 10, "k = " + std::to_string(k));
+  };
+  const Verdict unshrunk = run_in_double(p, false);
+  const Verdict shrunk = run_in_double(p, true);
+  ASSERT_EQ(unshrunk.outcome, Outcome::Fail) << format_verdict(unshrunk);
+  ASSERT_EQ(shrunk.outcome, Outcome::Fail) << format_verdict(shrunk);
+  EXPECT_EQ(unshrunk.cases, shrunk.cases) << "the same first failing case";
+  EXPECT_NE(shrunk.message.find("k = 10"), std::string::npos) << shrunk.message;
+  EXPECT_NE(unshrunk.message, shrunk.message) << "the first failing draw of 0..999 is not the smallest one";
 }
 
 }  // namespace
