@@ -8,6 +8,7 @@
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
 #include "properties/support/generators.hpp"
+#include "properties/support/lie_groups.hpp"
 #include "properties/support/spectrum.hpp"
 #include "properties/support/tolerance.hpp"
 
@@ -266,22 +267,6 @@ void manakov_clebsch_momentum_follows_manakov(const Subject<T>& s) {
 // transpose pairing (2.15), (1/2) tr(A^T C), it holds on so(n) (where it equals -tr(A C)/2) and
 // fails on sl(2, R) (not ad-invariant there). Exact in rationals.
 template <class T>
-MatX<T> representative(const Subject<T>& s, LieAlgebraId g, const std::vector<MatX<T>>& E, const VecX<T>& mu,
-                       bool transpose_pairing) {
-  const int d = static_cast<int>(E.size());
-  MatX<T> G(d, d);
-  for (int k = 0; k < d; ++k)
-    for (int l = 0; l < d; ++l)
-      G(k, l) = transpose_pairing ? T((E[k].transpose() * E[l]).trace() / T(2)) : T((E[k] * E[l]).trace());
-  const VecX<T> m = G.fullPivLu().solve(mu);
-  MatX<T> M = MatX<T>::Zero(E[0].rows(), E[0].cols());
-  for (int k = 0; k < d; ++k) M += m(k) * E[k];
-  (void)s;
-  (void)g;
-  return M;
-}
-
-template <class T>
 void matrix_euler_poincare_trace_pairing(const Subject<T>& s) {
   for (LieAlgebraId g : {LieAlgebraId::so3, LieAlgebraId::so4, LieAlgebraId::sl2}) {
     const int d = g == LieAlgebraId::so4 ? 6 : 3;
@@ -297,15 +282,15 @@ void matrix_euler_poincare_trace_pairing(const Subject<T>& s) {
       E.push_back(s.lie_hat(g, e));
     }
     const MatX<T> X = s.lie_hat(g, xi);
-    const MatX<T> M = representative(s, g, E, mu, false);
-    const MatX<T> dM = representative(s, g, E, dmu, false);
+    const MatX<T> M = lie::representative(E, mu, false);
+    const MatX<T> dM = lie::representative(E, dmu, false);
     const MatX<T> rhs = M * X - X * M;
     require_close(std::string("Theorem 2.3 on ") + lie_algebra_name(g) +
                       ": dM/dt = [M, Omega] for M = dl/dOmega in the pairing tr(A B)",
                   dM, rhs, T(norm_inf(xi) * norm_inf(mu) * T(d * 8)), 64);
     if (g == LieAlgebraId::sl2) {
-      const MatX<T> MT = representative(s, g, E, mu, true);
-      const MatX<T> dMT = representative(s, g, E, dmu, true);
+      const MatX<T> MT = lie::representative(E, mu, true);
+      const MatX<T> dMT = lie::representative(E, dmu, true);
       const T r = max_abs((dMT - (MT * X - X * MT)).eval());
       char buf[240];
       std::snprintf(buf, sizeof buf,

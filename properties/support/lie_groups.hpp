@@ -6,6 +6,8 @@
 
 #include <Eigen/LU>
 
+#include <vector>
+
 namespace gm::lie {
 
 // exp(X) by scaling and squaring of the Taylor series: X / 2^s has norm <= 1/2, the series is
@@ -40,6 +42,23 @@ MatX<T> cayley(const MatX<T>& S) {
   const auto n = S.rows();
   const MatX<T> Id = MatX<T>::Identity(n, n);
   return (Id - S).partialPivLu().solve(Id + S);
+}
+
+// The element M of g (spanned by the matrices E) that represents mu in g* through a pairing B:
+// B(M, E_k) = mu_k for every k. B(A, C) = tr(A C), ad-invariant on every matrix Lie algebra
+// (Theorem 2.3 as corrected in spec/catalogue.json), or the transpose pairing (2.15),
+// tr(A^T C) / 2, which is ad-invariant on so(n) only. Exact in rationals.
+template <class T>
+MatX<T> representative(const std::vector<MatX<T>>& E, const VecX<T>& mu, bool transpose_pairing = false) {
+  const auto d = static_cast<Eigen::Index>(E.size());
+  MatX<T> G(d, d);
+  for (Eigen::Index k = 0; k < d; ++k)
+    for (Eigen::Index l = 0; l < d; ++l)
+      G(k, l) = transpose_pairing ? T((E[k].transpose() * E[l]).trace() / T(2)) : T((E[k] * E[l]).trace());
+  const VecX<T> m = G.fullPivLu().solve(mu);
+  MatX<T> M = MatX<T>::Zero(E[0].rows(), E[0].cols());
+  for (Eigen::Index k = 0; k < d; ++k) M += m(k) * E[static_cast<std::size_t>(k)];
+  return M;
 }
 
 }  // namespace gm::lie
