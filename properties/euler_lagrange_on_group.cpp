@@ -63,11 +63,12 @@ HDMat<T> operator*(const HDMat<T>& x, const HDMat<T>& y) {
           (x.a * y.d + x.b * y.c + x.c * y.b + x.d * y.a).eval()};
 }
 
-// m^-1, given n0 = (m.a)^-1: the e1, e2 and e1 e2 parts follow from m m^-1 = Id part by part.
+// m^-1 for m = a + b e1 + c e2 + d e1 e2, given n0 = a^-1 (a itself is not needed): the e1, e2
+// and e1 e2 parts follow from m m^-1 = Id part by part.
 template <class T>
-HDMat<T> inverse_given(const HDMat<T>& m, const MatX<T>& n0) {
-  const MatX<T> n1 = -n0 * m.b * n0, n2 = -n0 * m.c * n0;
-  const MatX<T> n12 = -n0 * (m.d * n0 + m.b * n2 + m.c * n1);
+HDMat<T> inverse_given(const MatX<T>& n0, const MatX<T>& b, const MatX<T>& c, const MatX<T>& d) {
+  const MatX<T> n1 = -n0 * b * n0, n2 = -n0 * c * n0;
+  const MatX<T> n12 = -n0 * (d * n0 + b * n2 + c * n1);
   return {n0, n1, n2, n12};
 }
 
@@ -151,10 +152,11 @@ struct ChartState {
 
   // xi(q + e1 uq + e2 wq, dq/dt + e1 uqd + e2 wqd), part by part: vee is linear.
   std::vector<HD<T>> xi_seeded(const VecX<T>& uq, const VecX<T>& uqd, const VecX<T>& wq, const VecX<T>& wqd) const {
-    const MatX<T> Xq = chart.X(q), Z = MatX<T>::Zero(Xq.rows(), Xq.cols()), Id = MatX<T>::Identity(Xq.rows(), Xq.cols());
+    // Id +- X(q + e1 uq + e2 wq) = (Id +- X(q)) +- X(uq) e1 +- X(wq) e2: X is linear, no e1 e2 part.
+    const MatX<T> Z = MatX<T>::Zero(plus_inv.rows(), plus_inv.cols());
     const MatX<T> Xu = chart.X(uq), Xw = chart.X(wq);
-    const HDMat<T> P = inverse_given<T>({(Id + Xq).eval(), Xu, Xw, Z}, plus_inv);
-    const HDMat<T> M = inverse_given<T>({(Id - Xq).eval(), (-Xu).eval(), (-Xw).eval(), Z}, minus_inv);
+    const HDMat<T> P = inverse_given<T>(plus_inv, Xu, Xw, Z);
+    const HDMat<T> M = inverse_given<T>(minus_inv, (-Xu).eval(), (-Xw).eval(), Z);
     const HDMat<T> V{chart.X(qd), chart.X(uqd), chart.X(wqd), Z};
     const HDMat<T> xi_hat = P * V * M;
     const VecX<T> a = chart.vee((T(2) * xi_hat.a).eval()), b = chart.vee((T(2) * xi_hat.b).eval());
