@@ -1,5 +1,5 @@
 // The variational statements: Proposition 2.1 (2.7)/(2.8); Theorems 1.1 (iii) and 2.1; the
-// Hamilton-Pontryagin principle (2.16) and its Hamiltonian form (2.24); the Clebsch principle
+// Hamilton-Pontryagin principle (2.16) on SO(3) and SO(n) and its Hamiltonian form (2.24); the Clebsch principle
 // (3.17)-(3.18); Manakov's Lagrangian (Proposition 2.4); reconstruction from the reduced
 // equations (section 1); the reduced equations on G x Y (the exercise of section 1).
 //
@@ -17,6 +17,7 @@
 #include "properties/support/derivatives.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/generators.hpp"
+#include "properties/support/regimes.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
 #include "properties/support/variations.hpp"
@@ -394,6 +395,17 @@ void clebsch_variational_principle(const Subject<T>& s) {
                                            64);
 }
 
+// The skew n x n matrix with upper triangle v (row by row): the suite's own so(n) coordinates, used
+// only to build variations, never to read the subject's.
+template <class T>
+MatX<T> skew_n(const VecX<T>& v, int n) {
+  MatX<T> X = MatX<T>::Zero(n, n);
+  int k = 0;
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j) X(i, j) = v(k), X(j, i) = -v(k), ++k;
+  return X;
+}
+
 // ---------------------------------------------------------------------------------------------
 // s2.manakov, Proposition 2.4: along the subject's (2.34), the first variation of
 // S = int l(Omega) dt with the subject's l = -tr(Omega A Omega)/2 and Omega = its manakov_Omega(A, M),
@@ -406,13 +418,7 @@ void manakov_variational_principle(const Subject<T>& s) {
   const MatX<T> M0 = dyn::draw_skew<T>(n, 32);
   const int m = n * (n - 1) / 2;
   const auto xi = draw_bump<T, Eigen::Dynamic>(m), bump = draw_bump<T, Eigen::Dynamic>(m);
-  auto skew = [n](const VecX<T>& v) {
-    MatX<T> X = MatX<T>::Zero(n, n);
-    int k = 0;
-    for (int i = 0; i < n; ++i)
-      for (int j = i + 1; j < n; ++j) X(i, j) = v(k), X(j, i) = -v(k), ++k;
-    return X;
-  };
+  auto skew = [n](const VecX<T>& v) { return skew_n(v, n); };
   const auto grid = var::gauss_grid<T>(kT<T>);
   long steps = 0;
   const auto Ms = dyn::subject_manakov_M(s, A, M0, grid.times, &steps);
@@ -436,6 +442,80 @@ void manakov_variational_principle(const Subject<T>& s) {
   const T gr = dyn::growth(dyn::manakov_rate(a, M0), kT<T>, steps);
   var::require_first_variation_vanishes_iff<T>("Proposition 2.4, Manakov's l = -tr(Omega A Omega)/2", grid, f, fp,
                                            T(kT<T> * T(n * n) * dyn::at_least_one(big) * gr * gr), 64);
+}
+
+// ---------------------------------------------------------------------------------------------
+// s2.hamilton-pontryagin on SO(n), n = 3..6 (issue 18; n = 3, 4 in 50 digits, where the reference's
+// solve of the n^2 x n^2 system for Omega makes one n = 6 case cost 20 s): Proposition 2.3 for Manakov's body,
+// l(Omega) = -tr(Omega A Omega)/2 (Proposition 2.4) with A = R D R^T not diagonal in three of the
+// four regimes of gen::manakov_body (one of them scaled by 2^s, |s| <= 20). The action (2.16),
+//     S = int l(Omega) + <M, O^-1 dO/dt - Omega> dt,
+// varied by an arbitrary delta Omega (not zero at the ends), an arbitrary delta M and
+// delta O = O Xi (Xi skew, vanishing at the ends; delta(O^-1 dO/dt) = dXi/dt + [O^-1 dO/dt, Xi] as
+// in (2.17)), along the subject's (2.34) with O^-1 dO/dt = Omega, has the integrand
+//     dl/dOmega . delta Omega - <M, delta Omega>        (the Legendre relation: its l, its Omega(M)
+//                                                        and its pairing must agree)
+//   + <delta M, O^-1 dO/dt - Omega>                     (zero: see below)
+//   + <M, dXi/dt + [Omega, Xi]>                          (its (2.34), by parts).
+// Omega is the subject's manakov_Omega(A, M), l its manakov_lagrangian, <,> its pairing (2.15).
+// The subject has no reconstruction slot on SO(n) (on SO(3), hamilton_pontryagin_variation takes
+// dO/dt from its (2.10)), so O would be integrated here with its Omega and the constraint term
+// would vanish by construction: it is left out, and with it the attitude. Both directions: a
+// perturbed M is not stationary for some Xi (require_first_variation_vanishes_iff).
+// Sizes. M(0) is a drawn skew matrix times min d, so that Omega, and with it the speed of the
+// motion on [0, T], stay of the drawn size while A and M take the regime's scale 2^s (a fixed T
+// and A scaled alone would ask for 2^20 turns). delta Omega is a bump, M's perturbation a bump
+// times min d / 8.
+// Tolerance, T n^2 spread (legendre + motion (1 + lambda T)^2), k = 64, with |Omega| <= |M| / (2 min d):
+//   - legendre = |A| (|Omega| + |delta Omega|)^2 + |M| |delta Omega|, the size of the two l values
+//     and of <M, delta Omega>; the relation holds at every M, so the flow's error does not enter;
+//   - motion = |M| (|dXi/dt| + 2 n |Omega| |Xi|), the size of the (2.34) term, whose error is the
+//     flow's, grown as (1 + lambda T)^2 (two flows compared, as for Proposition 2.4);
+//   - spread = max d / min d conditions the subject's solve for Omega; n^2-term sums.
+template <class T>
+void hamilton_pontryagin_variation_so_n(const Subject<T>& s) {
+  const int n = dyn::pick<T>(rc::gen::inRange(3, std::is_same_v<T, double> ? 7 : 5));
+  const auto b = dyn::pick<T>(gen::manakov_body<T>(n));
+  const T d_min = b.d.minCoeff();
+  const MatX<T> M0 = (dyn::draw_skew<T>(n, 32) * d_min).eval();
+  const int m = n * (n - 1) / 2;
+  const auto xi = draw_bump<T, Eigen::Dynamic>(m), dW = draw_bump<T, Eigen::Dynamic>(m),
+             bump = draw_bump<T, Eigen::Dynamic>(m);
+  const auto grid = var::gauss_grid<T>(kT<T>);
+  long steps = 0;
+  const auto Ms = dyn::subject_manakov_M(s, b.A, M0, grid.times, &steps);
+  auto delta_Omega = [&](const T& t) { return skew_n<T>((dW.at(t) + dW.c0).eval(), n); };
+  // The integrand at (M, W = Omega(M)) for the variation Xi = v: the delta Omega term depends on
+  // the curve only, so along the perturbed curve it is computed once for all the variations.
+  auto legendre_term = [&](const MatX<T>& M, const MatX<T>& W, const T& t) {
+    const MatX<T> dOm = delta_Omega(t);
+    const T dl = (s.manakov_lagrangian(b.A, (W + dOm).eval()) - s.manakov_lagrangian(b.A, (W - dOm).eval())) / T(2);
+    return T(dl - s.pairing(M, dOm));
+  };
+  auto motion_term = [&](const MatX<T>& M, const MatX<T>& W, const T& t, const Bump<T, Eigen::Dynamic>& v) {
+    const MatX<T> X = skew_n<T>(v.at(t), n), dX = skew_n<T>(v.rate(t), n);
+    return T(s.pairing(M, (dX + W * X - X * W).eval()));
+  };
+  const auto variations = converse_variations(xi, m);
+  std::vector<T> f;
+  std::vector<std::vector<T>> fp(variations.size());
+  T legendre(0), motion(0);
+  const T A_size = norm_inf(b.A);
+  for (std::size_t i = 0; i < grid.times.size(); ++i) {
+    const T t = grid.times[i];
+    const MatX<T> W = s.manakov_Omega(b.A, Ms[i]);
+    f.push_back(T(legendre_term(Ms[i], W, t) + motion_term(Ms[i], W, t, xi)));
+    const MatX<T> Mp = (Ms[i] + skew_n<T>(bump.at(t), n) * (d_min / T(8))).eval(), Wp = s.manakov_Omega(b.A, Mp);
+    const T Lp = legendre_term(Mp, Wp, t);
+    for (std::size_t v = 0; v < variations.size(); ++v) fp[v].push_back(T(Lp + motion_term(Mp, Wp, t, variations[v])));
+    const T M_size = norm_inf(Ms[i]), W_size = T(M_size / (T(2) * d_min)), dOm_size = norm_inf(delta_Omega(t));
+    legendre = std::max(legendre, T(A_size * (W_size + dOm_size) * (W_size + dOm_size) + M_size * dOm_size));
+    motion = std::max(motion, T(M_size * (norm_inf(xi.rate(t)) + T(2 * n) * W_size * norm_inf(xi.at(t)))));
+  }
+  const T gr = dyn::growth(T(sqrt(T(M0.squaredNorm())) / (T(2) * d_min)), kT<T>, steps);
+  var::require_first_variation_vanishes_iff<T>("Proposition 2.3 on SO(n), the Hamilton-Pontryagin action (2.16) for "
+                                               "Manakov's l = -tr(Omega A Omega)/2",
+                                               grid, f, fp, T(kT<T> * T(n * n) * b.spread * (legendre + motion * gr * gr)), 64);
 }
 
 // cay(S(t)) = (Id - S)^-1 (Id + S) and its time derivative (Id - S)^-1 dS/dt (cay(S) + Id).
@@ -742,6 +822,17 @@ GM_PROPERTY(hamilton_pontryagin_variation, float_scalars,
              .needs = {"euler_matrix_2_12", "reconstruction_2_10", "lagrangian_2_13", "pairing"},
              .negative_controls = {"euler_matrix_commutator_sign", "reconstruction_right_multiplied"},
              .cases = {.d = 10, .mp = 1, .q = 0}});
+
+GM_PROPERTY(hamilton_pontryagin_variation_so_n, float_scalars,
+            {.id = "hamilton_pontryagin_variation_so_n",
+             .spec = "s2.hamilton-pontryagin",
+             .title = "Proposition 2.3 on SO(n), n = 3..6, both directions: the Hamilton-Pontryagin action (2.16) with "
+                      "Manakov's l and a non-diagonal A is stationary along the subject's (2.34), a perturbed M is not",
+             .tolerance = ToleranceClass::Roundoff,
+             .needs = {"manakov_2_34", "manakov_Omega", "manakov_lagrangian", "pairing"},
+             .negative_controls = {"manakov_2_34_diagonal_A_only", "manakov_Omega_diagonal_A_only",
+                                   "manakov_lagrangian_sign_flipped", "pairing_without_half"},
+             .cases = {.d = 10, .mp = 3, .q = 0}});
 
 GM_PROPERTY(hp_hamiltonian_action_variation, float_scalars,
             {.id = "hp_hamiltonian_action_variation",
