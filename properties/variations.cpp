@@ -466,7 +466,8 @@ void manakov_variational_principle(const Subject<T>& s) {
 // motion on [0, T], stay of the drawn size while A and M take the regime's scale 2^s (a fixed T
 // and A scaled alone would ask for 2^20 turns). delta Omega is a bump, M's perturbation a bump
 // times min d / 8.
-// Tolerance, T n^2 spread (legendre + motion (1 + lambda T)^2), k = 64, with |Omega| <= |M| / (2 min d):
+// Tolerance, T n^2 spread (legendre + motion (1 + lambda T)^2), k = 64, with |Omega| <= |M|_F / (2 min d)
+// (Frobenius norm: A = R D R^T's rotation does not keep the largest entry, it keeps |.|_F):
 //   - legendre = |A| (|Omega| + |delta Omega|)^2 + |M| |delta Omega|, the size of the two l values
 //     and of <M, delta Omega>; the relation holds at every M, so the flow's error does not enter;
 //   - motion = |M| (|dXi/dt| + 2 n |Omega| |Xi|), the size of the (2.34) term, whose error is the
@@ -508,7 +509,8 @@ void hamilton_pontryagin_variation_so_n(const Subject<T>& s) {
     const MatX<T> Mp = (Ms[i] + skew_n<T>(bump.at(t), n) * (d_min / T(8))).eval(), Wp = s.manakov_Omega(b.A, Mp);
     const T Lp = legendre_term(Mp, Wp, t);
     for (std::size_t v = 0; v < variations.size(); ++v) fp[v].push_back(T(Lp + motion_term(Mp, Wp, t, variations[v])));
-    const T M_size = norm_inf(Ms[i]), W_size = T(M_size / (T(2) * d_min)), dOm_size = norm_inf(delta_Omega(t));
+    const T M_size = norm_inf(Ms[i]), W_size = T(sqrt(T(Ms[i].squaredNorm())) / (T(2) * d_min)),
+            dOm_size = norm_inf(delta_Omega(t));
     legendre = std::max(legendre, T(A_size * (W_size + dOm_size) * (W_size + dOm_size) + M_size * dOm_size));
     motion = std::max(motion, T(M_size * (norm_inf(xi.rate(t)) + T(2 * n) * W_size * norm_inf(xi.at(t)))));
   }
