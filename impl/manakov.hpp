@@ -39,21 +39,33 @@ MatX<T> manakov_Omega(const MatX<T>& A, const MatX<T>& M) {
       }
     return W;
   }
-  const Eigen::Index N = n * n;
-  MatX<T> K = MatX<T>::Zero(N, N);
-  // vec stacks columns: vec(X)(i + n j) = X(i, j).
-  // (A X)(i, j) = sum_k A(i, k) X(k, j);  (X A)(i, j) = sum_k X(i, k) A(k, j).
-  for (Eigen::Index i = 0; i < n; ++i)
-    for (Eigen::Index j = 0; j < n; ++j)
-      for (Eigen::Index k = 0; k < n; ++k) {
-        K(i + n * j, k + n * j) += A(i, k);
-        K(i + n * j, i + n * k) += A(k, j);
-      }
-  VecX<T> m(N);
+  // The factorisation depends on A only, and a flow calls this with one A many times: it is kept
+  // (per thread) for the last A seen, so a call costs one solve with the kept factors, O(n^4)
+  // operations, instead of a full-pivot LU of the n^2 x n^2 system, O(n^6).
+  struct Factorised {
+    MatX<T> A;
+    Eigen::FullPivLU<MatX<T>> lu;
+  };
+  thread_local Factorised last;
+  if (last.A.rows() != n || last.A != A) {
+    const Eigen::Index N = n * n;
+    MatX<T> K = MatX<T>::Zero(N, N);
+    // vec stacks columns: vec(X)(i + n j) = X(i, j).
+    // (A X)(i, j) = sum_k A(i, k) X(k, j);  (X A)(i, j) = sum_k X(i, k) A(k, j).
+    for (Eigen::Index i = 0; i < n; ++i)
+      for (Eigen::Index j = 0; j < n; ++j)
+        for (Eigen::Index k = 0; k < n; ++k) {
+          K(i + n * j, k + n * j) += A(i, k);
+          K(i + n * j, i + n * k) += A(k, j);
+        }
+    last.lu.compute(K);
+    last.A = A;
+  }
+  const Eigen::FullPivLU<MatX<T>>& lu = last.lu;
+  if (!lu.isInvertible()) throw std::domain_error("manakov_Omega: A Omega + Omega A = M is singular");
+  VecX<T> m(n * n);
   for (Eigen::Index i = 0; i < n; ++i)
     for (Eigen::Index j = 0; j < n; ++j) m(i + n * j) = M(i, j);
-  Eigen::FullPivLU<MatX<T>> lu(K);
-  if (!lu.isInvertible()) throw std::domain_error("manakov_Omega: A Omega + Omega A = M is singular");
   const VecX<T> w = lu.solve(m);
   MatX<T> W(n, n);
   for (Eigen::Index i = 0; i < n; ++i)
