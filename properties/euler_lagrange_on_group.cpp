@@ -26,14 +26,13 @@
 // it checks the construction (the Euler-Lagrange system is non-degenerate and misses exactly by
 // B^T delta), so that a chart or an l for which EL vanishes identically cannot pass unnoticed.
 //
-// The Lagrangian: l(xi) = a . xi + s / 2 + c s^2 / 8, s = xi . K xi, with a drawn linear term, a
-// quartic term (c in [0, 1]) and K symmetric, in general not diagonal, positive definite (diagonal
-// in [2, 4], off-diagonal entries at most 1/4 in size, 1/16 when d > 8: by Gershgorin every
-// eigenvalue is at least 2 - 7/4, or 2 - 14/16 at d = 15). Its gradient and Hessian are themselves
-// taken by hyper-dual numbers, not by hand. q is drawn with |q| <= 1/2, so Id +- X is far from
-// singular on all four algebras (on sl(2, R), det(Id +- X) = 1 + det X >= 1/2).
+// The Lagrangian: l(xi) = a . xi + s / 2 + c s^2 / 8, s = xi . K xi, K symmetric and in general
+// not diagonal (support/general_lagrangian.hpp), its gradient and Hessian taken by hyper-dual
+// numbers. q is drawn with |q| <= 1/2, so Id +- X is far from singular on all four algebras (on
+// sl(2, R), det(Id +- X) = 1 + det X >= 1/2).
 #include "properties/registry.hpp"
 #include "properties/support/derivatives.hpp"
+#include "properties/support/general_lagrangian.hpp"
 #include "properties/support/generators.hpp"
 #include "properties/support/lie_groups.hpp"
 #include "properties/support/named_inputs.hpp"
@@ -70,56 +69,6 @@ HDMat<T> inverse_given(const MatX<T>& n0, const MatX<T>& b, const MatX<T>& c, co
   const MatX<T> n1 = -n0 * b * n0, n2 = -n0 * c * n0;
   const MatX<T> n12 = -n0 * (d * n0 + b * n2 + c * n1);
   return {n0, n1, n2, n12};
-}
-
-// l(xi) = a . xi + s / 2 + c s^2 / 8 with s = xi . K xi, for any scalar S built from T (T itself or
-// hyper-dual numbers over T).
-template <class T>
-struct GeneralLagrangian {
-  VecX<T> a;
-  MatX<T> K;
-  T c;
-
-  template <class S>
-  S operator()(const std::vector<S>& xi) const {
-    S lin(T(0)), s(T(0));
-    for (std::size_t i = 0; i < xi.size(); ++i) {
-      lin += S(a(static_cast<Eigen::Index>(i))) * xi[i];
-      for (std::size_t j = 0; j < xi.size(); ++j)
-        s += xi[i] * S(K(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(j))) * xi[j];
-    }
-    return lin + s * S(T(1) / T(2)) + S(c / T(8)) * s * s;
-  }
-
-  // l at xi + e1 u + e2 w: its parts are l, dl.u, dl.w and d2l(u, w).
-  HD<T> seeded(const VecX<T>& xi, const VecX<T>& u, const VecX<T>& w) const {
-    std::vector<HD<T>> x;
-    for (Eigen::Index i = 0; i < xi.size(); ++i) x.emplace_back(xi(i), u(i), w(i), T(0));
-    return (*this)(x);
-  }
-  VecX<T> gradient(const VecX<T>& xi) const {  // mu = dl/dxi
-    const auto n = xi.size();
-    VecX<T> g(n);
-    for (Eigen::Index k = 0; k < n; ++k) g(k) = seeded(xi, VecX<T>::Unit(n, k), VecX<T>::Zero(n)).b;
-    return g;
-  }
-  MatX<T> hessian(const VecX<T>& xi) const {
-    const auto n = xi.size();
-    MatX<T> H(n, n);
-    for (Eigen::Index k = 0; k < n; ++k)
-      for (Eigen::Index j = 0; j < n; ++j) H(k, j) = seeded(xi, VecX<T>::Unit(n, k), VecX<T>::Unit(n, j)).d;
-    return H;
-  }
-};
-
-template <class T>
-GeneralLagrangian<T> draw_lagrangian(int d) {
-  GeneralLagrangian<T> l{*gen::vec<T>(d, 8, 3), MatX<T>::Zero(d, d), T(*rc::gen::inRange(0, 5)) / T(4)};
-  for (int i = 0; i < d; ++i) {
-    l.K(i, i) = T(*rc::gen::inRange(8, 17)) / T(4);
-    for (int j = 0; j < i; ++j) l.K(i, j) = l.K(j, i) = *gen::scalar<T>(d <= 8 ? 4 : 1, 4);
-  }
-  return l;
 }
 
 // The chart q -> cay(X(q)) of a matrix group near the identity, read back by the subject's vee.
