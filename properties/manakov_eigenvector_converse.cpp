@@ -28,9 +28,10 @@
 namespace gm {
 namespace {
 
+// t = 10 in 50 digits too (issue 18).
 template <class T>
 T horizon() {
-  return std::is_same_v<T, double> ? T(10) : T(1);
+  return T(10);
 }
 
 template <class T>
@@ -90,6 +91,6 @@ GM_PROPERTY(manakov_eigenvector_system_gives_2_36, float_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"manakov_2_34", "manakov_Omega"},
              .negative_controls = {"manakov_commutator_reversed", "manakov_Omega_as_if_commuting"},
-             .cases = {.d = 20, .mp = 4, .q = 0}});
+             .cases = {.d = 20, .mp = 2, .q = 0}});
 
 }  // namespace gm
