@@ -23,6 +23,11 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_option("--reproduce", o.reproduce, "RapidCheck reproduce string printed with a failure");
   app.add_option("--timeout", o.timeout, "seconds allowed per property and scalar (default 60)")
       ->check(CLI::PositiveNumber);
+  app.add_option("--case-budget", o.case_budget,
+                 "seconds after which a check starts no new case (default: 40 % of --timeout; 0: none). A slow "
+                 "implementation is then checked on fewer cases, which its verdict says, instead of timing out; "
+                 "shrinking a failure likewise stops after a quarter of --timeout")
+      ->check(CLI::NonNegativeNumber);
   app.add_option("--jobs,-j", o.jobs, "checks run at once, each in its own process (default: the number of cores)")->check(CLI::Range(1, 256));
   app.add_option("--memory-limit", o.memory_limit_mb, "address space per check, in MiB (default 4096)")
       ->check(CLI::Range(64L, 1L << 30));
@@ -55,6 +60,10 @@ CheckConfig config_from(const CheckCliOptions& o) {
     throw CLI::ValidationError("--reproduce", "not a reproduce string printed with a failure (" + why + ")");
   c.run.reproduce = o.reproduce;
   c.timeout_seconds = o.timeout;
+  // The budgets leave room, within the timeout, for a case that was started just before the case
+  // budget ran out and for the shrinking of a failure found late.
+  c.run.case_budget_seconds = o.case_budget < 0 ? 0.4 * o.timeout : o.case_budget;
+  c.run.shrink_budget_seconds = o.case_budget == 0 ? 0 : 0.25 * o.timeout;
   c.jobs = o.jobs;
   c.memory_limit_mb = o.memory_limit_mb;
   c.isolate = !o.no_isolation;
@@ -80,6 +89,7 @@ std::vector<std::string> to_args(const CheckCliOptions& o) {
   if (o.case_factor != 1.0) a.insert(a.end(), {"--case-factor", num(o.case_factor)});
   if (!o.reproduce.empty()) a.insert(a.end(), {"--reproduce", o.reproduce});
   a.insert(a.end(), {"--timeout", num(o.timeout)});
+  if (o.case_budget >= 0) a.insert(a.end(), {"--case-budget", num(o.case_budget)});
   a.insert(a.end(), {"--jobs", std::to_string(o.jobs)});
   a.insert(a.end(), {"--memory-limit", std::to_string(o.memory_limit_mb)});
   if (!o.report_dir.empty()) a.insert(a.end(), {"--report", o.report_dir});

@@ -98,7 +98,10 @@ std::string verdict_cell(const Verdict& v, bool exact_column) {
     if (!f.claimed && !f.holds) return "unclaimed, not held";
     if (!f.claimed && f.holds) cell = "unclaimed, holds";
   }
-  if (!exact_column && v.checks > 0 && cell == "PASS") cell += " " + eps_text(v.worst_eps_units);
+  const bool plain = cell == "PASS";
+  if (plain && v.cases_planned > v.cases)  // the time budget was spent: cases run / planned
+    cell += " " + std::to_string(v.cases) + "/" + std::to_string(v.cases_planned);
+  if (!exact_column && v.checks > 0 && plain) cell += " " + eps_text(v.worst_eps_units);
   return cell;
 }
 
@@ -134,21 +137,20 @@ Missing missing_of(const CheckResult& r) {
 
 std::string claimed_text(const IntegratorClaims& c, const std::string& claim) {
   if (claim == "order") return c.order > 0 ? std::to_string(c.order) : "no";
-  bool b = false;
-  if (claim == "symmetric") b = c.symmetric;
-  if (claim == "casimir") b = c.casimir;
-  if (claim == "energy") b = c.energy;
-  if (claim == "orthogonality") b = c.orthogonality;
-  if (claim == "spectrum") b = c.spectrum;
-  if (claim == "poisson") b = c.poisson;
-  if (claim == "noether") b = c.noether;
-  if (claim == "equivariant") b = c.equivariant;
-  if (claim == "bounded_energy") b = c.bounded_energy;
-  return b ? "yes" : "no";
+  for (const auto& b : kBooleanClaims)
+    if (claim == b.name) return c.*b.member ? "yes" : "no";
+  return "no";
 }
 
-const char* kClaims[] = {"order",   "symmetric", "casimir",     "energy",        "orthogonality",
-                         "spectrum", "poisson",  "noether",     "equivariant",   "bounded_energy"};
+// "order", then every yes/no claim (core/subject.hpp).
+const std::vector<std::string>& claim_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n{"order"};
+    for (const auto& b : kBooleanClaims) n.push_back(b.name);
+    return n;
+  }();
+  return names;
+}
 
 std::string md_cell(const std::string& s) {
   std::string out;
@@ -197,7 +199,7 @@ std::string area_of(const Verdict& v, const Catalogue* c) {
 
 std::vector<ClaimRow> claim_rows(const CheckResult& r, const IntegratorInfo& integrator) {
   // The claims an integrator can declare, then any other claim a check reported on.
-  std::vector<std::string> names(std::begin(kClaims), std::end(kClaims));
+  std::vector<std::string> names = claim_names();
   for (const auto& v : r.verdicts)
     if (v.integrator == integrator.name)
       for (const auto& f : v.claims)
@@ -354,6 +356,15 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
       os << "discarded: " << cases << " drawn cases in " << checks
          << " checks could not test their statement and checked nothing (report.md lists them)\n";
   }
+  {  // issue 15: a slow implementation is checked on fewer cases rather than timed out; say so
+    int checks = 0, run = 0, planned = 0;
+    for (const auto& v : r.verdicts)
+      if (v.outcome == Outcome::Pass && v.cases_planned > v.cases) ++checks, run += v.cases, planned += v.cases_planned;
+    if (checks > 0)
+      os << "short: " << checks << " checks ran " << run << " of their " << planned
+         << " planned cases before their time budget was spent (shown as PASS n/m; --case-budget, --timeout; "
+            "report.md lists them)\n";
+  }
   if (r.narrowed && !r.unexercised.empty())
     os << "(" << r.unexercised.size() << " provided slots and integrators were not exercised by this selection)\n";
   else
@@ -377,7 +388,8 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
       std::istringstream lines(v.message);
       for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
       if (!v.counterexample.empty() && v.message.find("inputs, by the notes' names:") == std::string::npos) {
-        os << "\n  counterexample (shrunk):";
+        os << (v.shrink_stopped ? "\n  counterexample (shrinking stopped by its time budget, not minimal):"
+                                : "\n  counterexample (shrunk):");
         for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
       }
       if (v.outcome == Outcome::Fail && r.info.randomised)
@@ -590,6 +602,23 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     md << "\n";
   }
 
+  // Issue 15: checks whose time budget ran out before all planned cases (a slow implementation).
+  std::vector<const Verdict*> short_runs;
+  for (const auto& v : r.verdicts)
+    if (v.outcome == Outcome::Pass && v.cases_planned > v.cases) short_runs.push_back(&v);
+  if (!short_runs.empty()) {
+    md << "## Checks that ran fewer cases than planned\n\n"
+       << "Each check starts no new case once its time budget is spent (`--case-budget`, by default 40 % of "
+          "`--timeout`), so that a correct but slow implementation is checked on fewer cases instead of being "
+          "stopped as a TIMEOUT. These passed on the cases they ran; a faster implementation, or a larger "
+          "`--timeout`, runs them all.\n\n"
+       << "| check | scalar | cases run | planned | seconds |\n|---|---|---|---|---|\n";
+    for (const Verdict* v : short_runs)
+      md << "| `" << row_name(*v) << "` | " << v->scalar << " | " << v->cases << " | " << v->cases_planned << " | "
+         << seconds_text(v->seconds) << " |\n";
+    md << "\n";
+  }
+
   if (!problems.empty()) {
     md << "## Details\n\n";
     for (const Verdict* v : problems) {
@@ -603,7 +632,9 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       md << "\n\n";
       md << fence(v->message);
       if (!v->counterexample.empty()) {
-        md << "\nCounterexample (shrunk, full precision):\n\n";
+        md << (v->shrink_stopped ? "\nCounterexample (full precision; shrinking was stopped by its time budget, so it "
+                                   "is the smallest failing case found by then, not a minimal one):\n\n"
+                                 : "\nCounterexample (shrunk, full precision):\n\n");
         std::string ce;
         for (const auto& [type, value] : v->counterexample) ce += type + " = " + value + "\n";
         md << fence(ce);

@@ -45,6 +45,8 @@ json to_json(const Verdict& v) {
   j["reproduce"] = v.reproduce;
   j["seed"] = v.seed;
   j["cases"] = v.cases;
+  j["cases_planned"] = v.cases_planned;
+  if (v.shrink_stopped) j["shrink_stopped"] = true;
   j["discarded"] = v.discarded;
   j["discard_reason"] = v.discard_reason;
   j["worst_eps_units"] = number_to_json(v.worst_eps_units);
@@ -88,6 +90,8 @@ Verdict verdict_from_json(const json& j) {
   v.reproduce = j.at("reproduce").get<std::string>();
   v.seed = j.at("seed").get<std::uint64_t>();
   v.cases = j.at("cases").get<int>();
+  v.cases_planned = j.value("cases_planned", v.cases);  // absent from reports written before the time budget
+  v.shrink_stopped = j.value("shrink_stopped", false);
   v.discarded = j.value("discarded", 0);  // absent from reports written before it was counted
   v.discard_reason = j.value("discard_reason", std::string());
   v.worst_eps_units = number_from_json(j.at("worst_eps_units"));

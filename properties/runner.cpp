@@ -66,19 +66,69 @@ std::string discard_reason(const std::string& text) {
   return rest;
 }
 
+using Clock = std::chrono::steady_clock;
+
+// Thrown by the listener between cases when the case budget is spent: RapidCheck's search loop
+// calls the listener outside any handler of its own, so this leaves the loop after a passing case.
+struct CaseBudgetSpent {
+  int passed;
+};
+
+// The text of the discard that stands for "shrinking stopped by its budget" in the final run.
+constexpr const char* kShrinkStopped = "geomech: shrinking stopped by its time budget";
+
 // Prints nothing; counts the discarded cases (issue 18: a discarded case is not a check, and the
-// verdict says how many there were).
+// verdict says how many there were); keeps the time budgets (RunOptions) and the last failing case
+// seen, which stands for the counterexample when shrinking is stopped.
 class SilentListener : public rc::detail::TestListener {
  public:
+  SilentListener(Clock::time_point start, const RunOptions& o, int planned)
+      : start_(start), case_budget_(o.case_budget_seconds), shrink_budget_(o.shrink_budget_seconds), planned_(planned) {}
+
   int discarded = 0;
   std::string first_reason;
+  // The smallest failing case found so far (the first failure, then each accepted shrink).
+  bool failed = false;
+  std::string failure_description;
+  std::vector<std::pair<std::string, std::string>> failure_example;
+
   void onTestCaseFinished(const rc::detail::CaseDescription& d) override {
-    if (d.result.type != rc::detail::CaseResult::Type::Discard) return;
-    if (discarded++ > 0) return;
-    first_reason = discard_reason(d.result.description);
+    using Type = rc::detail::CaseResult::Type;
+    if (d.result.type == Type::Discard) {
+      if (discarded++ > 0) return;
+      first_reason = discard_reason(d.result.description);
+      return;
+    }
+    if (d.result.type == Type::Failure) {
+      failed = true;
+      failure_time_ = Clock::now();
+      keep(d);
+      return;
+    }
+    ++passed_;
+    if (case_budget_ > 0 && passed_ < planned_ && seconds_since(start_) > case_budget_) throw CaseBudgetSpent{passed_};
   }
-  void onShrinkTried(const rc::detail::CaseDescription&, bool) override {}
+  void onShrinkTried(const rc::detail::CaseDescription& d, bool accepted) override {
+    if (accepted) keep(d);
+  }
   void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
+
+  // During shrinking: whether the shrink budget is spent (each further candidate is then discarded
+  // before it runs, so shrinking ends quickly with the smallest failure found).
+  bool shrink_budget_spent() const {
+    return failed && shrink_budget_ > 0 && seconds_since(failure_time_) > shrink_budget_;
+  }
+
+ private:
+  static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+  void keep(const rc::detail::CaseDescription& d) {
+    failure_description = d.result.description;
+    failure_example = d.example ? d.example() : decltype(failure_example){};
+  }
+  Clock::time_point start_, failure_time_;
+  double case_budget_, shrink_budget_;
+  int planned_;
+  int passed_ = 0;
 };
 
 struct RcEnv {
@@ -166,7 +216,7 @@ int default_cases(const Property& p, ScalarKind k) {
 
 template <class Fn>
 void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& o, Fn&& fn) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   static const RcEnv no_env;
   const RcEnv& env = o.honour_rc_params ? rc_env() : no_env;
   std::uint64_t base = o.seed;
@@ -178,6 +228,7 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   int cases = o.cases > 0 ? o.cases : static_cast<int>(default_cases(p, k) * o.case_factor + 0.5);
   if (env.max_success) cases = *env.max_success;
   params.maxSuccess = cases < 1 ? 1 : cases;
+  v.cases_planned = params.maxSuccess;
   params.maxSize = 100;
   params.disableShrinking = !o.shrink;
 
@@ -191,19 +242,26 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   std::string missing_slot;
   residual_log().reset();
   recorded_claims().clear();
-  SilentListener listener;
-  const auto result = rc::detail::checkProperty(
-      rc::detail::toProperty([&] {
-        recorded_series().clear();
-        recorded_notes().clear();
-        try {
-          fn();
-        } catch (const SlotMissing& e) {
-          missing_slot = e.slot();
-          throw;
-        }
-      }),
-      metadata, params, listener, reproduce);
+  SilentListener listener(start, o, params.maxSuccess);
+  std::optional<rc::detail::TestResult> result;
+  int budget_passed = -1;  // >= 0: the case budget stopped the run after this many passing cases
+  try {
+    result = rc::detail::checkProperty(
+        rc::detail::toProperty([&] {
+          if (listener.shrink_budget_spent()) RC_DISCARD(kShrinkStopped);
+          recorded_series().clear();
+          recorded_notes().clear();
+          try {
+            fn();
+          } catch (const SlotMissing& e) {
+            missing_slot = e.slot();
+            throw;
+          }
+        }),
+        metadata, params, listener, reproduce);
+  } catch (const CaseBudgetSpent& b) {
+    budget_passed = b.passed;
+  }
 
   v.series = recorded_series();
   recorded_series().clear();
@@ -223,10 +281,13 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   rc::detail::FailureResult failure;
   rc::detail::GaveUpResult gave_up;
   rc::detail::Error error;
-  if (result.match(success)) {
+  if (budget_passed >= 0) {
+    v.outcome = Outcome::Pass;
+    v.cases = budget_passed;
+  } else if (result->match(success)) {
     v.outcome = Outcome::Pass;
     v.cases = success.numSuccess;
-  } else if (result.match(failure)) {
+  } else if (result->match(failure)) {
     v.cases = failure.numSuccess;
     if (!missing_slot.empty()) {
       v.outcome = Outcome::Error;
@@ -235,18 +296,26 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
     } else {
       v.outcome = Outcome::Fail;
       v.message = failure.description;
-      for (const auto& [type, value] : failure.counterExample) v.counterexample.emplace_back(pretty_type(type), value);
+      auto example = failure.counterExample;
+      if (listener.failed && failure.description.find(kShrinkStopped) != std::string::npos) {
+        // The final run of the smallest case was discarded by the shrink budget: that case failed
+        // when it was tried, with this description and these inputs.
+        v.shrink_stopped = true;
+        v.message = listener.failure_description;
+        example = listener.failure_example;
+      }
+      for (const auto& [type, value] : example) v.counterexample.emplace_back(pretty_type(type), value);
       v.reproduce = rc::detail::reproduceMapToString({{metadata.id, failure.reproduce}});
     }
-  } else if (result.match(gave_up)) {
+  } else if (result->match(gave_up)) {
     v.outcome = Outcome::Error;
     v.cases = gave_up.numSuccess;
     v.message = "gave up after too many discarded cases: " + gave_up.description;
-  } else if (result.match(error)) {
+  } else if (result->match(error)) {
     v.outcome = Outcome::Error;
     v.message = error.description;
   }
-  v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  v.seconds = std::chrono::duration<double>(Clock::now() - start).count();
 }
 
 template <class T>
@@ -305,10 +374,7 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
   }
   const Subject<T>& subject = *s.get<T>();
   for (const auto& integrator : subject.integrators) {
-    const bool has_step = p.step == StepKind::RigidBody ? static_cast<bool>(integrator.rigid_body_step)
-                          : p.step == StepKind::Manakov ? static_cast<bool>(integrator.manakov_step)
-                                                        : true;
-    if (!has_step) continue;  // integrators for another system are not candidates
+    if (!has_step_kind(integrator, p.step)) continue;  // integrators for another system are not candidates
     Verdict v = base_verdict<T>(p, s);
     v.integrator = integrator.name;
     const IntegratorClaims* claims = s.claims_for(integrator.name);
@@ -320,8 +386,7 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
   if (out.empty()) {
     Verdict v = base_verdict<T>(p, s);
     v.outcome = Outcome::NotProvided;
-    v.message = std::string("the subject provides no integrator with a ") +
-                (p.step == StepKind::Manakov ? "manakov_step" : "rigid_body_step");
+    v.message = std::string("the subject provides no integrator with a ") + step_name(p.step);
     out.push_back(std::move(v));
   }
   return out;
@@ -363,6 +428,7 @@ std::string format_verdict(const Verdict& v) {
      << (v.integrator.empty() ? "" : ", " + v.integrator) << "]  spec " << v.spec;
   if (v.outcome == Outcome::Pass) {
     os << "  (" << v.cases << " cases";
+    if (v.cases_planned > v.cases) os << " of " << v.cases_planned << " planned: the time budget was spent";
     if (v.discarded > 0) os << ", " << v.discarded << " discarded";
     if (v.scalar != "exact" && v.checks > 0) os << ", worst residual " << eps_buf << " eps";
     os << ")";
@@ -375,7 +441,8 @@ std::string format_verdict(const Verdict& v) {
     for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
   }
   if (!v.counterexample.empty() && v.message.find("inputs, by the notes' names:") == std::string::npos) {
-    os << "\n  counterexample (shrunk):";
+    os << (v.shrink_stopped ? "\n  counterexample (shrinking stopped by its time budget; not minimal):"
+                            : "\n  counterexample (shrunk):");
     for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
   }
   if (v.outcome == Outcome::Fail) {

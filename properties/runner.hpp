@@ -24,6 +24,15 @@ struct RunOptions {
   std::string reproduce;      // RapidCheck reproduce string (the value after "reproduce=")
   bool honour_rc_params = true;  // read seed / max_success / reproduce from $RC_PARAMS
   bool shrink = true;            // shrink a failure to a small case (a negative control only needs the failure)
+  // Time budgets, so that a correct but slow implementation (Python in 50 digits, a solve redone
+  // at every call) is checked on fewer cases instead of being stopped as a TIMEOUT (issue 15):
+  //  - case_budget_seconds: once this much time has passed, no new case is started (at least one
+  //    case runs); the verdict says how many of the planned cases ran;
+  //  - shrink_budget_seconds: once this much time has passed since a failure was found, shrinking
+  //    stops; the counterexample is the smallest failing case found by then, and the verdict says so.
+  // 0: no budget (ctest's reference runs and negative controls).
+  double case_budget_seconds = 0;
+  double shrink_budget_seconds = 0;
 };
 
 struct Verdict {
@@ -39,6 +48,8 @@ struct Verdict {
   std::string reproduce;      // value for RC_PARAMS="reproduce=..."
   std::uint64_t seed = 0;
   int cases = 0;              // cases that passed before the verdict
+  int cases_planned = 0;      // the cases the run asked for; more than `cases` on a PASS when the case budget was spent
+  bool shrink_stopped = false;  // FAIL: shrinking was stopped by its time budget (the counterexample is not minimal)
   int discarded = 0;          // cases RapidCheck discarded (RC_DISCARD, RC_PRE): they checked nothing
   std::string discard_reason; // the first discarded case's reason
   double worst_eps_units = 0; // worst residual / (eps * scale)

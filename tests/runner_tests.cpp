@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
+#include <unistd.h>
+
 namespace gm {
 namespace {
 
@@ -89,6 +91,81 @@ TEST(Runner, WithoutShrinkingAFailureStaysAFailure) {
   EXPECT_EQ(unshrunk.cases, shrunk.cases) << "the same first failing case";
   EXPECT_NE(shrunk.message.find("k = 10"), std::string::npos) << shrunk.message;
   EXPECT_NE(unshrunk.message, shrunk.message) << "the first failing draw of 0..999 is not the smallest one";
+}
+
+// Issue 15: the case budget. A property whose cases take 20 ms each, with 40 planned and a budget of
+// 0.1 s, passes on the cases it had time for (at least one), and says how many of how many. The
+// control: without a budget all 40 run.
+TEST(Runner, TheCaseBudgetStopsStartingCasesAndSaysHowMany) {
+  Property p = half_discarding();
+  p.d = [](const Subject<double>&) {
+    ::usleep(20000);
+    require_close("1 = 1", 1.0, 1.0, 1.0, 1);
+  };
+  RunOptions o;
+  o.honour_rc_params = false;
+  o.case_budget_seconds = 0.1;
+  const Verdict v = run_property(p, reference_subject(), ScalarKind::Double, o).at(0);
+  EXPECT_EQ(v.outcome, Outcome::Pass) << format_verdict(v);
+  EXPECT_GE(v.cases, 1);
+  EXPECT_LT(v.cases, 40);
+  EXPECT_EQ(v.cases_planned, 40);
+  EXPECT_NE(format_verdict(v).find(std::to_string(v.cases) + " cases of 40 planned"), std::string::npos)
+      << format_verdict(v);
+  const Verdict all = run_in_double(p);
+  EXPECT_EQ(all.cases, 40);
+  EXPECT_EQ(all.cases_planned, 40);
+  EXPECT_EQ(format_verdict(all).find("planned"), std::string::npos) << format_verdict(all);
+}
+
+// A case that fails is a failure even when the budget was spent while it ran: the budget only stops
+// starting new cases after a pass, and the failure is shrunk as usual.
+TEST(Runner, TheCaseBudgetDoesNotHideAFailure) {
+  Property p = half_discarding();
+  p.d = [](const Subject<double>&) {
+    ::usleep(2000);
+    const int k = *rc::gen::inRange(5, 1000);
+    require("k < 5", k < 5, "k = " + std::to_string(k));
+  };
+  RunOptions o;
+  o.honour_rc_params = false;
+  o.case_budget_seconds = 1e-6;  // spent before the first case ends: that case still counts
+  const Verdict v = run_property(p, reference_subject(), ScalarKind::Double, o).at(0);
+  EXPECT_EQ(v.outcome, Outcome::Fail) << format_verdict(v);
+  EXPECT_NE(v.message.find("k = 5"), std::string::npos) << "shrunk as usual: " << v.message;
+  EXPECT_FALSE(v.shrink_stopped);
+}
+
+// The shrink budget: a failure whose shrinking would take long (each try 30 ms) stops shrinking once
+// the budget is spent and reports the smallest failing case found by then, with its inputs and its
+// own message, said to be not minimal; replaying it (the reproduce string) fails again.
+TEST(Runner, TheShrinkBudgetKeepsTheSmallestFailureFoundSoFar) {
+  Property p = half_discarding();
+  p.d = [](const Subject<double>&) {
+    ::usleep(30000);
+    const int k = *rc::gen::inRange(0, 1000000);
+    require("k < 10", k < 10, "k = " + std::to_string(k));
+  };
+  RunOptions o;
+  o.honour_rc_params = false;
+  o.shrink_budget_seconds = 0.1;
+  const Verdict v = run_property(p, reference_subject(), ScalarKind::Double, o).at(0);
+  ASSERT_EQ(v.outcome, Outcome::Fail) << format_verdict(v);
+  EXPECT_TRUE(v.shrink_stopped);
+  EXPECT_NE(v.message.find("k = "), std::string::npos) << v.message;
+  EXPECT_EQ(v.message.find("RC_DISCARD"), std::string::npos) << "the failure's own text, not the budget's: " << v.message;
+  ASSERT_FALSE(v.counterexample.empty()) << "the inputs of the failing case";
+  const int k = std::stoi(v.counterexample.front().second);
+  EXPECT_GE(k, 10) << "a failing input";
+  EXPECT_NE(v.message.find("k = " + std::to_string(k)), std::string::npos) << "the inputs belong to the message";
+  EXPECT_NE(format_verdict(v).find("not minimal"), std::string::npos) << format_verdict(v);
+  // The replay runs the recorded case without shrinking: a failure with the same inputs.
+  RunOptions replay;
+  replay.honour_rc_params = false;
+  replay.reproduce = v.reproduce;
+  const Verdict again = run_property(p, reference_subject(), ScalarKind::Double, replay).at(0);
+  EXPECT_EQ(again.outcome, Outcome::Fail) << format_verdict(again);
+  EXPECT_EQ(again.message, v.message);
 }
 
 }  // namespace
