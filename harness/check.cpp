@@ -41,14 +41,7 @@ bool subject_provides(const SubjectSet& s, ScalarKind k, const std::string& slot
   });
 }
 
-bool has_step(const Property& p, const auto& integrator) {
-  switch (p.step) {
-    case StepKind::RigidBody: return static_cast<bool>(integrator.rigid_body_step);
-    case StepKind::Manakov: return static_cast<bool>(integrator.manakov_step);
-    case StepKind::None: break;
-  }
-  return true;
-}
+bool has_step(const Property& p, const auto& integrator) { return has_step_kind(integrator, p.step); }
 
 // The integrators of `s` in scalar k that property p drives.
 std::vector<std::string> integrators_for(const Property& p, const SubjectSet& s, ScalarKind k) {
@@ -203,8 +196,8 @@ std::vector<IntegratorInfo> integrator_info(const SubjectSet& s) {
           info.has_claims = true;
           info.claims = *c;
         }
-        if (i.rigid_body_step) info.steps.push_back("rigid_body_step");
-        if (i.manakov_step) info.steps.push_back("manakov_step");
+        for (StepKind k : {StepKind::RigidBody, StepKind::Manakov, StepKind::Clebsch, StepKind::ManakovClebsch})
+          if (has_step_kind(i, k)) info.steps.push_back(step_name(k));
         out.push_back(info);
         it = out.end() - 1;
       }
@@ -256,15 +249,7 @@ void account_for_slots(CheckResult& result, const SubjectSet& s, const CheckConf
                                  ", and no property could check that claim (is its step provided in double?)");
     };
     check_claim("order", i.claims.order > 0);
-    check_claim("symmetric", i.claims.symmetric);
-    check_claim("casimir", i.claims.casimir);
-    check_claim("energy", i.claims.energy);
-    check_claim("orthogonality", i.claims.orthogonality);
-    check_claim("spectrum", i.claims.spectrum);
-    check_claim("poisson", i.claims.poisson);
-    check_claim("noether", i.claims.noether);
-    check_claim("equivariant", i.claims.equivariant);
-    check_claim("bounded_energy", i.claims.bounded_energy);
+    for (const auto& b : kBooleanClaims) check_claim(b.name, i.claims.*b.member);
   }
 }
 
@@ -380,6 +365,8 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   io.timeout_seconds = cfg.timeout_seconds;
   io.memory_limit_mb = cfg.memory_limit_mb;
   io.isolate = cfg.isolate;
+  io.prepare_worker = info.prepare_worker;
+  io.worker_done = info.worker_done;
   std::size_t finished = 0;
   const bool show_progress = cfg.progress && ::isatty(STDERR_FILENO);
   io.on_finished = [&](std::size_t) {

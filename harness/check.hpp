@@ -9,6 +9,7 @@
 
 #include "properties/runner.hpp"
 
+#include <functional>
 #include <map>
 #include <optional>
 #include <string>
@@ -29,6 +30,11 @@ struct SubjectInfo {
   // fails the check: a claim that could not be checked is not a pass.
   std::vector<std::string> unchecked;
   bool randomised = true;  // verdicts come from random cases (seeds, replay by --property); false for trajectory files
+  // An implementation running out of process (harness/remote_subject.hpp) keeps one server per
+  // worker slot of the isolation (harness/isolate.hpp) and is told when each slot starts and ends a
+  // check; empty for subjects linked in.
+  std::function<void(int)> prepare_worker;
+  std::function<void(int, bool)> worker_done;
 };
 
 struct CheckConfig {

@@ -36,8 +36,11 @@ constexpr std::size_t kOutputTail = 4096;
 // such a child gets this long past the timeout to finish its report before it is stopped.
 constexpr Clock::duration kSanitizerGrace = std::chrono::seconds(120);
 
+int g_worker = 0;  // this process's worker slot (set before a task's child is forked)
+
 struct Running {
   std::size_t index;
+  int worker;
   pid_t pid;
   int result_fd;
   int output_fd;
@@ -196,18 +199,36 @@ std::string describe_signal(int sig) {
   return s;
 }
 
+int current_worker() { return g_worker; }
+
 std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,
                                      const IsolationOptions& o) {
   std::vector<TaskResult> results(tasks.size());
+  // prepare_worker's failure is the task's: it did not run.
+  auto prepare = [&](int w, std::size_t i) {
+    if (!o.prepare_worker) return true;
+    try {
+      o.prepare_worker(w);
+      return true;
+    } catch (const std::exception& e) {
+      results[i].status = TaskResult::Status::Threw;
+      results[i].detail = std::string("threw ") + e.what();
+      return false;
+    }
+  };
   if (!o.isolate) {
+    g_worker = 0;
     for (std::size_t i = 0; i < tasks.size(); ++i) {
       const auto start = Clock::now();
-      try {
-        results[i].payload = tasks[i]();
-        results[i].status = TaskResult::Status::Ok;
-      } catch (const std::exception& e) {
-        results[i].status = TaskResult::Status::Threw;
-        results[i].detail = std::string("threw ") + e.what();
+      if (prepare(0, i)) {
+        try {
+          results[i].payload = tasks[i]();
+          results[i].status = TaskResult::Status::Ok;
+        } catch (const std::exception& e) {
+          results[i].status = TaskResult::Status::Threw;
+          results[i].detail = std::string("threw ") + e.what();
+        }
+        if (o.worker_done) o.worker_done(0, true);
       }
       results[i].seconds = std::chrono::duration<double>(Clock::now() - start).count();
       if (o.on_finished) o.on_finished(i);
@@ -220,8 +241,17 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
   std::deque<Running> running;
   std::size_t next = 0;
   const pid_t self = ::getpid();
+  std::vector<bool> busy(static_cast<std::size_t>(jobs), false);
 
   auto start_one = [&](std::size_t i) {
+    int w = 0;
+    while (busy[static_cast<std::size_t>(w)]) ++w;
+    if (!prepare(w, i)) {
+      if (o.on_finished) o.on_finished(i);
+      return;
+    }
+    busy[static_cast<std::size_t>(w)] = true;
+    g_worker = w;
     int rp[2], op[2];
     if (::pipe2(rp, O_CLOEXEC) != 0 || ::pipe2(op, O_CLOEXEC) != 0)
       throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
@@ -243,7 +273,8 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
     ::close(op[1]);
     ::fcntl(rp[0], F_SETFL, O_NONBLOCK);
     ::fcntl(op[0], F_SETFL, O_NONBLOCK);
-    running.push_back(Running{i, pid, rp[0], op[0], Clock::now(), {}, {}, {}});
+    g_worker = 0;
+    running.push_back(Running{i, w, pid, rp[0], op[0], Clock::now(), {}, {}, {}});
   };
 
   while (next < tasks.size() || !running.empty()) {
@@ -300,6 +331,11 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
       if (done) {
         if (r.result_fd >= 0) ::close(r.result_fd);
         if (r.output_fd >= 0) ::close(r.output_fd);
+        busy[static_cast<std::size_t>(r.worker)] = false;
+        if (o.worker_done) {
+          const auto st = results[r.index].status;
+          o.worker_done(r.worker, st == TaskResult::Status::Ok || st == TaskResult::Status::Threw);
+        }
         const std::size_t index = r.index;
         it = running.erase(it);
         if (o.on_finished) o.on_finished(index);

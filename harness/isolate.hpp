@@ -21,7 +21,18 @@ struct IsolationOptions {
   bool isolate = true;           // false: run the tasks in this process, one after the other (debugging)
   // Called in the parent as each task finishes (index, result), e.g. for progress output.
   std::function<void(std::size_t)> on_finished;
+  // Worker slots (issue 15): a running task occupies one of `jobs` slots, numbered from 0; in the
+  // task, current_worker() is its slot. prepare_worker(w) runs in this process before a task is
+  // started in slot w (an implementation running out of process keeps one server per slot, started
+  // here so that the children share it); if it throws, the task is not run and ends as Threw with
+  // that message. worker_done(w, ended_normally) runs here after the task has ended: normally
+  // means it returned or threw, not that it crashed or was stopped at the timeout.
+  std::function<void(int)> prepare_worker;
+  std::function<void(int, bool)> worker_done;
 };
+
+// The worker slot of the task running in this process (0 outside run_isolated).
+int current_worker();
 
 struct TaskResult {
   enum class Status {

@@ -83,7 +83,7 @@ const std::vector<SlotConcept>& slot_concepts() {
       {"Nambu bracket and motion", "nambu_3_13, nambu_motion_3_14"},
       {"Clebsch variables", "clebsch_3_21"},
       {"Manakov's SO(n) body", "manakov_M, manakov_Omega, manakov_2_34, manakov_lagrangian, manakov_clebsch_3_23"},
-      {"an integrator", "rigid_body_step, manakov_step (in a struct with a name and claims)"},
+      {"an integrator", "rigid_body_step, manakov_step, clebsch_step, manakov_clebsch_step (in a struct with a name and claims)"},
   };
   return c;
 }
@@ -99,7 +99,7 @@ std::vector<std::string> cpp_function_names(const std::string& source) {
 
 std::vector<std::string> slot_name_advice(const std::vector<std::string>& names) {
   std::vector<std::string> out;
-  static const std::set<std::string> not_slots = {"rigid_body_step", "manakov_step", "main", "name", "claims",
+  static const std::set<std::string> not_slots = {"rigid_body_step", "manakov_step", "clebsch_step", "manakov_clebsch_step", "main", "name", "claims",
                                                   "description", "operator"};
   for (const auto& name : names) {
     if (is_slot_name(name) || not_slots.count(name)) continue;

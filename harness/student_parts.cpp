@@ -76,7 +76,8 @@ int student_main(int argc, char** argv) {
       if constexpr (!is_exact_v<typename std::remove_pointer_t<decltype(sub)>::Scalar>)
         for (const auto& i : sub->integrators)
           std::cout << " integrator:" << i.name << (i.rigid_body_step ? "[rigid_body_step]" : "")
-                    << (i.manakov_step ? "[manakov_step]" : "");
+                    << (i.manakov_step ? "[manakov_step]" : "") << (i.clebsch_step ? "[clebsch_step]" : "")
+                    << (i.manakov_clebsch_step ? "[manakov_clebsch_step]" : "");
       std::cout << "\n";
     };
     show(s.d.get(), "double");

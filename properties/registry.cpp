@@ -45,4 +45,15 @@ const Property* find_property(std::string_view id) {
   return nullptr;
 }
 
+const char* step_name(StepKind k) {
+  switch (k) {
+    case StepKind::RigidBody: return "rigid_body_step";
+    case StepKind::Manakov: return "manakov_step";
+    case StepKind::Clebsch: return "clebsch_step";
+    case StepKind::ManakovClebsch: return "manakov_clebsch_step";
+    case StepKind::None: break;
+  }
+  return "step";
+}
+
 }  // namespace gm

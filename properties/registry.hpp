@@ -26,7 +26,21 @@ enum class ToleranceClass {
 };
 const char* tolerance_name(ToleranceClass t);
 
-enum class StepKind { None, RigidBody, Manakov };
+// The integrator step a property drives (core/subject.hpp, Integrator).
+enum class StepKind { None, RigidBody, Manakov, Clebsch, ManakovClebsch };
+// Whether `i` has the step of kind k (None: any integrator), and the step's name.
+template <class I>
+bool has_step_kind(const I& i, StepKind k) {
+  switch (k) {
+    case StepKind::RigidBody: return static_cast<bool>(i.rigid_body_step);
+    case StepKind::Manakov: return static_cast<bool>(i.manakov_step);
+    case StepKind::Clebsch: return static_cast<bool>(i.clebsch_step);
+    case StepKind::ManakovClebsch: return static_cast<bool>(i.manakov_clebsch_step);
+    case StepKind::None: break;
+  }
+  return true;
+}
+const char* step_name(StepKind k);
 
 enum class Scope {
   Subject,     // runs once per subject

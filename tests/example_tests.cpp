@@ -209,7 +209,7 @@ const std::vector<Example>& examples() {
        false,
        {},
        "",
-       {"**Result: UNCHECKED**", "integrator 'explicit_euler_pi_only' has neither rigid_body_step"},
+       {"**Result: UNCHECKED**", "integrator 'explicit_euler_pi_only' has none of rigid_body_step("},
        1},
       {"bug_slot_names",
        "right formulas under names that are not slot names: nothing is checked",

@@ -35,8 +35,9 @@
 // - If a template does not compile for a scalar, `geomech check` drops just that slot in just that
 //   scalar and says so. In your own build you can opt out: `static constexpr const char* skip_exact
 //   = "all";` (or a list of slot names, "hamiltonian_3_4 clebsch_3_21"); `skip_mp50` likewise.
-// - Integrators need `name`; `claims` is optional (nothing claimed); `rigid_body_step` and/or
-//   `manakov_step` are detected like slots. Integrators are never run in rationals.
+// - Integrators need `name`; `claims` is optional (nothing claimed); `rigid_body_step`,
+//   `manakov_step`, `clebsch_step` and `manakov_clebsch_step` are detected like slots. Integrators are
+//   never run in rationals.
 // - Write no main(), or guard yours with `#ifndef GEOMECH_STUDENT_CHECK`.
 #pragma once
 
@@ -65,6 +66,7 @@ struct Claims {
   bool noether = false;        // the spatial momentum O Pi (Manakov: O M O^T) is kept to round-off
   bool equivariant = false;    // step(Pi, R O) = (Pi', R O'): commutes with rotating the attitude
   bool bounded_energy = false; // over long runs the energy error stays bounded (no secular drift)
+  bool symplectic = false;     // canonical steps (clebsch_step, manakov_clebsch_step) preserve dQ ^ dP
 };
 
 // What one translation unit registered for one scalar (filled by GEOMECH_STUDENT).
@@ -222,32 +224,29 @@ void gm_integrator_of(Subject<T>& s, PartInfo& info) {
   using MS = ManakovState<T>;
   Integrator<T> in;
   in.name = std::string(Int::name);
-  if constexpr (requires(const Vec3<T>& I, const RS& x, const T& h) {
-                  { Int::template rigid_body_step<T>(I, x, h) } -> std::convertible_to<RS>;
-                })
-    in.rigid_body_step = [](const Vec3<T>& I, const RS& x, const T& h) -> RS {
-      return Int::template rigid_body_step<T>(I, x, h);
-    };
-  else if constexpr (std::is_same_v<T, double> && requires(const Vec3<T>& I, const RS& x, const T& h) {
-                       { Int::rigid_body_step(I, x, h) } -> std::convertible_to<RS>;
-                     })
-    in.rigid_body_step = [](const Vec3<T>& I, const RS& x, const T& h) -> RS { return Int::rigid_body_step(I, x, h); };
-  if constexpr (requires(const MatX<T>& A, const MS& x, const T& h) {
-                  { Int::template manakov_step<T>(A, x, h) } -> std::convertible_to<MS>;
-                })
-    in.manakov_step = [](const MatX<T>& A, const MS& x, const T& h) -> MS {
-      return Int::template manakov_step<T>(A, x, h);
-    };
-  else if constexpr (std::is_same_v<T, double> && requires(const MatX<T>& A, const MS& x, const T& h) {
-                       { Int::manakov_step(A, x, h) } -> std::convertible_to<MS>;
-                     })
-    in.manakov_step = [](const MatX<T>& A, const MS& x, const T& h) -> MS { return Int::manakov_step(A, x, h); };
-  if (in.rigid_body_step || in.manakov_step)
+  // Each step is detected like a slot: a template on the scalar, or (double only) a plain function.
+#define GM_INTEGRATOR_STEP(step, ArgT, StateT)                                                            \
+  if constexpr (requires(const ArgT& a, const StateT& x, const T& h) {                                    \
+                  { Int::template step<T>(a, x, h) } -> std::convertible_to<StateT>;                      \
+                })                                                                                         \
+    in.step = [](const ArgT& a, const StateT& x, const T& h) -> StateT { return Int::template step<T>(a, x, h); }; \
+  else if constexpr (std::is_same_v<T, double> && requires(const ArgT& a, const StateT& x, const T& h) {   \
+                       { Int::step(a, x, h) } -> std::convertible_to<StateT>;                             \
+                     })                                                                                    \
+    in.step = [](const ArgT& a, const StateT& x, const T& h) -> StateT { return Int::step(a, x, h); };
+  GM_INTEGRATOR_STEP(rigid_body_step, Vec3<T>, RS)
+  GM_INTEGRATOR_STEP(manakov_step, MatX<T>, MS)
+  GM_INTEGRATOR_STEP(clebsch_step, Vec3<T>, Vec3Pair<T>)
+  GM_INTEGRATOR_STEP(manakov_clebsch_step, MatX<T>, MatXPair<T>)
+#undef GM_INTEGRATOR_STEP
+  if (in.rigid_body_step || in.manakov_step || in.clebsch_step || in.manakov_clebsch_step)
     s.integrators.push_back(std::move(in));
   else if constexpr (std::is_same_v<T, double>)
     info.unchecked.push_back("integrator '" + std::string(Int::name) +
-                             "' has neither rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) "
-                             "nor manakov_step(const MatX<T>& A, const ManakovState<T>& x, const T& h) with the "
+                             "' has none of rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h), "
+                             "manakov_step(const MatX<T>& A, const ManakovState<T>& x, const T& h), "
+                             "clebsch_step(const Vec3<T>& I, const Vec3Pair<T>& QP, const T& h) or "
+                             "manakov_clebsch_step(const MatX<T>& A, const MatXPair<T>& QP, const T& h) with the "
                              "expected signature (see `geomech slots`), so none of its claims can be checked");
 }
 
@@ -258,6 +257,7 @@ IntegratorClaims claims_of() {
   if constexpr (requires { Int::claims; }) {
     const auto& k = Int::claims;
     c.order = k.order;
+    // The same members by the same names (gm::student::Claims mirrors IntegratorClaims).
     c.symmetric = k.symmetric;
     c.casimir = k.casimir;
     c.energy = k.energy;
@@ -267,6 +267,7 @@ IntegratorClaims claims_of() {
     c.noether = k.noether;
     c.equivariant = k.equivariant;
     c.bounded_energy = k.bounded_energy;
+    c.symplectic = k.symplectic;
   }
   return c;
 }
