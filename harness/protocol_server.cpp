@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 #include <string>
+#include <sys/wait.h>
 #include <unistd.h>
 #include <utility>
 
@@ -51,6 +52,12 @@ json call_in(const Subject<T>* s, const json& c) {
         if (slot == "manakov_step" && in.manakov_step)
           return ServedSlot<T, ManakovState<T>(const MatX<T>&, const ManakovState<T>&, const T&)>::call(in.manakov_step,
                                                                                                          args, who);
+        if (slot == "clebsch_step" && in.clebsch_step)
+          return ServedSlot<T, Vec3Pair<T>(const Vec3<T>&, const Vec3Pair<T>&, const T&)>::call(in.clebsch_step, args,
+                                                                                                  who);
+        if (slot == "manakov_clebsch_step" && in.manakov_clebsch_step)
+          return ServedSlot<T, MatXPair<T>(const MatX<T>&, const MatXPair<T>&, const T&)>::call(in.manakov_clebsch_step,
+                                                                                                  args, who);
         throw std::runtime_error("integrator '" + name + "' has no " + slot + " in " + scalar_word<T>());
       }
       throw std::runtime_error("no integrator is named '" + name + "'");
@@ -67,10 +74,9 @@ json call_in(const Subject<T>* s, const json& c) {
 }
 
 json claims_json(const IntegratorClaims& c) {
-  return json{{"order", c.order},         {"symmetric", c.symmetric},     {"casimir", c.casimir},
-              {"energy", c.energy},       {"orthogonality", c.orthogonality}, {"spectrum", c.spectrum},
-              {"poisson", c.poisson},     {"noether", c.noether},         {"equivariant", c.equivariant},
-              {"bounded_energy", c.bounded_energy}};
+  json j{{"order", c.order}};
+  for (const auto& b : kBooleanClaims) j[b.name] = c.*b.member;
+  return j;
 }
 
 bool write_all(int fd, const std::string& s) {
@@ -104,6 +110,8 @@ json hello_for(const SubjectSet& s, const harness::SubjectInfo& info, const std:
           json steps = json::array();
           if (in.rigid_body_step) steps.push_back("rigid_body_step");
           if (in.manakov_step) steps.push_back("manakov_step");
+          if (in.clebsch_step) steps.push_back("clebsch_step");
+          if (in.manakov_clebsch_step) steps.push_back("manakov_clebsch_step");
           json j{{"name", in.name}, {"steps", steps}, {"scalars", json::array()}};
           for (const auto& c : s.claims)
             if (c.integrator == in.name) j["claims"] = claims_json(c);
@@ -152,29 +160,111 @@ json answer(const SubjectSet& s, const json& request) {
   return json{{"id", request.value("id", json())}, {"results", results}};
 }
 
-int serve(const SubjectSet& s, const harness::SubjectInfo& info, const std::string& language, int in, int out) {
-  if (!write_all(out, hello_for(s, info, language).dump() + "\n")) return 2;
-  std::string buffer;
-  char buf[65536];
-  for (;;) {
-    std::size_t nl;
-    while ((nl = buffer.find('\n')) != std::string::npos) {
-      const std::string line = buffer.substr(0, nl);
-      buffer.erase(0, nl + 1);
-      json reply;
-      try {
-        reply = answer(s, json::parse(line));
-      } catch (const std::exception& e) {
-        write_all(out, json{{"fatal", std::string("not a request: ") + e.what()}}.dump() + "\n");
+namespace {
+
+// Request lines from a descriptor (raw reads, no stdio buffer: a session's copy made by fork takes
+// over the same input, and the server resumes after it without losing a byte).
+class LineReader {
+ public:
+  explicit LineReader(int fd) : fd_(fd) {}
+  // The next line without its newline; false at the end of input.
+  bool next(std::string& line) {
+    for (;;) {
+      const auto nl = buffer_.find('\n');
+      if (nl != std::string::npos) {
+        line = buffer_.substr(0, nl);
+        buffer_.erase(0, nl + 1);
+        return true;
+      }
+      char buf[65536];
+      const ssize_t n = ::read(fd_, buf, sizeof buf);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) return false;
+      buffer_.append(buf, static_cast<std::size_t>(n));
+    }
+  }
+
+ private:
+  int fd_;
+  std::string buffer_;
+};
+
+std::string how_it_ended(int status) {
+  if (WIFSIGNALED(status)) return std::string("was killed by signal ") + strsignal(WTERMSIG(status));
+  if (WIFEXITED(status)) return "exited with status " + std::to_string(WEXITSTATUS(status));
+  return "ended";
+}
+
+// Answers requests until the input ends (returns 0) or, in a session, until {"session": "end"}
+// (returns 1 after replying); 2 after a line that is not a request (a fatal reply is written).
+int serve_requests(const SubjectSet& s, LineReader& in, int out, bool in_session) {
+  std::string line;
+  while (in.next(line)) {
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;  // the empty line after each request
+    json req;
+    try {
+      req = json::parse(line);
+      if (!req.is_object()) throw std::runtime_error("not an object");
+    } catch (const std::exception& e) {
+      write_all(out, json{{"fatal", std::string("not a request: ") + e.what()}}.dump() + "\n");
+      return 2;
+    }
+    const json id = req.value("id", json());
+    if (req.contains("session")) {
+      const std::string what = req["session"].is_string() ? req["session"].get<std::string>() : "";
+      if (what == "end" && in_session) {
+        write_all(out, json{{"id", id}, {"session", "ended"}}.dump() + "\n");
+        return 1;
+      }
+      if (what != "begin" || in_session) {
+        write_all(out, json{{"id", id}, {"fatal", "unexpected session request '" + what + "'"}}.dump() + "\n");
         return 2;
       }
-      if (!write_all(out, reply.dump() + "\n")) return 2;
+      // A session: a copy of this process answers the check's calls, so that the check sees the
+      // implementation as the handshake left it and leaves nothing behind.
+      int done[2];
+      if (::pipe(done) != 0) {
+        write_all(out, json{{"id", id}, {"fatal", std::string("cannot create a pipe: ") + std::strerror(errno)}}.dump() + "\n");
+        return 2;
+      }
+      const pid_t pid = ::fork();
+      if (pid == 0) {
+        ::close(done[0]);
+        write_all(out, json{{"id", id}, {"session", "begun"}, {"pid", ::getpid()}}.dump() + "\n");
+        const int r = serve_requests(s, in, out, true);
+        if (r == 1) (void)!::write(done[1], "E", 1);
+        ::_exit(r == 2 ? 2 : 0);
+      }
+      ::close(done[1]);
+      int status = 0;
+      bool ended = false;
+      if (pid > 0) {
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+        }
+        char c;
+        ended = ::read(done[0], &c, 1) == 1;
+      }
+      ::close(done[0]);
+      if (pid < 0)
+        write_all(out, json{{"id", id}, {"fatal", std::string("cannot fork: ") + std::strerror(errno)}}.dump() + "\n");
+      else if (!ended)  // it died during the session: the harness is waiting for a reply
+        write_all(out, json{{"id", nullptr}, {"died", how_it_ended(status)}}.dump() + "\n");
+      continue;
     }
-    const ssize_t n = ::read(in, buf, sizeof buf);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return 0;
-    buffer.append(buf, static_cast<std::size_t>(n));
+    if (!write_all(out, answer(s, req).dump() + "\n")) return 2;
   }
+  return 0;
+}
+
+}  // namespace
+
+int serve(const SubjectSet& s, const harness::SubjectInfo& info, const std::string& language, int in, int out) {
+  json h = hello_for(s, info, language);
+  h["sessions"] = true;
+  if (!write_all(out, h.dump() + "\n")) return 2;
+  LineReader reader(in);
+  const int r = serve_requests(s, reader, out, false);
+  return r == 2 ? 2 : 0;
 }
 
 }  // namespace gm::protocol

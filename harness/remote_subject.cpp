@@ -1,14 +1,18 @@
 #include "harness/remote_subject.hpp"
 
+#include "harness/isolate.hpp"
 #include "harness/protocol_codec.hpp"
 
+#include <algorithm>
 #include <cerrno>
+#include <chrono>
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
 #include <limits>
 #include <poll.h>
+#include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -27,98 +31,156 @@ std::string slot_table_json() {
     slots.push_back({{"name", s.name}, {"signature", s.signature}, {"place", s.place}, {"meaning", s.meaning}});
   t["slots"] = slots;
   t["steps"] = {{"rigid_body_step", "RigidBodyState<T>(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h)"},
-                {"manakov_step", "ManakovState<T>(const MatX<T>& A, const ManakovState<T>& x, const T& h)"}};
+                {"manakov_step", "ManakovState<T>(const MatX<T>& A, const ManakovState<T>& x, const T& h)"},
+                {"clebsch_step", "Vec3Pair<T>(const Vec3<T>& I, const Vec3Pair<T>& QP, const T& h)"},
+                {"manakov_clebsch_step", "MatXPair<T>(const MatX<T>& A, const MatXPair<T>& QP, const T& h)"}};
   return t.dump();
 }
 
-Connection::Connection(std::vector<std::string> argv, std::string language)
-    : argv_(std::move(argv)), language_(std::move(language)), table_(slot_table_json()) {}
+namespace {
 
-Connection::~Connection() { stop(); }
+using Clock = std::chrono::steady_clock;
 
-void Connection::stop() {
-  if (child_ > 0 && owner_ == ::getpid()) {
-    if (to_child_ >= 0) ::close(to_child_);
-    to_child_ = -1;
-    // Give it a moment to leave on end of input, then make sure.
-    for (int i = 0; i < 50; ++i) {
-      int status = 0;
-      if (::waitpid(child_, &status, WNOHANG) == child_) {
-        child_ = -1;
-        break;
-      }
-      ::usleep(2000);
-    }
-    if (child_ > 0) {
-      ::kill(child_, SIGKILL);
-      ::waitpid(child_, nullptr, 0);
-    }
+double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+
+std::string program_name(const std::vector<std::string>& argv) { return argv.empty() ? std::string("?") : argv.back(); }
+
+bool write_all(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
   }
-  for (int* fd : {&to_child_, &from_child_, &child_err_})
-    if (*fd >= 0) ::close(*fd);
-  to_child_ = from_child_ = child_err_ = -1;
-  child_ = -1;
-  buffer_.clear();
+  return true;
 }
 
-void Connection::ensure_started() {
-  if (child_ > 0 && owner_ == ::getpid()) return;
-  if (owner_ != ::getpid()) {
-    // Inherited through fork from another process: those pipes and that child are not ours.
-    for (int* fd : {&to_child_, &from_child_, &child_err_})
-      if (*fd >= 0) ::close(*fd);
-    to_child_ = from_child_ = child_err_ = -1;
-    child_ = -1;
-    buffer_.clear();
+// Keeps the end of what the implementation prints (shown with a failure of its process).
+void drain_output(ServerProcess& s) {
+  if (s.output < 0) return;
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(s.output, buf, sizeof buf);
+    if (n > 0) {
+      s.output_tail.append(buf, static_cast<std::size_t>(n));
+      if (s.output_tail.size() > 16000) s.output_tail.erase(0, s.output_tail.size() - 8000);
+      continue;
+    }
+    if (n < 0 && errno == EINTR) continue;
+    if (n == 0) {  // it closed its output (it is ending)
+      ::close(s.output);
+      s.output = -1;
+    }
+    return;
   }
-  int in[2], out[2], err[2];
-  if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0 || ::pipe2(err, O_CLOEXEC) != 0)
+}
+
+std::string with_output(const ServerProcess& s) {
+  std::string tail = s.output_tail.size() > 4000 ? "..." + s.output_tail.substr(s.output_tail.size() - 4000) : s.output_tail;
+  while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
+  return tail.empty() ? std::string() : "\nwhat it printed last:\n" + tail;
+}
+
+}  // namespace
+
+Connection::Connection(std::vector<std::string> argv, std::string language)
+    : argv_(std::move(argv)), language_(std::move(language)), table_(slot_table_json()), owner_(::getpid()) {
+  void* p = ::mmap(nullptr, sizeof(SlotState) * kMaxWorkers, PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED) throw RemoteError(std::string("cannot map shared memory: ") + std::strerror(errno));
+  slots_ = static_cast<SlotState*>(p);
+}
+
+Connection::~Connection() {
+  stop();
+  if (::getpid() == owner_ && slots_) ::munmap(slots_, sizeof(SlotState) * kMaxWorkers);
+}
+
+void Connection::kill_server(ServerProcess& s) {
+  if (s.to >= 0) ::close(s.to);  // a server ends when its input ends
+  s.to = -1;
+  if (s.pid > 0) {
+    bool gone = false;
+    for (int i = 0; i < 50 && !gone; ++i) {
+      if (::waitpid(s.pid, nullptr, WNOHANG) == s.pid) gone = true;
+      else ::usleep(2000);
+    }
+    ::kill(-s.pid, SIGKILL);  // its process group: a session's copy too
+    if (!gone) {
+      ::kill(s.pid, SIGKILL);
+      ::waitpid(s.pid, nullptr, 0);
+    }
+  }
+  for (int* fd : {&s.replies, &s.output})
+    if (*fd >= 0) ::close(*fd);
+  s = ServerProcess{};
+}
+
+void Connection::stop() {
+  std::lock_guard lock(mutex_);
+  const pid_t me = ::getpid();
+  if (me == owner_)
+    for (auto& s : pool_) kill_server(s);
+  if (own_pid_ == me) kill_server(own_);
+}
+
+void Connection::start(ServerProcess& s) {
+  int in[2], rep[2], out[2];
+  if (::pipe2(in, O_CLOEXEC) != 0 || ::pipe2(rep, O_CLOEXEC) != 0 || ::pipe2(out, O_CLOEXEC) != 0)
     throw RemoteError(std::string("cannot create pipes: ") + std::strerror(errno));
   const pid_t parent = ::getpid();
   const pid_t pid = ::fork();
   if (pid < 0) throw RemoteError(std::string("cannot fork: ") + std::strerror(errno));
   if (pid == 0) {
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the process that talks to us
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);  // never outlive the process that talks to it
     if (::getppid() != parent) ::_exit(127);
+    ::setpgid(0, 0);  // its own group: stopping it stops a session's copy too
     ::dup2(in[0], 0);
     ::dup2(out[1], 1);
-    ::dup2(err[1], 2);
+    ::dup2(out[1], 2);
+    if (rep[1] == 3)
+      ::fcntl(3, F_SETFD, 0);
+    else
+      ::dup2(rep[1], 3);  // the reply channel: what the implementation prints cannot be taken for a reply
     ::setenv("GEOMECH_SLOT_TABLE", table_.c_str(), 1);
+    ::setenv("GEOMECH_REPLY_FD", "3", 1);
     std::vector<char*> a;
-    for (auto& s : argv_) a.push_back(const_cast<char*>(s.c_str()));
+    for (auto& x : argv_) a.push_back(const_cast<char*>(x.c_str()));
     a.push_back(nullptr);
     ::execvp(a[0], a.data());
     std::fprintf(stderr, "cannot run %s: %s\n", a[0], std::strerror(errno));
     ::_exit(127);
   }
   ::close(in[0]);
+  ::close(rep[1]);
   ::close(out[1]);
-  ::close(err[1]);
-  ::fcntl(err[0], F_SETFL, ::fcntl(err[0], F_GETFL) | O_NONBLOCK);
-  to_child_ = in[1];
-  from_child_ = out[0];
-  child_err_ = err[0];
-  child_ = pid;
-  owner_ = parent;
+  ::fcntl(out[0], F_SETFL, ::fcntl(out[0], F_GETFL) | O_NONBLOCK);
+  s = ServerProcess{};
+  s.pid = pid;
+  s.to = in[1];
+  s.replies = rep[0];
+  s.output = out[0];
   std::signal(SIGPIPE, SIG_IGN);
-  const std::string line = read_line();
-  if (!table_.empty() && table_.back() == '}' && table_.find("\"probe\":false") == std::string::npos)
-    table_.insert(table_.size() - 1, ",\"probe\":false");  // later starts: the harness knows what works where
+  const std::string line = read_reply(s, "its handshake", handshake_seconds);
   try {
     hello_ = json::parse(line);
   } catch (const std::exception& e) {
-    const std::string tail = stderr_tail();
-    stop();
+    const std::string tail = with_output(s);
+    kill_server(s);
     throw RemoteError("the implementation's first line is not a JSON handshake (" + std::string(e.what()) +
-                      "): " + line.substr(0, 300) + (tail.empty() ? "" : "\n" + tail));
+                      "): " + line.substr(0, 300) + tail);
   }
+  sessions_ = hello_.is_object() && hello_.value("sessions", false);
+  // Later starts: the harness knows what works where, the server need not probe again.
+  if (!table_.empty() && table_.back() == '}' && table_.find("\"probe\":false") == std::string::npos)
+    table_.insert(table_.size() - 1, ",\"probe\":false");
 }
 
-std::string Connection::how_it_ended(const std::string& otherwise) {
+std::string Connection::died(ServerProcess& s, const std::string& otherwise) {
   int status = 0;
-  for (int i = 0; i < 25 && child_ > 0; ++i) {  // up to half a second for it to be reaped
-    if (::waitpid(child_, &status, WNOHANG) == child_) {
-      child_ = -1;
+  for (int i = 0; i < 25 && s.pid > 0; ++i) {  // up to half a second for it to be reaped
+    if (::waitpid(s.pid, &status, WNOHANG) == s.pid) {
+      s.pid = -1;
       if (WIFEXITED(status)) {
         const int code = WEXITSTATUS(status);
         std::string how = "exited with status " + std::to_string(code);
@@ -134,49 +196,148 @@ std::string Connection::how_it_ended(const std::string& otherwise) {
   return otherwise;
 }
 
-std::string Connection::stderr_tail() {
-  std::string s;
-  if (child_err_ < 0) return s;
-  char buf[4096];
+std::string Connection::read_reply(ServerProcess& s, const std::string& what, double deadline_seconds) {
+  const auto start = Clock::now();
   for (;;) {
-    const ssize_t n = ::read(child_err_, buf, sizeof buf);
-    if (n <= 0) break;
-    s.append(buf, static_cast<std::size_t>(n));
-    if (s.size() > 20000) s.erase(0, s.size() - 20000);
-  }
-  return s;
-}
-
-std::string Connection::read_line() {
-  for (;;) {
-    const auto nl = buffer_.find('\n');
+    const auto nl = s.buffer.find('\n');
     if (nl != std::string::npos) {
-      std::string line = buffer_.substr(0, nl);
-      buffer_.erase(0, nl + 1);
+      std::string line = s.buffer.substr(0, nl);
+      s.buffer.erase(0, nl + 1);
       return line;
     }
-    char buf[65536];
-    const ssize_t n = ::read(from_child_, buf, sizeof buf);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string how = how_it_ended("closed its output");
-      const std::string tail = stderr_tail();
-      throw RemoteError("the implementation's process (" + (argv_.empty() ? std::string("?") : argv_.back()) + ") " + how +
-                        (tail.empty() ? std::string() : ":\n" + tail));
+    pollfd fds[2] = {{s.replies, POLLIN, 0}, {s.output, POLLIN, 0}};
+    int wait_ms = 1000;
+    if (deadline_seconds > 0) {
+      const double left = deadline_seconds - seconds_since(start);
+      if (left <= 0) {
+        drain_output(s);
+        throw RemoteError("the implementation's process (" + program_name(argv_) + ") did not answer " + what +
+                          " within " + std::to_string(static_cast<int>(deadline_seconds)) +
+                          " s (does loading it run a long computation, or wait for input?)" + with_output(s));
+      }
+      wait_ms = std::min(1000, static_cast<int>(left * 1000) + 1);
     }
-    buffer_.append(buf, static_cast<std::size_t>(n));
+    const int n_fds = s.output >= 0 ? 2 : 1;
+    if (::poll(fds, n_fds, wait_ms) < 0 && errno != EINTR)
+      throw RemoteError(std::string("cannot wait for the implementation: ") + std::strerror(errno));
+    drain_output(s);
+    if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+    char buf[65536];
+    const ssize_t n = ::read(s.replies, buf, sizeof buf);
+    if (n < 0 && (errno == EINTR || errno == EAGAIN)) continue;
+    if (n <= 0) {
+      drain_output(s);
+      const std::string how = died(s, "closed its reply channel");
+      throw RemoteError("the implementation's process (" + program_name(argv_) + ") " + how + " before it answered " +
+                        what + with_output(s));
+    }
+    s.buffer.append(buf, static_cast<std::size_t>(n));
   }
+}
+
+json Connection::request(ServerProcess& s, const json& req, const std::string& what, double deadline_seconds) {
+  // The empty line after each request: Octave's fgetl returns a line only once it has seen the next
+  // byte; every server skips empty lines.
+  if (!write_all(s.to, req.dump() + "\n\n")) {
+    drain_output(s);
+    const std::string how = died(s, "stopped reading its input");
+    throw RemoteError("cannot send " + what + ": the implementation's process (" + program_name(argv_) + ") " + how +
+                      " (a server answers every request and ends only when its input ends)" + with_output(s));
+  }
+  const std::string line = read_reply(s, what, deadline_seconds);
+  json rep;
+  try {
+    rep = json::parse(line);
+  } catch (const std::exception& e) {
+    throw RemoteError("the implementation answered " + what + " with something that is not JSON (" + e.what() +
+                      "): " + line.substr(0, 300) + with_output(s));
+  }
+  if (!rep.is_object()) throw RemoteError("the implementation's reply to " + what + " is not a JSON object: " + line.substr(0, 300));
+  if (rep.contains("died"))
+    throw RemoteError("the implementation's process " + (rep["died"].is_string() ? rep["died"].get<std::string>() : rep["died"].dump()) +
+                      " while answering " + what + with_output(s));
+  if (rep.contains("fatal"))
+    throw RemoteError("the implementation's server failed on " + what + ": " +
+                      (rep["fatal"].is_string() ? rep["fatal"].get<std::string>() : rep["fatal"].dump()) + with_output(s));
+  if (!rep.contains("id") || rep["id"] != req["id"])
+    throw RemoteError("the implementation's reply to " + what + " answers another request (id " +
+                      (rep.contains("id") ? rep["id"].dump() : std::string("missing")) + ", expected " + req["id"].dump() +
+                      ")");
+  return rep;
+}
+
+ServerProcess& Connection::server_for_this_process() {
+  const pid_t me = ::getpid();
+  const int w = harness::current_worker();
+  if (me == owner_) {  // not in a check's process: --no-isolation, the handshake, a direct use
+    if (pool_.size() <= static_cast<std::size_t>(w)) pool_.resize(static_cast<std::size_t>(w) + 1);
+    if (!pool_[static_cast<std::size_t>(w)].running()) start(pool_[static_cast<std::size_t>(w)]);
+    return pool_[static_cast<std::size_t>(w)];
+  }
+  // A session only on a server prepared for this worker slot by the process that forked this one
+  // (run_isolated); any other fork starts a copy of its own.
+  if (sessions_ && abandoned_pid_ != me && static_cast<std::size_t>(w) < prepared_.size() &&
+      prepared_[static_cast<std::size_t>(w)] && pool_[static_cast<std::size_t>(w)].running()) {
+    ServerProcess& s = pool_[static_cast<std::size_t>(w)];  // started by the owner before this process was forked
+    if (session_pid_ != me) {
+      slots_[w].session_open = 1;
+      slots_[w].in_flight = 1;
+      const json r = request(s, json{{"id", next_id_++}, {"session", "begin"}}, "the request to start a session", 60);
+      if (r.value("session", "") != "begun")
+        throw RemoteError("the implementation's server did not start a session: " + r.dump().substr(0, 300));
+      slots_[w].in_flight = 0;
+      session_pid_ = me;
+    }
+    return s;
+  }
+  if (own_pid_ != me) {  // inherited from another process: not ours
+    own_ = ServerProcess{};
+    own_pid_ = me;
+  }
+  if (!own_.running()) start(own_);
+  return own_;
 }
 
 const json& Connection::hello() {
   std::lock_guard lock(mutex_);
-  ensure_started();
+  server_for_this_process();
   return hello_;
+}
+
+void Connection::prepare_worker(int w) {
+  std::lock_guard lock(mutex_);
+  if (::getpid() != owner_ || w < 0 || w >= kMaxWorkers || !sessions_) return;
+  if (pool_.size() <= static_cast<std::size_t>(w)) pool_.resize(static_cast<std::size_t>(w) + 1);
+  ServerProcess& s = pool_[static_cast<std::size_t>(w)];
+  if (s.running() && (slots_[w].session_open || slots_[w].in_flight)) kill_server(s);
+  slots_[w] = SlotState{0, 0};
+  if (!s.running()) start(s);
+  if (prepared_.size() <= static_cast<std::size_t>(w)) prepared_.resize(static_cast<std::size_t>(w) + 1, false);
+  prepared_[static_cast<std::size_t>(w)] = true;
+}
+
+void Connection::worker_done(int w, bool ended_normally) {
+  std::lock_guard lock(mutex_);
+  if (::getpid() != owner_ || w < 0 || w >= kMaxWorkers || static_cast<std::size_t>(w) >= pool_.size()) return;
+  ServerProcess& s = pool_[static_cast<std::size_t>(w)];
+  if (static_cast<std::size_t>(w) < prepared_.size()) prepared_[static_cast<std::size_t>(w)] = false;
+  if (!slots_[w].session_open) return;  // the check called nothing
+  bool clean = ended_normally && !slots_[w].in_flight && s.running();
+  if (clean) {
+    try {  // the session's copy answers and ends; the server is back as the handshake left it
+      const json r = request(s, json{{"id", next_id_++}, {"session", "end"}}, "the request to end a session", 30);
+      clean = r.value("session", "") == "ended";
+    } catch (const RemoteError&) {
+      clean = false;
+    }
+  }
+  if (!clean) kill_server(s);  // started again by the next prepare_worker
+  slots_[w] = SlotState{0, 0};
 }
 
 std::vector<Reply> Connection::call_batch(const std::vector<Call>& calls) {
   std::lock_guard lock(mutex_);
-  ensure_started();
+  const pid_t me = ::getpid();
   json req;
   req["id"] = next_id_++;
   json cs = json::array();
@@ -186,44 +347,40 @@ std::vector<Reply> Connection::call_batch(const std::vector<Call>& calls) {
     cs.push_back(std::move(j));
   }
   req["calls"] = std::move(cs);
-  const std::string text = req.dump() + "\n";
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(to_child_, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const std::string how = how_it_ended("stopped reading its input");
-      const std::string tail = stderr_tail();
-      throw RemoteError("cannot send a request: the implementation's process (" +
-                        (argv_.empty() ? std::string("?") : argv_.back()) + ") " + how +
-                        " (a server answers every request and ends only when its input ends)" +
-                        (tail.empty() ? std::string() : ":\n" + tail));
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  const std::string line = read_line();
+  const std::string what = calls.empty() ? std::string("an empty request")
+                                         : "the call of '" + (calls[0].integrator.empty() ? "" : calls[0].integrator + ".") +
+                                               calls[0].slot + "' (" + calls[0].scalar + ")";
+  const int w = harness::current_worker();
+  ServerProcess& s = server_for_this_process();
+  const bool session = me != owner_ && sessions_ && session_pid_ == me && abandoned_pid_ != me;
   json rep;
   try {
-    rep = json::parse(line);
-  } catch (const std::exception& e) {
-    throw RemoteError("the implementation answered with something that is not JSON (" + std::string(e.what()) +
-                      "): " + line.substr(0, 300) +
-                      " (only protocol lines may go to stdout: print diagnostics to stderr)");
+    if (session) slots_[w].in_flight = 1;
+    rep = request(s, req, what, 0);
+    if (!rep.contains("results") || !rep["results"].is_array() || rep["results"].size() != calls.size())
+      throw RemoteError("the implementation's reply to " + what + " has no \"results\" array of " +
+                        std::to_string(calls.size()) + " entries: " + rep.dump().substr(0, 300));
+    if (session) slots_[w].in_flight = 0;
+  } catch (const RemoteError&) {
+    // The server's state is unknown now (it died, or answered out of step): it is not used again.
+    // Later calls of this process go to a copy started afresh, so that shrinking a failure still
+    // tries each input for real; the worker's server is restarted for the next check (its
+    // in-flight mark stays set).
+    if (session)
+      abandoned_pid_ = me;
+    else
+      kill_server(s);
+    throw;
   }
-  if (rep.contains("fatal"))
-    throw RemoteError("the implementation's server failed: " + rep["fatal"].dump());
-  if (!rep.contains("results") || !rep["results"].is_array() || rep["results"].size() != calls.size())
-    throw RemoteError("the implementation's reply has no \"results\" array of " + std::to_string(calls.size()) +
-                      " entries: " + line.substr(0, 300));
   std::vector<Reply> out;
   for (const auto& r : rep["results"]) {
     Reply x;
-    if (r.contains("ok")) {
+    if (r.is_object() && r.contains("ok")) {
       x.ok = true;
       x.result = r["ok"];
     } else {
-      x.error = r.contains("error") && r["error"].is_string() ? r["error"].get<std::string>() : r.dump();
-      if (r.contains("traceback") && r["traceback"].is_string()) x.error += "\n" + r["traceback"].get<std::string>();
+      x.error = r.is_object() && r.contains("error") && r["error"].is_string() ? r["error"].get<std::string>() : r.dump();
+      if (r.is_object() && r.contains("traceback") && r["traceback"].is_string()) x.error += "\n" + r["traceback"].get<std::string>();
     }
     out.push_back(std::move(x));
   }
@@ -281,18 +438,11 @@ RemoteDescription parse_hello(const json& h) {
         x.has_claims = true;
         x.claims.integrator = x.name;
         x.claims.order = c.value("order", 0);
-        x.claims.symmetric = c.value("symmetric", false);
-        x.claims.casimir = c.value("casimir", false);
-        x.claims.energy = c.value("energy", false);
-        x.claims.orthogonality = c.value("orthogonality", false);
-        x.claims.spectrum = c.value("spectrum", false);
-        x.claims.poisson = c.value("poisson", false);
-        x.claims.noether = c.value("noether", false);
-        x.claims.equivariant = c.value("equivariant", false);
-        x.claims.bounded_energy = c.value("bounded_energy", false);
-        static const std::set<std::string> known{"order",         "symmetric", "casimir", "energy",
-                                                 "orthogonality", "spectrum",  "poisson", "noether",
-                                                 "equivariant",   "bounded_energy"};
+        std::set<std::string> known{"order"};
+        for (const auto& bc : kBooleanClaims) {
+          x.claims.*bc.member = c.value(bc.name, false);
+          known.insert(bc.name);
+        }
         for (const auto& [k, v] : c.items())
           if (!known.count(k)) d.warnings.push_back("integrator '" + x.name + "' claims '" + k + "', which is not a claim the harness knows (ignored)");
       }
@@ -363,6 +513,12 @@ std::shared_ptr<Subject<T>> make_part(const std::shared_ptr<Connection>& conn, c
         else if (step == "manakov_step")
           in.manakov_step =
               RemoteSlot<T, ManakovState<T>(const MatX<T>&, const ManakovState<T>&, const T&)>::make(conn, "manakov_step", i.name);
+        else if (step == "clebsch_step")
+          in.clebsch_step =
+              RemoteSlot<T, Vec3Pair<T>(const Vec3<T>&, const Vec3Pair<T>&, const T&)>::make(conn, "clebsch_step", i.name);
+        else if (step == "manakov_clebsch_step")
+          in.manakov_clebsch_step = RemoteSlot<T, MatXPair<T>(const MatX<T>&, const MatXPair<T>&, const T&)>::make(
+              conn, "manakov_clebsch_step", i.name);
       }
       s->integrators.push_back(std::move(in));
       any = true;
@@ -375,7 +531,11 @@ std::shared_ptr<Subject<T>> make_part(const std::shared_ptr<Connection>& conn, c
 
 SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::string& name, harness::SubjectInfo& info) {
   const RemoteDescription d = parse_hello(conn->hello());
-  conn->stop();  // each process that calls a slot starts its own copy
+  // The server that answered the handshake stays: it is worker 0's. With sessions, each check opens
+  // one on its worker's server; without, each check's process starts its own copy.
+  if (!conn->sessions()) conn->stop();
+  info.prepare_worker = [conn](int w) { conn->prepare_worker(w); };
+  info.worker_done = [conn](int w, bool normally) { conn->worker_done(w, normally); };
   SubjectSet s;
   s.name = name;
   s.description = d.description.empty() ? "a " + d.language + " implementation" : d.description;
@@ -410,7 +570,8 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
     // Debian's interpreter, where python3-mpmath and python3-numpy are installed (not whatever
     // python3 comes first on PATH); $GEOMECH_PYTHON overrides.
     const std::string deflt = fs::exists("/usr/bin/python3", ec) ? "/usr/bin/python3" : "python3";
-    return {py && *py ? py : deflt, "-u", src + "/student/python/geomech_server.py", file};
+    // -B: no __pycache__ written beside the student's file or in the source tree.
+    return {py && *py ? py : deflt, "-u", "-B", src + "/student/python/geomech_server.py", file};
   }
   if (p.extension() == ".m" || (fs::is_directory(p, ec) && !fs::is_empty(p, ec))) {
     if (language) *language = "octave";

@@ -25,7 +25,8 @@ namespace gm::protocol {
 using nlohmann::json;
 
 inline constexpr const char* kProtocolName = "geomech-slots";
-inline constexpr int kProtocolVersion = 1;
+inline constexpr int kProtocolVersion = 2;
+inline constexpr int kMaxWorkers = 256;  // the isolation's --jobs limit
 
 // The implementation's process failed (could not start, died, wrote something that is not the
 // protocol). The message names the slot and includes what the program wrote to stderr, if known.
@@ -59,7 +60,26 @@ struct Reply {
 // every slot {name, signature, place, meaning} of GM_SUBJECT_SLOTS, plus the integrator steps.
 std::string slot_table_json();
 
-// The child program and its pipes, for the current process.
+// One running copy of the implementation's program and its pipes.
+struct ServerProcess {
+  pid_t pid = -1;
+  int to = -1;       // its standard input: requests
+  int replies = -1;  // its descriptor 3: the protocol's replies
+  int output = -1;   // its standard output and error: what the implementation prints
+  std::string buffer;       // reply bytes read but not yet taken
+  std::string output_tail;  // the end of what it printed
+  bool running() const { return pid > 0; }
+};
+
+// The implementation's program, started as child processes that speak docs/PROTOCOL.md.
+//
+// Checks run in forked processes (harness/isolate.hpp), up to one per worker slot at a time. The
+// process that creates the Connection keeps one server per slot (prepare_worker); a check's process
+// opens a session on its slot's server (the server forks a fresh copy of the loaded implementation
+// for it), so a check starts in milliseconds from the state the handshake saw and leaves nothing
+// behind for the next (worker_done ends the session, or restarts the server when the check ended
+// abnormally or left the protocol in an unknown state). A server that does not offer sessions is
+// started afresh in each check's process instead (protocol version 1's way).
 class Connection {
  public:
   explicit Connection(std::vector<std::string> argv, std::string language = "");
@@ -67,33 +87,55 @@ class Connection {
   Connection(const Connection&) = delete;
   Connection& operator=(const Connection&) = delete;
 
-  // The handshake (starts the program in this process if needed).
+  // The handshake (starts the program in this process if needed). Throws RemoteError when the
+  // program does not answer within `handshake_seconds` or answers out of protocol.
   const json& hello();
   // One request with many calls, one reply per call in order. Throws RemoteError when the
-  // program dies or answers out of protocol.
+  // program dies or answers out of protocol; that program is then not used again (a later call
+  // starts a fresh copy).
   std::vector<Reply> call_batch(const std::vector<Call>& calls);
   // One call: the result, or RemoteCallError carrying the implementation's traceback.
   json call(const Call& c);
-  // Stops the program (it is started again on the next call).
+  // Stops every program this process started (they are started again when needed).
   void stop();
+
+  // The isolation's worker hooks (harness/isolate.hpp), in the process that created this.
+  void prepare_worker(int w);
+  void worker_done(int w, bool ended_normally);
+
   const std::vector<std::string>& argv() const { return argv_; }
   const std::string& language() const { return language_; }
+  bool sessions() const { return sessions_; }
+  double handshake_seconds = 60;
 
  private:
-  void ensure_started();
-  std::string read_line();
-  std::string stderr_tail();
-  std::string how_it_ended(const std::string& otherwise);  // "exited with status 0", ...
+  // Per worker slot, shared between the process that started the servers and the checks' processes
+  // (anonymous shared memory): whether a session is open and whether a request is unanswered.
+  struct SlotState {
+    int session_open;
+    int in_flight;
+  };
+  void start(ServerProcess& s);
+  void kill_server(ServerProcess& s);
+  ServerProcess& server_for_this_process();
+  json request(ServerProcess& s, const json& req, const std::string& what, double deadline_seconds);
+  std::string read_reply(ServerProcess& s, const std::string& what, double deadline_seconds);
+  std::string died(ServerProcess& s, const std::string& otherwise);
 
   std::vector<std::string> argv_;
   std::string language_;
   std::string table_;  // $GEOMECH_SLOT_TABLE for the child (slot_table_json())
   std::mutex mutex_;
-  pid_t owner_ = 0;  // the process that started the child
-  pid_t child_ = -1;
-  int to_child_ = -1, from_child_ = -1, child_err_ = -1;
-  std::string buffer_;
+  pid_t owner_;                      // the process that created this (and owns `pool_`)
+  std::vector<ServerProcess> pool_;  // per worker slot, started by the owner
+  std::vector<bool> prepared_;       // per worker slot: prepare_worker ran and worker_done not yet
+  SlotState* slots_ = nullptr;       // per worker slot (kMaxWorkers), shared memory
+  ServerProcess own_;                // a server started in this process (no sessions, or a check's own)
+  pid_t own_pid_ = 0;                // the process that started `own_`
+  pid_t session_pid_ = 0;            // the process whose session is open on its slot's server
+  pid_t abandoned_pid_ = 0;          // the process whose session failed (it uses a copy of its own since)
   json hello_;
+  bool sessions_ = false;
   long next_id_ = 1;
 };
 

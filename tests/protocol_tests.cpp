@@ -1,12 +1,18 @@
-// The slot protocol's client (harness/remote_subject, protocol_codec) against the Python server:
-// exact round trips in all three scalars, shape validation naming the slot, an error reply carrying
-// the Python traceback, a new server per process after fork, and the per-call round-trip cost.
+// The slot protocol's client (harness/remote_subject, protocol_codec) against the Python and Octave
+// servers: exact round trips in all three scalars, shape validation naming the slot, an error reply
+// carrying the Python traceback; sessions (each check starts from the handshake's state, on one
+// server per worker), a crash failing its check alone with how it died, printing that neither
+// blocks nor breaks the protocol, a hang while loading caught by the handshake's deadline; the
+// per-call round-trip cost.
+#include "harness/isolate.hpp"
 #include "harness/protocol_codec.hpp"
 #include "harness/remote_subject.hpp"
 
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <set>
+#include <sstream>
 #include <cstdio>
 #include <cstdlib>
 #include <sys/wait.h>
@@ -15,10 +21,31 @@
 namespace gm::protocol {
 namespace {
 
-std::shared_ptr<Connection> python(const std::string& example) {
+std::shared_ptr<Connection> connect(const std::string& path) {
   std::string language, why;
-  auto cmd = server_command(std::string(GM_SOURCE_DIR) + "/examples/students/" + example, &language, &why);
+  auto cmd = server_command(std::string(GM_SOURCE_DIR) + "/" + path, &language, &why);
   return std::make_shared<Connection>(cmd, language);
+}
+
+std::shared_ptr<Connection> python(const std::string& example) { return connect("examples/students/" + example); }
+
+// Tasks run as the harness runs checks: forked, `jobs` at once, with the subject's worker hooks.
+std::vector<harness::TaskResult> run_as_checks(const harness::SubjectInfo& info,
+                                               const std::vector<std::function<std::string()>>& tasks, int jobs) {
+  harness::IsolationOptions o;
+  o.jobs = jobs;
+  o.timeout_seconds = 120;
+  o.prepare_worker = info.prepare_worker;
+  o.worker_done = info.worker_done;
+  return harness::run_isolated(tasks, o);
+}
+
+std::string call_text(const std::function<double()>& f) {
+  try {
+    return std::to_string(static_cast<long long>(f()));
+  } catch (const std::exception& e) {
+    return std::string("error: ") + e.what();
+  }
 }
 
 TEST(ProtocolCodec, ScalarsRoundTripExactly) {
@@ -69,7 +96,9 @@ TEST(RemoteSubject, ErrorReplyCarriesTheTraceback) {
   }
 }
 
-TEST(RemoteSubject, EachProcessHasItsOwnServer) {
+// A process forked outside the harness's worker pool (not prepared by run_isolated) starts a copy
+// of its own; the parent's server goes on answering.
+TEST(RemoteSubject, AForkOutsideTheWorkerPoolStartsItsOwnServer) {
   harness::SubjectInfo info;
   const SubjectSet s = remote_subject(python("correct.py"), "correct", info);
   EXPECT_EQ(s.d->hamiltonian_3_4(Vec3<double>(2, 1, 1), Vec3<double>(2, 0, 0)), 1.0);
@@ -84,10 +113,103 @@ TEST(RemoteSubject, EachProcessHasItsOwnServer) {
   EXPECT_EQ(s.d->hamiltonian_3_4(Vec3<double>(2, 1, 1), Vec3<double>(0, 0, 2)), 2.0);
 }
 
-// DISABLED: through a live pipe the Octave server answers the handshake but not the first request
-// (it works when its stdin is closed after the request: fgetl(stdin) seems to wait for a full buffer).
-// To be fixed before the octave ctest tests can pass.
-TEST(RemoteSubject, DISABLED_OctaveCorrectMatchesPython) {
+// Issue 15: sessions. Every check sees the implementation as its handshake left it (a module-level
+// counter starts at 0 in each), and all checks of a worker reach the same server (one interpreter
+// start per worker, not per check). The control: without the hooks each forked check starts its own
+// server, a different process each time.
+TEST(RemoteSubject, EachCheckStartsFromTheHandshakeStateOnItsWorkersServer) {
+  harness::SubjectInfo info;
+  auto conn = connect("tests/remote/stateful.py");
+  const SubjectSet s = remote_subject(conn, "stateful", info);
+  ASSERT_TRUE(conn->sessions());
+  const Vec3<double> I(1, 2, 3), P(1, 0, 0);
+  auto task = [&] {
+    const double first = s.d->casimir(P), second = s.d->casimir(P);
+    return std::to_string(static_cast<long long>(first)) + " " + std::to_string(static_cast<long long>(second)) + " " +
+           std::to_string(static_cast<long long>(s.d->hamiltonian_3_4(I, P)));
+  };
+  const auto r = run_as_checks(info, std::vector<std::function<std::string()>>(4, task), 1);
+  // The handshake itself calls casimir (the server probes which scalar kinds each slot accepts), so
+  // a check sees the count the handshake left, k, and calls k + 1 and k + 2: the same in every check.
+  std::set<std::string> counts, servers;
+  for (const auto& t : r) {
+    ASSERT_EQ(t.status, harness::TaskResult::Status::Ok) << t.detail << t.output;
+    std::istringstream in(t.payload);
+    long long first = 0, second = 0;
+    in >> first >> second;
+    EXPECT_EQ(second, first + 1) << t.payload;
+    counts.insert(std::to_string(first));
+    servers.insert(t.payload.substr(t.payload.rfind(' ') + 1));
+  }
+  EXPECT_EQ(counts.size(), 1u) << "each check starts from the handshake's state, not the previous check's";
+  EXPECT_EQ(servers.size(), 1u) << "one server for the worker's four checks";
+  harness::SubjectInfo no_hooks = info;
+  no_hooks.prepare_worker = nullptr;
+  no_hooks.worker_done = nullptr;
+  const auto own = run_as_checks(no_hooks, std::vector<std::function<std::string()>>(2, task), 1);
+  ASSERT_EQ(own.size(), 2u);
+  EXPECT_NE(own[0].payload.substr(own[0].payload.rfind(' ')), own[1].payload.substr(own[1].payload.rfind(' ')))
+      << "without sessions, a server per check";
+}
+
+// A crash of the implementation inside a check fails that check with how the process died (the
+// call's error names it); the next check of the same worker runs normally on a server started afresh.
+TEST(RemoteSubject, ACrashInACheckFailsThatCheckAloneAndSaysHowItDied) {
+  harness::SubjectInfo info;
+  const SubjectSet s = remote_subject(connect("tests/remote/stateful.py"), "stateful", info);
+  const Vec3<double> P(1, 0, 0);
+  auto vee_with = [&](double marker) {
+    return [&s, marker] {
+      Mat3<double> m = Mat3<double>::Zero();
+      m(0, 1) = marker;
+      return call_text([&] { return s.d->vee(m)(0); });
+    };
+  };
+  auto counter = [&] { return call_text([&] { return s.d->casimir(P); }); };
+  const auto r = run_as_checks(info, {vee_with(1), counter, vee_with(2), counter, vee_with(0)}, 1);
+  ASSERT_EQ(r.size(), 5u);
+  EXPECT_NE(r[0].payload.find("killed by signal SIGSEGV"), std::string::npos) << r[0].payload;
+  EXPECT_NE(r[0].payload.find("vee"), std::string::npos) << "names the call: " << r[0].payload;
+  EXPECT_EQ(r[1].payload, "1");
+  EXPECT_NE(r[2].payload.find("exited with status 3"), std::string::npos) << r[2].payload;
+  EXPECT_EQ(r[3].payload, "1");
+  EXPECT_EQ(r[4].payload, "0");
+}
+
+// 200 kB printed to stdout and stderr during one call: the call answers (the harness reads what
+// the implementation prints while it waits), and the printing is not taken for a reply.
+TEST(RemoteSubject, PrintingALotNeitherBlocksNorBreaksTheProtocol) {
+  harness::SubjectInfo info;
+  const SubjectSet s = remote_subject(connect("tests/remote/stateful.py"), "stateful", info);
+  const Vec3<double> v(1, 2, 3);
+  EXPECT_EQ(s.d->hat(v)(0, 1), -3.0);
+  const auto r = run_as_checks(info, {[&] { return call_text([&] { return s.d->hat(v)(2, 1); }); }}, 1);
+  EXPECT_EQ(r.at(0).payload, "1");
+}
+
+// An implementation that computes for a long time when it is loaded fails its handshake within the
+// deadline, with a message that says what to look for; the control: loaded promptly, it answers.
+TEST(RemoteSubject, AnImplementationThatHangsWhenLoadedFailsItsHandshakeInTime) {
+  ::setenv("GEOMECH_TEST_SLOW_IMPORT", "30", 1);
+  auto conn = connect("tests/remote/stateful.py");
+  conn->handshake_seconds = 2;
+  const auto t0 = std::chrono::steady_clock::now();
+  try {
+    conn->hello();
+    ADD_FAILURE() << "a handshake arrived";
+  } catch (const RemoteError& e) {
+    EXPECT_NE(std::string(e.what()).find("did not answer its handshake within 2 s"), std::string::npos) << e.what();
+  }
+  ::unsetenv("GEOMECH_TEST_SLOW_IMPORT");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 15);
+  auto prompt = connect("tests/remote/stateful.py");
+  prompt->handshake_seconds = 20;
+  EXPECT_NO_THROW(prompt->hello());
+}
+
+// The Octave server through live pipes (the client sends an empty line after each request: Octave's
+// fgetl waits for the byte after a line's end), against the Python implementation.
+TEST(RemoteSubject, OctaveCorrectMatchesPython) {
   if (std::system("command -v octave-cli > /dev/null 2>&1") != 0) GTEST_SKIP() << "octave-cli is not installed";
   harness::SubjectInfo oi, pi;
   std::string language, why;

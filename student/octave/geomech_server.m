@@ -1,47 +1,63 @@
-% geomech slot server for Octave/MATLAB-style implementations (docs/PROTOCOL.md, version 1).
+% geomech slot server for Octave/MATLAB-style implementations (docs/PROTOCOL.md, version 2).
 %
 %   octave-cli geomech_server.m mine.m        (one file of functions)
 %   octave-cli geomech_server.m folder/       (one .m file per function)
 %
 % Checked in double only. Vectors are passed as column vectors, matrices as matrices, the Lie
-% algebra as 'so3'/'so4'/'sl2', states as structs with fields Pi and O (or M and O); pairs are
-% returned as a cell {a, b}. Output of the student's code (disp, printf) goes to stderr.
+% algebra as 'so3'/'so4'/'sl2', states as structs with fields Pi and O (or M and O), the canonical
+% pairs (Q, P) of the Clebsch steps as cells {Q, P}; pairs are returned as cells {a, b}.
+% Replies go to the descriptor $GEOMECH_REPLY_FD (3), so the student's disp and printf (on stdout)
+% can never be taken for one. A request {"session": "begin"} forks a copy of this process that
+% answers one check's calls and ends at {"session": "end"}.
 1;
 
-function out = gm_kind(sig)
-  t = regexp(sig, '^\s*(\w+)', 'tokens', 'once');
+% The kind of a C++ type in a signature: 'Mat3<T>' -> 'Mat3', 'const Vec3<T>& v' -> 'Vec3'.
+function out = gm_kind(text)
+  text = regexprep(text, '\<const\>', '');
+  t = regexp(text, '^\s*(\w+)', 'tokens', 'once');
   out = t{1};
 end
 
+% The argument kinds of a signature 'R(const A<T>& a, int n)' -> {'A', 'int'}.
+function kinds = gm_arg_kinds(sig)
+  open = find(sig == '(', 1);
+  inner = sig(open + 1:end - 1);
+  kinds = {};
+  if isempty(strtrim(inner)), return; end
+  parts = strsplit(inner, ',');
+  for k = 1:numel(parts)
+    kinds{end + 1} = gm_kind(parts{k});
+  end
+end
+
+% A JSON value (after jsondecode) as Octave numbers: strings are decimal numbers ('so3' stays a
+% string), arrays of rows become matrices, flat arrays column vectors. Vectorised: the interpreter's
+% per-element work is what a call costs.
 function v = gm_decode(j)
   if ischar(j)
-    x = str2double(j);
-    if isnan(x) && ~strcmpi(j, 'nan')
+    v = str2double(j);
+    if isnan(v) && ~strcmpi(j, 'nan')
       v = j;            % 'so3', 'so4', 'sl2'
+    end
+  elseif iscell(j)
+    if isempty(j)
+      v = zeros(0, 1);
+    elseif ischar(j{1})
+      v = reshape(str2double(j), [], 1);
+    elseif iscell(j{1})  % rows of strings
+      cols = [j{:}];     % column r holds row r
+      v = str2double(cols).';
     else
-      v = x;
+      v = zeros(numel(j), 1);
+      for k = 1:numel(j)
+        v(k) = double(j{k});
+      end
     end
   elseif isstruct(j)
     v = struct();
     f = fieldnames(j);
     for k = 1:numel(f)
       v.(f{k}) = gm_decode(j.(f{k}));
-    end
-  elseif iscell(j)
-    if isempty(j)
-      v = zeros(0, 1);
-    elseif iscell(j{1}) || (isnumeric(j{1}) && numel(j{1}) > 1)
-      rows = numel(j);
-      first = gm_decode(j{1});
-      v = zeros(rows, numel(first));
-      for r = 1:rows
-        v(r, :) = reshape(gm_decode(j{r}), 1, []);
-      end
-    else
-      v = zeros(numel(j), 1);
-      for k = 1:numel(j)
-        v(k) = gm_decode(j{k});
-      end
     end
   elseif isnumeric(j)
     v = double(j);
@@ -50,25 +66,49 @@ function v = gm_decode(j)
   end
 end
 
-function s = gm_num(x)
+% An argument of a known kind: a pair (Q, P) is a cell {Q, P}.
+function v = gm_decode_kind(kind, j)
+  if strcmp(kind, 'Vec3Pair') || strcmp(kind, 'MatXPair')
+    if iscell(j)
+      v = {gm_decode(j{1}), gm_decode(j{2})};
+    else  % jsondecode made a numeric array of the two rows (Vec3Pair)
+      v = {reshape(double(j(1, :)), [], 1), reshape(double(j(2, :)), [], 1)};
+      if strcmp(kind, 'MatXPair')
+        v = {squeeze(double(j(1, :, :))), squeeze(double(j(2, :, :)))};
+      end
+    end
+  else
+    v = gm_decode(j);
+  end
+end
+
+function gm_real(x)
   if ~isreal(x)
     error('geomech:complex', 'a complex number where a real was expected');
   end
+end
+
+function s = gm_num(x)
+  gm_real(x);
   s = sprintf('"%.17g"', double(x));
 end
 
 function s = gm_vec(x)
+  gm_real(x);
   x = double(x(:));
-  parts = arrayfun(@(e) gm_num(e), x, 'UniformOutput', false);
-  s = ['[' strjoin(parts', ',') ']'];
+  if isempty(x), s = '[]'; return; end
+  s = sprintf('"%.17g",', x);
+  s = ['[' s(1:end - 1) ']'];
 end
 
 function s = gm_mat(x)
-  rows = cell(1, size(x, 1));
-  for r = 1:size(x, 1)
-    rows{r} = gm_vec(x(r, :));
-  end
-  s = ['[' strjoin(rows, ',') ']'];
+  gm_real(x);
+  [r, c] = size(x);
+  if r == 0 || c == 0, s = '[]'; return; end
+  row = ['[' repmat('"%.17g",', 1, c)];
+  row = [row(1:end - 1) '],'];
+  s = sprintf(row, double(x).');
+  s = ['[' s(1:end - 1) ']'];
 end
 
 function s = gm_encode(kind, x)
@@ -100,29 +140,119 @@ function s = gm_encode(kind, x)
   end
 end
 
-function s = gm_jstr(t)
-  s = jsonencode(t);
+function gm_send(out, s)
+  fprintf(out, '%s\n', s);
+  fflush(out);
 end
 
-function gm_send(s)
-  fprintf(stdout, '%s\n', s);
-  fflush(stdout);
+% The reply to {"id", "calls": [...]}: one {"ok": value} or {"error", "traceback"} per call.
+function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
+  calls = req.calls;
+  results = cell(1, numel(calls));
+  for c = 1:numel(calls)
+    if iscell(calls), call = calls{c}; else, call = calls(c); end
+    try
+      a = call.args;
+      if ~iscell(a), a = num2cell(a); end
+      if isfield(call, 'integrator') && ~isempty(call.integrator)
+        kinds = step_kinds.(call.slot);
+      else
+        kinds = slot_kinds.(call.slot);
+      end
+      vals = cell(1, numel(a));
+      for k = 1:numel(a)
+        vals{k} = gm_decode_kind(kinds.args{k}, a{k});
+      end
+      if isfield(call, 'integrator') && ~isempty(call.integrator)
+        f = [];
+        for q = 1:numel(integ)
+          if strcmp(integ{q}.name, call.integrator), f = integ{q}.(call.slot); end
+        end
+        if isempty(f), error('geomech:integrator', 'no integrator %s with a %s', call.integrator, call.slot); end
+        r = f(vals{:});
+      else
+        r = feval(call.slot, vals{:});
+      end
+      results{c} = ['{"ok":' gm_encode(kinds.result, r) '}'];
+    catch err
+      tb = err.message;
+      for s = 1:numel(err.stack)
+        fl = err.stack(s).file; ln = err.stack(s).line;
+        if ~isempty(tmp) && strcmp(fl, tmp), fl = target; ln = ln - 1; end
+        if ~isempty(strfind(fl, 'geomech_server.m')), continue; end
+        tb = sprintf('%s\n    at %s, line %d (%s)', tb, err.stack(s).name, ln, fl);
+      end
+      results{c} = sprintf('{"error":%s,"traceback":%s}', jsonencode(err.message), jsonencode(tb));
+    end
+  end
+  reply = sprintf('{"id":%d,"results":[%s]}', req.id, strjoin(results, ','));
+end
+
+% Answers requests until the input ends (0) or, in a session, until {"session": "end"} (1).
+function r = gm_serve(out, in_session, slot_kinds, integ, step_kinds, target, tmp)
+  r = 0;
+  while true
+    line = fgetl(stdin);
+    if ~ischar(line), return; end
+    if isempty(strtrim(line)), continue; end   % the empty line after each request
+    req = jsondecode(line, 'makeValidName', false);
+    if isfield(req, 'session')
+      if strcmp(req.session, 'end') && in_session
+        gm_send(out, sprintf('{"id":%d,"session":"ended"}', req.id));
+        r = 1;
+        return;
+      end
+      if strcmp(req.session, 'begin') && ~in_session
+        [pid, msg] = fork();
+        if pid == 0
+          gm_send(out, sprintf('{"id":%d,"session":"begun","pid":%d}', req.id, getpid()));
+          gm_serve(out, true, slot_kinds, integ, step_kinds, target, tmp);
+          exit(0);   % ended by request or at the end of input
+        end
+        [~, status] = waitpid(pid);
+        if ~(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+          if WIFSIGNALED(status)
+            how = sprintf('was killed by signal %d', WTERMSIG(status));
+          else
+            how = sprintf('exited with status %d (exit() called in the implementation?)', WEXITSTATUS(status));
+          end
+          gm_send(out, ['{"id":null,"died":' jsonencode(how) '}']);
+        end
+        continue;
+      end
+      gm_send(out, sprintf('{"id":%d,"fatal":"unexpected session request"}', req.id));
+      continue;
+    end
+    gm_send(out, gm_answer(req, slot_kinds, integ, step_kinds, target, tmp));
+  end
 end
 
 % ---- main -----------------------------------------------------------------------------------------
 args = argv();
 target = args{end};
+reply_fd = getenv('GEOMECH_REPLY_FD');
+if isempty(reply_fd)
+  out = stdout;
+else
+  out = fopen(['/proc/self/fd/' reply_fd], 'w');
+end
 table = jsondecode(getenv('GEOMECH_SLOT_TABLE'), 'makeValidName', false);
-if isfield(table, 'probe'), probe = table.probe; else, probe = true; end
 names = {};
-kinds = {};
+slot_kinds = struct();
 slotlist = table.slots;
 for k = 1:numel(slotlist)
   if iscell(slotlist), s = slotlist{k}; else, s = slotlist(k); end
-  names{end+1} = s.name;
-  kinds{end+1} = gm_kind(s.signature);
+  names{end + 1} = s.name;
+  slot_kinds.(s.name) = struct('result', gm_kind(s.signature), 'args', {gm_arg_kinds(s.signature)});
+end
+step_kinds = struct();
+step_names = fieldnames(table.steps);
+for k = 1:numel(step_names)
+  sig = table.steps.(step_names{k});
+  step_kinds.(step_names{k}) = struct('result', gm_kind(sig), 'args', {gm_arg_kinds(sig)});
 end
 
+tmp = '';
 try
   if isfolder(target)
     addpath(target);
@@ -133,15 +263,15 @@ try
     fprintf(fid, '1;\n%s\n', text);
     fclose(fid);
     source(tmp);
+    delete(tmp);
   end
 catch err
-  gm_send(['{"protocol":"geomech-slots","version":1,"language":"octave","fatal":' gm_jstr(['loading ' target ' failed: ' err.message]) '}']);
+  gm_send(out, ['{"protocol":"geomech-slots","version":2,"language":"octave","fatal":' ...
+                jsonencode(['loading ' target ' failed: ' err.message]) '}']);
   exit(1);
 end
 
 have = {};
-notes = {};
-warns = {};
 for k = 1:numel(names)
   n = names{k};
   e = exist(n);
@@ -151,26 +281,31 @@ for k = 1:numel(names)
   if e == 2 && ~isfolder(target)
     continue;   % a file of that name elsewhere on the path, not the student's
   end
-  have{end+1} = n;
+  have{end + 1} = n;
 end
 
-% integrators: a function geomech_integrators() returning a struct array with fields
-% name, claims (struct), rigid_body_step / manakov_step (function handles)
-integ = struct('name', {}, 'claims', {}, 'rigid_body_step', {}, 'manakov_step', {});
+% Integrators: a function geomech_integrators() returning a struct array with fields name, claims
+% (struct) and function handles rigid_body_step / manakov_step / clebsch_step / manakov_clebsch_step.
+integ = {};
 ijson = {};
 if exist('geomech_integrators') == 2 || exist('geomech_integrators') == 103
   list = geomech_integrators();
   for k = 1:numel(list)
     it = list(k);
     steps = {};
-    if isfield(it, 'rigid_body_step') && ~isempty(it.rigid_body_step), steps{end+1} = '"rigid_body_step"'; end
-    if isfield(it, 'manakov_step') && ~isempty(it.manakov_step), steps{end+1} = '"manakov_step"'; end
+    entry = struct('name', it.name);
+    for q = 1:numel(step_names)
+      entry.(step_names{q}) = [];
+      if isfield(it, step_names{q}) && ~isempty(it.(step_names{q}))
+        steps{end + 1} = ['"' step_names{q} '"'];
+        entry.(step_names{q}) = it.(step_names{q});
+      end
+    end
     c = '{}';
     if isfield(it, 'claims') && ~isempty(it.claims), c = jsonencode(it.claims); end
-    ijson{end+1} = sprintf('{"name":%s,"steps":[%s],"scalars":["double"],"claims":%s}', gm_jstr(it.name), strjoin(steps, ','), c);
-    integ(end+1).name = it.name;
-    if isfield(it, 'rigid_body_step'), integ(end).rigid_body_step = it.rigid_body_step; end
-    if isfield(it, 'manakov_step'), integ(end).manakov_step = it.manakov_step; end
+    ijson{end + 1} = sprintf('{"name":%s,"steps":[%s],"scalars":["double"],"claims":%s}', jsonencode(it.name), ...
+                             strjoin(steps, ','), c);
+    integ{end + 1} = entry;
   end
 end
 
@@ -179,44 +314,8 @@ if exist('geomech_description') == 2 || exist('geomech_description') == 103
   desc = geomech_description();
 end
 quoted = cellfun(@(s) ['"' s '"'], have, 'UniformOutput', false);
-gm_send(sprintf(['{"protocol":"geomech-slots","version":1,"language":"octave","language_version":%s,' ...
-                 '"description":%s,"slots":{"double":[%s]},"integrators":[%s],"notes":{},"warnings":[]}'], ...
-                gm_jstr(version()), gm_jstr(desc), strjoin(quoted, ','), strjoin(ijson, ',')));
-
-kindmap = containers.Map(names, kinds);
-while true
-  line = fgetl(stdin);
-  if ~ischar(line), break; end
-  if isempty(strtrim(line)), continue; end
-  req = jsondecode(line, 'makeValidName', false);
-  calls = req.calls;
-  results = cell(1, numel(calls));
-  for c = 1:numel(calls)
-    if iscell(calls), call = calls{c}; else, call = calls(c); end
-    try
-      a = call.args;
-      if ~iscell(a), a = num2cell(a); end
-      vals = cellfun(@gm_decode, a, 'UniformOutput', false);
-      if isfield(call, 'integrator') && ~isempty(call.integrator)
-        idx = find(strcmp({integ.name}, call.integrator), 1);
-        f = integ(idx).(call.slot);
-        if strcmp(call.slot, 'rigid_body_step'), kind = 'RigidBodyState'; else, kind = 'ManakovState'; end
-        r = f(vals{:});
-      else
-        kind = kindmap(call.slot);
-        r = feval(call.slot, vals{:});
-      end
-      results{c} = ['{"ok":' gm_encode(kind, r) '}'];
-    catch err
-      tb = err.message;
-      for s = 1:numel(err.stack)
-        fl = err.stack(s).file; ln = err.stack(s).line;
-        if exist('tmp', 'var') && strcmp(fl, tmp), fl = target; ln = ln - 1; end
-        if ~isempty(strfind(fl, 'geomech_server.m')), continue; end
-        tb = sprintf('%s\n    at %s, line %d (%s)', tb, err.stack(s).name, ln, fl);
-      end
-      results{c} = sprintf('{"error":%s,"traceback":%s}', gm_jstr(err.message), gm_jstr(tb));
-    end
-  end
-  gm_send(sprintf('{"id":%d,"results":[%s]}', req.id, strjoin(results, ',')));
-end
+gm_send(out, sprintf(['{"protocol":"geomech-slots","version":2,"language":"octave","language_version":%s,' ...
+                      '"description":%s,"slots":{"double":[%s]},"integrators":[%s],"notes":{},"warnings":[],' ...
+                      '"sessions":true}'], ...
+                     jsonencode(version()), jsonencode(desc), strjoin(quoted, ','), strjoin(ijson, ',')));
+gm_serve(out, false, slot_kinds, integ, step_kinds, target, tmp);

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""geomech slot server for Python implementations (protocol: docs/PROTOCOL.md, version 1).
+"""geomech slot server for Python implementations (protocol: docs/PROTOCOL.md, version 2).
 
     python3 geomech_server.py mine.py
 
@@ -7,8 +7,11 @@ Imports mine.py, finds the functions named after the harness's slots (the slot t
 the harness in $GEOMECH_SLOT_TABLE; `geomech slots --python` prints it for people), probes each in
 the three scalars (float, mpmath.mpf at the harness's 50-digit precision, fractions.Fraction),
 writes the handshake line, then answers one request line with one reply line until its input ends.
+A request {"session": "begin"} forks a copy of this process that answers the calls of one check
+and ends at {"session": "end"}; the server then goes on as the handshake left it.
 
-Nothing from the student's code may reach stdout: print() during import and calls goes to stderr.
+Replies go to the descriptor $GEOMECH_REPLY_FD (3), so the student's print() can never be taken for
+one; without it (by hand), to stdout, and print() goes to stderr.
 """
 import importlib.util
 import json
@@ -18,7 +21,7 @@ import traceback
 from fractions import Fraction
 
 PROTOCOL = "geomech-slots"
-VERSION = 1
+VERSION = 2
 
 try:
     import mpmath
@@ -28,8 +31,11 @@ except ImportError:  # pragma: no cover - mp50 is then unavailable
 
 numpy = None  # set after the student's module is loaded, if it imported numpy (importing it costs ~0.2 s)
 
-_out = sys.stdout
-sys.stdout = sys.stderr  # the student's print() must not break the protocol
+if os.environ.get("GEOMECH_REPLY_FD"):
+    _out = os.fdopen(int(os.environ["GEOMECH_REPLY_FD"]), "w", buffering=1)
+else:  # by hand: the protocol on stdout, the student's print() on stderr
+    _out = sys.stdout
+    sys.stdout = sys.stderr
 
 MP_BITS = 168
 
@@ -117,6 +123,9 @@ def decode(kind, scalar, v):
         return State(Pi=decode("Vec3", scalar, v["Pi"]), O=decode("Mat3", scalar, v["O"]))
     if kind == "ManakovState":
         return State(M=decode("MatX", scalar, v["M"]), O=decode("MatX", scalar, v["O"]))
+    if kind in ("Vec3Pair", "MatXPair"):  # (Q, P) of the Clebsch steps: a 2-tuple
+        part = "Vec3" if kind == "Vec3Pair" else "MatX"
+        return (decode(part, scalar, v[0]), decode(part, scalar, v[1]))
     raise ValueError("unknown argument kind " + kind)
 
 
@@ -236,7 +245,7 @@ def find_integrators(mod):
         if id(c) in seen:
             continue
         seen.add(id(c))
-        steps = [s for s in ("rigid_body_step", "manakov_step") if callable(get(c, s))]
+        steps = [s for s in STEP_SIGS if callable(get(c, s))]
         if not steps or not get(c, "name"):
             continue
         found.append((str(get(c, "name")), c, steps))
@@ -263,12 +272,19 @@ def sample(kind, scalar, k=0):
     if kind == "ManakovState":
         M = [[f(0), f(1), f(-1)], [f(-1), f(0), f(1, 2)], [f(1), f(-1, 2), f(0)]]
         return State(M=M, O=[[f(1 if i == j else 0) for j in range(3)] for i in range(3)])
+    if kind == "Vec3Pair":
+        return (sample("Vec3", scalar, 1), sample("Vec3", scalar, 2))
+    if kind == "MatXPair":
+        return ([[f(1 if i == j else 0) for j in range(3)] for i in range(3)], sample("MatX", scalar, 1))
     raise ValueError(kind)
 
 
+# The integrator steps (the harness's slot table replaces these with its own list).
 STEP_SIGS = {
     "rigid_body_step": ("RigidBodyState", ["Vec3", "RigidBodyState", "T"]),
     "manakov_step": ("ManakovState", ["MatX", "ManakovState", "T"]),
+    "clebsch_step": ("Vec3Pair", ["Vec3", "Vec3Pair", "T"]),
+    "manakov_clebsch_step": ("MatXPair", ["MatX", "MatXPair", "T"]),
 }
 
 
@@ -277,7 +293,7 @@ def probe(fn, sig, scalar):
     result, args = sig
     try:
         vals = [sample(a, scalar, i) for i, a in enumerate(args)]
-        if args and args[-1] == "T" and result in ("RigidBodyState", "ManakovState"):
+        if sig in STEP_SIGS.values():  # a step: a small h
             vals[-1] = make_scalar(scalar, "1/64")
         encode(result, scalar, fn(*vals))
         return None
@@ -287,6 +303,109 @@ def probe(fn, sig, scalar):
         tb = student_traceback(e).splitlines()
         return "fails in %s: %s" % ({"double": "float", "mp50": "mpmath.mpf", "exact": "Fraction"}[scalar],
                                    tb[-1] if tb else repr(e))
+
+
+class Lines:
+    """Request lines read from a descriptor without a stdio buffer: a session's copy made by fork
+    takes over the same input, and the server resumes after it without losing a byte."""
+
+    def __init__(self, fd):
+        self.fd = fd
+        self.buf = b""
+
+    def next(self):
+        while b"\n" not in self.buf:
+            chunk = os.read(self.fd, 65536)
+            if not chunk:
+                return None
+            self.buf += chunk
+        line, self.buf = self.buf.split(b"\n", 1)
+        return line.decode("utf-8", "replace")
+
+
+def reply(obj):
+    _out.write(json.dumps(obj) + "\n")
+    _out.flush()
+
+
+def how_it_ended(status):
+    if os.WIFSIGNALED(status):
+        import signal
+        try:
+            name = signal.Signals(os.WTERMSIG(status)).name
+        except ValueError:
+            name = str(os.WTERMSIG(status))
+        return "was killed by signal %s" % name
+    if os.WIFEXITED(status):
+        return "exited with status %d (sys.exit or os._exit in the implementation?)" % os.WEXITSTATUS(status)
+    return "ended"
+
+
+def answer(req, functions, steps):
+    results = []
+    for call in req.get("calls", []):
+        slot, scalar = call.get("slot"), call.get("scalar")
+        try:
+            if call.get("integrator"):
+                fn = steps.get((call["integrator"], slot))
+                sig = STEP_SIGS.get(slot)
+                if fn is None:
+                    raise LookupError("no integrator %r with a %s" % (call["integrator"], slot))
+            else:
+                fn, sig = functions.get(slot, (None, None))
+                if fn is None:
+                    raise LookupError("no function named %r" % slot)
+            args = [decode(k, scalar, a) for k, a in zip(sig[1], call.get("args", []))]
+            value = fn(*args)
+            results.append({"ok": encode(sig[0], scalar, value)})
+        except Inexact as e:
+            results.append({"error": "%s returned %s" % (slot, e)})
+        except SystemExit as e:
+            results.append({"error": "%s called sys.exit(%r): a slot function must return its value" % (slot, e.code)})
+        except Exception as e:
+            tb = student_traceback(e)
+            results.append({"error": tb.splitlines()[-1] if tb else repr(e), "traceback": tb})
+    return {"id": req.get("id"), "results": results}
+
+
+def serve(lines, functions, steps, in_session):
+    """Answers requests until the input ends (0) or, in a session, until {"session": "end"} (1)."""
+    while True:
+        line = lines.next()
+        if line is None:
+            return 0
+        if not line.strip():
+            continue  # the empty line after each request
+        try:
+            req = json.loads(line)
+        except ValueError as e:
+            reply({"fatal": "request is not JSON: %s" % e})
+            continue
+        what = req.get("session")
+        if what == "end" and in_session:
+            reply({"id": req.get("id"), "session": "ended"})
+            return 1
+        if what == "begin" and not in_session:
+            done_r, done_w = os.pipe()
+            pid = os.fork()
+            if pid == 0:
+                os.close(done_r)
+                reply({"id": req.get("id"), "session": "begun", "pid": os.getpid()})
+                if serve(lines, functions, steps, in_session=True) == 1:
+                    os.write(done_w, b"E")
+                _out.flush()
+                os._exit(0)
+            os.close(done_w)
+            _, status = os.waitpid(pid, 0)
+            ended = os.read(done_r, 1) == b"E"
+            os.close(done_r)
+            if not ended:  # it died in the session: the harness is waiting for a reply
+                reply({"id": None, "died": how_it_ended(status)})
+            continue
+        if what is not None:
+            reply({"id": req.get("id"), "fatal": "unexpected session request %r" % what})
+            continue
+        reply(answer(req, functions, steps))
 
 
 def main():
@@ -360,43 +479,11 @@ def main():
     hello = {"protocol": PROTOCOL, "version": VERSION, "language": "python",
              "language_version": sys.version.split()[0], "description": description,
              "slots": slots, "integrators": integrators, "notes": notes, "warnings": warnings,
-             "mp50_bits": MP_BITS}
+             "mp50_bits": MP_BITS, "sessions": hasattr(os, "fork")}
     _out.write(json.dumps(hello) + "\n")
     _out.flush()
 
-    for line in sys.stdin:
-        if not line.strip():
-            continue
-        try:
-            req = json.loads(line)
-        except ValueError as e:
-            _out.write(json.dumps({"fatal": "request is not JSON: %s" % e}) + "\n")
-            _out.flush()
-            continue
-        results = []
-        for call in req.get("calls", []):
-            slot, scalar = call.get("slot"), call.get("scalar")
-            try:
-                if call.get("integrator"):
-                    fn = steps.get((call["integrator"], slot))
-                    sig = STEP_SIGS.get(slot)
-                    if fn is None:
-                        raise LookupError("no integrator %r with a %s" % (call["integrator"], slot))
-                else:
-                    fn, sig = functions.get(slot, (None, None))
-                    if fn is None:
-                        raise LookupError("no function named %r" % slot)
-                args = [decode(k, scalar, a) for k, a in zip(sig[1], call.get("args", []))]
-                value = fn(*args)
-                results.append({"ok": encode(sig[0], scalar, value)})
-            except Inexact as e:
-                results.append({"error": "%s returned %s" % (slot, e)})
-            except Exception as e:
-                tb = student_traceback(e)
-                results.append({"error": tb.splitlines()[-1] if tb else repr(e), "traceback": tb})
-        _out.write(json.dumps({"id": req.get("id"), "results": results}) + "\n")
-        _out.flush()
-    return 0
+    return serve(Lines(0), functions, steps, in_session=False)
 
 
 if __name__ == "__main__":
