@@ -60,11 +60,21 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
                                 e.path().extension() == ".m")) {
       out.push_back({e.path().stem().string(), e.path().string()});
     } else if (e.is_directory()) {
-      std::vector<fs::path> sources;
-      for (const auto& f : fs::directory_iterator(e.path(), ec))
-        if (f.is_regular_file() && f.path().extension() == ".cpp" && registers_student(f.path()))
-          sources.push_back(f.path());
-      if (sources.size() == 1) out.push_back({e.path().filename().string(), sources.front().string()});
+      // A student's folder: one .cpp that registers a student, else one .py, else .m files (an
+      // Octave implementation may be a folder of function files).
+      std::vector<fs::path> sources, python;
+      bool octave = false;
+      for (const auto& f : fs::directory_iterator(e.path(), ec)) {
+        if (!f.is_regular_file()) continue;
+        const auto ext = f.path().extension();
+        if (ext == ".cpp" && registers_student(f.path())) sources.push_back(f.path());
+        if (ext == ".py") python.push_back(f.path());
+        if (ext == ".m") octave = true;
+      }
+      const std::string name = e.path().filename().string();
+      if (sources.size() == 1) out.push_back({name, sources.front().string()});
+      else if (sources.empty() && python.size() == 1) out.push_back({name, python.front().string()});
+      else if (sources.empty() && python.empty() && octave) out.push_back({name, e.path().string()});
     }
   }
   if (ec) throw std::runtime_error("cannot read " + dir + ": " + ec.message());
@@ -74,7 +84,8 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
       throw std::runtime_error("two implementations in " + dir + " are both named '" + out[i].name +
                                "' (a file and a folder); rename one");
   if (out.empty())
-    throw std::runtime_error(dir + " holds no implementation (*.cpp, *.py or *.m files, or folders with one .cpp using GEOMECH_STUDENT)");
+    throw std::runtime_error(dir + " holds no implementation (*.cpp, *.py or *.m files, or folders with one .cpp using "
+                             "GEOMECH_STUDENT, one .py, or .m files)");
   return out;
 }
 
@@ -192,7 +203,9 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     tasks.push_back([&, impl]() {
       json j;
       const std::string ext = fs::path(impl.source).extension().string();
-      if (o.untrusted && ext != ".py" && ext != ".m") {
+      std::error_code dir_ec;
+      const bool other_language = ext == ".py" || ext == ".m" || fs::is_directory(impl.source, dir_ec);
+      if (o.untrusted && !other_language) {
         // C++ in untrusted mode: the protocol server is compiled here (sandboxed), so that a file
         // that does not compile is reported as such; `geomech check --untrusted` then finds it built.
         BuildOptions bo = o.build;
@@ -208,7 +221,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
         }
         j["build_seconds"] = b.seconds;
       }
-      if (ext == ".py" || ext == ".m" || o.untrusted) {
+      if (other_language || o.untrusted) {
         // Python and Octave, and every language in untrusted mode: `geomech check FILE` runs the
         // implementation as a protocol server (docs/PROTOCOL.md), sandboxed when untrusted.
         CheckCliOptions co = o.check;

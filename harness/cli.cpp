@@ -21,7 +21,14 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_option("--cases", o.cases, "cases per property (default: each property's own)")->check(CLI::NonNegativeNumber);
   app.add_option("--case-factor", o.case_factor, "multiply every default case count")->check(CLI::PositiveNumber);
   app.add_option("--reproduce", o.reproduce, "RapidCheck reproduce string printed with a failure");
-  app.add_option("--timeout", o.timeout, "seconds allowed per property and scalar (default 60)")
+  app.add_option_function<double>(
+         "--timeout",
+         [&o](double t) {
+           o.timeout = t;
+           o.timeout_given = true;
+         },
+         "seconds allowed per property and scalar (default 60; 180 for a Python implementation and 360 for an "
+         "Octave one, whose arithmetic and calls are slower)")
       ->check(CLI::PositiveNumber);
   app.add_option("--case-budget", o.case_budget,
                  "seconds after which a check starts no new case (default: 40 % of --timeout; 0: none). A slow "
@@ -60,6 +67,7 @@ CheckConfig config_from(const CheckCliOptions& o) {
     throw CLI::ValidationError("--reproduce", "not a reproduce string printed with a failure (" + why + ")");
   c.run.reproduce = o.reproduce;
   c.timeout_seconds = o.timeout;
+  c.timeout_given = o.timeout_given;
   // The budgets leave room, within the timeout, for a case that was started just before the case
   // budget ran out and for the shrinking of a failure found late.
   c.run.case_budget_seconds = o.case_budget < 0 ? 0.4 * o.timeout : o.case_budget;
@@ -88,7 +96,7 @@ std::vector<std::string> to_args(const CheckCliOptions& o) {
   if (o.cases > 0) a.insert(a.end(), {"--cases", std::to_string(o.cases)});
   if (o.case_factor != 1.0) a.insert(a.end(), {"--case-factor", num(o.case_factor)});
   if (!o.reproduce.empty()) a.insert(a.end(), {"--reproduce", o.reproduce});
-  a.insert(a.end(), {"--timeout", num(o.timeout)});
+  if (o.timeout_given) a.insert(a.end(), {"--timeout", num(o.timeout)});
   if (o.case_budget >= 0) a.insert(a.end(), {"--case-budget", num(o.case_budget)});
   a.insert(a.end(), {"--jobs", std::to_string(o.jobs)});
   a.insert(a.end(), {"--memory-limit", std::to_string(o.memory_limit_mb)});

@@ -24,6 +24,7 @@ struct CheckCliOptions {
   double case_factor = 1.0;
   std::string reproduce;
   double timeout = 60;
+  bool timeout_given = false;  // set by the parser: the replay command repeats --timeout only then
   double case_budget = -1;  // seconds after which no new case starts; < 0: 40 % of the timeout; 0: none
   int jobs = default_jobs();  // the cores of this machine
   long memory_limit_mb = 4096;

@@ -35,6 +35,16 @@ std::string eps_text(double units) {
 
 // The first line that says something: RapidCheck puts "Exception thrown with message:" on a line of
 // its own before the exception's text, which is what a student needs to see first.
+// How the report names a slot to fix: "slot `x`" for C++ (the slot is the function's name there);
+// for an implementation in another language, the function in the student's file.
+std::string slot_named(const CheckResult& r, const std::string& slot, const char* quote) {
+  const std::string q(quote), name = q + slot + q;
+  const std::string file = std::filesystem::path(r.info.source).filename().string();
+  if (r.info.language == "python") return "Python function " + name + (file.empty() ? "" : " in " + file);
+  if (r.info.language == "octave") return "Octave function " + name + (file.empty() ? "" : " in " + file);
+  return "slot " + name;
+}
+
 std::string first_line(const std::string& s) {
   std::size_t at = 0;
   for (;;) {
@@ -336,7 +346,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     const RootCauses rc = root_causes(r);
     for (const auto& slot : rc.order) {
       const Verdict* direct = rc.broken.at(slot);
-      os << "FIRST FIX: slot '" << slot << "' is wrong: its own check " << direct->property << " fails in "
+      os << "FIRST FIX: " << slot_named(r, slot, "'") << " is wrong: its own check " << direct->property << " fails in "
          << direct->scalar << ": " << first_line(direct->message) << "\n";
       auto it = rc.downstream.find(slot);
       if (it != rc.downstream.end())
@@ -441,7 +451,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     const RootCauses rc = root_causes(r);
     for (const auto& slot : rc.order) {
       const Verdict* direct = rc.broken.at(slot);
-      md << "- **slot `" << slot << "` is wrong**: its own check `" << direct->property << "` fails in [" << direct->scalar
+      md << "- **" << slot_named(r, slot, "`") << " is wrong**: its own check `" << direct->property << "` fails in [" << direct->scalar
          << "](#" << anchor_of(*direct) << "): " << md_cell(first_line(direct->message)) << "\n";
       auto it = rc.downstream.find(slot);
       if (it != rc.downstream.end() && !it->second.empty()) {

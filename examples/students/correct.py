@@ -62,25 +62,46 @@ def identity(n, like):
     return [[like ** 0 if i == j else 0 * like for j in range(n)] for i in range(n)]
 
 
-def solve(A, b):
-    """Gaussian elimination with partial pivoting (exact for Fraction)."""
+def lu(A):
+    """LU factorisation with partial pivoting, (rows, pivots): solve_lu(f, b) then costs O(n^2)."""
     n = len(A)
-    M = [list(A[i]) + [b[i]] for i in range(n)]
+    M = [list(r) for r in A]
+    perm = list(range(n))
     for c in range(n):
         p = max(range(c, n), key=lambda r: abs(M[r][c]))
         M[c], M[p] = M[p], M[c]
+        perm[c], perm[p] = perm[p], perm[c]
         for r in range(c + 1, n):
             f = M[r][c] / M[c][c]
-            M[r] = [x - f * y for x, y in zip(M[r], M[c])]
-    x = [0 * b[0]] * n
+            M[r][c] = f
+            for k in range(c + 1, n):
+                M[r][k] = M[r][k] - f * M[c][k]
+    return M, perm
+
+
+def solve_lu(f, b):
+    M, perm = f
+    n = len(M)
+    y = [b[perm[i]] for i in range(n)]
+    for r in range(n):
+        for k in range(r):
+            y[r] = y[r] - M[r][k] * y[k]
     for r in reversed(range(n)):
-        x[r] = (M[r][n] - sum((M[r][k] * x[k] for k in range(r + 1, n)), 0 * b[0])) / M[r][r]
-    return x
+        for k in range(r + 1, n):
+            y[r] = y[r] - M[r][k] * y[k]
+        y[r] = y[r] / M[r][r]
+    return y
+
+
+def solve(A, b):
+    """Gaussian elimination with partial pivoting (exact for Fraction)."""
+    return solve_lu(lu(A), b)
 
 
 def inverse3(A):
     n = len(A)
-    cols = [solve(A, [A[0][0] ** 0 if i == j else 0 * A[0][0] for i in range(n)]) for j in range(n)]
+    f = lu(A)
+    cols = [solve_lu(f, [A[0][0] ** 0 if i == j else 0 * A[0][0] for i in range(n)]) for j in range(n)]
     return transpose(cols)
 
 
@@ -144,13 +165,24 @@ def _bracket(g, a, b):
     return lie_vee(g, madd(matmul(A, B), matmul(B, A), -1))
 
 
+_structure = {}
+
+
+def structure_constants(g, d):
+    """The non-zero c^i_jk of [e_j, e_k] = c^i_jk e_i, as (i, j, k, c) with integer c: they depend
+    on the algebra only, so they are computed once per algebra (in integers, exactly)."""
+    if (g, d) not in _structure:
+        e = [[1 if i == j else 0 for i in range(d)] for j in range(d)]
+        _structure[(g, d)] = [(i, j, k, c) for j in range(d) for k in range(d)
+                              for i, c in enumerate(_bracket(g, e[j], e[k])) if c != 0]
+    return _structure[(g, d)]
+
+
 def ad_star(g, xi, mu):
     # (ad*_xi mu)_k = xi^j mu_i c^i_jk with [e_j, e_k] = c^i_jk e_i
-    d = len(xi)
-    out = []
-    for k in range(d):
-        ek = [xi[0] ** 0 if i == k else 0 * xi[0] for i in range(d)]
-        out.append(dot(mu, _bracket(g, xi, ek)))
+    out = [0 * xi[0] for _ in xi]
+    for i, j, k, c in structure_constants(g, len(xi)):
+        out[k] = out[k] + c * xi[j] * mu[i]
     return out
 
 
@@ -302,24 +334,41 @@ def manakov_M(A, W):
     return madd(matmul(A, W), matmul(W, A))
 
 
+_manakov_lu = {}
+
+
 def manakov_Omega(A, M):
+    """Omega in so(n) from A Omega + Omega A = M (2.34), M in so(n): a linear system in the n(n-1)/2
+    entries Omega_ij, i < j (Omega is skew), one equation per entry M_ij, i < j. A flow calls this
+    with one body A many times: the factorisation of the system for the last A (the key holds its
+    entries and their type) is kept, so a call with that A costs one O(n^4) solve."""
     n = len(A)
-    diagonal = all(A[i][j] == 0 for i in range(n) for j in range(n) if i != j)
-    if diagonal:
-        return [[M[i][j] / (A[i][i] + A[j][j]) for j in range(n)] for i in range(n)]
-    N = n * n
-    z = 0 * A[0][0]
-    K = [[z] * N for _ in range(N)]
-    rhs = [z] * N
-    for i in range(n):
-        for j in range(n):
-            row = i * n + j
-            rhs[row] = M[i][j]
+    pairs = [(i, j) for i in range(n) for j in range(i + 1, n)]
+    key = (type(A[0][0]), tuple(tuple(r) for r in A))
+    if key not in _manakov_lu:
+        z = 0 * A[0][0]
+        col = {p: c for c, p in enumerate(pairs)}
+
+        def add(row, k, l, a):  # row += a * Omega_kl, with Omega_kl = -Omega_lk
+            if k < l:
+                row[col[(k, l)]] += a
+            elif l < k:
+                row[col[(l, k)]] -= a
+
+        K = []
+        for i, j in pairs:
+            row = [z] * len(pairs)
             for k in range(n):
-                K[row][k * n + j] += A[i][k]
-                K[row][i * n + k] += A[k][j]
-    w = solve(K, rhs)
-    return [[w[i * n + j] for j in range(n)] for i in range(n)]
+                add(row, k, j, A[i][k])  # (A Omega)_ij
+                add(row, i, k, A[k][j])  # (Omega A)_ij
+            K.append(row)
+        _manakov_lu.clear()
+        _manakov_lu[key] = lu(K)
+    w = solve_lu(_manakov_lu[key], [M[i][j] for i, j in pairs])
+    W = [[0 * A[0][0]] * n for _ in range(n)]
+    for (i, j), x in zip(pairs, w):
+        W[i][j], W[j][i] = x, -x
+    return [list(r) for r in W]
 
 
 def manakov_2_34(A, M):

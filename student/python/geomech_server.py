@@ -368,6 +368,25 @@ def answer(req, functions, steps):
     return {"id": req.get("id"), "results": results}
 
 
+def start_profile():
+    """$GEOMECH_PROFILE=dir: each session's time by function (cProfile), written to
+    dir/session-PID.prof when the session ends, for finding where a check's time goes
+    (python3 -m pstats dir/session-PID.prof). Off unless set."""
+    where = os.environ.get("GEOMECH_PROFILE")
+    if not where:
+        return None
+    import cProfile
+    profile = cProfile.Profile()
+    profile.enable()
+    return (profile, where)
+
+
+def stop_profile(profile):
+    if profile:
+        profile[0].disable()
+        profile[0].dump_stats(os.path.join(profile[1], "session-%d.prof" % os.getpid()))
+
+
 def serve(lines, functions, steps, in_session):
     """Answers requests until the input ends (0) or, in a session, until {"session": "end"} (1)."""
     while True:
@@ -391,7 +410,9 @@ def serve(lines, functions, steps, in_session):
             if pid == 0:
                 os.close(done_r)
                 reply({"id": req.get("id"), "session": "begun", "pid": os.getpid()})
+                profile = start_profile()
                 if serve(lines, functions, steps, in_session=True) == 1:
+                    stop_profile(profile)
                     os.write(done_w, b"E")
                 _out.flush()
                 os._exit(0)

@@ -1,0 +1,40 @@
+#!/usr/bin/env bash
+# Issue 15's speed figures: a full check of the correct Python and Octave implementations (every
+# property, every scalar they provide), beside the same check of the C++ one in the same run, with
+# the protocol's cost per call and the checks that took longest (where the time goes).
+#   bench/remote_check.sh [build-dir]        (default: build; after ./geomech build)
+# Prints one line per implementation: wall time, checks, TIMEOUTs, checks cut short by the case
+# budget; then the 8 longest checks of each, then `geomech bench-protocol` for each language.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build=${1:-$root/build}
+geomech=$build/bin/geomech
+out=$(mktemp -d)
+trap 'rm -rf "$out"' EXIT
+
+for file in examples/students/correct.cpp examples/students/correct.py examples/students/correct.m; do
+  name=$(basename "$file")
+  start=$(date +%s.%N)
+  status=0
+  (cd "$root" && "$geomech" check "$file" --quiet --report "$out/$name" >"$out/$name.log" 2>&1) || status=$?
+  end=$(date +%s.%N)
+  python3 - "$out/$name/verdicts.json" "$name" "$start" "$end" "$status" <<'EOF'
+import json, sys
+path, name, start, end, status = sys.argv[1:]
+d = json.load(open(path))
+vs = d["verdicts"] if isinstance(d, dict) else d
+ran = [v for v in vs if v.get("outcome") != "NOT PROVIDED"]
+timeouts = sum(1 for v in vs if v.get("outcome") == "TIMEOUT")
+short = sum(1 for v in ran if v.get("cases_planned", 0) and v.get("cases", 0) < v.get("cases_planned", 0))
+cpu = sum(v.get("seconds", 0) for v in ran)
+print("%-12s wall %7.1f s  exit %s  %d checks (%.0f check-seconds)  %d TIMEOUT  %d ran fewer cases than planned"
+      % (name, float(end) - float(start), status, len(ran), cpu, timeouts, short))
+for v in sorted(ran, key=lambda v: -v.get("seconds", 0))[:8]:
+    print("    %7.1f s  %-45s %-6s %s/%s cases" % (v.get("seconds", 0), v["property"], v["scalar"],
+                                                  v.get("cases", "?"), v.get("cases_planned", "?")))
+EOF
+done
+for file in examples/students/correct.py examples/students/correct.m; do
+  echo "protocol cost, $file:"
+  (cd "$root" && "$geomech" bench-protocol "$file") | sed 's/^/    /'
+done

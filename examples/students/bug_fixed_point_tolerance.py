@@ -1,0 +1,29 @@
+"""Buggy in 50 digits: the implicit midpoint's fixed-point iteration stops when two iterates differ
+by less than 1e-12, a tolerance written for double. Its order is still 2 (the method's own error
+is larger at the steps an order is measured with), but a step is only solved to about 1e-14: the
+Casimir and the energy, which the exact midpoint step keeps, drift by 10^35 units of 50-digit
+round-off. Expected: the casimir and energy claims hold in double and are FALSE CLAIMs in mp50;
+the symmetric claim fails even in double (130 eps, more than round-off); the order is verified."""
+from correct import *  # noqa: F401,F403
+from correct import _cayley, euler_3_8, hat, matmul, mscale, omega_3_5
+
+description = "midpoint iteration stopped at a hard-coded 1e-12 (examples/students/bug_fixed_point_tolerance.py)"
+
+
+class MidpointLooseTolerance:
+    name = "midpoint_1e12"
+    claims = {"order": 2, "symmetric": True, "casimir": True, "energy": True, "orthogonality": True}
+
+    @staticmethod
+    def rigid_body_step(I, x, h):
+        Pi, O = x["Pi"], x["O"]
+        nxt = list(Pi)
+        for _ in range(200):
+            mid = [(a + b) / 2 for a, b in zip(Pi, nxt)]
+            again = [p + h * d for p, d in zip(Pi, euler_3_8(I, mid))]
+            change = max(abs(a - b) for a, b in zip(again, nxt))
+            nxt = again
+            if change < 1e-12:
+                break
+        W = omega_3_5(I, [(a + b) / 2 for a, b in zip(Pi, nxt)])
+        return {"Pi": nxt, "O": matmul(O, _cayley(mscale(hat(W), h)))}
