@@ -183,7 +183,9 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
     return 2;
   }
   harness::SandboxSpec spec;
-  spec.env = {{"GEOMECH_SLOT_TABLE", protocol::slot_table_json()}};
+  // The sandbox clears the environment: what the harness sets for the server is passed again (the
+  // reply descriptor itself, 3, is inherited through bubblewrap like 0, 1 and 2).
+  spec.env = {{"GEOMECH_SLOT_TABLE", protocol::slot_table_json()}, {"GEOMECH_REPLY_FD", "3"}};
   std::string language, why;
   std::vector<std::string> cmd = protocol::server_command(file, &language, &why);
   nlohmann::json notes;

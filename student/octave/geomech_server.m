@@ -207,10 +207,10 @@ function r = gm_serve(out, in_session, slot_kinds, integ, step_kinds, target, tm
         if pid == 0
           gm_send(out, sprintf('{"id":%d,"session":"begun","pid":%d}', req.id, getpid()));
           gm_serve(out, true, slot_kinds, integ, step_kinds, target, tmp);
-          exit(0);   % ended by request or at the end of input
+          exit(77);   % ended by request or at the end of input; 77, so that the student's exit(0) is not taken for it
         end
         [~, status] = waitpid(pid);
-        if ~(WIFEXITED(status) && WEXITSTATUS(status) == 0)
+        if ~(WIFEXITED(status) && WEXITSTATUS(status) == 77)
           if WIFSIGNALED(status)
             how = sprintf('was killed by signal %d', WTERMSIG(status));
           else

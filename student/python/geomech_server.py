@@ -418,7 +418,7 @@ def serve(lines, functions, steps, in_session):
                 os._exit(0)
             os.close(done_w)
             _, status = os.waitpid(pid, 0)
-            ended = os.read(done_r, 1) == b"E"
+            ended = os.read(done_r, 1) == b"E" and os.WIFEXITED(status) and os.WEXITSTATUS(status) == 0
             os.close(done_r)
             if not ended:  # it died in the session: the harness is waiting for a reply
                 reply({"id": None, "died": how_it_ended(status)})
