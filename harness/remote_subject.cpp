@@ -21,6 +21,18 @@ namespace gm::protocol {
 
 namespace fs = std::filesystem;
 
+bool write_all(int fd, const std::string& text) {
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) return false;
+    done += static_cast<std::size_t>(n);
+  }
+  return true;
+}
+
+
 std::string slot_table_json() {
   json t;
   t["protocol"] = kProtocolName;
@@ -44,17 +56,6 @@ using Clock = std::chrono::steady_clock;
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
 std::string program_name(const std::vector<std::string>& argv) { return argv.empty() ? std::string("?") : argv.back(); }
-
-bool write_all(int fd, const std::string& text) {
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
 
 // Keeps the end of what the implementation prints (shown with a failure of its process).
 void drain_output(ServerProcess& s) {

@@ -170,4 +170,8 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
 // .m files); empty when the extension is not one of these. `why` says what is missing.
 std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why);
 
+// Writes all of `text` to `fd` (retrying short writes and EINTR); false if the descriptor is gone.
+// The client's requests and the C++ server's replies (harness/protocol_server.cpp) both use it.
+bool write_all(int fd, const std::string& text);
+
 }  // namespace gm::protocol
