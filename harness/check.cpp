@@ -362,7 +362,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
 
   IsolationOptions io;
   io.jobs = cfg.jobs;
-  io.timeout_seconds = cfg.timeout_given ? cfg.timeout_seconds : cfg.timeout_seconds * info.timeout_factor;
+  io.timeout_seconds = cfg.timeout_given ? cfg.timeout_seconds : cfg.timeout_seconds * timeout_factor(info);
   io.memory_limit_mb = cfg.memory_limit_mb;
   io.isolate = cfg.isolate;
   io.prepare_worker = info.prepare_worker;

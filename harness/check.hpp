@@ -35,15 +35,20 @@ struct SubjectInfo {
   // check; empty for subjects linked in.
   std::function<void(int)> prepare_worker;
   std::function<void(int, bool)> worker_done;
-  // An interpreted implementation (Python, Octave) computes 50-digit flows tens of times slower than
-  // compiled code: one case of a long 50-digit flow can take longer than the 60 s a check gets by
-  // default. When --timeout is not given its checks get this many times the default timeout; the
-  // case budget is not scaled, so a check still starts no new case after it.
-  double timeout_factor = 1;
   // "python" or "octave" for an implementation in another language: the report then names the
-  // function to fix in that language ("Python function `casimir` in mine.py") instead of the slot.
+  // function to fix in that language ("Python function `casimir` in mine.py") instead of the slot,
+  // and its checks get longer by default (timeout_factor).
   std::string language;
 };
+
+// An interpreted implementation computes 50-digit flows tens of times slower than compiled code:
+// one case of a long 50-digit flow can take longer than the 60 s a check gets by default. When
+// --timeout is not given its checks get this many times the default timeout: 3 for Python, 6 for
+// Octave, whose calls cost about 5 times Python's (its JSON codec, an interpreted loop per call).
+// The case budget is not scaled, so a check still starts no new case after it.
+inline double timeout_factor(const SubjectInfo& info) {
+  return info.language == "octave" ? 6 : info.language == "python" ? 3 : 1;
+}
 
 struct CheckConfig {
   std::vector<std::string> properties;  // only these (empty: all)
@@ -52,7 +57,7 @@ struct CheckConfig {
   std::string integrator;               // only this integrator (empty: all)
   RunOptions run;                       // seed, case counts, reproduce string
   double timeout_seconds = 60;          // per (property, scalar, integrator)
-  bool timeout_given = false;           // --timeout was given: SubjectInfo::timeout_factor does not apply
+  bool timeout_given = false;           // --timeout was given: timeout_factor() does not apply
   int jobs = 1;                         // children at once
   bool isolate = true;                  // fork per property (false: in-process, for a debugger)
   long memory_limit_mb = 4096;

@@ -548,12 +548,7 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   for (const auto& [scalar, slots] : d.notes)
     for (const auto& [slot, why] : slots) info.slot_notes[scalar][slot] = why;
   for (const auto& w : d.warnings) info.warnings.push_back(w);
-  if (d.language == "python" || d.language == "octave") {
-    // harness/check.hpp. Octave's calls cost about 5 times Python's (its JSON codec, an interpreted
-    // loop per call): the 10^5 steps of the bounded-energy check take minutes there.
-    info.timeout_factor = d.language == "octave" ? 6 : 3;
-    info.language = d.language;
-  }
+  if (d.language == "python" || d.language == "octave") info.language = d.language;
   for (const auto& u : d.unchecked) info.unchecked.push_back(u);
   for (const auto& [scalar, why] : d.scalar_unavailable) info.scalar_unavailable[scalar] = why;
   for (const char* scalar : {"double", "mp50", "exact"}) {
