@@ -2,6 +2,7 @@
 // their author claims about them. The claims are verified like anyone's, by the integrator-scoped
 // properties (properties/integrator_claims.cpp); a claim is made only where it is a theorem about
 // the method, never because a test happened to pass.
+#include "impl/canonical_integrators.hpp"
 #include "impl/integrators.hpp"
 #include "impl/reference_subject.hpp"
 
@@ -24,12 +25,26 @@ void add_reference_integrators(Subject<T>& s) {
   rk4.name = "rk4";
   rk4.rigid_body_step = ref::rk4_step<T>;
   rk4.manakov_step = ref::manakov_rk4_step<T>;
+  rk4.clebsch_step = ref::clebsch_rk4_step<T>;
+  rk4.manakov_clebsch_step = ref::manakov_clebsch_rk4_step<T>;
   s.integrators.push_back(std::move(rk4));
 
   Integrator<T> isospectral;
   isospectral.name = "isospectral_cayley";
   isospectral.manakov_step = ref::manakov_isospectral_step<T>;
   s.integrators.push_back(std::move(isospectral));
+
+  // In the canonical Clebsch variables (impl/canonical_integrators.hpp).
+  Integrator<T> clebsch_midpoint;
+  clebsch_midpoint.name = "clebsch_midpoint";
+  clebsch_midpoint.clebsch_step = ref::clebsch_midpoint_step<T>;
+  clebsch_midpoint.manakov_clebsch_step = ref::manakov_clebsch_midpoint_step<T>;
+  s.integrators.push_back(std::move(clebsch_midpoint));
+
+  Integrator<T> clebsch_splitting;
+  clebsch_splitting.name = "clebsch_splitting";
+  clebsch_splitting.clebsch_step = ref::clebsch_splitting_step<T>;
+  s.integrators.push_back(std::move(clebsch_splitting));
 }
 template void add_reference_integrators<double>(Subject<double>&);
 template void add_reference_integrators<Real50>(Subject<Real50>&);
@@ -69,6 +84,15 @@ std::vector<IntegratorClaims> reference_integrator_claims() {
                .orthogonality = true, .spectrum = true, .poisson = false, .noether = true, .equivariant = true,
                .bounded_energy = true});
   // Isospectral Noether: O_{n+1} M_{n+1} O_{n+1}^T = O_n U U^T M_n U U^T O_n^T = O_n M_n O_n^T.
+  //
+  // Canonical (Clebsch) steps, properties/integrator_canonical.cpp. RK4 (above) also steps (3.21)
+  // and (3.23); its order-4 claim covers them, and it is not symplectic. The midpoint rule is
+  // symplectic for every canonical Hamiltonian system, symmetric, of order 2; it does not keep H,
+  // which is quartic in (Q, P) (a separate integrator from implicit_midpoint, whose energy claim
+  // is a theorem for the quadratic h(Pi) only). The splitting into exact rotation flows is
+  // symplectic (a composition of Hamiltonian flows), symmetric (Strang), of order 2.
+  c.push_back({.integrator = "clebsch_midpoint", .order = 2, .symmetric = true, .symplectic = true});
+  c.push_back({.integrator = "clebsch_splitting", .order = 2, .symmetric = true, .symplectic = true});
   return c;
 }
 

@@ -22,6 +22,7 @@
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
 #include "properties/support/long_time.hpp"
+#include "properties/support/roundoff_claim.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include <cstdio>
@@ -38,20 +39,6 @@ std::string sfmt(const char* f, double a, double b = 0, double c = 0) {
 template <class T>
 std::string tag() {
   return std::string(" (") + ScalarInfo<T>::name + ")";
-}
-
-// As in integrator_claims.cpp: residual against k eps scale; the finding goes to the claims table.
-template <class T>
-void judge_roundoff_claim(const char* claim, bool claimed, const std::string& integrator, const std::string& what,
-                          const T& residual, const T& scale, double k) {
-  const bool holds = is_finite(residual) && residual <= T(k) * eps<T>() * scale;
-  const std::string units =
-      is_finite(residual) ? sfmt("%.3g eps * scale", to_double(T(residual / (eps<T>() * scale)))) : "not finite";
-  const std::string evidence = integrator + ": " + what + ": residual " + units + ", allowed " +
-                               sfmt("%g eps * scale", k) + ", scale " + to_string_full(scale) + tag<T>();
-  judge_claim(claim, claimed, holds, evidence);
-  if (!claimed && holds) record_note(integrator + ": " + what + " holds although not claimed (residual " + units + ")");
-  if (!claimed && !holds) record_note(integrator + ": " + what + " does not hold (not claimed): residual " + units + tag<T>());
 }
 
 constexpr int kStates = 3;
