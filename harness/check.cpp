@@ -2,6 +2,7 @@
 
 #include "harness/isolate.hpp"
 #include "harness/portrait.hpp"
+#include "harness/work_precision.hpp"
 #include "harness/verdict_io.hpp"
 
 #include <algorithm>
@@ -358,6 +359,8 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   }
   const std::size_t n_items = tasks.size();
   auto portrait_tasks = cfg.portraits ? portrait_task_list(s, cfg) : std::vector<PortraitTask>{};
+  if (cfg.portraits)
+    if (auto wp = work_precision_task(s, cfg)) portrait_tasks.push_back(std::move(*wp));
   for (const auto& pt : portrait_tasks) tasks.push_back(pt.run);
 
   IsolationOptions io;

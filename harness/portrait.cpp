@@ -12,17 +12,6 @@ namespace gm::harness {
 
 namespace {
 
-// The motion every portrait shows: a triaxial body (a physical one: each moment below the sum of
-// the other two) turning near, but not on, its stable axis; dyadic data, exact in every scalar.
-template <class T>
-Vec3<T> portrait_inertia() {
-  return Vec3<T>(T(2), T(3) / T(2), T(1));
-}
-template <class T>
-RigidBodyState<T> portrait_start() {
-  return {Vec3<T>(T(3) / T(8), T(1) / T(4), T(7) / T(8)), Mat3<T>::Identity()};
-}
-
 constexpr double kConvergenceTime = 1.0;
 constexpr int kFinestLevel = 9;  // steps 1/4 ... 1/512
 constexpr double kLongTime = 8.0;
@@ -152,7 +141,7 @@ std::vector<PortraitTask> portrait_task_list(const SubjectSet& s, const CheckCon
 
 Verdict portrait_from_task(const PortraitTask& task, const TaskResult& result) {
   Verdict v;
-  v.property = "portrait";
+  v.property = task.property;
   v.integrator = task.integrator;
   v.scalar = task.scalar;
   if (result.status == TaskResult::Status::Ok) {

@@ -15,10 +15,23 @@
 
 namespace gm::harness {
 
+// The motion every portrait (and the work-precision diagram) shows: a triaxial body (a physical
+// one: each moment below the sum of the other two) turning near, but not on, its stable axis;
+// dyadic data, exact in every scalar.
+template <class T>
+Vec3<T> portrait_inertia() {
+  return Vec3<T>(T(2), T(3) / T(2), T(1));
+}
+template <class T>
+RigidBodyState<T> portrait_start() {
+  return {Vec3<T>(T(3) / T(8), T(1) / T(4), T(7) / T(8)), Mat3<T>::Identity()};
+}
+
 struct PortraitTask {
   std::string integrator;
   std::string scalar;
   std::function<std::string()> run;  // runs in a child; returns a JSON verdict carrying the series
+  std::string property = "portrait";  // what the carrier verdict is called
 };
 
 std::vector<PortraitTask> portrait_task_list(const SubjectSet& s, const CheckConfig& cfg);

@@ -2,6 +2,7 @@
 
 #include "harness/svg.hpp"
 #include "harness/verdict_io.hpp"
+#include "harness/work_precision.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -269,7 +270,7 @@ std::vector<Figure> report_figures(const CheckResult& r) {
       it->second.series.push_back(std::move(copy));
     }
   };
-  for (const auto& p : r.portraits) add("portrait", p);
+  for (const auto& p : r.portraits) add(p.property, p);
   for (const auto& v : r.verdicts) add(v.property, v);
   std::vector<Figure> out;
   for (const auto& [file, g] : groups) out.push_back(Figure{file, svg_plot(g.title, g.series), g.integrator});
@@ -544,9 +545,21 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
         if (f.integrator == integ.name) md << "![" << f.file << "](" << f.file << ")\n\n";
     }
   }
+  for (const auto& p : r.portraits) {
+    if (p.property != "work-precision") continue;
+    md << "## Work-precision diagram and long-time energy\n\n";
+    md << "Every `rigid_body_step` of this implementation beside the suite's methods (RK4, implicit midpoint, "
+          "Lie-Poisson splitting, Boost.Odeint's adaptive Dormand-Prince), in double, on the motion of the "
+          "portraits. Wall times of a Python or Octave implementation include the protocol's round trips. Data: "
+          "[figures/work-precision.csv](figures/work-precision.csv).\n\n";
+    md << (p.outcome == Outcome::Pass ? "" : std::string("**Not drawn (") + outcome_name(p.outcome) + ")**: ")
+       << md_cell(p.message) << "\n\n";
+    for (const auto& f : figures)
+      if (f.file.rfind("figures/work-precision", 0) == 0) md << "![" << f.file << "](" << f.file << ")\n\n";
+  }
   std::vector<std::string> other_figures;
   for (const auto& f : figures)
-    if (f.integrator.empty()) other_figures.push_back(f.file);
+    if (f.integrator.empty() && f.file.rfind("figures/work-precision", 0) != 0) other_figures.push_back(f.file);
   if (!other_figures.empty()) {
     md << "## Figures\n\n";
     for (const auto& f : other_figures) md << "![" << f << "](" << f << ")\n\n";
@@ -804,6 +817,7 @@ void write_report_dir(const CheckResult& r, const std::string& dir, const Catalo
     put("junit.xml", junit_report(r));
     put("verdicts.json", json_report(r, c).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
     for (const auto& f : report_figures(r)) put(f.file, f.svg);
+    if (const std::string csv = work_precision_csv(r); !csv.empty()) put("figures/work-precision.csv", csv);
   } catch (...) {
     fs::remove_all(tmp, ec);
     throw;

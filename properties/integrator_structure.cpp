@@ -168,7 +168,7 @@ void long_time_energy(const std::string& integrator, bool claimed, const std::st
   std::vector<double> ts, es;
   ts.reserve(steps + 1), es.reserve(steps + 1);
   ts.push_back(0), es.push_back(0);
-  Series ser{"long-time energy: " + integrator, what + tag<T>(), "t", "|H - H0| / |H0|", false, true, {}, 0};
+  Series ser{"long-time energy: " + integrator, what + tag<T>(), "t", "|H - H0| / |H0|", true, true, {}, 0};
   const int every = std::max(1, steps / 400);
   for (int n = 1; n <= steps; ++n) {
     const T e = T((energy(n) - h0) / abs_value(h0));

@@ -169,6 +169,19 @@ const std::vector<Example>& examples() {
         {"lie_trotter", "orthogonality", "verified"}},
        true,
        {}},
+      // Issue 16: structural claims that do not hold.
+      {"bug_claims_structure",
+       "RK4 with the rows of O normalised claiming equivariance and Noether; explicit Verlet on the "
+       "non-separable Clebsch Hamiltonian claiming symplecticity; explicit Euler claiming bounded energy",
+       {},
+       {{"rk4_rows_normalised", "equivariant", "FALSE CLAIM"},
+        {"rk4_rows_normalised", "noether", "FALSE CLAIM"},
+        {"rk4_rows_normalised", "order", "verified"},
+        {"explicit_verlet", "symplectic", "FALSE CLAIM"},
+        {"explicit_euler", "bounded_energy", "FALSE CLAIM"},
+        {"explicit_euler", "order", "verified"}},
+       true,
+       {}},
       // Issue 13: a slot provided alone, wrongly, fails its own direct property.
       {"bug_energy_alone",
        "only the energy (3.4), without its 1/2",

@@ -237,11 +237,20 @@ struct RigidBody {
 
 // Implicit midpoint for Pi (a fixed-point iteration), with the attitude advanced by the Cayley
 // transform of the midpoint angular velocity: O_{n+1} = O_n cay(h hat(Omega_mid)), which keeps O
-// orthogonal. Quadratic invariants (|Pi|^2 and the energy) are preserved by the midpoint rule.
+// orthogonal. The step is the midpoint rule on (Pi, O) (O's equation is linear, and its midpoint
+// solution is the Cayley factor), so every quadratic invariant is kept: |Pi|^2, the energy, O^T O
+// and the spatial momentum O Pi (Noether); the energy kept exactly is a fortiori bounded. O is
+// multiplied on the right only and the Pi-part ignores O: rotating O0 rotates O1 (equivariant).
 struct Midpoint {
   static constexpr const char* name = "midpoint";
-  static constexpr gm::student::Claims claims{
-      .order = 2, .symmetric = true, .casimir = true, .energy = true, .orthogonality = true};
+  static constexpr gm::student::Claims claims{.order = 2,
+                                              .symmetric = true,
+                                              .casimir = true,
+                                              .energy = true,
+                                              .orthogonality = true,
+                                              .noether = true,
+                                              .equivariant = true,
+                                              .bounded_energy = true};
 
   template <class T>
   static Mat3<T> cayley(const Mat3<T>& A) {
@@ -268,11 +277,19 @@ struct Midpoint {
 // Strang splitting of h = sum Pi_i^2 / (2 I_i) into three rotations, each solved exactly:
 // the flow of Pi_i^2 / (2 I_i) turns Pi about e_i by the angle -t Pi_i / I_i, and O by +t Pi_i / I_i.
 // A composition of exact Hamiltonian flows: a Poisson map that keeps |Pi| and O^T O exactly
-// (up to round-off); the energy is only approximately conserved.
+// (up to round-off), and O Pi (each rotation turns Pi one way and O the other: Noether); the
+// energy is not conserved, but its error stays bounded (a Poisson map close to the flow of a
+// modified energy, by backward error analysis). Right multiplication of O only: equivariant.
 struct Splitting {
   static constexpr const char* name = "lie_poisson_splitting";
-  static constexpr gm::student::Claims claims{
-      .order = 2, .symmetric = true, .casimir = true, .orthogonality = true, .poisson = true};
+  static constexpr gm::student::Claims claims{.order = 2,
+                                              .symmetric = true,
+                                              .casimir = true,
+                                              .orthogonality = true,
+                                              .poisson = true,
+                                              .noether = true,
+                                              .equivariant = true,
+                                              .bounded_energy = true};
 
   template <class T>
   static Mat3<T> rotation(int axis, const T& angle) {
@@ -304,6 +321,46 @@ struct Splitting {
     flow<T>(1, I, x, h / T(2));
     flow<T>(0, I, x, h / T(2));
     return x;
+  }
+};
+
+// The implicit midpoint rule in the canonical Clebsch variables: (3.21) on (Q, P) in R^3 x R^3,
+// and (3.23) on (Q, P) in R^{n x n} x R^{n x n} with M = Q^T P - P^T Q. Both systems are canonical
+// Hamiltonian systems, and the midpoint rule is symplectic for every one of them; it is symmetric
+// and of order 2. It does not keep the energy here: H is of degree 4 in (Q, P).
+struct ClebschMidpoint {
+  static constexpr const char* name = "clebsch_midpoint";
+  static constexpr gm::student::Claims claims{.order = 2, .symmetric = true, .symplectic = true};
+
+  // z_mid = z + (h/2) f(z_mid) by fixed-point iteration to round-off; z_{n+1} = 2 z_mid - z.
+  template <class T, class Z, class F>
+  static Z midpoint(const Z& z, const T& h, const F& f) {
+    Z mid = z;
+    for (int it = 0; it < 200; ++it) {
+      const auto [dq, dp] = f(mid.first, mid.second);
+      const Z again{z.first + h / T(2) * dq, z.second + h / T(2) * dp};
+      const T change = std::max((again.first - mid.first).cwiseAbs().maxCoeff(), (again.second - mid.second).cwiseAbs().maxCoeff());
+      const T size = std::max(T(1), std::max(z.first.cwiseAbs().maxCoeff(), z.second.cwiseAbs().maxCoeff()));
+      mid = again;
+      if (change <= T(4) * std::numeric_limits<T>::epsilon() * size) break;
+    }
+    return {T(2) * mid.first - z.first, T(2) * mid.second - z.second};
+  }
+
+  template <class T>
+  static Vec3Pair<T> clebsch_step(const Vec3<T>& I, const Vec3Pair<T>& z, const T& h) {
+    return midpoint<T>(z, h, [&](const Vec3<T>& Q, const Vec3<T>& P) {
+      const Vec3<T> W = P.cross(Q).cwiseQuotient(I);
+      return Vec3Pair<T>{-W.cross(Q), -W.cross(P)};
+    });
+  }
+
+  template <class T>
+  static MatXPair<T> manakov_clebsch_step(const MatX<T>& A, const MatXPair<T>& z, const T& h) {
+    return midpoint<T>(z, h, [&](const MatX<T>& Q, const MatX<T>& P) {
+      const MatX<T> W = RigidBody::manakov_Omega<T>(A, (Q.transpose() * P - P.transpose() * Q).eval());
+      return MatXPair<T>{Q * W, P * W};
+    });
   }
 };
 
