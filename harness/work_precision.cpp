@@ -2,11 +2,13 @@
 
 #include "harness/reference_flow.hpp"
 #include "harness/verdict_io.hpp"
+#include "impl/canonical_integrators.hpp"
 #include "impl/integrators.hpp"
+#include "oracle/fields.hpp"
+#include "oracle/taylor.hpp"
 
 #include <boost/numeric/odeint.hpp>
 
-#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -17,33 +19,77 @@ namespace gm::harness {
 
 namespace {
 
+constexpr int kLevels = 10;          // 4 * 2^k steps to t = 4, k = 0..9: h = 1 ... 1/512
 constexpr double kTime = 4.0;        // the error is measured at t = 4
-constexpr int kLevels = 10;          // 4 * 2^k steps, k = 0..9: h = 1 ... 1/512
-constexpr double kLongStep = 0.25;   // long-time energy: h = 1/4
-constexpr int kLongSteps = 1 << 15;  // t to 8192
+constexpr int kLongSteps = 1 << 15;  // long-time energy: 2^15 steps
+constexpr double kLongBudget = 10;   // seconds per method for the long run (an Octave step costs ~0.7 ms)
 
-const char* kFigureSteps = "work-precision: error against steps";
-const char* kFigureEvals = "work-precision: error against vector-field evaluations";
-const char* kFigureTime = "work-precision: error against wall time";
-const char* kFigureEnergy = "long-time energy (log t)";
-
-using Step = std::function<RigidBodyState<double>(const Vec3<double>&, const RigidBodyState<double>&, const double&)>;
+using State = std::vector<double>;  // a problem's state, packed
+using Stepper = std::function<State(const State&, double)>;
 
 struct Method {
   std::string name;
-  std::string source;  // "subject" or "suite"
-  Step step;           // empty for the adaptive Odeint method
-  int evals_per_step;  // vector-field evaluations per step; 0 when not known (implicit, splitting, the subject's)
+  std::string source;      // "subject" or "suite"
+  Stepper step;
+  int evals_per_step = 0;  // vector-field evaluations per step; 0 when not known (implicit, splitting, the subject's)
+};
+
+// One system on which steps are compared: the packed start, the 50-digit state at t = 4 (from
+// the harness's reference flow or the Taylor oracle), the vector field (for Boost.Odeint) and the
+// energy (for the long run).
+struct Problem {
+  std::string label;  // as in the figures: "rigid body", "Manakov n = 4", ...
+  State x0;
+  std::vector<Real50> reference;
+  std::function<State(const State&)> field;
+  std::function<double(const State&)> energy;
+  double long_step = 0.25;
+  std::vector<Method> methods;  // the subject's first, then the suite's
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-double error_against(const RigidBodyState<double>& x, const RigidBodyState<Real50>& ref) {
+std::string sci(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3g", x);
+  return buf;
+}
+
+// Packing: (Pi, O): Pi then O row-major; (M, O): M then O row-major; (Q, P): Q then P (row-major).
+State pack(const RigidBodyState<double>& x) {
+  State s(x.Pi.data(), x.Pi.data() + 3);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) s.push_back(x.O(i, j));
+  return s;
+}
+RigidBodyState<double> unpack_rigid_body(const State& s) {
+  RigidBodyState<double> x;
+  for (int k = 0; k < 3; ++k) x.Pi(k) = s[k];
+  for (int k = 0; k < 9; ++k) x.O(k / 3, k % 3) = s[3 + k];
+  return x;
+}
+void append(State& s, const MatX<double>& A) {
+  for (int i = 0; i < A.rows(); ++i)
+    for (int j = 0; j < A.cols(); ++j) s.push_back(A(i, j));
+}
+MatX<double> block(const State& s, int offset, int rows, int cols) {
+  MatX<double> A(rows, cols);
+  for (int i = 0; i < rows; ++i)
+    for (int j = 0; j < cols; ++j) A(i, j) = s[offset + i * cols + j];
+  return A;
+}
+State pack(const MatX<double>& a, const MatX<double>& b) {
+  State s;
+  append(s, a);
+  append(s, b);
+  return s;
+}
+
+double error_against(const State& x, const std::vector<Real50>& ref) {
   double e = 0;
-  for (int k = 0; k < 3; ++k) e = std::max(e, std::abs(x.Pi(k) - ref.Pi(k).convert_to<double>()));
-  for (int k = 0; k < 9; ++k) e = std::max(e, std::abs(x.O(k / 3, k % 3) - ref.O(k / 3, k % 3).convert_to<double>()));
+  for (std::size_t k = 0; k < x.size(); ++k) e = std::max(e, std::abs(x[k] - ref[k].convert_to<double>()));
   return std::isfinite(e) ? e : std::numeric_limits<double>::infinity();
 }
 
@@ -56,148 +102,357 @@ struct Run {
 
 // One run to t = 4 in n steps. A run shorter than 5 ms is repeated (up to 1000 times) and the
 // mean time kept, so that the clock's resolution does not decide the short runs.
-Run fixed_step_run(const Method& m, int n, const RigidBodyState<Real50>& ref) {
-  const Vec3<double> I = portrait_inertia<double>();
+Run fixed_step_run(const Problem& p, const Method& m, int n) {
   const double h = kTime / n;
-  RigidBodyState<double> x;
+  State x;
   int reps = 0;
   const auto t0 = std::chrono::steady_clock::now();
   do {
-    x = portrait_start<double>();
-    for (int i = 0; i < n; ++i) x = m.step(I, x, h);
+    x = p.x0;
+    for (int i = 0; i < n; ++i) x = m.step(x, h);
     ++reps;
   } while (seconds_since(t0) < 5e-3 && reps < 1000);
-  Run r;
-  r.seconds = seconds_since(t0) / reps;
-  r.steps = n;
-  r.evals = static_cast<long>(m.evals_per_step) * n;
-  r.error = error_against(x, ref);
-  return r;
+  return Run{n, static_cast<long>(m.evals_per_step) * n, seconds_since(t0) / reps, error_against(x, p.reference)};
 }
 
-// Boost.Odeint: the controlled Dormand-Prince 5(4) stepper, absolute and relative tolerance tol,
-// on (Pi, O) packed in 12 numbers; steps and right-hand-side calls counted.
-Run odeint_run(double tol, const RigidBodyState<Real50>& ref) {
+// Boost.Odeint: the controlled Dormand-Prince 5(4) stepper, absolute and relative tolerance tol;
+// steps and right-hand-side calls counted.
+Run odeint_run(const Problem& p, double tol) {
   namespace odeint = boost::numeric::odeint;
-  using State = std::array<double, 12>;
-  const Vec3<double> I = portrait_inertia<double>();
   long evals = 0, steps = 0;
-  auto field = [&](const State& y, State& dy, double) {
+  auto rhs = [&](const State& y, State& dy, double) {
     ++evals;
-    RigidBodyState<double> x;
-    for (int k = 0; k < 3; ++k) x.Pi(k) = y[k];
-    for (int k = 0; k < 9; ++k) x.O(k / 3, k % 3) = y[3 + k];
-    const RigidBodyState<double> d = ref::rigid_body_field<double>(I, x);
-    for (int k = 0; k < 3; ++k) dy[k] = d.Pi(k);
-    for (int k = 0; k < 9; ++k) dy[3 + k] = d.O(k / 3, k % 3);
+    dy = p.field(y);
   };
-  State y{};
+  State y;
   int reps = 0;
   const auto t0 = std::chrono::steady_clock::now();
   do {
-    const RigidBodyState<double> x0 = portrait_start<double>();
-    for (int k = 0; k < 3; ++k) y[k] = x0.Pi(k);
-    for (int k = 0; k < 9; ++k) y[3 + k] = x0.O(k / 3, k % 3);
+    y = p.x0;
     evals = 0;
-    steps = static_cast<long>(odeint::integrate_adaptive(odeint::make_controlled<odeint::runge_kutta_dopri5<State>>(tol, tol),
-                                                         field, y, 0.0, kTime, 0.01));
+    steps = static_cast<long>(
+        odeint::integrate_adaptive(odeint::make_controlled<odeint::runge_kutta_dopri5<State>>(tol, tol), rhs, y, 0.0, kTime, 0.01));
     ++reps;
   } while (seconds_since(t0) < 5e-3 && reps < 1000);
-  Run r;
-  r.seconds = seconds_since(t0) / reps;
-  r.steps = steps;
-  r.evals = evals;
-  RigidBodyState<double> x;
-  for (int k = 0; k < 3; ++k) x.Pi(k) = y[k];
-  for (int k = 0; k < 9; ++k) x.O(k / 3, k % 3) = y[3 + k];
-  r.error = error_against(x, ref);
-  return r;
+  return Run{steps, evals, seconds_since(t0) / reps, error_against(y, p.reference)};
 }
 
-Series series(const char* figure, const std::string& name, const char* x_label, bool log_x = true) {
+std::string figure_name(const Problem& p, const char* what) { return "work-precision, " + p.label + ": error against " + what; }
+std::string energy_figure(const Problem& p) { return "long-time energy, " + p.label + " (log t)"; }
+
+Series series(const std::string& figure, const std::string& name, const char* x_label, const char* y_label) {
   Series s;
   s.figure = figure;
   s.name = name;
   s.x_label = x_label;
-  s.y_label = std::string(figure) == kFigureEnergy ? "|H - H0| / H0" : "max error in Pi and O at t = 4";
-  s.log_x = log_x;
-  s.log_y = true;
+  s.y_label = y_label;
+  s.log_x = s.log_y = true;
   return s;
 }
 
-std::string sci(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", x);
-  return buf;
-}
-
-std::string run_work_precision(const std::vector<Method>& methods) {
-  Verdict v;
-  v.property = "work-precision";
-  v.scalar = "double";
-  v.title = "work-precision diagram and long-time energy, against the suite's methods";
-  const std::vector<Real50> at{Real50(kTime)};
-  const RigidBodyState<Real50> ref =
-      reference_rigid_body(portrait_inertia<Real50>(), portrait_start<Real50>(), Real50(0), at).front();
-
-  // The cheapest run of each method reaching an error of 1e-6: the figure the message quotes.
-  const double target = 1e-6;
-  std::map<std::string, Run> cheapest;
-  auto consider = [&](const std::string& name, const Run& r) {
-    if (r.error <= target && (!cheapest.count(name) || r.seconds < cheapest[name].seconds)) cheapest[name] = r;
-  };
+// The diagram and the long run of one problem; appends to v and to the message's lists.
+void draw(const Problem& p, Verdict& v, std::vector<std::string>& cheapest, std::vector<std::string>& cut) {
+  const char* y = "max error at t = 4";
+  const double target = 1e-6;  // the message quotes the cheapest run of each method reaching this error
   auto record = [&](const std::string& label, const std::vector<Run>& runs) {
-    Series st = series(kFigureSteps, label, "steps"), ev = series(kFigureEvals, label, "vector-field evaluations"),
-           tm = series(kFigureTime, label, "wall time [s]");
+    Series st = series(figure_name(p, "steps"), label, "steps", y),
+           ev = series(figure_name(p, "vector-field evaluations"), label, "vector-field evaluations", y),
+           tm = series(figure_name(p, "wall time"), label, "wall time [s]", y);
+    const Run* best = nullptr;
     for (const Run& r : runs) {
       st.points.emplace_back(static_cast<double>(r.steps), r.error);
       tm.points.emplace_back(r.seconds, r.error);
       if (r.evals > 0) ev.points.emplace_back(static_cast<double>(r.evals), r.error);
-      consider(label, r);
+      if (r.error <= target && (!best || r.seconds < best->seconds)) best = &r;
     }
     v.series.push_back(st);
     if (!ev.points.empty()) v.series.push_back(ev);
     v.series.push_back(tm);
+    if (best)
+      cheapest.push_back(p.label + ", " + label + " " + sci(best->seconds * 1e3) + " ms (" + std::to_string(best->steps) +
+                         " steps" + (best->evals ? ", " + std::to_string(best->evals) + " evaluations" : "") + ")");
   };
-  for (const Method& m : methods) {
+  for (const Method& m : p.methods) {
     std::vector<Run> runs;
     for (int k = 0; k < kLevels; ++k) {
-      runs.push_back(fixed_step_run(m, 4 << k, ref));
+      runs.push_back(fixed_step_run(p, m, 4 << k));
       if (!std::isfinite(runs.back().error)) break;
     }
     record(m.source + ": " + m.name, runs);
   }
-  {
-    std::vector<Run> runs;
-    for (int e = 2; e <= 13; ++e) runs.push_back(odeint_run(std::pow(10.0, -e), ref));
-    record("suite: odeint runge_kutta_dopri5 (adaptive)", runs);
-  }
+  std::vector<Run> runs;
+  for (int e = 2; e <= 13; ++e) runs.push_back(odeint_run(p, std::pow(10.0, -e)));
+  record("suite: odeint runge_kutta_dopri5 (adaptive)", runs);
 
-  // Long-time energy, sampled at about 40 points per decade of t.
-  const Vec3<double> I = portrait_inertia<double>();
-  for (const Method& m : methods) {
-    Series en = series(kFigureEnergy, m.source + ": " + m.name, "t");
-    RigidBodyState<double> x = portrait_start<double>();
-    const double H0 = (x.Pi.cwiseProduct(x.Pi).cwiseQuotient(I)).sum() / 2;
+  // Long-time energy, sampled at about 40 points per decade of t; a method whose steps are slow
+  // (a remote implementation) stops at the time budget, and the message says where.
+  const double H0 = p.energy(p.x0);
+  for (const Method& m : p.methods) {
+    Series en = series(energy_figure(p), m.source + ": " + m.name, "t", "|H - H0| / H0");
+    State x = p.x0;
     double next = 1;
+    const auto start = std::chrono::steady_clock::now();
     for (int i = 1; i <= kLongSteps; ++i) {
-      x = m.step(I, x, kLongStep);
+      if (i % 256 == 0 && seconds_since(start) > kLongBudget) {
+        cut.push_back(p.label + ", " + m.source + ": " + m.name + " at t = " + sci(i * p.long_step));
+        break;
+      }
+      x = m.step(x, p.long_step);
       if (i < next) continue;
       next = std::max(next + 1, next * 1.06);
-      const double H = (x.Pi.cwiseProduct(x.Pi).cwiseQuotient(I)).sum() / 2;
-      en.points.emplace_back(i * kLongStep, std::abs(H - H0) / H0);
+      const double H = p.energy(x);
+      en.points.emplace_back(i * p.long_step, std::abs(H - H0) / std::abs(H0));
       if (!std::isfinite(H)) break;
     }
     v.series.push_back(en);
   }
+}
 
+// ---------------------------------------------------------------------------------------------
+// The four problems, one per kind of step.
+
+double rigid_body_energy(const Vec3<double>& I, const Vec3<double>& Pi) { return Pi.cwiseProduct(Pi).cwiseQuotient(I).sum() / 2; }
+
+// The motion of the portraits (portrait.hpp).
+Problem rigid_body_problem() {
+  Problem p;
+  p.label = "rigid body";
+  const Vec3<double> I = portrait_inertia<double>();
+  p.x0 = pack(portrait_start<double>());
+  const RigidBodyState<Real50> r =
+      reference_rigid_body(portrait_inertia<Real50>(), portrait_start<Real50>(), Real50(0), {Real50(kTime)}).front();
+  for (int k = 0; k < 3; ++k) p.reference.push_back(r.Pi(k));
+  for (int k = 0; k < 9; ++k) p.reference.push_back(r.O(k / 3, k % 3));
+  p.field = [I](const State& s) { return pack(ref::rigid_body_field<double>(I, unpack_rigid_body(s))); };
+  p.energy = [I](const State& s) { return rigid_body_energy(I, Vec3<double>(s[0], s[1], s[2])); };
+  auto wrap = [I](auto step) { return [I, step](const State& s, double h) { return pack(step(I, unpack_rigid_body(s), h)); }; };
+  p.methods = {{"rk4", "suite", wrap(ref::rk4_step<double>), 4},
+               {"implicit_midpoint", "suite", wrap(ref::implicit_midpoint_step<double>), 0},
+               {"lie_poisson_splitting", "suite", wrap(ref::lie_poisson_splitting_step<double>), 0}};
+  return p;
+}
+
+// Manakov, n = 4, a = (1/2, 3/4, 1, 3/2), M with dyadic entries, O = Id; reference by the Taylor
+// oracle in 50 digits (oracle/taylor.hpp, local tolerance eps).
+constexpr int kManakovN = 4;
+std::vector<double> manakov_a() { return {0.5, 0.75, 1.0, 1.5}; }
+MatX<double> manakov_M0() {
+  MatX<double> M(kManakovN, kManakovN);
+  M << 0, 0.5, -0.25, 0.375, -0.5, 0, 0.625, -0.125, 0.25, -0.625, 0, 0.75, -0.375, 0.125, -0.75, 0;
+  return M;
+}
+
+std::vector<Real50> manakov_reference(const MatX<double>& M0) {
+  std::vector<Real50> a50;
+  for (double v : manakov_a()) a50.push_back(Real50(v));
+  oracle::ManakovField<Real50> f(a50);
+  oracle::TaylorSolver<Real50, decltype(f)> solver(f, 2 * kManakovN * kManakovN, eps<Real50>());
+  std::vector<Real50> x0;
+  for (int i = 0; i < kManakovN; ++i)
+    for (int j = 0; j < kManakovN; ++j) x0.push_back(Real50(M0(i, j)));
+  for (int i = 0; i < kManakovN; ++i)
+    for (int j = 0; j < kManakovN; ++j) x0.push_back(Real50(i == j ? 1 : 0));
+  return solver.flow(x0, Real50(0), Real50(kTime));
+}
+
+double manakov_energy(const MatX<double>& M) {
+  const auto a = manakov_a();
+  double e = 0;
+  for (int i = 0; i < M.rows(); ++i)
+    for (int j = 0; j < M.cols(); ++j) e += M(i, j) * M(i, j) / (a[i] + a[j]);
+  return e / 4;  // -tr(Omega M)/4 with Omega_ij = M_ij / (a_i + a_j)
+}
+
+Problem manakov_problem() {
+  Problem p;
+  const int n = kManakovN;
+  p.label = "Manakov n = 4";
+  const MatX<double> A = Eigen::Map<const VecX<double>>(manakov_a().data(), n).asDiagonal();
+  p.x0 = pack(manakov_M0(), MatX<double>::Identity(n, n));
+  p.reference = manakov_reference(manakov_M0());
+  auto unpack = [n](const State& s) { return ManakovState<double>{block(s, 0, n, n), block(s, n * n, n, n)}; };
+  p.field = [A, unpack](const State& s) {
+    const ManakovState<double> d = ref::manakov_field<double>(A, unpack(s));
+    return pack(d.M, d.O);
+  };
+  p.energy = [n](const State& s) { return manakov_energy(block(s, 0, n, n)); };
+  p.long_step = 0.125;
+  auto wrap = [A, unpack](auto step) {
+    return [A, unpack, step](const State& s, double h) {
+      const ManakovState<double> y = step(A, unpack(s), h);
+      return pack(y.M, y.O);
+    };
+  };
+  p.methods = {{"rk4", "suite", wrap(ref::manakov_rk4_step<double>), 4},
+               {"implicit_midpoint", "suite", wrap(ref::manakov_implicit_midpoint_step<double>), 0},
+               {"isospectral_cayley", "suite", wrap(ref::manakov_isospectral_step<double>), 0}};
+  return p;
+}
+
+// Clebsch (3.21): I and Pi(0) = P x Q of the portraits' motion; Q(t) = O(t)^-1 Q(0),
+// P(t) = O(t)^-1 P(0) (Remark 3.3) with O from the 50-digit reference started at Id.
+Problem clebsch_problem() {
+  Problem p;
+  p.label = "Clebsch (3.21)";
+  const Vec3<double> I = portrait_inertia<double>();
+  const Vec3<double> Q0(0.5, -0.25, 0.75), P0(-0.25, 0.875, 0.5);
+  p.x0 = pack(MatX<double>(Q0.transpose()), MatX<double>(P0.transpose()));
+  const Vec3<Real50> Q50 = Q0.cast<Real50>(), P50 = P0.cast<Real50>();
+  const RigidBodyState<Real50> r = reference_rigid_body(portrait_inertia<Real50>(), RigidBodyState<Real50>{P50.cross(Q50), Mat3<Real50>::Identity()},
+                                                        Real50(0), {Real50(kTime)})
+                                       .front();
+  const Vec3<Real50> Q = r.O.transpose() * Q50, P = r.O.transpose() * P50;
+  for (int k = 0; k < 3; ++k) p.reference.push_back(Q(k));
+  for (int k = 0; k < 3; ++k) p.reference.push_back(P(k));
+  auto to_pair = [](const State& s) { return Vec3Pair<double>{Vec3<double>(s[0], s[1], s[2]), Vec3<double>(s[3], s[4], s[5])}; };
+  auto from_pair = [](const Vec3Pair<double>& z) { return State{z.first(0), z.first(1), z.first(2), z.second(0), z.second(1), z.second(2)}; };
+  p.field = [I, to_pair, from_pair](const State& s) {
+    const auto z = to_pair(s);
+    return from_pair(ref::clebsch_3_21<double>(I, z.first, z.second));
+  };
+  p.energy = [I, to_pair](const State& s) {
+    const auto z = to_pair(s);
+    return rigid_body_energy(I, z.second.cross(z.first));
+  };
+  auto wrap = [I, to_pair, from_pair](auto step) {
+    return [I, to_pair, from_pair, step](const State& s, double h) { return from_pair(step(I, to_pair(s), h)); };
+  };
+  p.methods = {{"rk4", "suite", wrap(ref::clebsch_rk4_step<double>), 4},
+               {"clebsch_midpoint", "suite", wrap(ref::clebsch_midpoint_step<double>), 0},
+               {"clebsch_splitting", "suite", wrap(ref::clebsch_splitting_step<double>), 0}};
+  return p;
+}
+
+// Clebsch (3.23), n = 3: Q(t) = Q(0) O(t), P(t) = P(0) O(t), (M, O) by the Taylor oracle.
+constexpr int kClebschN = 3;
+std::vector<double> manakov_clebsch_a() { return {0.5, 0.75, 1.0}; }
+
+Problem manakov_clebsch_problem() {
+  Problem p;
+  const int n = kClebschN;
+  p.label = "Clebsch (3.23) n = 3";
+  const std::vector<double> a = manakov_clebsch_a();
+  const MatX<double> A = Eigen::Map<const VecX<double>>(a.data(), n).asDiagonal();
+  MatX<double> Q0(n, n), P0(n, n);
+  Q0 << 0.5, -0.25, 0.125, 0.25, 0.375, -0.5, -0.125, 0.5, 0.25;
+  P0 << 0.25, 0.5, -0.375, -0.5, 0.125, 0.25, 0.375, -0.25, 0.5;
+  p.x0 = pack(Q0, P0);
+  {
+    std::vector<Real50> a50;
+    for (double v : a) a50.push_back(Real50(v));
+    oracle::ManakovField<Real50> f(a50);
+    oracle::TaylorSolver<Real50, decltype(f)> solver(f, 2 * n * n, eps<Real50>());
+    const MatX<Real50> Q50 = Q0.cast<Real50>(), P50 = P0.cast<Real50>();
+    const MatX<Real50> M0 = Q50.transpose() * P50 - P50.transpose() * Q50;
+    std::vector<Real50> x0;
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) x0.push_back(M0(i, j));
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) x0.push_back(Real50(i == j ? 1 : 0));
+    const std::vector<Real50> y = solver.flow(x0, Real50(0), Real50(kTime));
+    MatX<Real50> O(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) O(i, j) = y[n * n + i * n + j];
+    const MatX<Real50> Q = Q50 * O, P = P50 * O;
+    for (const MatX<Real50>* X : {&Q, &P})
+      for (int i = 0; i < n; ++i)
+        for (int j = 0; j < n; ++j) p.reference.push_back((*X)(i, j));
+  }
+  auto to_pair = [n](const State& s) { return MatXPair<double>{block(s, 0, n, n), block(s, n * n, n, n)}; };
+  p.field = [A, to_pair](const State& s) {
+    const auto z = to_pair(s);
+    const auto d = ref::manakov_clebsch_3_23<double>(A, z.first, z.second);
+    return pack(d.first, d.second);
+  };
+  p.energy = [a, to_pair](const State& s) {
+    const auto z = to_pair(s);
+    const MatX<double> M = ref::manakov_clebsch_M<double>(z.first, z.second);
+    double e = 0;
+    for (int i = 0; i < M.rows(); ++i)
+      for (int j = 0; j < M.cols(); ++j) e += M(i, j) * M(i, j) / (a[i] + a[j]);
+    return e / 4;
+  };
+  p.long_step = 0.125;
+  auto wrap = [A, to_pair](auto step) {
+    return [A, to_pair, step](const State& s, double h) {
+      const MatXPair<double> y = step(A, to_pair(s), h);
+      return pack(y.first, y.second);
+    };
+  };
+  p.methods = {{"rk4", "suite", wrap(ref::manakov_clebsch_rk4_step<double>), 4},
+               {"clebsch_midpoint", "suite", wrap(ref::manakov_clebsch_midpoint_step<double>), 0}};
+  return p;
+}
+
+// The subject's steps of each kind, wrapped like the suite's and put first.
+std::vector<Problem> problems_for(const Subject<double>& s, const std::vector<std::string>& names) {
+  std::vector<Problem> out;
+  auto chosen = [&](const Integrator<double>& in) { return std::find(names.begin(), names.end(), in.name) != names.end(); };
+  auto with_subject = [&](Problem p, auto has, auto wrap) {
+    std::vector<Method> mine;
+    for (const auto& in : s.integrators)
+      if (chosen(in) && has(in)) mine.push_back({in.name, "subject", wrap(in), 0});
+    if (mine.empty()) return;
+    mine.insert(mine.end(), p.methods.begin(), p.methods.end());
+    p.methods = std::move(mine);
+    out.push_back(std::move(p));
+  };
+  with_subject(
+      rigid_body_problem(), [](const auto& in) { return static_cast<bool>(in.rigid_body_step); },
+      [](const Integrator<double>& in) -> Stepper {
+        const Vec3<double> I = portrait_inertia<double>();
+        return [I, step = in.rigid_body_step](const State& x, double h) { return pack(step(I, unpack_rigid_body(x), h)); };
+      });
+  with_subject(
+      manakov_problem(), [](const auto& in) { return static_cast<bool>(in.manakov_step); },
+      [](const Integrator<double>& in) -> Stepper {
+        const int n = kManakovN;
+        const MatX<double> A = Eigen::Map<const VecX<double>>(manakov_a().data(), n).asDiagonal();
+        return [A, n, step = in.manakov_step](const State& x, double h) {
+          const ManakovState<double> y = step(A, ManakovState<double>{block(x, 0, n, n), block(x, n * n, n, n)}, h);
+          return pack(y.M, y.O);
+        };
+      });
+  with_subject(
+      clebsch_problem(), [](const auto& in) { return static_cast<bool>(in.clebsch_step); },
+      [](const Integrator<double>& in) -> Stepper {
+        const Vec3<double> I = portrait_inertia<double>();
+        return [I, step = in.clebsch_step](const State& x, double h) {
+          const Vec3Pair<double> y = step(I, Vec3Pair<double>{Vec3<double>(x[0], x[1], x[2]), Vec3<double>(x[3], x[4], x[5])}, h);
+          return State{y.first(0), y.first(1), y.first(2), y.second(0), y.second(1), y.second(2)};
+        };
+      });
+  with_subject(
+      manakov_clebsch_problem(), [](const auto& in) { return static_cast<bool>(in.manakov_clebsch_step); },
+      [](const Integrator<double>& in) -> Stepper {
+        const int n = kClebschN;
+        const MatX<double> A = Eigen::Map<const VecX<double>>(manakov_clebsch_a().data(), n).asDiagonal();
+        return [A, n, step = in.manakov_clebsch_step](const State& x, double h) {
+          const MatXPair<double> y = step(A, MatXPair<double>{block(x, 0, n, n), block(x, n * n, n, n)}, h);
+          return pack(y.first, y.second);
+        };
+      });
+  return out;
+}
+
+std::string run_work_precision(const Subject<double>& s, const std::vector<std::string>& names) {
+  Verdict v;
+  v.property = "work-precision";
+  v.scalar = "double";
+  v.title = "work-precision diagram and long-time energy, against the suite's methods";
+  std::vector<std::string> cheapest, cut;
+  for (const Problem& p : problems_for(s, names)) draw(p, v, cheapest, cut);
   std::ostringstream msg;
-  msg << "error at t = 4 against wall time, steps and vector-field evaluations (figures/work-precision.csv); cheapest "
-         "run reaching an error of 1e-6:";
-  for (const auto& [name, r] : cheapest)
-    msg << " " << name << " " << sci(r.seconds * 1e3) << " ms (" << r.steps << " steps" << (r.evals ? ", " + std::to_string(r.evals) + " evaluations" : "") << ");";
+  msg << "error at t = 4 against steps, vector-field evaluations and wall time (figures/work-precision.csv); the "
+         "cheapest run of each method reaching an error of 1e-6:";
+  for (const auto& c : cheapest) msg << " " << c << ";";
   if (cheapest.empty()) msg << " none;";
-  msg << " long-time energy over " << kLongSteps << " steps of h = 1/4 on log axes";
+  msg << " long-time energy over " << kLongSteps << " steps on log-log axes";
+  if (!cut.empty()) {
+    msg << " (stopped at the " << kLongBudget << " s budget:";
+    for (const auto& c : cut) msg << " " << c << ";";
+    msg << ")";
+  }
   v.message = msg.str();
   v.outcome = Outcome::Pass;
   return verdicts_to_string({v});
@@ -210,22 +465,13 @@ std::optional<PortraitTask> work_precision_task(const SubjectSet& s, const Check
   if (std::find(cfg.scalars.begin(), cfg.scalars.end(), ScalarKind::Double) == cfg.scalars.end()) return std::nullopt;
   std::vector<std::string> names;
   for (const auto& in : s.d->integrators)
-    if (in.rigid_body_step && (cfg.integrator.empty() || in.name == cfg.integrator)) names.push_back(in.name);
+    if (cfg.integrator.empty() || in.name == cfg.integrator) names.push_back(in.name);
   if (names.empty()) return std::nullopt;
   const Subject<double>* sub = s.d.get();
   PortraitTask t;
   t.scalar = "double";
   t.property = "work-precision";
-  t.run = [sub, names]() {
-    std::vector<Method> methods;
-    for (const auto& in : sub->integrators)
-      if (std::find(names.begin(), names.end(), in.name) != names.end())
-        methods.push_back({in.name, "subject", in.rigid_body_step, 0});
-    methods.push_back({"rk4", "suite", ref::rk4_step<double>, 4});
-    methods.push_back({"implicit_midpoint", "suite", ref::implicit_midpoint_step<double>, 0});
-    methods.push_back({"lie_poisson_splitting", "suite", ref::lie_poisson_splitting_step<double>, 0});
-    return run_work_precision(methods);
-  };
+  t.run = [sub, names]() { return run_work_precision(*sub, names); };
   return t;
 }
 
@@ -234,30 +480,34 @@ std::string work_precision_csv(const CheckResult& r) {
   for (const auto& p : r.portraits)
     if (p.property == "work-precision") wp = &p;
   if (!wp) return {};
-  // The steps series fixes the rows; evaluations and times are matched by method and position.
-  std::map<std::string, const Series*> evals, times;
-  for (const auto& s : wp->series) {
-    if (s.figure == kFigureEvals) evals[s.name] = &s;
-    if (s.figure == kFigureTime) times[s.name] = &s;
-  }
+  // The steps series fix the rows; evaluations and times are matched by figure, method and position.
+  const std::string head = "work-precision, ", steps = ": error against steps";
+  std::map<std::string, const Series*> by_figure_and_name;
+  for (const auto& s : wp->series) by_figure_and_name[s.figure + "\n" + s.name] = &s;
   std::ostringstream csv;
-  csv << "method,source,steps,vector_field_evaluations,seconds,error_at_t4\n";
+  csv << "problem,method,source,steps,vector_field_evaluations,seconds,error_at_t4\n";
   char buf[64];
   auto num = [&](double x) {
     std::snprintf(buf, sizeof buf, "%.6g", x);
     return std::string(buf);
   };
   for (const auto& s : wp->series) {
-    if (s.figure != kFigureSteps) continue;
+    if (s.figure.rfind(head, 0) != 0 || s.figure.size() < steps.size() ||
+        s.figure.compare(s.figure.size() - steps.size(), steps.size(), steps) != 0)
+      continue;
+    const std::string problem = s.figure.substr(head.size(), s.figure.size() - head.size() - steps.size());
     const auto colon = s.name.find(": ");
     const std::string source = s.name.substr(0, colon), method = s.name.substr(colon + 2);
-    for (std::size_t i = 0; i < s.points.size(); ++i) {
-      const Series* e = evals.count(s.name) ? evals[s.name] : nullptr;
-      const Series* t = times.count(s.name) ? times[s.name] : nullptr;
-      csv << '"' << method << "\"," << source << "," << static_cast<long>(s.points[i].first) << ","
+    auto find = [&](const char* what) {
+      const auto it = by_figure_and_name.find(head + problem + ": error against " + what + "\n" + s.name);
+      return it == by_figure_and_name.end() ? nullptr : it->second;
+    };
+    const Series* e = find("vector-field evaluations");
+    const Series* t = find("wall time");
+    for (std::size_t i = 0; i < s.points.size(); ++i)
+      csv << '"' << problem << "\",\"" << method << "\"," << source << "," << static_cast<long>(s.points[i].first) << ","
           << (e && i < e->points.size() ? std::to_string(static_cast<long>(e->points[i].first)) : "") << ","
           << (t && i < t->points.size() ? num(t->points[i].first) : "") << "," << num(s.points[i].second) << "\n";
-    }
   }
   return csv.str();
 }

@@ -26,6 +26,8 @@
 // Spec entries: s3.clebsch-reconstruction (the exact flow of (3.21)), s3.clebsch-poisson (the
 // canonical structure (Q, P) carries, whose brackets (3.22) the map to Pi respects), and
 // mm.manakov-clebsch for (3.23).
+#include <cstdio>
+
 #include "impl/canonical_integrators.hpp"
 #include "properties/registry.hpp"
 #include "properties/support/claims.hpp"
@@ -33,10 +35,9 @@
 #include "properties/support/derivatives.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
+#include "properties/support/named_inputs.hpp"
 #include "properties/support/roundoff_claim.hpp"
 #include "properties/support/tolerance.hpp"
-
-#include <cstdio>
 
 namespace gm {
 namespace {
@@ -63,8 +64,16 @@ struct CanonicalCase {
   std::function<MatX<T>(const MatX<T>&, const T&)> step;
   std::function<T(const MatX<T>&)> energy;
   MatX<T> Z0;
-  T energy_scale;  // a bound on the sum of |terms| of H at Z0 (H is of degree 4 in Z)
+  T energy_scale;                          // a bound on the sum of |terms| of H at Z0 (H is of degree 4 in Z)
   std::function<MatX<T>(const T&)> exact;  // the exact flow at time t from Z0
+  std::function<std::string()> body;       // the body's data (I or A) by the notes' names, for failures
+
+  // The case's inputs by the notes' names, with the step h.
+  std::string inputs(const T& h) const {
+    const auto k = Z0.rows() / 2;
+    return "    system: " + system + "\n" + body() + named("Q", MatX<T>(Z0.topRows(k))) +
+           named("P", MatX<T>(Z0.bottomRows(k))) + named("h", h);
+  }
 };
 
 template <class T>
@@ -85,6 +94,7 @@ CanonicalCase<T> clebsch_case(const Integrator<T>& in) {
   CanonicalCase<T> c;
   const Vec3<T> I = dyn::draw_generic_inertia<T>();
   c.system = "(3.21)";
+  c.body = [I]() { return named("I", I); };
   c.step = [&in, I](const MatX<T>& Z, const T& h) { return ref::stack<T>(in.clebsch_step(I, ref::unstack3<T>(Z), h)); };
   c.energy = [I](const MatX<T>& Z) {
     const auto [Q, P] = ref::unstack3<T>(Z);
@@ -95,7 +105,8 @@ CanonicalCase<T> clebsch_case(const Integrator<T>& in) {
   const MatX<T> Z0 = c.Z0;
   c.exact = [I, Z0](const T& t) {
     const auto [Q, P] = ref::unstack3<T>(Z0);
-    const RigidBodyState<T> x = dyn::oracle_rigid_body(I, RigidBodyState<T>{ref::cross<T>(P, Q), Mat3<T>::Identity()}, {t}).front();
+    const RigidBodyState<T> x =
+        dyn::oracle_rigid_body(I, RigidBodyState<T>{ref::cross<T>(P, Q), Mat3<T>::Identity()}, {t}).front();
     return ref::stack<T>(Vec3Pair<T>{Vec3<T>(x.O.transpose() * Q), Vec3<T>(x.O.transpose() * P)});
   };
   return c;
@@ -120,13 +131,17 @@ CanonicalCase<T> manakov_clebsch_case(const Integrator<T>& in, int lo, int hi) {
   const std::vector<T> a = dyn::draw_generic_manakov_a<T>(n);
   const MatX<T> A = dyn::diag_of(a);
   c.system = "(3.23), n = " + std::to_string(n);
-  c.step = [&in, A](const MatX<T>& Z, const T& h) { return ref::stack<T>(in.manakov_clebsch_step(A, ref::unstack_n<T>(Z), h)); };
+  c.body = [A]() { return named("A", A); };
+  c.step = [&in, A](const MatX<T>& Z, const T& h) {
+    return ref::stack<T>(in.manakov_clebsch_step(A, ref::unstack_n<T>(Z), h));
+  };
   c.energy = [a](const MatX<T>& Z) {
     const auto [Q, P] = ref::unstack_n<T>(Z);
     return dyn::manakov_energy(a, ref::manakov_clebsch_M<T>(Q, P));
   };
   const T shrink = T(1) / T(2);
-  c.Z0 = ref::stack<T>(MatXPair<T>{MatX<T>(shrink * draw_generic_matrix<T>(n)), MatX<T>(shrink * draw_generic_matrix<T>(n))});
+  c.Z0 = ref::stack<T>(
+      MatXPair<T>{MatX<T>(shrink * draw_generic_matrix<T>(n)), MatX<T>(shrink * draw_generic_matrix<T>(n))});
   c.energy_scale = energy_scale<T>(c.energy(c.Z0), c.Z0, ref::manakov_clebsch_field<T>(A, c.Z0));
   const MatX<T> Z0 = c.Z0;
   c.exact = [a, Z0](const T& t) {
@@ -160,9 +175,16 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
   const MatX<T> exact = c.exact(t_end);
   const T scale = at_least_one_abs(c.Z0);
   std::vector<double> hs, errs, floors;
-  Series ser{"convergence (Clebsch " + c.system.substr(0, 6) + "): " + in.name, "error at t = 1" + tag<T>(), "step h",
-             "max error", true, true, {}, static_cast<double>(cl.order)};
-  const std::vector<int> Ns = kind == StepKind::Clebsch ? std::vector<int>{8, 16, 32, 64, 128} : std::vector<int>{8, 16, 32, 64};
+  Series ser{"convergence (Clebsch " + c.system.substr(0, 6) + "): " + in.name,
+             "error at t = 1" + tag<T>(),
+             "step h",
+             "max error",
+             true,
+             true,
+             {},
+             static_cast<double>(cl.order)};
+  const std::vector<int> Ns =
+      kind == StepKind::Clebsch ? std::vector<int>{8, 16, 32, 64, 128} : std::vector<int>{8, 16, 32, 64};
   for (int N : Ns) {
     const T h = t_end / T(N);
     const T err = max_abs(MatX<T>(run(c, c.Z0, h, N) - exact));
@@ -174,20 +196,26 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
   record_series(ser);
   const auto fit = conv::loglog_slope(hs, errs, floors);
   if (fit.used < 3) {
-    record_note(in.name + ": errors at round-off for every step tried on " + c.system + "; order not measurable" + tag<T>());
+    record_note(in.name + ": errors at round-off for every step tried on " + c.system + "; order not measurable" +
+                tag<T>());
     return;
   }
   record_note(in.name + nfmt(": measured order %.3f on the Clebsch system ", fit.slope) + c.system +
               (cl.order ? nfmt(" (claimed %g)", cl.order) : std::string(" (no order claimed)")) + tag<T>());
-  if (cl.order > 0) {
-    const bool holds = std::abs(fit.slope - cl.order) <= 0.1;
-    judge_claim("order", true, holds,
-                in.name + nfmt(": measured order %.3f on the Clebsch system ", fit.slope) + c.system +
-                    nfmt(", claimed %g", cl.order) + tag<T>());
-    require(in.name + ": the measured order on the Clebsch system " + c.system + " is within 0.1 of the claimed " +
-                std::to_string(cl.order),
-            holds, nfmt("measured slope %.4f\n", fit.slope) + fit.table);
-  }
+  if (cl.order > 0)
+    showing_inputs(
+        [&] {
+          return c.inputs(t_end / T(Ns.front())) + "    (h halved down to 1/" + std::to_string(Ns.back()) + ")\n";
+        },
+        [&] {
+          const bool holds = std::abs(fit.slope - cl.order) <= 0.1;
+          judge_claim("order", true, holds,
+                      in.name + nfmt(": measured order %.3f on the Clebsch system ", fit.slope) + c.system +
+                          nfmt(", claimed %g", cl.order) + tag<T>());
+          require(in.name + ": the measured order on the Clebsch system " + c.system +
+                      " is within 0.1 of the claimed " + std::to_string(cl.order),
+                  holds, nfmt("measured slope %.4f\n", fit.slope) + fit.table);
+        });
 }
 
 // Symmetry: step(h) then step(-h), h = 1/4; two steps at a few eps each: k = 64 on the scale
@@ -196,17 +224,20 @@ template <class T>
 void canonical_symmetric(StepKind kind, const Integrator<T>& in, const IntegratorClaims& cl) {
   const T h = T(1) / T(4);
   T worst(0), worst_scale(1);
-  std::string system;
+  std::string system, inputs;
   for (int k = 0; k < kStates; ++k) {
     const CanonicalCase<T> c = draw_case<T>(kind, in);
     system = c.system.substr(0, 6);
     const T scale = at_least_one_abs(c.Z0) * T(c.n);
     const T r = max_abs(MatX<T>(c.step(c.step(c.Z0, h), -h) - c.Z0)) / scale;
-    if (!(r <= worst)) worst = r, worst_scale = scale;
+    if (!(r <= worst)) worst = r, worst_scale = scale, inputs = c.inputs(h);
   }
-  judge_roundoff_claim<T>("symmetric", cl.symmetric, in.name,
-                          "Clebsch " + system + " step(h) then step(-h) returns to the start", T(worst * worst_scale),
-                          worst_scale, 64);
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_roundoff_claim<T>("symmetric", cl.symmetric, in.name,
+                                           "Clebsch " + system + " step(h) then step(-h) returns to the start",
+                                           T(worst * worst_scale), worst_scale, 64);
+                 });
 }
 
 // Energy over 64 steps (32 for (3.23)) of h = 1/8: H is of degree 4, k = 16 per degree and step on
@@ -215,7 +246,7 @@ template <class T>
 void canonical_energy(StepKind kind, const Integrator<T>& in, const IntegratorClaims& cl) {
   const int steps = kind == StepKind::Clebsch ? 64 : 32;
   T worst(0), worst_scale(1);
-  std::string system;
+  std::string system, inputs;
   for (int k = 0; k < kStates; ++k) {
     const CanonicalCase<T> c = draw_case<T>(kind, in);
     system = c.system.substr(0, 6);
@@ -224,13 +255,16 @@ void canonical_energy(StepKind kind, const Integrator<T>& in, const IntegratorCl
     for (int s = 0; s < steps; ++s) {
       Z = c.step(Z, T(1) / T(8));
       const T r = abs_value(T(c.energy(Z) - H0)) / c.energy_scale;
-      if (!(r <= worst)) worst = r, worst_scale = c.energy_scale;
+      if (!(r <= worst)) worst = r, worst_scale = c.energy_scale, inputs = c.inputs(T(1) / T(8));
     }
   }
-  judge_roundoff_claim<T>("energy", cl.energy, in.name,
-                          "the Hamiltonian H(Q, P) of the Clebsch system " + system + " is kept to round-off over " +
-                              std::to_string(steps) + " steps",
-                          T(worst * worst_scale), T(steps * worst_scale), 64);
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_roundoff_claim<T>("energy", cl.energy, in.name,
+                                           "the Hamiltonian H(Q, P) of the Clebsch system " + system +
+                                               " is kept to round-off over " + std::to_string(steps) + " steps",
+                                           T(worst * worst_scale), T(steps * worst_scale), 64);
+                 });
 }
 
 // Symplecticity (see the head of the file). Directional derivatives D Phi u_i by central8, then
@@ -248,7 +282,7 @@ template <class T>
 void canonical_symplectic(StepKind kind, const Integrator<T>& in, const IntegratorClaims& cl) {
   const T h = T(1) / T(4);
   T worst(0), worst_raw(0), worst_scale(1);
-  std::string system, where;
+  std::string system, where, inputs;
   for (int s = 0; s < kStates; ++s) {
     const CanonicalCase<T> c = draw_case<T>(kind, in);
     system = c.system.substr(0, 6);
@@ -278,14 +312,18 @@ void canonical_symplectic(StepKind kind, const Integrator<T>& in, const Integrat
         const T r = raw / scale;
         if (!(r <= worst)) {
           worst = r, worst_raw = raw, worst_scale = scale;
+          inputs = c.inputs(h) + named("u", u[i]) + named("v", u[j]);
           where = c.system + nfmt(", directions %g and %g", static_cast<double>(i), static_cast<double>(j));
         }
       }
   }
-  judge_roundoff_claim<T>("symplectic", cl.symplectic, in.name,
-                          "omega(D Phi u, D Phi v) = omega(u, v): the Clebsch " + system +
-                              " step preserves the canonical two-form (worst at " + where + ")",
-                          worst_raw, worst_scale, 16);
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_roundoff_claim<T>("symplectic", cl.symplectic, in.name,
+                                           "omega(D Phi u, D Phi v) = omega(u, v): the Clebsch " + system +
+                                               " step preserves the canonical two-form (worst at " + where + ")",
+                                           worst_raw, worst_scale, 16);
+                 });
 }
 
 template <class T>
@@ -326,14 +364,15 @@ void manakov_clebsch_integrator_symplectic(const Subject<T>&, const Integrator<T
 #define GM_CL .cases = {.d = 10, .mp = 2, .q = 0}, .step = StepKind::Clebsch
 #define GM_MCL .cases = {.d = 5, .mp = 1, .q = 0}, .step = StepKind::ManakovClebsch
 
-GM_PROPERTY(clebsch_integrator_order, integrator_scalars,
-            {.id = "clebsch_integrator_order",
-             .spec = "s3.clebsch-reconstruction",
-             .title = "Clebsch (3.21) integrator: measured order at t = 1 (against Q(t) = O(t)^-1 Q(0)) matches the claim",
-             .tolerance = ToleranceClass::Truncation,
-             .needs = {},
-             .negative_controls = {"explicit_verlet_nonseparable"},
-             GM_CL});
+GM_PROPERTY(
+    clebsch_integrator_order, integrator_scalars,
+    {.id = "clebsch_integrator_order",
+     .spec = "s3.clebsch-reconstruction",
+     .title = "Clebsch (3.21) integrator: measured order at t = 1 (against Q(t) = O(t)^-1 Q(0)) matches the claim",
+     .tolerance = ToleranceClass::Truncation,
+     .needs = {},
+     .negative_controls = {"explicit_verlet_nonseparable"},
+     GM_CL});
 
 GM_PROPERTY(manakov_clebsch_integrator_order, integrator_scalars,
             {.id = "manakov_clebsch_integrator_order",
@@ -371,22 +410,25 @@ GM_PROPERTY(clebsch_integrator_energy, integrator_scalars,
              .negative_controls = {"clebsch_midpoint_claims_energy"},
              GM_CL});
 
-GM_PROPERTY(manakov_clebsch_integrator_energy, integrator_scalars,
-            {.id = "manakov_clebsch_integrator_energy",
-             .spec = "mm.manakov-clebsch",
-             .title = "Clebsch (3.23) integrator claiming energy: -tr(Omega M)/4 of M = Q^T P - P^T Q kept to round-off",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {},
-             .negative_controls = {"clebsch_midpoint_claims_energy"},
-             GM_MCL});
+GM_PROPERTY(
+    manakov_clebsch_integrator_energy, integrator_scalars,
+    {.id = "manakov_clebsch_integrator_energy",
+     .spec = "mm.manakov-clebsch",
+     .title = "Clebsch (3.23) integrator claiming energy: -tr(Omega M)/4 of M = Q^T P - P^T Q kept to round-off",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {},
+     .negative_controls = {"clebsch_midpoint_claims_energy"},
+     GM_MCL});
 
 GM_PROPERTY(clebsch_integrator_symplectic, integrator_scalars,
             {.id = "clebsch_integrator_symplectic",
              .spec = "s3.clebsch-poisson",
-             .title = "Clebsch (3.21) integrator claimed symplectic: D Phi preserves dQ ^ dP (to the accuracy of an order-8 Jacobian)",
+             .title = "Clebsch (3.21) integrator claimed symplectic: D Phi preserves dQ ^ dP (to the accuracy of an "
+                      "order-8 Jacobian)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
-             .negative_controls = {"explicit_verlet_nonseparable", "rk4_claims_symplectic", "clebsch_midpoint_loose_solve"},
+             .negative_controls = {"explicit_verlet_nonseparable", "rk4_claims_symplectic",
+                                   "clebsch_midpoint_loose_solve"},
              GM_CL});
 
 GM_PROPERTY(manakov_clebsch_integrator_symplectic, integrator_scalars,
@@ -395,7 +437,8 @@ GM_PROPERTY(manakov_clebsch_integrator_symplectic, integrator_scalars,
              .title = "Clebsch (3.23) integrator claimed symplectic: D Phi preserves the canonical two-form (n = 3..6)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
-             .negative_controls = {"explicit_verlet_nonseparable", "rk4_claims_symplectic", "clebsch_midpoint_loose_solve"},
+             .negative_controls = {"explicit_verlet_nonseparable", "rk4_claims_symplectic",
+                                   "clebsch_midpoint_loose_solve"},
              GM_MCL});
 
 #undef GM_CL

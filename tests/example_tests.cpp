@@ -355,6 +355,27 @@ int run_example(const std::string& name, const std::string& program, const std::
             "the first item of What to fix is \"" + first + "\", expected it to say \"" + e->first_fix + "\"");
     }
     check(fs::exists(fs::path(dir) / "report" / "junit.xml"), "no junit.xml");
+    // Issue 16: an implementation with integrators gets the work-precision diagram, with rows for
+    // each of its integrators (in double) and for the suite's methods, Boost.Odeint's among them.
+    const json report = read_json(fs::path(dir) / "report" / "verdicts.json");
+    std::vector<std::string> stepping;
+    for (const auto& i : report.at("integrators"))
+      for (const auto& sc : i.at("scalars"))
+        if (sc == "double") stepping.push_back(i.at("name"));
+    if (!stepping.empty()) {
+      std::ifstream csv_in(fs::path(dir) / "report" / "figures" / "work-precision.csv");
+      std::ostringstream csv_text;
+      csv_text << csv_in.rdbuf();
+      const std::string csv = csv_text.str();
+      check(csv.rfind("problem,method,source,steps,vector_field_evaluations,seconds,error_at_t4\n", 0) == 0,
+            "figures/work-precision.csv is missing or has no header");
+      for (const auto& name : stepping)
+        check(csv.find(",\"" + name + "\",subject,") != std::string::npos, "work-precision.csv has no row for " + name);
+      check(csv.find(",\"odeint runge_kutta_dopri5 (adaptive)\",suite,") != std::string::npos,
+            "work-precision.csv has no row for Boost.Odeint");
+      check(md.find("## Work-precision diagram and long-time energy") != std::string::npos,
+            "report.md has no work-precision section");
+    }
   } catch (const std::exception& ex) {
     check(false, ex.what());
   }
