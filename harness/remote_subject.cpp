@@ -1,5 +1,7 @@
 #include "harness/remote_subject.hpp"
 
+#include "core/data_path.hpp"
+
 #include "harness/isolate.hpp"
 #include "harness/protocol_codec.hpp"
 
@@ -564,7 +566,6 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
 
 std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why) {
   const fs::path p(file);
-  const std::string src = GM_SOURCE_DIR;
   std::error_code ec;
   if (p.extension() == ".py") {
     if (language) *language = "python";
@@ -573,13 +574,13 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
     // python3 comes first on PATH); $GEOMECH_PYTHON overrides.
     const std::string deflt = fs::exists("/usr/bin/python3", ec) ? "/usr/bin/python3" : "python3";
     // -B: no __pycache__ written beside the student's file or in the source tree.
-    return {py && *py ? py : deflt, "-u", "-B", src + "/student/python/geomech_server.py", file};
+    return {py && *py ? py : deflt, "-u", "-B", suite_data_path("student/python/geomech_server.py"), file};
   }
   if (p.extension() == ".m" || (fs::is_directory(p, ec) && !fs::is_empty(p, ec))) {
     if (language) *language = "octave";
     const char* oc = std::getenv("GEOMECH_OCTAVE");
     return {oc && *oc ? oc : "octave-cli", "--no-gui", "--quiet", "--no-init-file", "--no-history",
-            src + "/student/octave/geomech_server.m", file};
+            suite_data_path("student/octave/geomech_server.m"), file};
   }
   if (why) *why = "not a .py or .m file (nor a folder of .m files)";
   return {};

@@ -111,6 +111,12 @@ void integrator_order(const Subject<T>&, const Integrator<T>& in, const Integrat
     ser.points.emplace_back(hs.back(), errs.back());
   }
   record_series(ser);
+  if (const double bad = conv::first_non_finite(hs, errs); bad > 0) {
+    const std::string what = in.name + fmt(": the error at t = 1 is not finite at h = %g", bad) + scalar_tag<T>();
+    if (c.order > 0) judge_claim("order", true, false, what);
+    record_note(what);
+    return;
+  }
   const auto fit = conv::loglog_slope(hs, errs, floors);
   if (fit.used < 3) {
     record_note(in.name + ": errors at round-off for every step tried; order not measurable" + scalar_tag<T>());
@@ -139,7 +145,7 @@ void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const Inte
     const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
     const RigidBodyState<T> back = in.rigid_body_step(I, in.rigid_body_step(I, x0, h), -h);
     const T r = state_distance(back, x0);
-    if (!(r <= worst)) worst = r;
+    if (worse(r, worst)) worst = r;
   }
   judge_measured_claim<T>("symmetric", c.symmetric, in.name, "step(h) then step(-h) returns to the start", worst, T(1), 64);
 }
@@ -162,7 +168,7 @@ void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, c
                {}, 0};
     run(in, I, x0, T(1) / T(8), kSteps, [&](int n, const RigidBodyState<T>& x) {
       const T r = abs_value(T(invariant(I, x) - v0));
-      if (!(r / scale <= worst)) worst = r / scale;  // NaN propagates
+      if (worse(T(r / scale), worst)) worst = r / scale;  // a NaN stays the worst
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
     if (k == 0) record_series(ser);
@@ -203,7 +209,7 @@ void integrator_orthogonality(const Subject<T>&, const Integrator<T>& in, const 
                0};
     run(in, I, x0, T(1) / T(8), kSteps, [&](int n, const RigidBodyState<T>& x) {
       const T r = max_abs((x.O.transpose() * x.O - Mat3<T>::Identity()).eval());
-      if (!(r <= worst)) worst = r;
+      if (worse(r, worst)) worst = r;
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
     if (k == 0) record_series(ser);
@@ -241,7 +247,7 @@ void integrator_poisson(const Subject<T>&, const Integrator<T>& in, const Integr
   T worst(0);  // in units of |Pi|^2 roundoff_factor8 (|Pi| <= 1 here, so of roundoff_factor8)
   for (int k = 0; k < kStates; ++k) {
     const T r = poisson_defect<T>(in);
-    if (!(r <= worst)) worst = r;
+    if (worse(r, worst)) worst = r;
   }
   judge_measured_claim<T>("poisson", c.poisson, in.name, "D Phi J(Pi) D Phi^T = J(Phi(Pi)): a Poisson map for (3.6)", worst,
                  deriv::roundoff_factor8<T>(), 16);
@@ -302,6 +308,12 @@ void manakov_integrator_order(const Subject<T>&, const Integrator<T>& in, const 
     ser.points.emplace_back(hs.back(), errs.back());
   }
   record_series(ser);
+  if (const double bad = conv::first_non_finite(hs, errs); bad > 0) {
+    const std::string what = in.name + fmt(": the error at t = 1 is not finite at h = %g", bad) + scalar_tag<T>();
+    if (c.order > 0) judge_claim("order", true, false, what);
+    record_note(what);
+    return;
+  }
   const auto fit = conv::loglog_slope(hs, errs, floors);
   if (fit.used < 3) {
     record_note(in.name + ": errors at round-off for every step tried; order not measurable" + scalar_tag<T>());
@@ -327,7 +339,7 @@ void manakov_integrator_symmetric(const Subject<T>&, const Integrator<T>& in, co
     const ManakovCase<T> m = draw_manakov_case<T>(3, 5);
     const ManakovState<T> back = in.manakov_step(m.A, in.manakov_step(m.A, m.x0, h), -h);
     const T r = state_distance(back, m.x0) / T(m.n);
-    if (!(r <= worst)) worst = r;
+    if (worse(r, worst)) worst = r;
   }
   judge_measured_claim<T>("symmetric", c.symmetric, in.name, "Manakov step(h) then step(-h) returns to the start", worst, T(1), 64);
 }
@@ -350,7 +362,7 @@ void manakov_invariant_claim(const Integrator<T>& in, const char* claim, bool cl
     Series ser{"invariants (Manakov): " + in.name, name + scalar_tag<T>(), "t", "|residual|", false, true, {}, 0};
     run(in, m.A, m.x0, T(1) / T(8), kManakovSteps, [&](int n, const ManakovState<T>& x) {
       const T r = norm_inf((invariant(m, x) - v0).eval());
-      if (!(r / scale <= worst)) worst = r / scale;
+      if (worse(T(r / scale), worst)) worst = r / scale;
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
     if (k == 0) record_series(ser);
@@ -454,7 +466,7 @@ void manakov_integrator_poisson(const Subject<T>&, const Integrator<T>& in, cons
   T worst(0);
   for (int k = 0; k < kStates; ++k) {
     const T r = manakov_poisson_defect<T>(in);
-    if (!(r <= worst)) worst = r;
+    if (worse(r, worst)) worst = r;
   }
   judge_measured_claim<T>("poisson", c.poisson, in.name, "D Phi J(M) D Phi^T = J(Phi(M)): a Poisson map for the Lie-Poisson bracket of so(4)*",
                  worst, T(T(6) * deriv::roundoff_factor8<T>()), 16);

@@ -63,7 +63,7 @@ void integrator_noether(const Subject<T>&, const Integrator<T>& in, const Integr
     for (int n = 1; n <= kNoetherSteps; ++n) {
       x = in.rigid_body_step(I, x, T(1) / T(8));
       const T r = norm_inf(Vec3<T>(x.O * x.Pi - pi0)) / scale;
-      if (!(r <= worst)) worst = r;
+      if (worse(r, worst)) worst = r;
       ser.points.emplace_back(n / 8.0, to_double(r));
     }
     if (k == 0) record_series(ser);
@@ -89,7 +89,7 @@ void manakov_integrator_noether(const Subject<T>&, const Integrator<T>& in, cons
     for (int s = 1; s <= kManakovNoetherSteps; ++s) {
       x = in.manakov_step(A, x, T(1) / T(8));
       const T r = max_abs(MatX<T>(x.O * x.M * x.O.transpose() - m0)) / scale;
-      if (!(r <= worst)) worst = r;
+      if (worse(r, worst)) worst = r;
     }
   }
   judge_roundoff_claim<T>("noether", c.noether, in.name,
@@ -115,7 +115,7 @@ void integrator_equivariant(const Subject<T>&, const Integrator<T>& in, const In
     const RigidBodyState<T> a = in.rigid_body_step(I, x, h);
     const RigidBodyState<T> b = in.rigid_body_step(I, RigidBodyState<T>{x.Pi, Mat3<T>(R * x.O)}, h);
     const T r = std::max(max_abs(Vec3<T>(b.Pi - a.Pi)), max_abs(Mat3<T>(b.O - R * a.O)));
-    if (!(r <= worst)) worst = r;
+    if (worse(r, worst)) worst = r;
   }
   judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
                           "step(Pi, R O) = (Pi', R O'): the step commutes with rotating the attitude", worst, T(1), 64);
@@ -134,7 +134,7 @@ void manakov_integrator_equivariant(const Subject<T>&, const Integrator<T>& in, 
     const ManakovState<T> a = in.manakov_step(A, x, h);
     const ManakovState<T> b = in.manakov_step(A, ManakovState<T>{x.M, MatX<T>(R * x.O)}, h);
     const T r = std::max(max_abs(MatX<T>(b.M - a.M)), max_abs(MatX<T>(b.O - R * a.O))) / T(n);
-    if (!(r <= worst)) worst = r;
+    if (worse(r, worst)) worst = r;
   }
   judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
                           "Manakov step(M, R O) = (M', R O'): the step commutes with rotating the attitude (n = 3..6)",

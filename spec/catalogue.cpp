@@ -1,5 +1,7 @@
 #include "spec/catalogue.hpp"
 
+#include "core/data_path.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -10,9 +12,6 @@
 #include <sstream>
 #include <stdexcept>
 
-#ifndef GM_SOURCE_DIR
-#define GM_SOURCE_DIR "."
-#endif
 
 namespace gm {
 
@@ -26,16 +25,7 @@ const SpecEntry* Catalogue::find(std::string_view id) const {
 
 std::string default_catalogue_path() {
   if (const char* p = std::getenv("GEOMECH_CATALOGUE"); p && *p) return p;
-  const std::string in_source = std::string(GM_SOURCE_DIR) + "/spec/catalogue.json";
-  std::error_code ec;
-  if (std::filesystem::exists(in_source, ec)) return in_source;
-  // An installed tool: <prefix>/bin/geomech and <prefix>/share/geomech-spec/spec/catalogue.json.
-  const auto exe = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    const auto installed = exe.parent_path().parent_path() / "share" / "geomech-spec" / "spec" / "catalogue.json";
-    if (std::filesystem::exists(installed, ec)) return installed.string();
-  }
-  return in_source;
+  return suite_data_path("spec/catalogue.json");  // installed beside the tool, or in the source tree
 }
 
 namespace {

@@ -49,4 +49,13 @@ inline SlopeFit loglog_slope(const std::vector<double>& h, const std::vector<dou
   return f;
 }
 
+// The first step size at which the error is not finite (NaN or inf), or 0 when all are finite. A
+// method that blows up at some step is not "at round-off": a claimed order is then false, and the
+// slope fit (which treats points below the floor as a plateau) must not be left to decide.
+inline double first_non_finite(const std::vector<double>& h, const std::vector<double>& err) {
+  for (std::size_t i = 0; i < err.size() && i < h.size(); ++i)
+    if (!std::isfinite(err[i])) return h[i];
+  return 0;
+}
+
 }  // namespace gm::conv

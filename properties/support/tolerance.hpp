@@ -46,6 +46,13 @@ struct ResidualLog {
 };
 ResidualLog& residual_log();
 
+// Whether residual r is worse than the worst so far: a non-finite residual (NaN, inf) is the worst
+// of all and stays the worst (a bare `!(r <= worst)` would let a later finite r replace a NaN).
+template <class T>
+bool worse(const T& r, const T& worst) {
+  return is_finite(worst) && !(r <= worst);
+}
+
 namespace detail {
 
 template <class A, class T, bool = std::is_base_of_v<Eigen::EigenBase<A>, A>>

@@ -17,7 +17,8 @@ file(MAKE_DIRECTORY ${WORK})
 if(MODE STREQUAL "install")
   run(${CMAKE_COMMAND} --install ${BUILD} --prefix ${WORK}/prefix)
   foreach(f bin/geomech share/geomech-spec/toolchain.json lib/cmake/GeomechSpec/GeomechSpecConfig.cmake
-            include/geomech-spec/geomech/student.hpp)
+            include/geomech-spec/geomech/student.hpp share/geomech-spec/student/python/geomech_server.py
+            share/geomech-spec/student/octave/geomech_server.m)
     if(NOT EXISTS ${WORK}/prefix/${f})
       message(FATAL_ERROR "the install has no ${f}")
     endif()
@@ -39,6 +40,13 @@ if(MODE STREQUAL "install")
       --cache-dir ${WORK}/cache --report ${WORK}/report)
   if(NOT last_output MATCHES "PASS")
     message(FATAL_ERROR "the installed tool did not pass the consumer's file:\n${last_output}")
+  endif()
+  # A Python implementation, through the protocol server installed beside the tool.
+  file(COPY ${SOURCE}/examples/students/correct.py DESTINATION ${WORK}/python)
+  run(${WORK}/prefix/bin/geomech check ${WORK}/python/correct.py --quiet --scalar double -p definition_hat
+      -p definition_casimir --report ${WORK}/python-report)
+  if(NOT last_output MATCHES "PASS")
+    message(FATAL_ERROR "the installed tool did not pass correct.py:\n${last_output}")
   endif()
   message(STATUS "installed, found with find_package, checked from outside the source tree: ${last_output}")
 elseif(MODE STREQUAL "deb")
