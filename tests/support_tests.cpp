@@ -57,6 +57,26 @@ TEST(Tolerance, NaNNeverPasses) {
   EXPECT_NE(msg.find("NaN"), std::string::npos) << msg;
 }
 
+// The worst of several residuals: a NaN met on one state must not be replaced by a later finite
+// residual (the pattern `if (!(r <= worst)) worst = r;` did that, letting an integrator that gave
+// NaN on one of its three states pass a claim).
+TEST(Tolerance, NaNStaysTheWorstResidual) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  double worst = 0;
+  for (double r : {1e-16, nan, 2e-16})
+    if (gm::worse(r, worst)) worst = r;
+  EXPECT_TRUE(std::isnan(worst));
+  // The old pattern, for the record: it ends finite.
+  double old = 0;
+  for (double r : {1e-16, nan, 2e-16})
+    if (!(r <= old)) old = r;
+  EXPECT_EQ(old, 2e-16);
+  double inf_first = 0;
+  for (double r : {std::numeric_limits<double>::infinity(), 1.0})
+    if (gm::worse(r, inf_first)) inf_first = r;
+  EXPECT_TRUE(std::isinf(inf_first));
+}
+
 TEST(Tolerance, ExactMeansZeroInRationals) {
   const Rational a(1), b = Rational(1) + Rational(1) / Rational(bmp::cpp_int(1) << 200);
   EXPECT_EQ(failure_of([&] { require_close("a = a", a, a, Rational(1), 1e9); }), "");
