@@ -272,16 +272,18 @@ MatX<double> manakov_M0() {
   return M;
 }
 
-std::vector<Real50> manakov_reference(const MatX<double>& M0) {
+// (M, O) at t = 4 from (M0, Id), packed, by the Taylor oracle in 50 digits (local tolerance eps).
+std::vector<Real50> manakov_at_t(const std::vector<double>& a, const MatX<Real50>& M0) {
+  const int n = static_cast<int>(a.size());
   std::vector<Real50> a50;
-  for (double v : manakov_a()) a50.push_back(Real50(v));
+  for (double v : a) a50.push_back(Real50(v));
   oracle::ManakovField<Real50> f(a50);
-  oracle::TaylorSolver<Real50, decltype(f)> solver(f, 2 * kManakovN * kManakovN, eps<Real50>());
+  oracle::TaylorSolver<Real50, decltype(f)> solver(f, 2 * n * n, eps<Real50>());
   std::vector<Real50> x0;
-  for (int i = 0; i < kManakovN; ++i)
-    for (int j = 0; j < kManakovN; ++j) x0.push_back(Real50(M0(i, j)));
-  for (int i = 0; i < kManakovN; ++i)
-    for (int j = 0; j < kManakovN; ++j) x0.push_back(Real50(i == j ? 1 : 0));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) x0.push_back(M0(i, j));
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) x0.push_back(Real50(i == j ? 1 : 0));
   return solver.flow(x0, Real50(0), Real50(kTime));
 }
 
@@ -299,7 +301,7 @@ Problem manakov_problem() {
   p.label = "Manakov n = 4";
   const MatX<double> A = Eigen::Map<const VecX<double>>(manakov_a().data(), n).asDiagonal();
   p.x0 = pack(manakov_M0(), MatX<double>::Identity(n, n));
-  p.reference = manakov_reference(manakov_M0());
+  p.reference = manakov_at_t(manakov_a(), manakov_M0().cast<Real50>());
   auto unpack = [n](const State& s) { return ManakovState<double>{block(s, 0, n, n), block(s, n * n, n, n)}; };
   p.field = [A, unpack](const State& s) {
     const ManakovState<double> d = ref::manakov_field<double>(A, unpack(s));
@@ -369,18 +371,8 @@ Problem manakov_clebsch_problem() {
   P0 << 0.25, 0.5, -0.375, -0.5, 0.125, 0.25, 0.375, -0.25, 0.5;
   p.x0 = pack(Q0, P0);
   {
-    std::vector<Real50> a50;
-    for (double v : a) a50.push_back(Real50(v));
-    oracle::ManakovField<Real50> f(a50);
-    oracle::TaylorSolver<Real50, decltype(f)> solver(f, 2 * n * n, eps<Real50>());
     const MatX<Real50> Q50 = Q0.cast<Real50>(), P50 = P0.cast<Real50>();
-    const MatX<Real50> M0 = Q50.transpose() * P50 - P50.transpose() * Q50;
-    std::vector<Real50> x0;
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) x0.push_back(M0(i, j));
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) x0.push_back(Real50(i == j ? 1 : 0));
-    const std::vector<Real50> y = solver.flow(x0, Real50(0), Real50(kTime));
+    const std::vector<Real50> y = manakov_at_t(a, MatX<Real50>(Q50.transpose() * P50 - P50.transpose() * Q50));
     MatX<Real50> O(n, n);
     for (int i = 0; i < n; ++i)
       for (int j = 0; j < n; ++j) O(i, j) = y[n * n + i * n + j];

@@ -40,6 +40,7 @@
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
 #include "properties/support/named_inputs.hpp"
+#include "properties/support/order_claim.hpp"
 #include "properties/support/roundoff_claim.hpp"
 #include "properties/support/tolerance.hpp"
 
@@ -198,35 +199,9 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
     ser.points.emplace_back(hs.back(), errs.back());
   }
   record_series(ser);
-  if (const double bad = conv::first_non_finite(hs, errs); bad > 0) {
-    const std::string what = in.name + nfmt(": the error at t = 1 on the Clebsch system is not finite at h = %g ", bad) +
-                             c.system + tag<T>();
-    if (cl.order > 0) judge_claim("order", true, false, what);
-    record_note(what);
-    return;
-  }
-  const auto fit = conv::loglog_slope(hs, errs, floors);
-  if (fit.used < 3) {
-    record_note(in.name + ": errors at round-off for every step tried on " + c.system + "; order not measurable" +
-                tag<T>());
-    return;
-  }
-  record_note(in.name + nfmt(": measured order %.3f on the Clebsch system ", fit.slope) + c.system +
-              (cl.order ? nfmt(" (claimed %g)", cl.order) : std::string(" (no order claimed)")) + tag<T>());
-  if (cl.order > 0)
-    showing_inputs(
-        [&] {
-          return c.inputs(t_end / T(Ns.front())) + "    (h halved down to 1/" + std::to_string(Ns.back()) + ")\n";
-        },
-        [&] {
-          const bool holds = std::abs(fit.slope - cl.order) <= 0.1;
-          judge_claim("order", true, holds,
-                      in.name + nfmt(": measured order %.3f on the Clebsch system ", fit.slope) + c.system +
-                          nfmt(", claimed %g", cl.order) + tag<T>());
-          require(in.name + ": the measured order on the Clebsch system " + c.system +
-                      " is within 0.1 of the claimed " + std::to_string(cl.order),
-                  holds, nfmt("measured slope %.4f\n", fit.slope) + fit.table);
-        });
+  showing_inputs(
+      [&] { return c.inputs(t_end / T(Ns.front())) + "    (h halved down to 1/" + std::to_string(Ns.back()) + ")\n"; },
+      [&] { judge_order_claim(in.name, cl.order, " on the Clebsch system " + c.system, tag<T>(), hs, errs, floors); });
 }
 
 // Symmetry: step(h) then step(-h), h = 1/4; two steps at a few eps each: k = 64 on the scale

@@ -21,6 +21,7 @@
 #include "properties/support/derivatives.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
+#include "properties/support/order_claim.hpp"
 #include "properties/support/spectrum.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
@@ -111,27 +112,7 @@ void integrator_order(const Subject<T>&, const Integrator<T>& in, const Integrat
     ser.points.emplace_back(hs.back(), errs.back());
   }
   record_series(ser);
-  if (const double bad = conv::first_non_finite(hs, errs); bad > 0) {
-    const std::string what = in.name + fmt(": the error at t = 1 is not finite at h = %g", bad) + scalar_tag<T>();
-    if (c.order > 0) judge_claim("order", true, false, what);
-    record_note(what);
-    return;
-  }
-  const auto fit = conv::loglog_slope(hs, errs, floors);
-  if (fit.used < 3) {
-    record_note(in.name + ": errors at round-off for every step tried; order not measurable" + scalar_tag<T>());
-    return;
-  }
-  record_note(in.name + fmt(": measured order %.3f from %g points", fit.slope, fit.used) +
-              (c.order ? fmt(" (claimed %g)", c.order) : std::string(" (no order claimed)")) + scalar_tag<T>());
-  if (c.order > 0) {
-    const bool holds = std::abs(fit.slope - c.order) <= 0.1;
-    judge_claim("order", true, holds,
-                in.name + fmt(": measured order %.3f, claimed %g", fit.slope, c.order) + scalar_tag<T>());
-    require(in.name + ": the measured order (log-log slope of the error against h) is within 0.1 of the claimed " +
-                std::to_string(c.order),
-            holds, fmt("measured slope %.4f\n", fit.slope) + fit.table);
-  }
+  judge_order_claim(in.name, c.order, "", scalar_tag<T>(), hs, errs, floors);
 }
 
 // Symmetry: step(h) then step(-h) returns to the start, at round-off: two steps, each accurate to
@@ -308,26 +289,7 @@ void manakov_integrator_order(const Subject<T>&, const Integrator<T>& in, const 
     ser.points.emplace_back(hs.back(), errs.back());
   }
   record_series(ser);
-  if (const double bad = conv::first_non_finite(hs, errs); bad > 0) {
-    const std::string what = in.name + fmt(": the error at t = 1 is not finite at h = %g", bad) + scalar_tag<T>();
-    if (c.order > 0) judge_claim("order", true, false, what);
-    record_note(what);
-    return;
-  }
-  const auto fit = conv::loglog_slope(hs, errs, floors);
-  if (fit.used < 3) {
-    record_note(in.name + ": errors at round-off for every step tried; order not measurable" + scalar_tag<T>());
-    return;
-  }
-  record_note(in.name + fmt(": measured order %.3f on Manakov, n = %g", fit.slope, m.n) +
-              (c.order ? fmt(" (claimed %g)", c.order) : std::string(" (no order claimed)")) + scalar_tag<T>());
-  if (c.order > 0) {
-    const bool holds = std::abs(fit.slope - c.order) <= 0.1;
-    judge_claim("order", true, holds,
-                in.name + fmt(": measured order %.3f on Manakov, claimed %g", fit.slope, c.order) + scalar_tag<T>());
-    require(in.name + ": the measured order on Manakov's equations is within 0.1 of the claimed " + std::to_string(c.order),
-            holds, fmt("measured slope %.4f\n", fit.slope) + fit.table);
-  }
+  judge_order_claim(in.name, c.order, " on Manakov, n = " + std::to_string(m.n), scalar_tag<T>(), hs, errs, floors);
 }
 
 // |M_ij| <= 1 and n <= 5 here: the scale n (entries of products summed over n terms).
