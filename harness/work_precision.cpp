@@ -239,12 +239,15 @@ void draw(const Problem& p, Verdict& v, std::vector<std::string>& cheapest, std:
 }
 
 // ---------------------------------------------------------------------------------------------
-// The four problems, one per kind of step.
+// The four problems, one per kind of step. Each wraps the subject's steps (`mine`) and the suite's
+// with the same adapter, the subject's first.
+
+using Subjects = std::vector<const Integrator<double>*>;
 
 double rigid_body_energy(const Vec3<double>& I, const Vec3<double>& Pi) { return Pi.cwiseProduct(Pi).cwiseQuotient(I).sum() / 2; }
 
 // The motion of the portraits (portrait.hpp).
-Problem rigid_body_problem() {
+Problem rigid_body_problem(const Subjects& mine) {
   Problem p;
   p.label = "rigid body";
   const Vec3<double> I = portrait_inertia<double>();
@@ -256,9 +259,10 @@ Problem rigid_body_problem() {
   p.field = [I](const State& s) { return pack(ref::rigid_body_field<double>(I, unpack_rigid_body(s))); };
   p.energy = [I](const State& s) { return rigid_body_energy(I, Vec3<double>(s[0], s[1], s[2])); };
   auto wrap = [I](auto step) { return [I, step](const State& s, double h) { return pack(step(I, unpack_rigid_body(s), h)); }; };
-  p.methods = {{"rk4", "suite", wrap(ref::rk4_step<double>), 4},
+  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->rigid_body_step), 0});
+  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::rk4_step<double>), 4},
                {"implicit_midpoint", "suite", wrap(ref::implicit_midpoint_step<double>), 0},
-               {"lie_poisson_splitting", "suite", wrap(ref::lie_poisson_splitting_step<double>), 0}};
+               {"lie_poisson_splitting", "suite", wrap(ref::lie_poisson_splitting_step<double>), 0}});
   return p;
 }
 
@@ -295,7 +299,7 @@ double manakov_energy(const MatX<double>& M) {
   return e / 4;  // -tr(Omega M)/4 with Omega_ij = M_ij / (a_i + a_j)
 }
 
-Problem manakov_problem() {
+Problem manakov_problem(const Subjects& mine) {
   Problem p;
   const int n = kManakovN;
   p.label = "Manakov n = 4";
@@ -315,16 +319,17 @@ Problem manakov_problem() {
       return pack(y.M, y.O);
     };
   };
-  p.methods = {{"rk4", "suite", wrap(ref::manakov_rk4_step<double>), 4},
+  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->manakov_step), 0});
+  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_rk4_step<double>), 4},
                {"implicit_midpoint", "suite", wrap(ref::manakov_implicit_midpoint_step<double>), 0},
-               {"isospectral_cayley", "suite", wrap(ref::manakov_isospectral_step<double>), 0}};
+               {"isospectral_cayley", "suite", wrap(ref::manakov_isospectral_step<double>), 0}});
   return p;
 }
 
 // Clebsch (3.21): the portraits' body I, dyadic Q(0) and P(0); Q(t) = O(t)^-1 Q(0),
 // P(t) = O(t)^-1 P(0) (Remark 3.3) with (Pi, O) from the 50-digit reference started at
 // (P(0) x Q(0), Id).
-Problem clebsch_problem() {
+Problem clebsch_problem(const Subjects& mine) {
   Problem p;
   p.label = "Clebsch (3.21)";
   const Vec3<double> I = portrait_inertia<double>();
@@ -350,9 +355,10 @@ Problem clebsch_problem() {
   auto wrap = [I, to_pair, from_pair](auto step) {
     return [I, to_pair, from_pair, step](const State& s, double h) { return from_pair(step(I, to_pair(s), h)); };
   };
-  p.methods = {{"rk4", "suite", wrap(ref::clebsch_rk4_step<double>), 4},
+  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->clebsch_step), 0});
+  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::clebsch_rk4_step<double>), 4},
                {"clebsch_midpoint", "suite", wrap(ref::clebsch_midpoint_step<double>), 0},
-               {"clebsch_splitting", "suite", wrap(ref::clebsch_splitting_step<double>), 0}};
+               {"clebsch_splitting", "suite", wrap(ref::clebsch_splitting_step<double>), 0}});
   return p;
 }
 
@@ -360,7 +366,7 @@ Problem clebsch_problem() {
 constexpr int kClebschN = 3;
 std::vector<double> manakov_clebsch_a() { return {0.5, 0.75, 1.0}; }
 
-Problem manakov_clebsch_problem() {
+Problem manakov_clebsch_problem(const Subjects& mine) {
   Problem p;
   const int n = kClebschN;
   p.label = "Clebsch (3.23) n = 3";
@@ -402,59 +408,26 @@ Problem manakov_clebsch_problem() {
       return pack(y.first, y.second);
     };
   };
-  p.methods = {{"rk4", "suite", wrap(ref::manakov_clebsch_rk4_step<double>), 4},
-               {"clebsch_midpoint", "suite", wrap(ref::manakov_clebsch_midpoint_step<double>), 0}};
+  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->manakov_clebsch_step), 0});
+  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_clebsch_rk4_step<double>), 4},
+               {"clebsch_midpoint", "suite", wrap(ref::manakov_clebsch_midpoint_step<double>), 0}});
   return p;
 }
 
-// The subject's steps of each kind, wrapped like the suite's and put first.
+// One problem for each kind of step the chosen integrators have; their steps come first.
 std::vector<Problem> problems_for(const Subject<double>& s, const std::vector<std::string>& names) {
-  std::vector<Problem> out;
-  auto chosen = [&](const Integrator<double>& in) { return std::find(names.begin(), names.end(), in.name) != names.end(); };
-  auto with_subject = [&](Problem p, auto has, auto wrap) {
-    std::vector<Method> mine;
+  auto having = [&](auto step) {
+    Subjects mine;
     for (const auto& in : s.integrators)
-      if (chosen(in) && has(in)) mine.push_back({in.name, "subject", wrap(in), 0});
-    if (mine.empty()) return;
-    mine.insert(mine.end(), p.methods.begin(), p.methods.end());
-    p.methods = std::move(mine);
-    out.push_back(std::move(p));
+      if (std::find(names.begin(), names.end(), in.name) != names.end() && static_cast<bool>(in.*step)) mine.push_back(&in);
+    return mine;
   };
-  with_subject(
-      rigid_body_problem(), [](const auto& in) { return static_cast<bool>(in.rigid_body_step); },
-      [](const Integrator<double>& in) -> Stepper {
-        const Vec3<double> I = portrait_inertia<double>();
-        return [I, step = in.rigid_body_step](const State& x, double h) { return pack(step(I, unpack_rigid_body(x), h)); };
-      });
-  with_subject(
-      manakov_problem(), [](const auto& in) { return static_cast<bool>(in.manakov_step); },
-      [](const Integrator<double>& in) -> Stepper {
-        const int n = kManakovN;
-        const MatX<double> A = Eigen::Map<const VecX<double>>(manakov_a().data(), n).asDiagonal();
-        return [A, n, step = in.manakov_step](const State& x, double h) {
-          const ManakovState<double> y = step(A, ManakovState<double>{block(x, 0, n, n), block(x, n * n, n, n)}, h);
-          return pack(y.M, y.O);
-        };
-      });
-  with_subject(
-      clebsch_problem(), [](const auto& in) { return static_cast<bool>(in.clebsch_step); },
-      [](const Integrator<double>& in) -> Stepper {
-        const Vec3<double> I = portrait_inertia<double>();
-        return [I, step = in.clebsch_step](const State& x, double h) {
-          const Vec3Pair<double> y = step(I, Vec3Pair<double>{Vec3<double>(x[0], x[1], x[2]), Vec3<double>(x[3], x[4], x[5])}, h);
-          return State{y.first(0), y.first(1), y.first(2), y.second(0), y.second(1), y.second(2)};
-        };
-      });
-  with_subject(
-      manakov_clebsch_problem(), [](const auto& in) { return static_cast<bool>(in.manakov_clebsch_step); },
-      [](const Integrator<double>& in) -> Stepper {
-        const int n = kClebschN;
-        const MatX<double> A = Eigen::Map<const VecX<double>>(manakov_clebsch_a().data(), n).asDiagonal();
-        return [A, n, step = in.manakov_clebsch_step](const State& x, double h) {
-          const MatXPair<double> y = step(A, MatXPair<double>{block(x, 0, n, n), block(x, n * n, n, n)}, h);
-          return pack(y.first, y.second);
-        };
-      });
+  std::vector<Problem> out;
+  if (const Subjects m = having(&Integrator<double>::rigid_body_step); !m.empty()) out.push_back(rigid_body_problem(m));
+  if (const Subjects m = having(&Integrator<double>::manakov_step); !m.empty()) out.push_back(manakov_problem(m));
+  if (const Subjects m = having(&Integrator<double>::clebsch_step); !m.empty()) out.push_back(clebsch_problem(m));
+  if (const Subjects m = having(&Integrator<double>::manakov_clebsch_step); !m.empty())
+    out.push_back(manakov_clebsch_problem(m));
   return out;
 }
 
