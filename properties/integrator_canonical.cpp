@@ -42,21 +42,11 @@
 #include "properties/support/named_inputs.hpp"
 #include "properties/support/order_claim.hpp"
 #include "properties/support/roundoff_claim.hpp"
+#include "properties/support/scalar_text.hpp"
 #include "properties/support/tolerance.hpp"
 
 namespace gm {
 namespace {
-
-template <class T>
-std::string tag() {
-  return std::string(" (") + ScalarInfo<T>::name + ")";
-}
-
-std::string nfmt(const char* f, double a, double b = 0) {
-  char buf[200];
-  std::snprintf(buf, sizeof buf, f, a, b);
-  return buf;
-}
 
 constexpr int kStates = 3;
 
@@ -181,7 +171,7 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
   const T scale = at_least_one_abs(c.Z0);
   std::vector<double> hs, errs, floors;
   Series ser{"convergence (Clebsch " + c.system.substr(0, 6) + "): " + in.name,
-             "error at t = 1" + tag<T>(),
+             "error at t = 1" + scalar_tag<T>(),
              "step h",
              "max error",
              true,
@@ -201,7 +191,7 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
   record_series(ser);
   showing_inputs(
       [&] { return c.inputs(t_end / T(Ns.front())) + "    (h halved down to 1/" + std::to_string(Ns.back()) + ")\n"; },
-      [&] { judge_order_claim(in.name, cl.order, " on the Clebsch system " + c.system, tag<T>(), hs, errs, floors); });
+      [&] { judge_order_claim(in.name, cl.order, " on the Clebsch system " + c.system, scalar_tag<T>(), hs, errs, floors); });
 }
 
 // Symmetry: step(h) then step(-h), h = 1/4; two steps at a few eps each: k = 64 on the scale
@@ -299,7 +289,7 @@ void canonical_symplectic(StepKind kind, const Integrator<T>& in, const Integrat
         if (worse(r, worst)) {
           worst = r, worst_raw = raw, worst_scale = scale;
           inputs = c.inputs(h) + named("u", u[i]) + named("v", u[j]);
-          where = c.system + nfmt(", directions %g and %g", static_cast<double>(i), static_cast<double>(j));
+          where = c.system + fmt(", directions %g and %g", static_cast<double>(i), static_cast<double>(j));
         }
       }
   }

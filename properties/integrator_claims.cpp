@@ -21,6 +21,7 @@
 #include "properties/support/derivatives.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
+#include "properties/support/scalar_text.hpp"
 #include "properties/support/order_claim.hpp"
 #include "properties/support/spectrum.hpp"
 #include "properties/support/tolerance.hpp"
@@ -30,17 +31,6 @@
 
 namespace gm {
 namespace {
-
-std::string fmt(const char* f, double a, double b = 0, double c = 0) {
-  char buf[300];
-  std::snprintf(buf, sizeof buf, f, a, b, c);
-  return buf;
-}
-
-template <class T>
-std::string scalar_tag() {
-  return std::string(" (") + ScalarInfo<T>::name + ")";
-}
 
 // The verdict on one claimable property: `residual` (the worst over the states tried) against
 // k eps scale. The finding goes to the report's claims table (properties/support/claims.hpp):
@@ -233,7 +223,6 @@ void integrator_poisson(const Subject<T>&, const Integrator<T>& in, const Integr
   judge_measured_claim<T>("poisson", c.poisson, in.name, "D Phi J(Pi) D Phi^T = J(Phi(Pi)): a Poisson map for (3.6)", worst,
                  deriv::roundoff_factor8<T>(), 16);
 }
-
 
 // ---------------------------------------------------------------------------------------------
 // Manakov's (M, O), A = diag(a).

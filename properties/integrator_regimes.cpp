@@ -18,6 +18,7 @@
 //
 // Spec entries: the flows of (2.20) and Manakov's (M, O) (s3.euler-flow, s2.manakov-flow).
 #include "properties/registry.hpp"
+#include "properties/support/scalar_text.hpp"
 #include "properties/support/claims.hpp"
 #include "properties/support/convergence.hpp"
 #include "properties/support/dynamics.hpp"
@@ -30,12 +31,6 @@
 
 namespace gm {
 namespace {
-
-std::string fmt(const char* f, double a, double b = 0) {
-  char buf[240];
-  std::snprintf(buf, sizeof buf, f, a, b);
-  return buf;
-}
 
 const char* kRegimeNames[] = {"generic", "relative equilibrium (Pi along a principal axis)",
                               "near a relative equilibrium", "symmetric top (two equal moments)", "spherical top",

@@ -23,23 +23,13 @@
 #include "properties/support/figures.hpp"
 #include "properties/support/long_time.hpp"
 #include "properties/support/roundoff_claim.hpp"
+#include "properties/support/scalar_text.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include <cstdio>
 
 namespace gm {
 namespace {
-
-std::string sfmt(const char* f, double a, double b = 0, double c = 0) {
-  char buf[300];
-  std::snprintf(buf, sizeof buf, f, a, b, c);
-  return buf;
-}
-
-template <class T>
-std::string tag() {
-  return std::string(" (") + ScalarInfo<T>::name + ")";
-}
 
 constexpr int kStates = 3;
 
@@ -59,7 +49,7 @@ void integrator_noether(const Subject<T>&, const Integrator<T>& in, const Integr
     RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
     const Vec3<T> pi0 = x.O * x.Pi;
     const T scale = dyn::at_least_one(norm_inf(x.Pi));
-    Series ser{"Noether: " + in.name, "|O Pi - O0 Pi0|" + tag<T>(), "t", "|residual|", false, true, {}, 0};
+    Series ser{"Noether: " + in.name, "|O Pi - O0 Pi0|" + scalar_tag<T>(), "t", "|residual|", false, true, {}, 0};
     for (int n = 1; n <= kNoetherSteps; ++n) {
       x = in.rigid_body_step(I, x, T(1) / T(8));
       const T r = norm_inf(Vec3<T>(x.O * x.Pi - pi0)) / scale;
@@ -168,7 +158,7 @@ void long_time_energy(const std::string& integrator, bool claimed, const std::st
   std::vector<double> ts, es;
   ts.reserve(steps + 1), es.reserve(steps + 1);
   ts.push_back(0), es.push_back(0);
-  Series ser{"long-time energy: " + integrator, what + tag<T>(), "t", "|H - H0| / |H0|", true, true, {}, 0};
+  Series ser{"long-time energy: " + integrator, what + scalar_tag<T>(), "t", "|H - H0| / |H0|", true, true, {}, 0};
   const int every = std::max(1, steps / 400);
   for (int n = 1; n <= steps; ++n) {
     const T e = T((energy(n) - h0) / abs_value(h0));
@@ -180,8 +170,8 @@ void long_time_energy(const std::string& integrator, bool claimed, const std::st
   record_series(ser);
   const auto cls = longtime::classify_energy_error(ts, es, roundoff_budget<T>(steps));
   const bool holds = cls.kind != longtime::EnergyKind::Drifting;
-  const std::string evidence = integrator + ": " + what + sfmt(", %g steps of h = %g", steps, to_double(h)) + ": " +
-                               cls.evidence() + tag<T>();
+  const std::string evidence = integrator + ": " + what + fmt(", %g steps of h = %g", steps, to_double(h)) + ": " +
+                               cls.evidence() + scalar_tag<T>();
   record_note(evidence);  // no timing: notes are compared between runs (class shards)
   judge_claim("bounded_energy", claimed, holds, evidence);
 }

@@ -7,6 +7,7 @@
 
 #include "properties/support/claims.hpp"
 #include "properties/support/figures.hpp"
+#include "properties/support/scalar_text.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include <cstdio>
@@ -17,12 +18,7 @@ namespace gm {
 template <class T>
 void judge_roundoff_claim(const char* claim, bool claimed, const std::string& integrator, const std::string& what,
                           const T& residual, const T& scale, double k) {
-  auto fmt = [](const char* f, double a) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, f, a);
-    return std::string(buf);
-  };
-  const std::string scalar = std::string(" (") + ScalarInfo<T>::name + ")";
+  const std::string scalar = scalar_tag<T>();
   const bool holds = is_finite(residual) && residual <= T(k) * eps<T>() * scale;
   const std::string units =
       is_finite(residual) ? fmt("%.3g eps * scale", to_double(T(residual / (eps<T>() * scale)))) : "not finite";
