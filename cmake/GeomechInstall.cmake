@@ -20,6 +20,7 @@ install(FILES $<TARGET_OBJECTS:geomech_student_driver> DESTINATION ${GM_INSTALL_
 install(FILES $<TARGET_OBJECTS:geomech_server_driver> DESTINATION ${GM_INSTALL_LIBDIR} RENAME geomech_server_driver.o)
 install(DIRECTORY core/ DESTINATION ${GM_INSTALL_INCLUDEDIR}/core FILES_MATCHING PATTERN "*.hpp")
 install(FILES student/geomech/student.hpp DESTINATION ${GM_INSTALL_INCLUDEDIR}/geomech)
+install(FILES student/geomech/detail/scalar_selection.hpp DESTINATION ${GM_INSTALL_INCLUDEDIR}/geomech/detail)
 install(FILES spec/catalogue.json DESTINATION ${GM_INSTALL_DATADIR}/spec)
 # The protocol servers that run Python and Octave implementations (core/data_path.hpp finds them).
 install(FILES student/python/geomech_server.py DESTINATION ${GM_INSTALL_DATADIR}/student/python)

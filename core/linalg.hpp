@@ -2,6 +2,7 @@
 // uses. Include this (not <Eigen/...>) so the multiprecision fix in scalar.hpp is always in force.
 #pragma once
 
+#include "core/eigen_kernels.hpp"
 #include "core/scalar.hpp"
 
 #include <Eigen/Dense>

@@ -43,6 +43,7 @@ SandboxSpec compiler_sandbox(const Toolchain& tc, const fs::path& dir) {
   }
   for (const auto& f : {tc.driver_object, tc.server_object, tc.harness_library, tc.property_library}) add(f);
   for (const auto& f : tc.other_libraries) add(f);
+  if (!tc.precompiled_header.empty()) add(fs::path(tc.precompiled_header).parent_path());
   spec.writable = dir.string();
   spec.chdir = dir.string();
   spec.limits.memory_mb = 8192;   // a 50-digit instantiation compiles in about 1.5 GB
@@ -116,12 +117,17 @@ std::vector<std::string> depfile_inputs(const fs::path& dep) {
   return out;
 }
 
-bool object_current(const fs::path& obj, const fs::path& dep, const fs::path& cmd_file, const std::string& cmd) {
+// `extra`: inputs the dependency file cannot name. The headers read from a precompiled header are
+// not listed in it, so its .gch stands for them (the suite's build remakes it when one changes).
+bool object_current(const fs::path& obj, const fs::path& dep, const fs::path& cmd_file, const std::string& cmd,
+                    const std::vector<std::string>& extra) {
   if (!fs::exists(obj) || !fs::exists(dep) || !fs::exists(cmd_file)) return false;
   if (read_text(cmd_file) != cmd) return false;
   const auto t = mtime(obj);
   for (const auto& in : depfile_inputs(dep))
     if (mtime(in) > t) return false;
+  for (const auto& in : extra)
+    if (!fs::exists(in) || mtime(in) > t) return false;
   return true;
 }
 
@@ -246,6 +252,7 @@ Toolchain load_toolchain(const std::string& path) {
     t.property_library = j.at("property_library").get<std::string>();
     t.other_libraries = j.at("other_libraries").get<std::vector<std::string>>();
     t.cache_dir = j.at("cache_dir").get<std::string>();
+    t.precompiled_header = j.value("precompiled_header", "");
   } catch (const std::exception& e) {
     throw std::runtime_error(path + ": not a valid student toolchain description (" + e.what() + ")");
   }
@@ -260,6 +267,16 @@ Toolchain load_toolchain(const std::string& path) {
   resolve(t.harness_library);
   resolve(t.property_library);
   for (auto& i : t.includes) resolve(i);
+  resolve(t.precompiled_header);
+  if (!t.precompiled_header.empty() && !fs::exists(t.precompiled_header + ".gch")) t.precompiled_header.clear();
+  for (const auto& i : t.includes)
+    if (fs::exists(fs::path(i) / "geomech" / "detail" / "scalar_selection.hpp")) {
+      t.scalar_selection = (fs::path(i) / "geomech" / "detail" / "scalar_selection.hpp").string();
+      break;
+    }
+  if (t.scalar_selection.empty())
+    throw std::runtime_error(path + ": none of its includes holds geomech/detail/scalar_selection.hpp (an install "
+                             "older than the tool?): reinstall or rebuild the suite");
   if (t.cache_dir.empty()) {  // per user: $XDG_CACHE_HOME/geomech-spec, ~/.cache/geomech-spec
     const char* xdg = std::getenv("XDG_CACHE_HOME");
     const char* home = std::getenv("HOME");
@@ -371,6 +388,8 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   }
   auto run_argv = [&](const std::vector<std::string>& argv) { return o.sandbox ? sandboxed(argv, sandbox) : argv; };
 
+  std::vector<std::string> pch_inputs;
+  if (!tc.precompiled_header.empty()) pch_inputs.push_back(tc.precompiled_header + ".gch");
   auto compile_cmd = [&](int k, const std::set<std::string>& skip, bool skip_integrators) {
     const std::string scalar = kScalars[k];
     std::vector<std::string> cmd{tc.cxx};
@@ -381,6 +400,15 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     cmd.push_back("-DGEOMECH_STUDENT_CHECK=1");
     if (!skip.empty()) cmd.push_back("-DGEOMECH_SKIP_SLOTS=\"" + join(skip) + "\"");
     if (skip_integrators) cmd.push_back("-DGEOMECH_SKIP_INTEGRATORS=1");
+    // The precompiled student.hpp first (GCC reads a .gch only for the first include), then the
+    // one-scalar selection. A retry with GEOMECH_SKIP_* changes macros the header tests, so GCC
+    // parses the header instead there (no message: it does so silently).
+    if (!tc.precompiled_header.empty()) {
+      cmd.push_back("-include");
+      cmd.push_back(tc.precompiled_header);
+    }
+    cmd.push_back("-include");
+    cmd.push_back(tc.scalar_selection);
     cmd.push_back("-I" + compiled_source.parent_path().string());
     for (const auto& inc : tc.includes) cmd.push_back("-I" + inc);
     cmd.push_back("-MMD");
@@ -417,7 +445,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       const std::string cmd = shell_join(compile_cmd(k, skip, skip_int));
       if (n.at("ok").get<bool>() &&
           object_current(dir / (std::string(kScalars[k]) + ".o"), dir / (std::string(kScalars[k]) + ".d"),
-                         dir / (std::string(kScalars[k]) + ".cmd"), cmd)) {
+                         dir / (std::string(kScalars[k]) + ".cmd"), cmd, pch_inputs)) {
         st[k].skip = skip;
         st[k].skip_reason = n.at("skip_reason").get<std::map<std::string, std::string>>();
         st[k].skip_integrators = skip_int;

@@ -34,6 +34,12 @@ struct Toolchain {
   std::string property_library;
   std::vector<std::string> other_libraries;
   std::string cache_dir;
+  // geomech/student.hpp precompiled with the flags above (a .gch beside it); empty or missing:
+  // the compiler parses the header, which only costs time.
+  std::string precompiled_header;
+  // geomech/detail/scalar_selection.hpp, found in the includes: makes a compile register the one
+  // scalar named by GEOMECH_STUDENT_ONLY.
+  std::string scalar_selection;
 };
 
 // Reads the toolchain description; throws std::runtime_error naming the file and the problem.

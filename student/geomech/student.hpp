@@ -288,19 +288,16 @@ void register_scalar(const char* registration) {
   register_part(std::shared_ptr<const Subject<T>>(std::move(s)), std::move(info));
 }
 
-// GEOMECH_STUDENT_ONLY selects one scalar per translation unit (0 double, 1 mp50, 2 exact):
-// `geomech check` compiles the file three times in parallel that way. Without it, all three.
-template <class Impl, class... Ints>
+// Which scalars a translation unit registers: Only < 0 all three, else one (0 double, 1 mp50,
+// 2 exact). `geomech check` compiles the file three times in parallel, one scalar each, by
+// defining GEOMECH_STUDENT_ONLY and including geomech/detail/scalar_selection.hpp after this
+// header. This header itself never reads GEOMECH_STUDENT_ONLY: that way one precompiled copy of it
+// serves all three compiles (GCC rejects a precompiled header if a macro it tested changed).
+template <int Only, class Impl, class... Ints>
 int register_all(const char* registration) {
-#if !defined(GEOMECH_STUDENT_ONLY) || GEOMECH_STUDENT_ONLY == 0
-  register_scalar<double, Impl, Ints...>(registration);
-#endif
-#if !defined(GEOMECH_STUDENT_ONLY) || GEOMECH_STUDENT_ONLY == 1
-  register_scalar<Real50, Impl, Ints...>(registration);
-#endif
-#if !defined(GEOMECH_STUDENT_ONLY) || GEOMECH_STUDENT_ONLY == 2
-  register_scalar<Rational, Impl, Ints...>(registration);
-#endif
+  if constexpr (Only < 0 || Only == 0) register_scalar<double, Impl, Ints...>(registration);
+  if constexpr (Only < 0 || Only == 1) register_scalar<Real50, Impl, Ints...>(registration);
+  if constexpr (Only < 0 || Only == 2) register_scalar<Rational, Impl, Ints...>(registration);
   return 0;
 }
 
@@ -309,6 +306,9 @@ int register_all(const char* registration) {
 
 // GEOMECH_STUDENT(Implementation, Integrator1, Integrator2, ...): registers the implementation
 // (a struct with static member functions named after slots) and its integrators. Use it once.
+#ifndef GEOMECH_STUDENT_SCALARS
+#define GEOMECH_STUDENT_SCALARS -1
+#endif
 #define GEOMECH_STUDENT(...)                                                                                 \
   [[maybe_unused]] static const int geomech_student_registration_ =                                         \
-      ::gm::student::detail::register_all<__VA_ARGS__>(#__VA_ARGS__)
+      ::gm::student::detail::register_all<GEOMECH_STUDENT_SCALARS, __VA_ARGS__>(#__VA_ARGS__)
