@@ -269,11 +269,13 @@ Toolchain load_toolchain(const std::string& path) {
   for (auto& i : t.includes) resolve(i);
   resolve(t.precompiled_header);
   if (!t.precompiled_header.empty() && !fs::exists(t.precompiled_header + ".gch")) t.precompiled_header.clear();
-  for (const auto& i : t.includes)
-    if (fs::exists(fs::path(i) / "geomech" / "detail" / "scalar_selection.hpp")) {
-      t.scalar_selection = (fs::path(i) / "geomech" / "detail" / "scalar_selection.hpp").string();
+  for (const auto& i : t.includes) {
+    const fs::path selection = fs::path(i) / "geomech" / "detail" / "scalar_selection.hpp";
+    if (fs::exists(selection)) {
+      t.scalar_selection = selection.string();
       break;
     }
+  }
   if (t.scalar_selection.empty())
     throw std::runtime_error(path + ": none of its includes holds geomech/detail/scalar_selection.hpp (an install "
                              "older than the tool?): reinstall or rebuild the suite");
