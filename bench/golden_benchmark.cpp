@@ -2,7 +2,8 @@
 //
 //   1. the 40-digit trajectory of the free rigid body I = (2, 1, 2/3), Pi(0) = (cos 1.1, 0,
 //      sin 1.1), sampled at t = 0.5, 1, ..., 10, in Real50 (cpp_bin_float<50>):
-//        - the Taylor oracle (oracle/taylor.hpp), local tolerance 1e-48;
+//        - the Taylor oracle (oracle/taylor.hpp), local tolerance 1e-48, as the generator runs it
+//          (higher orders in double-double and double) and with every order in Real50;
 //        - Boost.Odeint's bulirsch_stoer on the same type, abs and rel tolerance 1e-45
 //          (the configuration of ../shared/TOOLCHAIN.md);
 //      each with its error (max over samples and components) against an independent 70-digit
@@ -75,7 +76,7 @@ double max_error(const std::vector<std::vector<Real50>>& got) {
   return worst.convert_to<double>();
 }
 
-void BM_FreeRigidBody40Digits_Taylor(benchmark::State& state) {
+void taylor_run(benchmark::State& state, bool mixed) {
   const auto times = sample_times();
   const auto x0 = initial_state();
   std::vector<std::vector<Real50>> out;
@@ -83,6 +84,7 @@ void BM_FreeRigidBody40Digits_Taylor(benchmark::State& state) {
   for (auto _ : state) {
     gm::oracle::FreeRigidBodyField<Real50> f(Real50(2), Real50(1), Real50(2) / 3);
     gm::oracle::TaylorSolver<Real50, decltype(f)> solver(f, 3, Real50("1e-48"));
+    solver.set_mixed_precision(mixed);
     out = solver.sample(x0, Real50(0), times);
     steps = solver.stats().steps;
     benchmark::DoNotOptimize(out);
@@ -90,7 +92,12 @@ void BM_FreeRigidBody40Digits_Taylor(benchmark::State& state) {
   state.counters["error"] = max_error(out);
   state.counters["steps"] = static_cast<double>(steps);
 }
+// As the golden generator runs it: the higher orders in double-double and double.
+void BM_FreeRigidBody40Digits_Taylor(benchmark::State& state) { taylor_run(state, true); }
 BENCHMARK(BM_FreeRigidBody40Digits_Taylor)->Unit(benchmark::kMillisecond);
+// Every order in Real50: what the mixed precision saves.
+void BM_FreeRigidBody40Digits_TaylorAllReal50(benchmark::State& state) { taylor_run(state, false); }
+BENCHMARK(BM_FreeRigidBody40Digits_TaylorAllReal50)->Unit(benchmark::kMillisecond);
 
 void BM_FreeRigidBody40Digits_OdeintBulirschStoer(benchmark::State& state) {
   namespace odeint = boost::numeric::odeint;
@@ -150,6 +157,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
     std::printf("\nTaylor oracle vs odeint bulirsch_stoer (Real50, same trajectory):\n"
                 "  real time %.3g ms vs %.3g ms: %.1fx faster\n  CPU time  %.3g ms vs %.3g ms: %.1fx faster\n",
                 real_.at(t), real_.at(o), real_.at(o) / real_.at(t), cpu_.at(t), cpu_.at(o), cpu_.at(o) / cpu_.at(t));
+    const std::string a = "BM_FreeRigidBody40Digits_TaylorAllReal50";
+    if (cpu_.count(a))
+      std::printf("  mixed precision vs every order in Real50: CPU time %.3g ms vs %.3g ms: %.2fx faster\n", cpu_.at(t),
+                  cpu_.at(a), cpu_.at(a) / cpu_.at(t));
   }
 
  private:

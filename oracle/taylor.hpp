@@ -17,10 +17,30 @@
 // so that the last terms kept are below the tolerance; the truncation error is then of the size
 // of the first neglected term. Sample times inside a step are evaluated from the step's Taylor
 // polynomial (Horner), so sampling does not shorten steps.
+//
+// Mixed precision (a multiprecision T only). The k-th coefficient enters the solution as
+// x_k h^k, which falls geometrically from |x| to tol |x| over k = 0..N. It therefore needs only
+// the digits that survive the factor h^k: the orders are split into three tiers,
+//     k < K1: T,   K1 <= k < K2: double-double (oracle/double_double.hpp),   k >= K2: double,
+// with K1, K2 the first orders whose terms, times the tier's unit roundoff u and a growth
+// allowance G = 2^kGuardBits for the rounding errors accumulated through the Cauchy sums, stay
+// below tol |x| / 16:
+//     max_n |x_{n,k}| h^k * u_tier * G <= tol * max(1, |x|) / 16    for every k in the tier.
+// A product of a tier-1 coefficient reads the lower orders through their double-double copies.
+// The split is predicted from the previous step (with 2^kPredictionSlackBits to spare, since h
+// may grow) and checked after the step size is known; a step whose terms break the bound is
+// recomputed with the split that bound gives, and in T alone if that fails too. The first step is
+// computed in T. The inequality is a bound on what the cheaper tiers add to the local error, so
+// the tolerance keeps its meaning; tests/oracle_tests.cpp compares mixed and all-T trajectories,
+// with a control that gives the tiers precision they do not have.
 #pragma once
+
+#include "oracle/double_double.hpp"
 
 #include <boost/multiprecision/cpp_bin_float.hpp>
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -69,7 +89,10 @@ struct Recorder {
 struct TaylorStats {
   long steps = 0;
   int order = 0;
-};
+  long mixed_steps = 0;   // steps whose higher orders were computed in double-double / double
+  long recomputed = 0;    // steps computed again because the predicted split broke the bound
+  int k1 = 0, k2 = 0;     // the last step's split: orders [k1, k2) in double-double, [k2, N] in double
+}; 
 
 template <class T>
 T taylor_abs(const T& x) {
@@ -105,7 +128,22 @@ class TaylorSolver {
       }
       out_.push_back(dx[i].id);
     }
-    coef_.assign(tape_.nodes().size(), std::vector<T>(order_ + 1, T(0)));
+    const auto& nodes = tape_.nodes();
+    coef_.assign(nodes.size(), std::vector<T>(order_ + 1, T(0)));
+    k1_ = k2_ = next_k1_ = next_k2_ = order_ + 1;
+    mixed_ = kTierDigits[1] > 0 || kTierDigits[2] > 0;
+    if (mixed_) {
+      dd_.assign(nodes.size(), std::vector<DoubleDouble>(order_ + 1));
+      d_.assign(nodes.size(), std::vector<double>(order_ + 1, 0.0));
+      shadow_.assign(nodes.size(), false);
+      c_dd_.resize(nodes.size());
+      c_d_.resize(nodes.size());
+      for (std::size_t n = 0; n < nodes.size(); ++n) {
+        if (nodes[n].op == Tape<T>::Op::Mul) shadow_[nodes[n].a] = shadow_[nodes[n].b] = true;
+        c_dd_[n] = to_dd(nodes[n].c);
+        c_d_[n] = c_dd_[n].hi;
+      }
+    }
   }
 
   int order() const { return order_; }
@@ -137,8 +175,7 @@ class TaylorSolver {
       if (!ok) throw std::invalid_argument("TaylorSolver::sample: times must be monotone, away from t0");
     }
     while (next < times.size()) {
-      compute_coefficients(x);
-      T h = step_size(x);
+      T h = prepare_step(x);
       const T remaining = forward ? T(times.back() - t) : T(t - times.back());
       if (h >= remaining) h = remaining;
       const T signed_h = forward ? h : T(-h);
@@ -167,8 +204,18 @@ class TaylorSolver {
   // how many steps an integration will need before starting it.
   T step_size_at(const std::vector<T>& x) {
     check_state(x);
-    compute_coefficients(x);
-    return step_size(x);
+    return prepare_step(x);
+  }
+
+  // Mixed precision (see the top of this file) is on by default for a multiprecision T; off, every
+  // order is computed in T. For tests: `guard_bits` is log2 of the growth allowance G (lowered, a
+  // split with too little margin must be caught by comparing trajectories); `slack_bits` is the
+  // prediction's margin (lowered, predictions fail and the recomputation is exercised).
+  void set_mixed_precision(bool on, int guard_bits = kGuardBits, int slack_bits = kPredictionSlackBits) {
+    mixed_ = on && (kTierDigits[1] > 0 || kTierDigits[2] > 0);
+    guard_bits_ = guard_bits;
+    slack_bits_ = slack_bits;
+    k1_ = k2_ = next_k1_ = next_k2_ = order_ + 1;
   }
 
   // The state at time t1 from (t0, x0).
@@ -202,6 +249,132 @@ class TaylorSolver {
     }
   }
 
+  // Significant bits of the three tiers' arithmetic (0: a tier not used because T is not more
+  // precise than it): T itself, double-double, double.
+  static constexpr int kTdigits = std::numeric_limits<T>::digits;
+  static constexpr int kTierDigits[3] = {kTdigits, kTdigits > 104 + 8 ? 104 : 0, kTdigits > 53 + 8 ? 53 : 0};
+  static constexpr int kGuardBits = 16;             // G = 2^16
+  static constexpr int kMarginBits = 4;             // the bound is tol |x| / 16
+  static constexpr int kPredictionSlackBits = 6;    // h may grow by up to 2^(6/k) per step
+
+  static DoubleDouble to_dd(const T& x) {
+    const double hi = to_d(x);
+    return {hi, to_d(T(x - T(hi)))};
+  }
+  static T from_dd(const DoubleDouble& x) { return T(x.hi) + T(x.lo); }
+
+  int tier(int k) const { return k < k1_ ? 0 : (k < k2_ ? 1 : 2); }
+
+  // Coefficients, then the step size, with the split checked against the bound for that step
+  // size (recomputed with the split it allows, then in T alone, if it does not hold); finally the
+  // split for the next step is predicted.
+  T prepare_step(const std::vector<T>& x) {
+    k1_ = next_k1_;
+    k2_ = next_k2_;
+    compute_coefficients(x);
+    T h = step_size(x);
+    if (mixed_ && k1_ <= order_) {
+      if (!split_holds(x, h)) {
+        ++stats_.recomputed;
+        choose_split(x, h, 0);
+        compute_coefficients(x);
+        h = step_size(x);
+        if (!split_holds(x, h)) {
+          k1_ = k2_ = order_ + 1;
+          compute_coefficients(x);
+          h = step_size(x);
+        }
+      }
+      if (k1_ <= order_) ++stats_.mixed_steps;
+      stats_.k1 = k1_, stats_.k2 = k2_;
+    }
+    if (mixed_) {
+      const int k1 = k1_, k2 = k2_;
+      choose_split(x, h, slack_bits_);
+      next_k1_ = k1_, next_k2_ = k2_;
+      k1_ = k1, k2_ = k2;  // the coefficients just computed stay readable
+    }
+    return h;
+  }
+
+  // Binary exponents e_k with max_n |x_{n,k}| h^k < 2^e_k (INT_MIN for a zero order), and the
+  // exponent b with tol * max(1, |x|) / 2^kMarginBits >= 2^b.
+  std::vector<int> term_exponents(const T& h) const {
+    using Op = typename Tape<T>::Op;
+    const auto& nodes = tape_.nodes();
+    std::vector<int> e(order_ + 1, std::numeric_limits<int>::min());
+    int he = 0;
+    const double hm = std::frexp(to_d(h), &he);
+    double pm = 1;  // h^k = pm * 2^pe, pm in [0.5, 1)
+    int pe = 0;
+    for (int k = 0; k <= order_; ++k) {
+      if (k > 0) {
+        int de = 0;
+        pm = std::frexp(pm * hm, &de);
+        pe += he + de;
+      }
+      double m = 0;
+      for (std::size_t n = 0; n < nodes.size(); ++n)
+        if (nodes[n].op == Op::Var) m = std::max(m, std::fabs(value_d(n, k)));
+      if (m > 0) {
+        int me = 0;
+        std::frexp(m, &me);
+        e[k] = me + pe;
+      }
+    }
+    return e;
+  }
+  int bound_exponent(const std::vector<T>& x) const {
+    T size(1);
+    for (const auto& v : x)
+      if (taylor_abs(v) > size) size = taylor_abs(v);
+    int b = 0;
+    std::frexp(to_d(T(tol_ * size)), &b);
+    return b - 1 - kMarginBits;
+  }
+  bool term_fits(int e, int t, int b, int slack) const {
+    return e == std::numeric_limits<int>::min() || e - kTierDigits[t] + guard_bits_ + slack <= b;
+  }
+
+  bool split_holds(const std::vector<T>& x, const T& h) const {
+    const auto e = term_exponents(h);
+    const int b = bound_exponent(x);
+    for (int k = k1_; k <= order_; ++k)
+      if (!term_fits(e[k], tier(k), b, 0)) return false;
+    return true;
+  }
+
+  // K2 (K1): the lowest order from which every term fits the double (double-double) tier;
+  // order 0, the state itself, always stays in T.
+  void choose_split(const std::vector<T>& x, const T& h, int slack) {
+    const auto e = term_exponents(h);
+    const int b = bound_exponent(x);
+    auto lowest = [&](int t) {
+      if (kTierDigits[t] == 0) return order_ + 1;
+      int k = order_ + 1;
+      while (k - 1 >= 1 && term_fits(e[k - 1], t, b, slack)) --k;
+      return k;
+    };
+    k2_ = lowest(2);
+    k1_ = std::min(lowest(1), k2_);
+  }
+
+  // Coefficient k of node n as a double or a T, read from the tier it was computed in.
+  double value_d(std::size_t n, int k) const {
+    switch (tier(k)) {
+      case 0: return to_d(coef_[n][k]);
+      case 1: return dd_[n][k].hi;
+      default: return d_[n][k];
+    }
+  }
+  T value_T(std::size_t n, int k) const {
+    switch (tier(k)) {
+      case 0: return coef_[n][k];
+      case 1: return from_dd(dd_[n][k]);
+      default: return T(d_[n][k]);
+    }
+  }
+
   void compute_coefficients(const std::vector<T>& x) {
     using Op = typename Tape<T>::Op;
     const auto& nodes = tape_.nodes();
@@ -209,33 +382,115 @@ class TaylorSolver {
     for (std::size_t n = 0; n < nodes.size(); ++n)
       if (nodes[n].op == Op::Var) coef_[n][0] = x[var++];
     for (int k = 0; k <= order_; ++k) {
-      if (k > 0) {
-        int v = 0;
-        const T inv_k = T(1) / T(k);
+      const int t = tier(k);
+      if (t == 0)
+        coefficients_in_T(k);
+      else if (t == 1)
+        coefficients_in_dd(k);
+      else
+        coefficients_in_d(k);
+      // Copies for the cheaper tiers' products, which read lower orders of their operands.
+      if (k1_ <= order_ && k < k2_)
         for (std::size_t n = 0; n < nodes.size(); ++n)
-          if (nodes[n].op == Op::Var) {
-            coef_[n][k] = coef_[out_[v]][k - 1] * inv_k;
-            ++v;
+          if (shadow_[n]) {
+            if (t == 0) dd_[n][k] = to_dd(coef_[n][k]);
+            d_[n][k] = dd_[n][k].hi;
           }
+    }
+  }
+
+  void coefficients_in_T(int k) {
+    using Op = typename Tape<T>::Op;
+    const auto& nodes = tape_.nodes();
+    if (k > 0) {
+      int v = 0;
+      const T inv_k = T(1) / T(k);
+      for (std::size_t n = 0; n < nodes.size(); ++n)
+        if (nodes[n].op == Op::Var) coef_[n][k] = coef_[out_[v++]][k - 1] * inv_k;
+    }
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+      const auto& nd = nodes[n];
+      auto& c = coef_[n];
+      switch (nd.op) {
+        case Op::Var: break;
+        case Op::Const: c[k] = k == 0 ? nd.c : T(0); break;
+        case Op::Add: c[k] = coef_[nd.a][k] + coef_[nd.b][k]; break;
+        case Op::Sub: c[k] = coef_[nd.a][k] - coef_[nd.b][k]; break;
+        case Op::Neg: c[k] = -coef_[nd.a][k]; break;
+        case Op::Scale: c[k] = coef_[nd.a][k] * nd.c; break;
+        case Op::Mul: {
+          const auto& a = coef_[nd.a];
+          const auto& b = coef_[nd.b];
+          T s = a[0] * b[k];
+          for (int j = 1; j <= k; ++j) s += a[j] * b[k - j];
+          c[k] = s;
+          break;
+        }
       }
-      for (std::size_t n = 0; n < nodes.size(); ++n) {
-        const auto& nd = nodes[n];
-        auto& c = coef_[n];
-        switch (nd.op) {
-          case Op::Var: break;
-          case Op::Const: c[k] = k == 0 ? nd.c : T(0); break;
-          case Op::Add: c[k] = coef_[nd.a][k] + coef_[nd.b][k]; break;
-          case Op::Sub: c[k] = coef_[nd.a][k] - coef_[nd.b][k]; break;
-          case Op::Neg: c[k] = -coef_[nd.a][k]; break;
-          case Op::Scale: c[k] = coef_[nd.a][k] * nd.c; break;
-          case Op::Mul: {
-            const auto& a = coef_[nd.a];
-            const auto& b = coef_[nd.b];
-            T s = a[0] * b[k];
-            for (int j = 1; j <= k; ++j) s += a[j] * b[k - j];
-            c[k] = s;
-            break;
-          }
+    }
+  }
+
+  // Order k >= 1 in double-double: lower orders of a product's operands are read through their
+  // copies (dd_ holds the copy of a T coefficient for a shadowed node).
+  void coefficients_in_dd(int k) {
+    using Op = typename Tape<T>::Op;
+    const auto& nodes = tape_.nodes();
+    int v = 0;
+    const double kk = k;
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+      if (nodes[n].op == Op::Var) {
+        const int o = out_[v++];
+        dd_[n][k] = (k - 1 < k1_ ? to_dd(coef_[o][k - 1]) : dd_[o][k - 1]) / kk;
+      }
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+      const auto& nd = nodes[n];
+      auto& c = dd_[n];
+      switch (nd.op) {
+        case Op::Var: break;
+        case Op::Const: c[k] = DoubleDouble{}; break;
+        case Op::Add: c[k] = dd_[nd.a][k] + dd_[nd.b][k]; break;
+        case Op::Sub: c[k] = dd_[nd.a][k] - dd_[nd.b][k]; break;
+        case Op::Neg: c[k] = -dd_[nd.a][k]; break;
+        case Op::Scale: c[k] = dd_[nd.a][k] * c_dd_[n]; break;
+        case Op::Mul: {
+          const auto& a = dd_[nd.a];
+          const auto& b = dd_[nd.b];
+          DoubleDouble s = a[0] * b[k];
+          for (int j = 1; j <= k; ++j) s += a[j] * b[k - j];
+          c[k] = s;
+          break;
+        }
+      }
+    }
+  }
+
+  void coefficients_in_d(int k) {
+    using Op = typename Tape<T>::Op;
+    const auto& nodes = tape_.nodes();
+    int v = 0;
+    const double kk = k;
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+      if (nodes[n].op == Op::Var) {
+        const int o = out_[v++];
+        d_[n][k] = value_d(o, k - 1) / kk;
+      }
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+      const auto& nd = nodes[n];
+      auto& c = d_[n];
+      switch (nd.op) {
+        case Op::Var: break;
+        case Op::Const: c[k] = 0; break;
+        case Op::Add: c[k] = d_[nd.a][k] + d_[nd.b][k]; break;
+        case Op::Sub: c[k] = d_[nd.a][k] - d_[nd.b][k]; break;
+        case Op::Neg: c[k] = -d_[nd.a][k]; break;
+        case Op::Scale: c[k] = d_[nd.a][k] * c_d_[n]; break;
+        case Op::Mul: {
+          const auto& a = d_[nd.a];
+          const auto& b = d_[nd.b];
+          double s = a[0] * b[k];
+          for (int j = 1; j <= k; ++j) s += a[j] * b[k - j];
+          c[k] = s;
+          break;
         }
       }
     }
@@ -247,40 +502,60 @@ class TaylorSolver {
     const auto& nodes = tape_.nodes();
     for (std::size_t n = 0; n < nodes.size(); ++n)
       if (nodes[n].op == Op::Var) {
-        const T a = taylor_abs(coef_[n][m]);
+        const T a = taylor_abs(value_T(n, m));
         if (a > best) best = a;
       }
     return best;
   }
 
+  // ln |v| for v != 0, in double: from T's exponent and a double mantissa, so that no range is lost.
+  static double log_abs(const T& v) {
+    if constexpr (std::is_same_v<T, double>) {
+      return std::log(std::fabs(v));
+    } else {
+      int e = 0;
+      const T m = frexp(v, &e);
+      return std::log(std::fabs(to_d(m))) + e * 0.69314718055994530942;
+    }
+  }
+
+  // The Jorba-Zou step. Only its size matters (the error is that of the first neglected term
+  // whatever h is, within a factor of about 2^(1/N)), so the root is taken in double on logarithms:
+  // a 50-digit pow cost as much as a fifth of the step.
   T step_size(const std::vector<T>& x) const {
-    using std::pow;
     T size(1);
     for (const auto& v : x)
       if (taylor_abs(v) > size) size = taylor_abs(v);
-    const T target = tol_ * size;
-    T h = std::numeric_limits<T>::max();
+    const double log_target = log_abs(T(tol_ * size));
+    double log_h = std::numeric_limits<double>::infinity();
     for (int m : {order_ - 1, order_}) {
       const T nm = norm_of_order(m);
-      if (nm > T(0)) {
-        const T hm = pow(T(target / nm), T(1) / T(m));
-        if (hm < h) h = hm;
-      }
+      if (nm > T(0)) log_h = std::min(log_h, (log_target - log_abs(nm)) / m);
     }
-    if (h == std::numeric_limits<T>::max()) h = T(1e6);  // a polynomial solution of degree < N-1: any step is exact
-    return h;
+    if (log_h == std::numeric_limits<double>::infinity()) return T(1e6);  // a polynomial solution of degree < N-1: any step is exact
+    using std::exp;
+    return log_h > -700 ? T(std::exp(std::min(log_h, 700.0))) : T(exp(T(log_h)));
   }
 
+  // Horner's rule from the top order down, each order in its tier: the partial sum at order k,
+  // sum_{i >= k} x_i tau^(i-k), is of the size of x_k and needs the digits x_k has.
   std::vector<T> evaluate(const T& tau) const {
     using Op = typename Tape<T>::Op;
     std::vector<T> y;
     y.reserve(dim_);
+    const double tau_d = mixed_ ? to_d(tau) : 0.0;
+    const DoubleDouble tau_dd = mixed_ ? to_dd(tau) : DoubleDouble{};
     const auto& nodes = tape_.nodes();
     for (std::size_t n = 0; n < nodes.size(); ++n)
       if (nodes[n].op == Op::Var) {
+        int k = order_;
+        double sd = 0;
+        for (; k >= k2_; --k) sd = sd * tau_d + d_[n][k];
+        DoubleDouble sdd{sd, 0};
+        for (; k >= k1_; --k) sdd = sdd * tau_dd + dd_[n][k];
+        T s = k1_ <= order_ ? from_dd(sdd) : T(0);
         const auto& c = coef_[n];
-        T s = c[order_];
-        for (int k = order_ - 1; k >= 0; --k) s = s * tau + c[k];
+        for (; k >= 0; --k) s = s * tau + c[k];
         y.push_back(s);
       }
     return y;
@@ -294,6 +569,18 @@ class TaylorSolver {
   Tape<T> tape_;
   std::vector<int> out_;
   std::vector<std::vector<T>> coef_;
+  // Mixed precision: orders [k1_, k2_) in double-double, [k2_, N] in double; k1_ = k2_ = N + 1
+  // when every order is in T.
+  bool mixed_ = false;
+  int guard_bits_ = kGuardBits;
+  int slack_bits_ = kPredictionSlackBits;
+  int k1_ = 0, k2_ = 0;
+  int next_k1_ = 0, next_k2_ = 0;  // the split predicted for the next step
+  std::vector<std::vector<DoubleDouble>> dd_;
+  std::vector<std::vector<double>> d_;
+  std::vector<bool> shadow_;
+  std::vector<DoubleDouble> c_dd_;
+  std::vector<double> c_d_;
   TaylorStats stats_;
 };
 

@@ -96,6 +96,103 @@ TEST(Oracle, AttitudeStaysOrthogonal) {
     }
 }
 
+// Mixed precision (oracle/taylor.hpp): the orders computed in double-double and double must not
+// change the trajectory beyond what the tolerance allows. Each step may add at most tol |x| / 16,
+// so a run of n steps may differ from the all-T run by n tol max(1, |x|) at most (these flows do
+// not amplify errors by more than the 16 left over). The run must also have used the cheaper
+// tiers, or the comparison would check nothing.
+template <class T, class Field>
+struct MixedRun {
+  T difference;  // max over samples and components
+  T allowed;
+  long steps, mixed_steps, recomputed;
+};
+
+template <class T, class Field>
+MixedRun<T, Field> compare_mixed_with_all_T(const Field& f, const std::vector<T>& x0, const std::vector<T>& times,
+                                            const T& tol, int guard_bits) {
+  oracle::TaylorSolver<T, Field> mixed(f, f.dim, tol), plain(f, f.dim, tol);
+  mixed.set_mixed_precision(true, guard_bits);
+  plain.set_mixed_precision(false);
+  const auto a = mixed.sample(x0, T(0), times), b = plain.sample(x0, T(0), times);
+  T diff(0), size(1);
+  for (std::size_t i = 0; i < a.size(); ++i)
+    for (std::size_t k = 0; k < a[i].size(); ++k) {
+      diff = std::max(diff, T(abs(T(a[i][k] - b[i][k]))));
+      size = std::max(size, T(abs(b[i][k])));
+    }
+  EXPECT_EQ(plain.stats().mixed_steps, 0);
+  return {diff, T(plain.stats().steps) * tol * size, mixed.stats().steps, mixed.stats().mixed_steps,
+          mixed.stats().recomputed};
+}
+
+template <class T>
+std::vector<T> times_up_to(int last, int per_unit) {
+  std::vector<T> t;
+  for (int i = 1; i <= last * per_unit; ++i) t.push_back(T(i) / per_unit);
+  return t;
+}
+
+TEST(OracleMixedPrecision, AgreesWithEveryOrderInTheWorkingPrecision) {
+  {
+    oracle::FreeRigidBodyField<Real50> f(Real50(2), Real50(1), Real50(2) / 3);
+    const auto r = compare_mixed_with_all_T(f, {cos(Real50("1.1")), Real50(0), sin(Real50("1.1"))},
+                                            times_up_to<Real50>(20, 2), Real50("1e-48"), 16);
+    EXPECT_LE(r.difference, r.allowed) << "free rigid body, 50 digits: " << to_string_full(r.difference);
+    EXPECT_GE(r.mixed_steps, r.steps - 1) << "the tiers were not used";
+  }
+  {
+    oracle::RigidBodyAttitudeField<Real50> f(Real50(3), Real50(2), Real50(1));
+    const std::vector<Real50> x0 = {Real50("0.3"), Real50("-1.2"), Real50("0.7"), 1, 0, 0, 0, 1, 0, 0, 0, 1};
+    const auto r = compare_mixed_with_all_T(f, x0, times_up_to<Real50>(10, 4), eps<Real50>(), 16);
+    EXPECT_LE(r.difference, r.allowed) << "attitude, tol = eps: " << to_string_full(r.difference);
+    EXPECT_GE(r.mixed_steps, r.steps - 1) << "the tiers were not used";
+  }
+  {
+    oracle::ClebschField<Real70> f(Real70(2), Real70(1), Real70(2) / 3);
+    const std::vector<Real70> x0 = {Real70("0.5"), Real70("-1.5"), Real70("0.25"), Real70("1.25"), Real70("0.75"),
+                                    Real70("-2")};
+    const auto r = compare_mixed_with_all_T(f, x0, times_up_to<Real70>(5, 1), Real70("1e-62"), 16);
+    EXPECT_LE(r.difference, r.allowed) << "Clebsch, 70 digits: " << to_string_full(r.difference);
+    EXPECT_GE(r.mixed_steps, r.steps - 1) << "the tiers were not used";
+  }
+}
+
+// The split is predicted from the previous step and checked once the step size is known. The
+// profile |x_k| h^k keeps its shape from step to step on these flows (the step follows the radius
+// of convergence), so predictions rarely fail; with the prediction's margin set to -30 bits they
+// fail on every step, and the recomputed steps must be as accurate.
+TEST(OracleMixedPrecision, RecomputesAStepWhosePredictedSplitFails) {
+  oracle::FreeRigidBodyField<Real50> f(Real50(2), Real50(1), Real50(2) / 3);
+  const std::vector<Real50> x0 = {cos(Real50("1.1")), Real50(0), sin(Real50("1.1"))};
+  const Real50 tol("1e-48");
+  oracle::TaylorSolver<Real50, decltype(f)> bold(f, 3, tol), plain(f, 3, tol);
+  bold.set_mixed_precision(true, 16, -30);
+  plain.set_mixed_precision(false);
+  const auto a = bold.flow(x0, Real50(0), Real50(10)), b = plain.flow(x0, Real50(0), Real50(10));
+  EXPECT_GE(bold.stats().recomputed, bold.stats().steps - 1) << "the predictions held: the recomputation went untested";
+  EXPECT_GE(bold.stats().mixed_steps, bold.stats().steps - 1);
+  for (int i = 0; i < 3; ++i)
+    EXPECT_LE(abs(a[i] - b[i]), Real50(plain.stats().steps) * tol) << i << ": " << to_string_full(a[i]);
+}
+
+// Control: a split that claims 40 more bits than the tiers have puts the double tier on orders
+// whose terms are far above the tolerance, and the comparison above sees it.
+TEST(OracleMixedPrecision, ControlTooLittleGuardIsCaught) {
+  oracle::FreeRigidBodyField<Real50> f(Real50(2), Real50(1), Real50(2) / 3);
+  const auto r = compare_mixed_with_all_T(f, {cos(Real50("1.1")), Real50(0), sin(Real50("1.1"))},
+                                          times_up_to<Real50>(20, 2), Real50("1e-48"), -40);
+  EXPECT_GT(r.difference, 1000 * r.allowed) << to_string_full(r.difference);
+}
+
+// In double there is no cheaper tier: nothing changes.
+TEST(OracleMixedPrecision, DoubleHasNoTiers) {
+  oracle::FreeRigidBodyField<double> f(2.0, 1.0, 2.0 / 3.0);
+  oracle::TaylorSolver<double, decltype(f)> s(f, 3, 1e-16);
+  s.flow({std::cos(1.1), 0.0, std::sin(1.1)}, 0.0, 10.0);
+  EXPECT_EQ(s.stats().mixed_steps, 0);
+}
+
 TEST(Oracle, RejectsBadInput) {
   oracle::FreeRigidBodyField<double> f(2.0, 1.0, 0.5);
   oracle::TaylorSolver<double, decltype(f)> s(f, 3, 1e-15);
