@@ -99,11 +99,21 @@ file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/student/toolchain.json CONTENT "{
 # is compiled once, for all three scalars (the `geomech check` tool instead compiles one copy per
 # scalar in parallel, and leaves out what does not compile in a scalar; here a slot that does not
 # compile for a scalar is a build error: declare skip_exact / skip_mp50, see student.hpp).
+# All such targets share one precompiled geomech/student.hpp (CMake's own precompiled headers: the
+# first target builds it with the flags they all have, the others reuse it), so that each example
+# program does not parse Eigen, Boost and the suite's headers again.
 function(geomech_add_student target)
   add_executable(${target} ${ARGN} $<TARGET_OBJECTS:geomech_student_driver>)
   target_compile_definitions(${target} PRIVATE GEOMECH_STUDENT_CHECK=1)
   target_compile_options(${target} PRIVATE ${GM_STUDENT_OPT_MP50})
   target_link_libraries(${target} PRIVATE geomech_harness)
+  get_property(_owner GLOBAL PROPERTY GM_STUDENT_PCH_OWNER)
+  if(_owner)
+    target_precompile_headers(${target} REUSE_FROM ${_owner})
+  else()
+    target_precompile_headers(${target} PRIVATE <geomech/student.hpp>)
+    set_property(GLOBAL PROPERTY GM_STUDENT_PCH_OWNER ${target})
+  endif()
 endfunction()
 
 # 4. For a project outside this tree: build/student/GeomechStudentConfig.cmake, so that
