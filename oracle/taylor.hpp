@@ -297,15 +297,37 @@ class TaylorSolver {
     return h;
   }
 
-  // Binary exponents e_k with max_n |x_{n,k}| h^k < 2^e_k (INT_MIN for a zero order), and the
-  // exponent b with tol * max(1, |x|) / 2^kMarginBits >= 2^b.
-  std::vector<int> term_exponents(const T& h) const {
+  // The profile of a step: for each order k, binary exponents c_k with max_n |x_{n,k}| < 2^c_k and
+  // e_k = c_k + (exponent of h^k), so that max_n |x_{n,k}| h^k < 2^e_k; kNone for an order that is
+  // zero, kHuge for one that is not finite where it was computed. Exponents are taken from T itself
+  // for orders computed in T, so no range is lost, and every step is exact (frexp), so the split
+  // does not depend on a libm.
+  static constexpr int kNone = std::numeric_limits<int>::min();
+  static constexpr int kHuge = std::numeric_limits<int>::max() / 2;
+  struct Profile {
+    std::vector<int> term, coef;
+  };
+  static int exponent_of(const T& v) {
+    using std::frexp;
+    int e = 0;
+    frexp(v, &e);
+    return e;
+  }
+  int coefficient_exponent(std::size_t n, int k) const {
+    switch (tier(k)) {
+      case 0: return coef_[n][k] == T(0) ? kNone : exponent_of(coef_[n][k]);
+      case 1: return std::isfinite(dd_[n][k].hi) ? (dd_[n][k].hi == 0 ? kNone : std::ilogb(dd_[n][k].hi) + 1) : kHuge;
+      default: return std::isfinite(d_[n][k]) ? (d_[n][k] == 0 ? kNone : std::ilogb(d_[n][k]) + 1) : kHuge;
+    }
+  }
+  Profile profile(const T& h) const {
     using Op = typename Tape<T>::Op;
+    using std::frexp;
     const auto& nodes = tape_.nodes();
-    std::vector<int> e(order_ + 1, std::numeric_limits<int>::min());
+    Profile p{std::vector<int>(order_ + 1, kNone), std::vector<int>(order_ + 1, kNone)};
     int he = 0;
-    const double hm = std::frexp(to_d(h), &he);
-    double pm = 1;  // h^k = pm * 2^pe, pm in [0.5, 1)
+    const double hm = to_d(T(frexp(h, &he)));  // h = hm * 2^he, hm in [0.5, 1)
+    double pm = 1;                              // h^k = pm * 2^pe, pm in [0.5, 1]
     int pe = 0;
     for (int k = 0; k <= order_; ++k) {
       if (k > 0) {
@@ -313,46 +335,46 @@ class TaylorSolver {
         pm = std::frexp(pm * hm, &de);
         pe += he + de;
       }
-      double m = 0;
+      int c = kNone;
       for (std::size_t n = 0; n < nodes.size(); ++n)
-        if (nodes[n].op == Op::Var) m = std::max(m, std::fabs(value_d(n, k)));
-      if (m > 0) {
-        int me = 0;
-        std::frexp(m, &me);
-        e[k] = me + pe;
-      }
+        if (nodes[n].op == Op::Var) c = std::max(c, coefficient_exponent(n, k));
+      p.coef[k] = c;
+      p.term[k] = c == kNone || c == kHuge ? c : c + pe;
     }
-    return e;
+    return p;
   }
   int bound_exponent(const std::vector<T>& x) const {
     T size(1);
     for (const auto& v : x)
       if (taylor_abs(v) > size) size = taylor_abs(v);
-    int b = 0;
-    std::frexp(to_d(T(tol_ * size)), &b);
-    return b - 1 - kMarginBits;
+    return exponent_of(T(tol_ * size)) - 1 - kMarginBits;
   }
-  bool term_fits(int e, int t, int b, int slack) const {
-    return e == std::numeric_limits<int>::min() || e - kTierDigits[t] + guard_bits_ + slack <= b;
+  // Order k may be computed in tier t: its term is small enough for t's precision, and (below T)
+  // its coefficients are well inside double's exponent range, so that neither they nor the low
+  // parts of double-double numbers overflow or underflow.
+  bool term_fits(const Profile& p, int k, int t, int b, int slack) const {
+    if (t == 0 || p.term[k] == kNone) return true;
+    if (p.term[k] == kHuge || p.coef[k] > 900 || p.coef[k] < -900) return false;
+    return p.term[k] - kTierDigits[t] + guard_bits_ + slack <= b;
   }
 
   bool split_holds(const std::vector<T>& x, const T& h) const {
-    const auto e = term_exponents(h);
+    const Profile p = profile(h);
     const int b = bound_exponent(x);
     for (int k = k1_; k <= order_; ++k)
-      if (!term_fits(e[k], tier(k), b, 0)) return false;
+      if (!term_fits(p, k, tier(k), b, 0)) return false;
     return true;
   }
 
   // K2 (K1): the lowest order from which every term fits the double (double-double) tier;
   // order 0, the state itself, always stays in T.
   void choose_split(const std::vector<T>& x, const T& h, int slack) {
-    const auto e = term_exponents(h);
+    const Profile p = profile(h);
     const int b = bound_exponent(x);
     auto lowest = [&](int t) {
       if (kTierDigits[t] == 0) return order_ + 1;
       int k = order_ + 1;
-      while (k - 1 >= 1 && term_fits(e[k - 1], t, b, slack)) --k;
+      while (k - 1 >= 1 && term_fits(p, k - 1, t, b, slack)) --k;
       return k;
     };
     k2_ = lowest(2);

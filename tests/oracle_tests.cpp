@@ -176,6 +176,26 @@ TEST(OracleMixedPrecision, RecomputesAStepWhosePredictedSplitFails) {
     EXPECT_LE(abs(a[i] - b[i]), Real50(plain.stats().steps) * tol) << i << ": " << to_string_full(a[i]);
 }
 
+// dx/dt = x^2 from x0 = 1e20: the coefficients are x0^(k+1), beyond double's range from k = 15 on,
+// while the terms x_k h^k stay small enough for the cheaper tiers. Computed there, they would
+// overflow to inf and NaN. The split must leave every order in T from the start (the tiers are
+// ranges up to N, and order N is the largest): not try the tiers and fall back (the check after
+// the step would catch the inf, at the cost of computing every step twice), and the solution at
+// t = 1/(2 x0), exactly 2 x0, must come out right.
+TEST(OracleMixedPrecision, KeepsCoefficientsBeyondDoubleRangeInT) {
+  const Real50 x0("1e20"), tol("1e-48");
+  const Real50 t1 = Real50(1) / (2 * x0);
+  oracle::TaylorSolver<Real50, Riccati> s(Riccati{}, 1, tol);
+  const Real50 x = s.flow({x0}, Real50(0), t1).front();
+  EXPECT_LE(abs(x / (2 * x0) - 1), Real50(s.stats().steps + 1) * tol * 4) << to_string_full(x);
+  EXPECT_EQ(s.stats().mixed_steps, 0);
+  EXPECT_EQ(s.stats().recomputed, 0) << "the split tried double for coefficients beyond its range";
+  // Control: the same flow scaled down to x0 = 1 (coefficients of size 1) does use the tiers.
+  oracle::TaylorSolver<Real50, Riccati> small(Riccati{}, 1, tol);
+  small.flow({Real50(1)}, Real50(0), Real50("0.5"));
+  EXPECT_GT(small.stats().mixed_steps, 0);
+}
+
 // Control: a split that claims 40 more bits than the tiers have puts the double tier on orders
 // whose terms are far above the tolerance, and the comparison above sees it.
 TEST(OracleMixedPrecision, ControlTooLittleGuardIsCaught) {
