@@ -452,70 +452,42 @@ class TaylorSolver {
     }
   }
 
-  // Order k >= 1 in double-double: lower orders of a product's operands are read through their
-  // copies (dd_ holds the copy of a T coefficient for a shadowed node).
-  void coefficients_in_dd(int k) {
+  // Order k >= 1 in a cheaper tier's arithmetic S (DoubleDouble or double), into `c` (dd_ or d_),
+  // with the Scale factors `factors` in S. A product reads the lower orders of its operands through
+  // their copies; `lower(o, k - 1)` gives order k - 1 of out node o in S.
+  template <class S, class Lower>
+  void coefficients_in(int k, std::vector<std::vector<S>>& c, const std::vector<S>& factors, Lower lower) {
     using Op = typename Tape<T>::Op;
     const auto& nodes = tape_.nodes();
     int v = 0;
     const double kk = k;
     for (std::size_t n = 0; n < nodes.size(); ++n)
-      if (nodes[n].op == Op::Var) {
-        const int o = out_[v++];
-        dd_[n][k] = (k - 1 < k1_ ? to_dd(coef_[o][k - 1]) : dd_[o][k - 1]) / kk;
-      }
+      if (nodes[n].op == Op::Var) c[n][k] = lower(out_[v++], k - 1) / kk;
     for (std::size_t n = 0; n < nodes.size(); ++n) {
       const auto& nd = nodes[n];
-      auto& c = dd_[n];
       switch (nd.op) {
         case Op::Var: break;
-        case Op::Const: c[k] = DoubleDouble{}; break;
-        case Op::Add: c[k] = dd_[nd.a][k] + dd_[nd.b][k]; break;
-        case Op::Sub: c[k] = dd_[nd.a][k] - dd_[nd.b][k]; break;
-        case Op::Neg: c[k] = -dd_[nd.a][k]; break;
-        case Op::Scale: c[k] = dd_[nd.a][k] * c_dd_[n]; break;
+        case Op::Const: c[n][k] = S{}; break;
+        case Op::Add: c[n][k] = c[nd.a][k] + c[nd.b][k]; break;
+        case Op::Sub: c[n][k] = c[nd.a][k] - c[nd.b][k]; break;
+        case Op::Neg: c[n][k] = -c[nd.a][k]; break;
+        case Op::Scale: c[n][k] = c[nd.a][k] * factors[n]; break;
         case Op::Mul: {
-          const auto& a = dd_[nd.a];
-          const auto& b = dd_[nd.b];
-          DoubleDouble s = a[0] * b[k];
-          for (int j = 1; j <= k; ++j) s += a[j] * b[k - j];
-          c[k] = s;
+          const auto& a = c[nd.a];
+          const auto& b = c[nd.b];
+          S sum = a[0] * b[k];
+          for (int j = 1; j <= k; ++j) sum += a[j] * b[k - j];
+          c[n][k] = sum;
           break;
         }
       }
     }
   }
-
+  void coefficients_in_dd(int k) {
+    coefficients_in(k, dd_, c_dd_, [&](int o, int j) { return j < k1_ ? to_dd(coef_[o][j]) : dd_[o][j]; });
+  }
   void coefficients_in_d(int k) {
-    using Op = typename Tape<T>::Op;
-    const auto& nodes = tape_.nodes();
-    int v = 0;
-    const double kk = k;
-    for (std::size_t n = 0; n < nodes.size(); ++n)
-      if (nodes[n].op == Op::Var) {
-        const int o = out_[v++];
-        d_[n][k] = value_d(o, k - 1) / kk;
-      }
-    for (std::size_t n = 0; n < nodes.size(); ++n) {
-      const auto& nd = nodes[n];
-      auto& c = d_[n];
-      switch (nd.op) {
-        case Op::Var: break;
-        case Op::Const: c[k] = 0; break;
-        case Op::Add: c[k] = d_[nd.a][k] + d_[nd.b][k]; break;
-        case Op::Sub: c[k] = d_[nd.a][k] - d_[nd.b][k]; break;
-        case Op::Neg: c[k] = -d_[nd.a][k]; break;
-        case Op::Scale: c[k] = d_[nd.a][k] * c_d_[n]; break;
-        case Op::Mul: {
-          const auto& a = d_[nd.a];
-          const auto& b = d_[nd.b];
-          double s = a[0] * b[k];
-          for (int j = 1; j <= k; ++j) s += a[j] * b[k - j];
-          c[k] = s;
-          break;
-        }
-      }
-    }
+    coefficients_in(k, d_, c_d_, [&](int o, int j) { return value_d(o, j); });
   }
 
   T norm_of_order(int m) const {
