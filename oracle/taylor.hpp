@@ -46,6 +46,8 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 namespace gm::oracle {
@@ -207,6 +209,9 @@ class TaylorSolver {
     return prepare_step(x);
   }
 
+  static constexpr int kGuardBits = 16;           // G = 2^16
+  static constexpr int kPredictionSlackBits = 6;  // h may grow by up to 2^(6/k) per step
+
   // Mixed precision (see the top of this file) is on by default for a multiprecision T; off, every
   // order is computed in T. For tests: `guard_bits` is log2 of the growth allowance G (lowered, a
   // split with too little margin must be caught by comparing trajectories); `slack_bits` is the
@@ -253,9 +258,7 @@ class TaylorSolver {
   // precise than it): T itself, double-double, double.
   static constexpr int kTdigits = std::numeric_limits<T>::digits;
   static constexpr int kTierDigits[3] = {kTdigits, kTdigits > 104 + 8 ? 104 : 0, kTdigits > 53 + 8 ? 53 : 0};
-  static constexpr int kGuardBits = 16;             // G = 2^16
   static constexpr int kMarginBits = 4;             // the bound is tol |x| / 16
-  static constexpr int kPredictionSlackBits = 6;    // h may grow by up to 2^(6/k) per step
 
   static DoubleDouble to_dd(const T& x) {
     const double hi = to_d(x);
@@ -276,7 +279,7 @@ class TaylorSolver {
     if (mixed_ && k1_ <= order_) {
       if (!split_holds(x, h)) {
         ++stats_.recomputed;
-        choose_split(x, h, 0);
+        std::tie(k1_, k2_) = choose_split(x, h, 0);
         compute_coefficients(x);
         h = step_size(x);
         if (!split_holds(x, h)) {
@@ -288,12 +291,7 @@ class TaylorSolver {
       if (k1_ <= order_) ++stats_.mixed_steps;
       stats_.k1 = k1_, stats_.k2 = k2_;
     }
-    if (mixed_) {
-      const int k1 = k1_, k2 = k2_;
-      choose_split(x, h, slack_bits_);
-      next_k1_ = k1_, next_k2_ = k2_;
-      k1_ = k1, k2_ = k2;  // the coefficients just computed stay readable
-    }
+    if (mixed_) std::tie(next_k1_, next_k2_) = choose_split(x, h, slack_bits_);
     return h;
   }
 
@@ -366,9 +364,9 @@ class TaylorSolver {
     return true;
   }
 
-  // K2 (K1): the lowest order from which every term fits the double (double-double) tier;
-  // order 0, the state itself, always stays in T.
-  void choose_split(const std::vector<T>& x, const T& h, int slack) {
+  // The split (K1, K2) for step size h: K2 (K1) is the lowest order from which every term fits the
+  // double (double-double) tier; order 0, the state itself, always stays in T.
+  std::pair<int, int> choose_split(const std::vector<T>& x, const T& h, int slack) const {
     const Profile p = profile(h);
     const int b = bound_exponent(x);
     auto lowest = [&](int t) {
@@ -377,8 +375,8 @@ class TaylorSolver {
       while (k - 1 >= 1 && term_fits(p, k - 1, t, b, slack)) --k;
       return k;
     };
-    k2_ = lowest(2);
-    k1_ = std::min(lowest(1), k2_);
+    const int k2 = lowest(2);
+    return {std::min(lowest(1), k2), k2};
   }
 
   // Coefficient k of node n as a double or a T, read from the tier it was computed in.
