@@ -14,6 +14,7 @@
 #include <vector>
 
 namespace gm {
+namespace properties_ad_star {
 namespace {
 
 inline constexpr std::array<LieAlgebraId, 3> kAlgebras{LieAlgebraId::so3, LieAlgebraId::so4, LieAlgebraId::sl2};
@@ -131,4 +132,5 @@ GM_PROPERTY(ad_star_definition, all_scalars,
              .negative_controls = {"ad_star_is_ad", "ad_star_minus_ad", "ad_star_so4_R6_sign_slip",
                                    "so4_bracket_R6_sign_slip"}});
 
+}  // namespace properties_ad_star
 }  // namespace gm

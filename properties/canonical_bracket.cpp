@@ -8,6 +8,7 @@
 #include "properties/support/tolerance.hpp"
 
 namespace gm {
+namespace properties_canonical_bracket {
 namespace {
 
 // {F, G} = dF/dq . dG/dp - dF/dp . dG/dq: constant coefficients (structure degree 0).
@@ -124,4 +125,5 @@ GM_PROPERTY(canonical_bracket_jacobi, all_scalars,
              .needs = {"canonical_bracket"},
              .negative_controls = {"canonical_bracket_symmetric"}});
 
+}  // namespace properties_canonical_bracket
 }  // namespace gm

@@ -12,6 +12,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_casimir {
 namespace {
 
 template <class T>
@@ -80,4 +81,5 @@ GM_PROPERTY(casimir_conserved_by_euler, all_scalars,
              .needs = {"casimir", "euler_3_8"},
              .negative_controls = {"casimir_weighted", "euler_3_8_second_component_sign"}});
 
+}  // namespace properties_casimir
 }  // namespace gm

@@ -9,6 +9,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_clebsch {
 namespace {
 
 // Pi_a = eps_abc P_b Q_c as polynomials in x = (Q, P) in R^6 (Q = x1..x3, P = x4..x6).
@@ -102,4 +103,5 @@ GM_PROPERTY(clebsch_implies_euler, all_scalars,
              .needs = {"clebsch_3_21", "momentum_map", "euler_3_8"},
              .negative_controls = {"clebsch_3_21_sign_flipped", "clebsch_3_21_Pi_for_Omega"}});
 
+}  // namespace properties_clebsch
 }  // namespace gm

@@ -14,6 +14,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_definitions_algebra {
 namespace {
 
 // (2.11): hat(v) is the matrix with hat(v)_jk = -v_i eps_ijk.
@@ -251,4 +252,6 @@ GM_DEFINITION(canonical_bracket, "s3.clebsch-poisson", "{f, h} = f_q . h_p - f_p
 GM_DEFINITION(momentum_map, "mm.hamiltonian-action", "J(q, p) = p x q", Exact, "momentum_map_reversed",
               "momentum_map_sign_slip");
 
+#undef GM_DEFINITION
+}  // namespace properties_definitions_algebra
 }  // namespace gm

@@ -15,6 +15,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_definitions_body {
 namespace {
 
 template <class T>
@@ -344,4 +345,6 @@ GM_BODY_DEFINITION(inertia_tensor_2_3, "s2.inertia", "I = sum m (|X|^2 Id - X X^
 GM_BODY_DEFINITION(inertia_bilinear_2_3, "s2.inertia", "(a, b) = sum m (a x X).(b x X), (2.3), 1 to 5 masses",
                    "inertia_bilinear_dot_for_cross");
 
+#undef GM_BODY_DEFINITION
+}  // namespace properties_definitions_body
 }  // namespace gm

@@ -12,6 +12,7 @@
 #include "properties/support/tolerance.hpp"
 
 namespace gm {
+namespace properties_definitions_manakov {
 namespace {
 
 template <class T>
@@ -146,4 +147,6 @@ GM_MANAKOV_DEFINITION(manakov_clebsch_3_23, "mm.manakov-clebsch",
                       "(3.23) with M = Q^T P - P^T Q (the corrected closing exercise), non-diagonal A",
                       "manakov_clebsch_P_left_multiplied", "manakov_clebsch_M_as_printed");
 
+#undef GM_MANAKOV_DEFINITION
+}  // namespace properties_definitions_manakov
 }  // namespace gm

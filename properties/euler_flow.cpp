@@ -17,6 +17,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_euler_flow {
 namespace {
 
 
@@ -143,4 +144,5 @@ GM_PROPERTY(manakov_n3_flow_is_euler_flow, float_scalars,
              .negative_controls = {"manakov_commutator_reversed", "manakov_2_34_one_sided"},
              .cases = {.d = 20, .mp = 2, .q = 0}});
 
+}  // namespace properties_euler_flow
 }  // namespace gm

@@ -10,6 +10,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_euler_forms {
 namespace {
 
 // I dOmega/dt from (2.1), componentwise.
@@ -110,4 +111,5 @@ GM_PROPERTY(euler_matrix_form_2_12, all_scalars,
              .needs = {"euler_matrix_2_12"},
              .negative_controls = {"euler_matrix_commutator_sign"}});
 
+}  // namespace properties_euler_forms
 }  // namespace gm

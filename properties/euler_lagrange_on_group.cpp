@@ -45,6 +45,7 @@
 #include <functional>
 
 namespace gm {
+namespace properties_euler_lagrange_on_group {
 namespace {
 
 template <class T>
@@ -312,4 +313,5 @@ GM_PROPERTY(matrix_euler_poincare_any_lagrangian_so_n, all_scalars,
              .negative_controls = {"hat_n_written_for_so4", "vee_n_written_for_so4"},
              .cases = {.d = 100, .mp = 25, .q = 5}});
 
+}  // namespace properties_euler_lagrange_on_group
 }  // namespace gm

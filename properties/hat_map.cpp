@@ -5,6 +5,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_hat_map {
 namespace {
 
 // hat(a) v = a x v. Each entry of hat(a) v is a sum of two products: k = 4 covers the roundings
@@ -83,4 +84,5 @@ GM_PROPERTY(trace_pairing_is_dot_product, all_scalars,
              .needs = {"pairing"},
              .negative_controls = {"pairing_without_half"}});
 
+}  // namespace properties_hat_map
 }  // namespace gm

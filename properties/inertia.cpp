@@ -20,6 +20,7 @@
 #include <array>
 
 namespace gm {
+namespace properties_inertia {
 namespace {
 
 enum class BodyShape { generic, planar, collinear };
@@ -202,4 +203,5 @@ GM_PROPERTY(inertia_triangle_inequalities, all_scalars,
              .needs = {"inertia_tensor_2_3"},
              .negative_controls = {"inertia_tensor_missing_identity"}});
 
+}  // namespace properties_inertia
 }  // namespace gm

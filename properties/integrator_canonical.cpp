@@ -46,6 +46,7 @@
 #include "properties/support/tolerance.hpp"
 
 namespace gm {
+namespace properties_integrator_canonical {
 namespace {
 
 constexpr int kStates = 3;
@@ -420,4 +421,5 @@ GM_PROPERTY(manakov_clebsch_integrator_symplectic, integrator_scalars,
 #undef GM_CL
 #undef GM_MCL
 
+}  // namespace properties_integrator_canonical
 }  // namespace gm

@@ -30,6 +30,7 @@
 #include <cstdio>
 
 namespace gm {
+namespace properties_integrator_claims {
 namespace {
 
 // The verdict on one claimable property: `residual` (the worst over the states tried) against
@@ -548,4 +549,5 @@ GM_PROPERTY(manakov_integrator_poisson, integrator_scalars,
 #undef GM_RB
 #undef GM_MK
 
+}  // namespace properties_integrator_claims
 }  // namespace gm

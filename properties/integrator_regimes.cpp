@@ -30,6 +30,7 @@
 #include <cstdio>
 
 namespace gm {
+namespace properties_integrator_regimes {
 namespace {
 
 const char* kRegimeNames[] = {"generic", "relative equilibrium (Pi along a principal axis)",
@@ -219,4 +220,5 @@ GM_PROPERTY(manakov_integrator_50_digit_floor, integrator_mp50_scalars,
              .cases = {.d = 0, .mp = 3, .q = 0},
              .step = StepKind::Manakov});
 
+}  // namespace properties_integrator_regimes
 }  // namespace gm

@@ -29,6 +29,7 @@
 #include <cstdio>
 
 namespace gm {
+namespace properties_integrator_structure {
 namespace {
 
 constexpr int kStates = 3;
@@ -278,4 +279,5 @@ GM_PROPERTY(manakov_integrator_bounded_energy, integrator_scalars,
 #undef GM_RB_STRUCT
 #undef GM_MK_STRUCT
 
+}  // namespace properties_integrator_structure
 }  // namespace gm

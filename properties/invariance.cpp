@@ -6,6 +6,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_invariance {
 namespace {
 
 template <class T>
@@ -104,4 +105,5 @@ GM_PROPERTY(right_invariant_sign_1_1, all_scalars,
              .needs = {"omega_3_5", "reconstruction_2_10", "lagrangian_2_5", "euler_3_8", "ad_star"},
              .negative_controls = {"reconstruction_2_10_right_trivialized", "ad_star_is_ad", "euler_3_8_cross_reversed"}});
 
+}  // namespace properties_invariance
 }  // namespace gm

@@ -9,6 +9,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_legendre {
 namespace {
 
 template <class T>
@@ -145,4 +146,5 @@ GM_PROPERTY(legendre_matrix_2_21, all_scalars,
              .needs = {"lagrangian_2_13", "hamiltonian_2_21"},
              .negative_controls = {"lagrangian_2_13_pairing_without_half", "hamiltonian_2_21_sign_flipped"}});
 
+}  // namespace properties_legendre
 }  // namespace gm

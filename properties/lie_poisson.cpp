@@ -14,6 +14,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_lie_poisson {
 namespace {
 
 inline constexpr int kGradientOfH = 16;  // rounding chain of a central-difference gradient of h
@@ -203,4 +204,5 @@ GM_PROPERTY(lie_poisson_generates_euler_3_7, all_scalars,
              .needs = {"hamiltonian_3_4", "lie_poisson_3_6", "euler_3_7", "euler_3_8"},
              .negative_controls = {"lie_poisson_3_6_sign_flipped", "hamiltonian_with_I"}});
 
+}  // namespace properties_lie_poisson
 }  // namespace gm

@@ -20,6 +20,7 @@
 #include <string>
 
 namespace gm {
+namespace properties_lie_poisson_any_algebra {
 namespace {
 
 // Bound on the structure constants |c^i_jk| in the subject's documented coordinates: so(n) in the
@@ -80,4 +81,5 @@ GM_PROPERTY(lie_poisson_any_algebra_ad_star, all_scalars,
              .negative_controls = {"ad_star_is_ad", "ad_star_not_a_lie_algebra"},
              .cases = {.d = 100, .mp = 10, .q = 10}});
 
+}  // namespace properties_lie_poisson_any_algebra
 }  // namespace gm

@@ -12,6 +12,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_lie_poisson_axioms {
 namespace {
 
 // (3.6): {F, G}(Pi) = -Pi . dF x dG. Majorant: the triple product, 6 |Pi| |dF| |dG|.
@@ -173,4 +174,5 @@ GM_PROPERTY(lie_poisson_2_23_jacobi, all_scalars,
              .needs = {"lie_poisson_2_23"},
              .negative_controls = {"lie_poisson_2_23_cyclic_index_slip"}});
 
+}  // namespace properties_lie_poisson_axioms
 }  // namespace gm

@@ -20,6 +20,7 @@
 #include <cstdio>
 
 namespace gm {
+namespace properties_manakov_clebsch_variations {
 namespace {
 
 template <class T>
@@ -70,4 +71,5 @@ GM_PROPERTY(manakov_clebsch_variations_in_Q_and_P, all_scalars,
              .negative_controls = {"manakov_clebsch_P_left_multiplied", "manakov_clebsch_M_as_printed"},
              .cases = {.d = 50, .mp = 10, .q = 10}});
 
+}  // namespace properties_manakov_clebsch_variations
 }  // namespace gm

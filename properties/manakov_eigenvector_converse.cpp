@@ -26,6 +26,7 @@
 #include <cstdio>
 
 namespace gm {
+namespace properties_manakov_eigenvector_converse {
 namespace {
 
 // t = 10 in 50 digits too (issue 18).
@@ -93,4 +94,5 @@ GM_PROPERTY(manakov_eigenvector_system_gives_2_36, float_scalars,
              .negative_controls = {"manakov_commutator_reversed", "manakov_Omega_as_if_commuting"},
              .cases = {.d = 20, .mp = 2, .q = 0}});
 
+}  // namespace properties_manakov_eigenvector_converse
 }  // namespace gm

@@ -17,6 +17,7 @@
 #include <cstdio>
 
 namespace gm {
+namespace properties_manakov_flow {
 namespace {
 
 // The horizon t = 10, in 50 digits too (issue 18: a 50-digit run on [0, 1] said little about a
@@ -369,4 +370,5 @@ GM_PROPERTY(matrix_euler_poincare_trace_pairing, all_scalars,
              .needs = {"ad_star", "lie_hat"},
              .negative_controls = {"ad_star_sl2_transpose_pairing", "ad_star_sign_flipped"}});
 
+}  // namespace properties_manakov_flow
 }  // namespace gm

@@ -7,6 +7,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_manakov_so3 {
 namespace {
 
 // Sizes: |a| |Omega| for M (2 roundings); |a| |Omega|^2 for dM/dt and l (Omega recovered from M by a
@@ -45,4 +46,5 @@ GM_PROPERTY(manakov_so3_is_euler, all_scalars,
              .negative_controls = {"manakov_2_34_commutator_reversed", "manakov_lagrangian_sign_flipped",
                                    "manakov_M_one_sided"}});
 
+}  // namespace properties_manakov_so3
 }  // namespace gm

@@ -8,6 +8,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_momentum_map {
 namespace {
 
 // J^xi is bilinear in (q, p), so its gradients in q and in p are exact central differences with unit
@@ -97,4 +98,5 @@ GM_PROPERTY(momentum_map_equivariance, all_scalars,
              .needs = {"momentum_map"},
              .negative_controls = {"momentum_map_sign_slip"}});
 
+}  // namespace properties_momentum_map
 }  // namespace gm

@@ -17,6 +17,7 @@
 #include <cstdio>
 
 namespace gm {
+namespace properties_momentum_map_right_action {
 namespace {
 
 template <class T>
@@ -143,4 +144,5 @@ GM_PROPERTY(momentum_map_right_action_equivariance, all_scalars,
              .negative_controls = {"ad_star_is_ad", "ad_star_sign_flipped"},
              .cases = {.d = 100, .mp = 25, .q = 10}});
 
+}  // namespace properties_momentum_map_right_action
 }  // namespace gm

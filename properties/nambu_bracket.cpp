@@ -10,6 +10,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_nambu_bracket {
 namespace {
 
 // The Nambu bracket of the subject for the function c: its coefficients are grad c, a polynomial of
@@ -314,4 +315,5 @@ GM_PROPERTY(nambu_motion_recombination, all_scalars,
              .needs = {"nambu_motion_3_14"},
              .negative_controls = {"nambu_motion_3_14_half_cross"}});
 
+}  // namespace properties_nambu_bracket
 }  // namespace gm

@@ -23,6 +23,7 @@
 #include "properties/support/tolerance.hpp"
 
 namespace gm {
+namespace properties_nambu_level_sets {
 namespace {
 
 // A point of a level sphere of c = |x|^2/2 in the coordinates (q, p), with the tangent vectors
@@ -111,4 +112,5 @@ GM_PROPERTY(nambu_level_sphere_motion_is_canonical, all_scalars,
              .needs = {"nambu_motion_3_14"},
              .negative_controls = {"nambu_motion_3_14_reversed", "nambu_motion_3_14_half_cross"}});
 
+}  // namespace properties_nambu_level_sets
 }  // namespace gm

@@ -9,6 +9,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_nambu_rigid_body {
 namespace {
 
 inline constexpr int kGradientOfH = 16;  // central-difference gradient of h (see lie_poisson.cpp)
@@ -207,4 +208,5 @@ GM_PROPERTY(system_3_16_nambu_form, all_scalars,
              .needs = {"nambu_3_16", "nambu_motion_3_14"},
              .negative_controls = {"nambu_3_16_as_printed_answer", "nambu_motion_3_14_reversed"}});
 
+}  // namespace properties_nambu_rigid_body
 }  // namespace gm

@@ -18,6 +18,7 @@
 #include <cstdio>
 
 namespace gm {
+namespace properties_noether_reconstruction {
 namespace {
 
 
@@ -313,4 +314,5 @@ GM_PROPERTY(hamilton_pontryagin_and_clebsch_are_one_motion, float_scalars,
              .negative_controls = {"clebsch_3_21_Q_sign", "rigid_body_and_clebsch_time_reversed"},
              .cases = {.d = 10, .mp = 2, .q = 0}});
 
+}  // namespace properties_noether_reconstruction
 }  // namespace gm

@@ -8,6 +8,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_pointwise_dynamics {
 namespace {
 
 // (2.10): dO/dt = O hat(Omega), so O^-1 dO/dt = hat(Omega) (left-invariant). O is an exact
@@ -81,4 +82,5 @@ GM_PROPERTY(manakov_omega_solves_2_34, all_scalars,
              .negative_controls = {"manakov_Omega_as_if_commuting"},
              .cases = {.d = 100, .mp = 25, .q = 15}});
 
+}  // namespace properties_pointwise_dynamics
 }  // namespace gm

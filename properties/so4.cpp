@@ -7,6 +7,7 @@
 #include "properties/support/tolerance.hpp"
 
 namespace gm {
+namespace properties_so4 {
 namespace {
 
 // hat([a, b]_R6) = [hat(a), hat(b)], vee inverts hat, hat(a) is skew, <hat(a), hat(b)> = a . b.
@@ -66,4 +67,5 @@ GM_PROPERTY(so4_euler_poincare_R6, all_scalars,
              .needs = {"hat_n", "vee_n", "manakov_M", "manakov_2_34", "ad_star_so4_R6"},
              .negative_controls = {"ad_star_so4_R6_sign_slip", "manakov_2_34_commutator_reversed"}});
 
+}  // namespace properties_so4
 }  // namespace gm

@@ -7,6 +7,7 @@
 #include "properties/support/tolerance.hpp"
 
 namespace gm {
+namespace properties_space_inertia {
 namespace {
 
 // l(Omega) = (1/2) omega . I_space omega with omega = O Omega, O an exact rational rotation (rounded
@@ -84,4 +85,5 @@ GM_PROPERTY(space_inertia_variation_hint, all_scalars,
              .needs = {"inertia_space"},
              .negative_controls = {"inertia_space_inverted"}});
 
+}  // namespace properties_space_inertia
 }  // namespace gm

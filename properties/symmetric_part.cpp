@@ -7,6 +7,7 @@
 #include "properties/support/truth.hpp"
 
 namespace gm {
+namespace properties_symmetric_part {
 namespace {
 
 // For any 3 x 3 Pi and skew Omega_hat: <Pi_sym, Omega_hat> = 0 and <Pi, Omega_hat> =
@@ -57,4 +58,5 @@ GM_PROPERTY(matrix_euler_keeps_pi_skew, all_scalars,
              .needs = {"euler_matrix_2_12"},
              .negative_controls = {"euler_matrix_anticommutator", "euler_matrix_one_sided"}});
 
+}  // namespace properties_symmetric_part
 }  // namespace gm

@@ -24,6 +24,7 @@
 #include "properties/support/variations.hpp"
 
 namespace gm {
+namespace properties_variations {
 namespace {
 
 // The time interval [0, kT] of the variational checks.
@@ -920,4 +921,5 @@ GM_PROPERTY(ep_product_space_variation, float_scalars,
              .negative_controls = {"ad_star_sign_flipped", "ad_star_sl2_transpose_pairing"},
              .cases = {.d = 10, .mp = 4, .q = 0}});
 
+}  // namespace properties_variations
 }  // namespace gm

@@ -3,6 +3,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_ad_star {
 
 GM_MUTANT(ad_star_is_ad, "ad*_xi mu computed as ad_xi mu = [xi, mu] (coadjoint confused with adjoint)", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -58,9 +59,11 @@ GM_MUTANT(so4_bracket_R6_sign_slip, "so(4) bracket in R^6 with u1 x v2 + u2 x v1
   };
 });
 
+}  // namespace mutants_ad_star
 }  // namespace gm
 
 namespace gm {
+namespace mutants_ad_star {
 
 // sl(2, R) read with b and c exchanged: [[a, c], [b, -a]] (a transposed convention); right on
 // so(3) and so(4), wrong only on the third algebra.
@@ -95,4 +98,5 @@ GM_MUTANT(ad_star_not_a_lie_algebra, "ad* from structure constants with an extra
             };
           });
 
+}  // namespace mutants_ad_star
 }  // namespace gm

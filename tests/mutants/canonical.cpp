@@ -3,6 +3,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_canonical {
 
 GM_MUTANT(canonical_bracket_sign_flipped, "canonical bracket with {q_i, p_j} = -delta_ij", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -27,4 +28,5 @@ GM_MUTANT(canonical_bracket_affine_in_df, "canonical bracket plus a stray term s
             };
           });
 
+}  // namespace mutants_canonical
 }  // namespace gm

@@ -5,6 +5,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_canonical_claims {
 
 // Stormer-Verlet written explicitly, as for a separable H = T(P) + V(Q):
 //     P_half = P + (h/2) f_P(Q, P),   Q' = Q + h f_Q(Q, P_half),   P' = P_half + (h/2) f_P(Q', P_half),
@@ -107,4 +108,5 @@ GM_MUTANT_SET(clebsch_midpoint_claims_energy,
                   if (c.integrator == "clebsch_midpoint") c.energy = true;
               });
 
+}  // namespace mutants_canonical_claims
 }  // namespace gm

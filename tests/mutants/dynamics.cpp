@@ -12,6 +12,7 @@
 #include <Eigen/LU>
 
 namespace gm {
+namespace mutants_dynamics {
 namespace {
 
 template <class T>
@@ -206,4 +207,5 @@ GM_MUTANT_SET(rk4_claims_everything,
                   }
               });
 
+}  // namespace mutants_dynamics
 }  // namespace gm

@@ -4,6 +4,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_inertia {
 
 GM_MUTANT(inertia_bilinear_dot_for_cross, "(2.3) evaluated with dot products, sum m (a . X)(b . X)", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -33,4 +34,5 @@ GM_MUTANT(inertia_space_inverted, "I_space written O^-1 I O (the conjugation inv
   };
 });
 
+}  // namespace mutants_inertia
 }  // namespace gm

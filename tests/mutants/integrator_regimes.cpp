@@ -8,6 +8,7 @@
 #include <cmath>
 
 namespace gm {
+namespace mutants_integrator_regimes {
 namespace {
 
 // exp(theta hat(e_axis)): the rotation by theta about a coordinate axis.
@@ -91,4 +92,5 @@ GM_MUTANT(rk4_double_inside, "classical RK4 computing its stages in double preci
 });
 GM_MUTANT_WRONG_ONLY_IN(rk4_double_inside, ScalarKind::MP50);
 
+}  // namespace mutants_integrator_regimes
 }  // namespace gm

@@ -5,6 +5,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_lie_poisson {
 
 GM_MUTANT(lie_poisson_3_6_sign_flipped, "(3.6) written {f, h} = +Pi . df x dh", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -79,9 +80,11 @@ GM_MUTANT(lie_poisson_2_23_with_symmetric_part,
             };
           });
 
+}  // namespace mutants_lie_poisson
 }  // namespace gm
 
 namespace gm {
+namespace mutants_lie_poisson {
 
 // Minus a Poisson bracket is a Poisson bracket: bilinearity, skew-symmetry, Leibniz and Jacobi
 // all hold for it, so only the comparison with (2.23) itself (definition_lie_poisson_2_23) sees it.
@@ -92,4 +95,5 @@ GM_MUTANT(lie_poisson_2_23_sign_flipped, "(2.23) written {f, h} = +<Pi, [df, dh]
   };
 });
 
+}  // namespace mutants_lie_poisson
 }  // namespace gm

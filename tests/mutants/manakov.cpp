@@ -3,6 +3,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_manakov {
 
 GM_MUTANT(manakov_2_34_commutator_reversed, "(2.34) written dM/dt = [Omega, M]", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -28,4 +29,5 @@ GM_MUTANT(manakov_lagrangian_constant, "Manakov's Lagrangian returning a constan
   s.manakov_lagrangian = [](const MatX<T>& A, const MatX<T>&) -> T { return T(A.trace()); };
 });
 
+}  // namespace mutants_manakov
 }  // namespace gm

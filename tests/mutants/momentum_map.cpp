@@ -3,6 +3,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_momentum_map {
 
 GM_MUTANT(momentum_map_reversed, "momentum map written J = q x p", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -34,4 +35,5 @@ GM_MUTANT(clebsch_3_21_Pi_for_Omega, "(3.21) with Omega replaced by Pi = P x Q (
   };
 });
 
+}  // namespace mutants_momentum_map
 }  // namespace gm

@@ -4,6 +4,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_nambu {
 
 GM_MUTANT(nambu_3_13_sign_flipped, "(3.13) written {f, h} = +grad c . grad f x grad h", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -69,4 +70,5 @@ GM_MUTANT(energy_ellipsoid_x_I_x, "the rigid-body energy taken as h = x . I x, a
   s.hamiltonian_3_4 = [](const Vec3<T>& I, const Vec3<T>& x) -> T { return x.dot(I.cwiseProduct(x)); };
 });
 
+}  // namespace mutants_nambu
 }  // namespace gm

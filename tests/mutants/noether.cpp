@@ -5,6 +5,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_noether {
 
 // A function that is trivially "conserved": constancy along the flow alone cannot tell it from
 // pi = O Pi; noether_spatial_momentum_conserved also compares it with O(0) Pi(0).
@@ -13,9 +14,11 @@ GM_MUTANT(spatial_momentum_constant, "spatial momentum returning the constant ve
   s.spatial_momentum = [](const Mat3<T>&, const Vec3<T>&) -> Vec3<T> { return Vec3<T>(T(1), T(0), T(0)); };
 });
 
+}  // namespace mutants_noether
 }  // namespace gm
 
 namespace gm {
+namespace mutants_noether {
 
 // An error shared by the two systems of Remark 3.3: (3.8), (2.10) and (3.21) all with the
 // opposite sign (the motion run backwards in time). The two flows still agree with each other
@@ -33,4 +36,5 @@ GM_MUTANT(rigid_body_and_clebsch_time_reversed, "(3.8), (2.10) and (3.21) all wi
             };
           });
 
+}  // namespace mutants_noether
 }  // namespace gm

@@ -4,6 +4,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_reconstruction_and_manakov {
 
 GM_MUTANT(reconstruction_right_invariant,
           "reconstruction written dO/dt = hat(Omega) O (right-invariant: Omega taken as the spatial angular velocity)",
@@ -20,4 +21,5 @@ GM_MUTANT(manakov_Omega_as_if_commuting,
             };
           });
 
+}  // namespace mutants_reconstruction_and_manakov
 }  // namespace gm

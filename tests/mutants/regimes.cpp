@@ -9,6 +9,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_regimes {
 
 // Dimension: hat_n written with the so(4) layout in mind: (2.11) for the first three coordinates
 // and every further column read from v(3 + i). Right for n = 2, 3 and 4, wrong from n = 5 on.
@@ -125,4 +126,5 @@ GM_MUTANT(manakov_2_34_diagonal_A_only, "(2.34) with Omega_ij = M_ij / (A_ii + A
             };
           });
 
+}  // namespace mutants_regimes
 }  // namespace gm

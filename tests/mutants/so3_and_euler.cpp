@@ -6,6 +6,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_so3_and_euler {
 
 GM_MUTANT(hat_transposed, "hat map with the transposed convention, hat(v) w = w x v", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -115,9 +116,11 @@ GM_MUTANT(hamiltonian_2_21_sign_flipped, "(2.21) written h = l(Omega_hat) - <Pi,
   s.hamiltonian_2_21 = [](const Vec3<T>& I, const Mat3<T>& P) -> T { return -ref::hamiltonian_2_21<T>(I, P); };
 });
 
+}  // namespace mutants_so3_and_euler
 }  // namespace gm
 
 namespace gm {
+namespace mutants_so3_and_euler {
 
 GM_MUTANT(casimir_without_half, "the Casimir written |Pi|^2 without the 1/2 of (2.27)", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -131,4 +134,5 @@ GM_MUTANT(casimir_weighted, "the Casimir written (Pi1^2 + 2 Pi2^2 + 3 Pi3^2)/2 (
   s.casimir = [](const Vec3<T>& P) -> T { return (P(0) * P(0) + T(2) * P(1) * P(1) + T(3) * P(2) * P(2)) / T(2); };
 });
 
+}  // namespace mutants_so3_and_euler
 }  // namespace gm

@@ -5,6 +5,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_structure_claims {
 
 // The implicit midpoint rule with the attitude updated on the wrong side: O_{n+1} = U O_n with
 // U = cay((h/2) Omega_mid), the body angular velocity used as if it were the spatial one
@@ -83,4 +84,5 @@ GM_MUTANT_SET(explicit_euler_claims_bounded_energy,
                 s.claims.push_back({.integrator = "explicit_euler", .bounded_energy = true});
               });
 
+}  // namespace mutants_structure_claims
 }  // namespace gm

@@ -4,6 +4,7 @@
 #include "tests/mutants/mutants.hpp"
 
 namespace gm {
+namespace mutants_symmetric_part {
 
 // Equal to (2.15) on skew matrices, so it passes every check made with skew arguments only.
 GM_MUTANT(pairing_upper_triangle, "pairing computed as sum_{i<j} A_ij B_ij (right on skew matrices only)",
@@ -34,4 +35,5 @@ GM_MUTANT(euler_matrix_one_sided, "(2.12) with half the commutator, dPi/dt = -Om
   };
 });
 
+}  // namespace mutants_symmetric_part
 }  // namespace gm
