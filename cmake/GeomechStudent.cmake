@@ -51,7 +51,8 @@ _gm_json_strings(_gm_inc_json ${_gm_student_includes})
 # inside its headers, and GCC does not keep those pragmas' scope in a precompiled header, so a
 # student would see about 150 lines of it from Eigen's internals.
 set(_gm_student_flags -std=c++20 -DBOOST_ALL_NO_LIB -DGEOMECH_EIGEN_KERNELS_PREBUILT -Wall -Wextra
-    -Wno-deprecated-copy -Wno-maybe-uninitialized -Wno-ignored-attributes ${_gm_instrumentation})
+    -Wno-deprecated-copy -Wno-maybe-uninitialized -Wno-ignored-attributes ${GM_GCC_MEMORY_FLAGS}
+    ${_gm_instrumentation})
 _gm_json_strings(_gm_flags_json ${_gm_student_flags})
 
 # 2b. geomech/student.hpp precompiled with exactly the flags of a student compile (GCC uses a
