@@ -15,6 +15,17 @@
 //    any order p >= 1 has a local error C h^(p+1) <= C 2^-80 ~ 1e-24 |x|, and the oracle is exact
 //    to ~1e-48; a step that is computed (in part) in double shows an error near 1e-16 |x|.
 //    Only a 50-digit run can see this, so the property runs in mp50 only.
+// 3. The local order. One step from a generic state for a decreasing sequence of h, against the
+//    oracle: a method of order p has a local error C h^(p+1), so the log-log slope of the error
+//    against h must be at least p + 1 - 0.1 (a claimed order p), or 2 - 0.1 (no claim: a step whose
+//    local error is not O(h^2) does not converge). The global checks (integrator_claims.cpp) use
+//    h >= 1/128 and dyadic steps 1/N, and miss a step taken with a slightly wrong h: h (1 + 2^-20),
+//    or h stored in a float (rounded to 24 bits), adds an error delta h |f| that is first order
+//    but hidden under C h^p there, and a dyadic h is exact in a float anyway. Here h = c 2^-k t_s,
+//    c = j / (3 2^6) in [1/2, 1) is not a dyadic rational (a float cannot hold it), t_s is the time
+//    scale of the motion, and k = 4..10 in double (the local error of a second-order method stays
+//    ~1e-9 |x|, far above round-off, and above an implicit solve stopped at a tolerance of 1e-12)
+//    and 8..28 in 50 digits, where delta h |f| outweighs C h^3 by 10^10 for delta = 2^-24.
 //
 // Spec entries: the flows of (2.20) and Manakov's (M, O) (s3.euler-flow, s2.manakov-flow).
 #include "properties/registry.hpp"
@@ -27,7 +38,9 @@
 #include "properties/support/regimes.hpp"
 #include "properties/support/tolerance.hpp"
 
+#include <algorithm>
 #include <cstdio>
+#include <vector>
 
 namespace gm {
 namespace properties_integrator_regimes {
@@ -186,7 +199,132 @@ void manakov_integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& i
               named("A", A) + named("M", x0.M) + named("O", x0.O) + "    h = 2^-40\n");
 }
 
+// The local order (3. at the top of this file).
+
+// The exponents k of h = c 2^-k t_s, largest step first.
+template <class T>
+std::vector<int> local_order_exponents() {
+  if constexpr (std::is_same_v<T, double>)
+    return {4, 5, 6, 7, 8, 9, 10};
+  else
+    return {8, 12, 16, 20, 24, 28};
+}
+
+// c = j / (3 2^6), j in [96, 192) not a multiple of 3: in [1/2, 1), exact in no binary format.
+template <class T>
+T draw_step_factor() {
+  int j = dyn::pick<T>(gen::uniform(96, 192));
+  if (j % 3 == 0) ++j;
+  return T(j) / T(3 * 64);
+}
+
+// One step's error is a few eps per operation of the step (an implicit solve converged to a few
+// eps included), relative to the state: points at or below 2^10 eps are round-off, not truncation.
+template <class T>
+double local_error_floor() {
+  return 1024.0 * eps_double<T>();
+}
+
+// Judges the slope of errs (one step, relative to the state's size) against hs (decreasing).
+inline void judge_local_order(const std::string& integrator, const IntegratorClaims& c, const std::string& problem,
+                              const char* scalar, const std::vector<double>& hs, const std::vector<double>& errs,
+                              double floor, const std::string& inputs) {
+  const auto fit = conv::loglog_slope(hs, errs, std::vector<double>(hs.size(), floor));
+  if (fit.used < 3) {
+    // At round-off already at the larger steps (exact for this state), or not decreasing at all.
+    require(integrator + ": the error of one step" + problem + " goes to 0 as h -> 0", errs.back() <= floor,
+            fmt("error %.3g at the smallest step, far above round-off, and not decreasing\n", errs.back()) +
+                fit.table + "  inputs, by the notes' names:\n" + inputs);
+    return;
+  }
+  const double needed = c.order > 0 ? c.order + 1 - 0.1 : 1.9;
+  const bool holds = fit.slope >= needed;
+  if (c.order > 0)
+    judge_claim("order", true, holds,
+                integrator + fmt(": the error of one step is ~ h^%.3f", fit.slope) + problem +
+                    fmt(", where order %g needs h^%g", c.order, c.order + 1) + " (" + scalar + ")");
+  require(integrator + ": the error of one step" + problem + " shrinks like h^" + fmt("%.1f", needed) + " or faster" +
+              (c.order > 0 ? fmt(" (claimed order %g)", c.order) : std::string(" (any convergent method)")),
+          holds,
+          fmt("measured slope %.4f\n", fit.slope) + fit.table + "  inputs, by the notes' names:\n" + inputs +
+              "  an error proportional to h at small steps is a step taken with a slightly wrong h (h stored in a "
+              "float, a time step rescaled by a constant near 1, h rounded before use); an error that stops "
+              "shrinking is an iteration stopped at a fixed tolerance\n");
+}
+
+template <class T>
+void integrator_local_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  const Vec3<T> I = dyn::draw_generic_inertia<T>();
+  const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+  const T factor = draw_step_factor<T>();
+  const T t_s = T(1) / dyn::at_least_one(T(norm_inf(x0.Pi) / I.minCoeff()));
+  std::vector<T> steps;
+  for (int k : local_order_exponents<T>()) steps.push_back(T(factor * gen::pow2<T>(-k) * t_s));
+  // The oracle's times must increase; the steps decrease.
+  std::vector<T> times(steps.rbegin(), steps.rend());
+  std::vector<RigidBodyState<T>> exact = dyn::oracle_rigid_body(I, x0, times);
+  std::reverse(exact.begin(), exact.end());
+  const T size = norm_inf(x0.Pi);
+  std::vector<double> hs, errs;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    hs.push_back(to_double(T(steps[i] / t_s)));
+    errs.push_back(to_double(relative_distance(in.rigid_body_step(I, x0, steps[i]), exact[i], size)));
+  }
+  judge_local_order(in.name, c, "", ScalarInfo<T>::name, hs, errs, local_error_floor<T>(),
+                    named("I", I) + named("Pi", x0.Pi) + named("O", x0.O) + "    h = c 2^-k t, c = " +
+                        to_string_full(factor) + ", t = " + to_string_full(t_s) + "\n");
+}
+
+// Manakov's (M, O), n = 3..4, A = diag(a), |M_ij| <= 1 (the time scale 1).
+template <class T>
+void manakov_integrator_local_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  const int n = dyn::pick<T>(gen::uniform(3, 5));
+  const auto a = dyn::draw_generic_manakov_a<T>(n);
+  const MatX<T> A = dyn::diag_of(a);
+  const ManakovState<T> x0{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
+  const T factor = draw_step_factor<T>();
+  std::vector<T> steps;
+  for (int k : local_order_exponents<T>()) steps.push_back(T(factor * gen::pow2<T>(-k)));
+  std::vector<T> times(steps.rbegin(), steps.rend());
+  std::vector<ManakovState<T>> exact = dyn::oracle_manakov(a, x0, times);
+  std::reverse(exact.begin(), exact.end());
+  const T size = dyn::at_least_one(norm_inf(x0.M));
+  std::vector<double> hs, errs;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const ManakovState<T> step = in.manakov_step(A, x0, steps[i]);
+    hs.push_back(to_double(steps[i]));
+    errs.push_back(to_double(
+        std::max(T(max_abs((step.M - exact[i].M).eval()) / size), T(max_abs((step.O - exact[i].O).eval())))));
+  }
+  judge_local_order(in.name, c, " on Manakov, n = " + std::to_string(n), ScalarInfo<T>::name, hs, errs,
+                    local_error_floor<T>() * n,
+                    named("A", A) + named("M", x0.M) + named("O", x0.O) + "    h = c 2^-k, c = " + to_string_full(factor) +
+                        "\n");
+}
+
 }  // namespace
+
+GM_PROPERTY(integrator_local_order, integrator_scalars,
+            {.id = "integrator_local_order",
+             .spec = "s3.euler-flow",
+             .title = "the error of one step from a generic state shrinks like h^(p+1) down to h ~ 2^-10 (double) and "
+                      "2^-28 (50 digits), for steps that are not dyadic (a step taken with a slightly wrong h fails)",
+             .tolerance = ToleranceClass::Truncation,
+             .needs = {},
+             .negative_controls = {"midpoint_step_size_in_float"},
+             .cases = {.d = 10, .mp = 3, .q = 0},
+             .step = StepKind::RigidBody});
+
+GM_PROPERTY(manakov_integrator_local_order, integrator_scalars,
+            {.id = "manakov_integrator_local_order",
+             .spec = "s2.manakov-flow",
+             .title = "the error of one Manakov step shrinks like h^(p+1) down to h ~ 2^-10 (double) and 2^-28 "
+                      "(50 digits), for steps that are not dyadic",
+             .tolerance = ToleranceClass::Truncation,
+             .needs = {},
+             .negative_controls = {"midpoint_step_size_in_float"},
+             .cases = {.d = 5, .mp = 2, .q = 0},
+             .step = StepKind::Manakov});
 
 GM_PROPERTY(integrator_converges_in_every_regime, integrator_scalars,
             {.id = "integrator_converges_in_every_regime",

@@ -92,5 +92,24 @@ GM_MUTANT(rk4_double_inside, "classical RK4 computing its stages in double preci
 });
 GM_MUTANT_WRONG_ONLY_IN(rk4_double_inside, ScalarKind::MP50);
 
+// The time step kept in a float (a `float dt` field, a single-precision setting): h is rounded to
+// 24 bits before the step, a relative change of up to 2^-24 that the dyadic steps 1/4 and 1/N of
+// the other checks never show (they are exact in a float). The local error gains a term
+// (float(h) - h) f, first order in h. Wrong in double and in 50 digits alike.
+GM_MUTANT(midpoint_step_size_in_float, "implicit midpoint that keeps the time step h in a float", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  if constexpr (!is_exact_v<T>) {
+    for (auto& in : s.integrators)
+      if (in.name == "implicit_midpoint") {
+        in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
+          return ref::implicit_midpoint_step<T>(I, x, T(static_cast<float>(to_double(h))));
+        };
+        in.manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) -> ManakovState<T> {
+          return ref::manakov_implicit_midpoint_step<T>(A, x, T(static_cast<float>(to_double(h))));
+        };
+      }
+  }
+});
+
 }  // namespace mutants_integrator_regimes
 }  // namespace gm
