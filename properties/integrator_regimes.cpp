@@ -23,9 +23,10 @@
 //    or h stored in a float (rounded to 24 bits), adds an error delta h |f| that is first order
 //    but hidden under C h^p there, and a dyadic h is exact in a float anyway. Here h = c 2^-k t_s,
 //    c = j / (3 2^6) in [1/2, 1) is not a dyadic rational (a float cannot hold it), t_s is the time
-//    scale of the motion, and k = 4..10 in double (the local error of a second-order method stays
-//    ~1e-9 |x|, far above round-off, and above an implicit solve stopped at a tolerance of 1e-12)
-//    and 8..28 in 50 digits, where delta h |f| outweighs C h^3 by 10^10 for delta = 2^-24.
+//    scale of the motion, and k = 6..10 in double for a second-order method (its local error stays
+//    ~1e-10 |x|, far above round-off and above an implicit solve stopped at a tolerance of 1e-12;
+//    4..8 for fourth order, see local_order_exponents) and 8..28 in 50 digits, where delta h |f|
+//    outweighs C h^3 by 10^10 for delta = 2^-24.
 //
 // Spec entries: the flows of (2.20) and Manakov's (M, O) (s3.euler-flow, s2.manakov-flow).
 #include "properties/registry.hpp"
@@ -201,13 +202,23 @@ void manakov_integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& i
 
 // The local order (3. at the top of this file).
 
-// The exponents k of h = c 2^-k t_s, largest step first.
+// The exponents k of h = c 2^-k t_s, largest step first. In 50 digits 8, 12, ..., 28 for every
+// order (a fourth-order local error at 2^-28 is ~2^-140 ~ 1e-42, far above round-off). In double
+// the smallest step is where an error ~h^(p+1) is still ~2^-40 (~1e-12) of the state, at most
+// 2^-10, and five steps up from there, never larger than 2^-3: second order (and no claim)
+// 2^-6 ... 2^-10, fourth order 2^-4 ... 2^-8. A method of order 6 or more leaves fewer than three
+// points above round-off in double; its slope is then measured in 50 digits only (noted).
 template <class T>
-std::vector<int> local_order_exponents() {
-  if constexpr (std::is_same_v<T, double>)
-    return {4, 5, 6, 7, 8, 9, 10};
-  else
+std::vector<int> local_order_exponents(double claimed_order) {
+  if constexpr (!std::is_same_v<T, double>) {
     return {8, 12, 16, 20, 24, 28};
+  } else {
+    const int p = std::max(1, static_cast<int>(claimed_order));
+    const int last = std::min(10, 40 / (p + 1));
+    std::vector<int> ks;
+    for (int k = std::max(3, last - 4); k <= last; ++k) ks.push_back(k);
+    return ks;
+  }
 }
 
 // c = j / (3 2^6), j in [96, 192) not a multiple of 3: in [1/2, 1), exact in no binary format.
@@ -231,10 +242,14 @@ inline void judge_local_order(const std::string& integrator, const IntegratorCla
                               double floor, const std::string& inputs) {
   const auto fit = conv::loglog_slope(hs, errs, std::vector<double>(hs.size(), floor));
   if (fit.used < 3) {
-    // At round-off already at the larger steps (exact for this state), or not decreasing at all.
+    // At round-off already at the larger steps (exact for this state, or of a high order), or not
+    // decreasing at all.
     require(integrator + ": the error of one step" + problem + " goes to 0 as h -> 0", errs.back() <= floor,
             fmt("error %.3g at the smallest step, far above round-off, and not decreasing\n", errs.back()) +
                 fit.table + "  inputs, by the notes' names:\n" + inputs);
+    record_note(integrator + ": the error of one step" + problem + " is at round-off from h = " +
+                fmt("%.3g", hs[std::max(0, fit.used)]) + " on: fewer than three step sizes to measure its slope in " +
+                scalar);
     return;
   }
   const double needed = c.order > 0 ? c.order + 1 - 0.1 : 1.9;
@@ -259,7 +274,7 @@ void integrator_local_order(const Subject<T>&, const Integrator<T>& in, const In
   const T factor = draw_step_factor<T>();
   const T t_s = T(1) / dyn::at_least_one(T(norm_inf(x0.Pi) / I.minCoeff()));
   std::vector<T> steps;
-  for (int k : local_order_exponents<T>()) steps.push_back(T(factor * gen::pow2<T>(-k) * t_s));
+  for (int k : local_order_exponents<T>(c.order)) steps.push_back(T(factor * gen::pow2<T>(-k) * t_s));
   // The oracle's times must increase; the steps decrease.
   std::vector<T> times(steps.rbegin(), steps.rend());
   std::vector<RigidBodyState<T>> exact = dyn::oracle_rigid_body(I, x0, times);
@@ -284,7 +299,7 @@ void manakov_integrator_local_order(const Subject<T>&, const Integrator<T>& in, 
   const ManakovState<T> x0{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
   const T factor = draw_step_factor<T>();
   std::vector<T> steps;
-  for (int k : local_order_exponents<T>()) steps.push_back(T(factor * gen::pow2<T>(-k)));
+  for (int k : local_order_exponents<T>(c.order)) steps.push_back(T(factor * gen::pow2<T>(-k)));
   std::vector<T> times(steps.rbegin(), steps.rend());
   std::vector<ManakovState<T>> exact = dyn::oracle_manakov(a, x0, times);
   std::reverse(exact.begin(), exact.end());
