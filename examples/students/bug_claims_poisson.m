@@ -23,7 +23,7 @@ function x = midpoint_step(I, x0, h)
     again = P + h * euler_3_8(I, (P + nxt) / 2);
     change = max(abs(again - nxt));
     nxt = again;
-    if change <= 4 * eps * (1 + max(abs(P)))
+    if change <= 8 * eps * max(abs(P))
       break;
     end
   end

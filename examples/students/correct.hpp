@@ -267,7 +267,9 @@ struct Midpoint {
       const Vec3<T> again = x.Pi + h * RigidBody::euler_3_8<T>(I, mid);
       const T change = (again - next).cwiseAbs().maxCoeff();
       next = again;
-      if (change <= T(4) * std::numeric_limits<T>::epsilon() * (T(1) + x.Pi.cwiseAbs().maxCoeff())) break;
+      // Relative to |Pi|: the same step in any units (an absolute part such as eps (1 + |Pi|) stops a
+      // slowly turning body's iteration at once, and the step falls to first order).
+      if (change <= T(8) * std::numeric_limits<T>::epsilon() * x.Pi.cwiseAbs().maxCoeff()) break;
     }
     const Vec3<T> W_mid = ((x.Pi + next) / T(2)).cwiseQuotient(I);
     return {next, x.O * cayley<T>(h * RigidBody::hat<T>(W_mid))};

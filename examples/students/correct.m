@@ -241,7 +241,7 @@ function x = midpoint_step(I, x0, h)
     J = eye(3) - (h / 2) * (hat(m) * diag(1 ./ I) - hat(m ./ I));
     delta = J \ F;
     nxt = nxt - delta;
-    if max(abs(delta)) <= 4 * eps * (1 + max(abs(P)))
+    if max(abs(delta)) <= 8 * eps * max(abs(P))  % relative: the same step in any units
       break;
     end
   end

@@ -404,14 +404,14 @@ class Midpoint:
     def rigid_body_step(I, x, h):
         Pi, O = x["Pi"], x["O"]
         eps = 2.0 ** -52 if isinstance(h, float) else mpmath.mpf(2) ** -(mpmath.mp.prec - 1)
-        scale = 1 + max(abs(p) for p in Pi)
+        scale = max(abs(p) for p in Pi)  # relative: the same step in any units
         nxt = list(Pi)
         for _ in range(200):
             mid = [(a + b) / 2 for a, b in zip(Pi, nxt)]
             again = [p + h * d for p, d in zip(Pi, euler_3_8(I, mid))]
             change = max(abs(a - b) for a, b in zip(again, nxt))
             nxt = again
-            if change <= 4 * eps * scale:
+            if change <= 8 * eps * scale:
                 break
         W = omega_3_5(I, [(a + b) / 2 for a, b in zip(Pi, nxt)])
         return {"Pi": nxt, "O": matmul(O, _cayley(mscale(hat(W), h)))}
