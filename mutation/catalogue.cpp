@@ -173,7 +173,7 @@ std::shared_ptr<const Subject<T>> alone_subject(const std::shared_ptr<const Subj
 }
 
 // ---- integrator steps ----------------------------------------------------------------------
-enum class StepOp { PrecisionLowered, HPerturbed, AxisFastPath, DropAttitude };
+enum class StepOp { PrecisionLowered, HPerturbed, AxisFastPath, DropAttitude, AtRestGuard };
 
 template <class T>
 Mat3<T> axis_rotation(int k, const T& angle) {  // exp(angle * hat(e_k))
@@ -223,6 +223,12 @@ void apply_step(Integrator<T>& in, bool rigid, StepOp op) {
             return y;
           };
           break;
+        case StepOp::AtRestGuard:
+          in.rigid_body_step = [orig](const Vec3<T>& I, const St& x, const T& h) {
+            if (x.Pi.cwiseAbs().maxCoeff() < T(1) / T(1 << 30)) return x;
+            return orig(I, x, h);
+          };
+          break;
       }
     } else {
       const auto orig = in.manakov_step;
@@ -241,6 +247,7 @@ void apply_step(Integrator<T>& in, bool rigid, StepOp op) {
           };
           break;
         case StepOp::AxisFastPath:
+        case StepOp::AtRestGuard:
           break;
         case StepOp::DropAttitude:
           in.manakov_step = [orig](const MatX<T>& A, const St& x, const T& h) {
@@ -328,6 +335,8 @@ std::vector<MutantDef> all_mutants(const SubjectSet& base) {
       {StepOp::AxisFastPath, "axis_fast_path",
        "a wrong 'principal axis fast path': Pi on a coordinate axis returns (Pi, O R(-h Omega))"},
       {StepOp::DropAttitude, "drop_attitude", "the attitude update dropped: O returned unchanged"},
+      {StepOp::AtRestGuard, "at_rest_guard",
+       "a 'body at rest' guard: the state returned unchanged when |Pi|_inf < 2^-30"},
   };
   for (std::size_t k = 0; k < d.integrators.size(); ++k) {
     const Integrator<double>& in = d.integrators[k];
@@ -335,7 +344,7 @@ std::vector<MutantDef> all_mutants(const SubjectSet& base) {
       if (rigid ? !in.rigid_body_step : !in.manakov_step) continue;
       const std::string step = rigid ? "rigid_body_step" : "manakov_step";
       for (const auto& so : step_ops) {
-        if (!rigid && so.op == StepOp::AxisFastPath) continue;
+        if (!rigid && (so.op == StepOp::AxisFastPath || so.op == StepOp::AtRestGuard)) continue;
         MutantDef m;
         m.name = in.name + ":" + step + ":" + so.name;
         m.slot = step;
