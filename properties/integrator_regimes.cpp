@@ -12,8 +12,8 @@
 //    units, and a step written without a hard-coded scale (every correct one: multiplying by 2^k
 //    is exact in binary floating point) gives the same relative errors; a step with a cut-off
 //    ("a body with |Pi| < 1e-10 is at rest", a solver stopped at an absolute tolerance such as
-//    eps (1 + |Pi|)) does not, once the scale crosses it. The error at a fixed time against the Taylor
-//    oracle (oracle/, independent of every subject) must converge: at least at the claimed order
+//    eps (1 + |Pi|)) does not, once the scale crosses it. The error at a fixed time against the
+//    Taylor oracle (oracle/, independent of every subject) must converge: at least at the claimed order
 //    where one is claimed (order at least p: a regime may be easier, never harder), and at least
 //    at order 1 - 0.1 otherwise (an integrator of (2.20) that does not converge is wrong whatever
 //    it claims).
