@@ -173,7 +173,7 @@ std::shared_ptr<const Subject<T>> alone_subject(const std::shared_ptr<const Subj
 }
 
 // ---- integrator steps ----------------------------------------------------------------------
-enum class StepOp { PrecisionLowered, HPerturbed, AxisFastPath, DropAttitude, AtRestGuard };
+enum class StepOp { PrecisionLowered, HPerturbed, AxisFastPath, DropAttitude, AtRestGuard, DiagonalAOnly };
 
 template <class T>
 Mat3<T> axis_rotation(int k, const T& angle) {  // exp(angle * hat(e_k))
@@ -229,6 +229,8 @@ void apply_step(Integrator<T>& in, bool rigid, StepOp op) {
             return orig(I, x, h);
           };
           break;
+        case StepOp::DiagonalAOnly:
+          break;
       }
     } else {
       const auto orig = in.manakov_step;
@@ -247,7 +249,17 @@ void apply_step(Integrator<T>& in, bool rigid, StepOp op) {
           };
           break;
         case StepOp::AxisFastPath:
+          break;
         case StepOp::AtRestGuard:
+          in.manakov_step = [orig](const MatX<T>& A, const St& x, const T& h) {
+            if (x.M.cwiseAbs().maxCoeff() < T(1) / T(1 << 30)) return x;
+            return orig(A, x, h);
+          };
+          break;
+        case StepOp::DiagonalAOnly:
+          in.manakov_step = [orig](const MatX<T>& A, const St& x, const T& h) {
+            return orig(MatX<T>(A.diagonal().asDiagonal()), x, h);
+          };
           break;
         case StepOp::DropAttitude:
           in.manakov_step = [orig](const MatX<T>& A, const St& x, const T& h) {
@@ -336,7 +348,8 @@ std::vector<MutantDef> all_mutants(const SubjectSet& base) {
        "a wrong 'principal axis fast path': Pi on a coordinate axis returns (Pi, O R(-h Omega))"},
       {StepOp::DropAttitude, "drop_attitude", "the attitude update dropped: O returned unchanged"},
       {StepOp::AtRestGuard, "at_rest_guard",
-       "a 'body at rest' guard: the state returned unchanged when |Pi|_inf < 2^-30"},
+       "a 'body at rest' guard: the state returned unchanged when |Pi|_inf (or |M|_inf) < 2^-30"},
+      {StepOp::DiagonalAOnly, "diagonal_A_only", "the step given only the diagonal of A (right for a diagonal A only)"},
   };
   for (std::size_t k = 0; k < d.integrators.size(); ++k) {
     const Integrator<double>& in = d.integrators[k];
@@ -344,7 +357,8 @@ std::vector<MutantDef> all_mutants(const SubjectSet& base) {
       if (rigid ? !in.rigid_body_step : !in.manakov_step) continue;
       const std::string step = rigid ? "rigid_body_step" : "manakov_step";
       for (const auto& so : step_ops) {
-        if (!rigid && (so.op == StepOp::AxisFastPath || so.op == StepOp::AtRestGuard)) continue;
+        if (!rigid && so.op == StepOp::AxisFastPath) continue;
+        if (rigid && so.op == StepOp::DiagonalAOnly) continue;
         MutantDef m;
         m.name = in.name + ":" + step + ":" + so.name;
         m.slot = step;

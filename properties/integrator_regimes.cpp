@@ -136,11 +136,49 @@ RigidBodyState<T> run_steps(const Integrator<T>& in, const Vec3<T>& I, RigidBody
   return x;
 }
 
+template <class T>
+ManakovState<T> run_steps(const Integrator<T>& in, const MatX<T>& A, ManakovState<T> x, const T& h, int steps) {
+  for (int n = 0; n < steps; ++n) x = in.manakov_step(A, x, h);
+  return x;
+}
+
 // Distance of states relative to the momentum's size (Pi part) and absolute for O (entries <= 1).
 template <class T>
 T relative_distance(const RigidBodyState<T>& a, const RigidBodyState<T>& b, const T& pi_size) {
   return std::max(T(max_abs((a.Pi - b.Pi).eval()) / pi_size), T(max_abs((a.O - b.O).eval())));
 }
+
+// The verdict of a convergence run (1. at the top of this file): the log-log slope of the error at
+// t against h must be at least the claimed order p - 0.1, or 1 - 0.1 without a claim; a run with
+// fewer than three points above round-off must have converged. `hints` says what usually causes
+// a failure in this case.
+void judge_convergence(const std::string& integrator, const IntegratorClaims& c, const std::string& scalar,
+                       const std::string& regime, const std::vector<double>& hs, const std::vector<double>& errs,
+                       const std::vector<double>& floors, const std::string& inputs, const std::string& hints) {
+  const auto fit = conv::loglog_slope(hs, errs, floors);
+  if (fit.used < 3) {
+    // Exact in this regime (errors at round-off for every step), or not converging at all: an
+    // error that is large at every step is the latter.
+    require(integrator + ": the error at t converges to 0 as h -> 0 (" + regime + ")", errs.back() <= floors.back(),
+            fmt("error %.3g at the smallest step, far above round-off, and not decreasing\n", errs.back()) + fit.table +
+                "  inputs, by the notes' names:\n" + inputs + hints);
+    return;
+  }
+  const double needed = c.order > 0 ? c.order - 0.1 : 0.9;
+  const bool holds = fit.slope >= needed;
+  if (c.order > 0)
+    judge_claim("order", true, holds,
+                integrator + fmt(": measured order %.3f in the regime '", fit.slope) + regime +
+                    fmt("', claimed %g", c.order) + " (" + scalar + ")");
+  require(integrator + ": in the regime '" + regime + "' the error at t converges at order >= " + fmt("%.1f", needed) +
+              (c.order > 0 ? fmt(" (claimed order %g)", c.order) : std::string(" (any convergent method)")),
+          holds, fmt("measured slope %.4f\n", fit.slope) + fit.table + "  inputs, by the notes' names:\n" + inputs + hints);
+}
+
+const char* kScaleHint =
+    "  the state is scaled: the same motion in other units. A cut-off on the size of the momentum or the angular "
+    "velocity (a body 'at rest' below some size), or an iteration stopped at an absolute tolerance such as "
+    "eps (1 + |Pi|), is the usual cause; make tolerances relative to the momentum's size\n";
 
 template <class T>
 void integrator_converges_in_every_regime(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
@@ -155,36 +193,77 @@ void integrator_converges_in_every_regime(const Subject<T>&, const Integrator<T>
     errs.push_back(to_double(err));
     floors.push_back(64.0 * eps_double<T>() * N);
   }
-  const auto fit = conv::loglog_slope(hs, errs, floors);
-  const std::string regime = regime_name(r);
-  const std::string inputs = "    regime: " + regime + "\n" + named("I", r.I) + named("Pi", r.x0.Pi) + named("O", r.x0.O) +
-                             "    t = " + to_string_full(r.t_end) + ", h = t/8 ... t/128\n";
-  if (fit.used < 3) {
-    // Exact in this regime (errors at round-off for every step), or not converging at all: an
-    // error that is large at every step is the latter.
-    require(in.name + ": the error at t converges to 0 as h -> 0 (" + regime + ")", errs.back() <= floors.back(),
-            fmt("error %.3g at the smallest step, far above round-off, and not decreasing\n", errs.back()) + fit.table +
-                "  inputs, by the notes' names:\n" + inputs);
-    return;
+  judge_convergence(in.name, c, ScalarInfo<T>::name, regime_name(r), hs, errs, floors,
+                    "    regime: " + regime_name(r) + "\n" + named("I", r.I) + named("Pi", r.x0.Pi) + named("O", r.x0.O) +
+                        "    t = " + to_string_full(r.t_end) + ", h = t/8 ... t/128\n",
+                    std::string(r.lambda != T(1) ? kScaleHint : "") +
+                        (r.regime != 0 ? "  a step that treats this regime separately (a 'fast path' for steady rotation "
+                                         "about a principal axis, a branch for I1 = I2) is the usual cause\n"
+                                       : ""));
+}
+
+// Manakov's (M, O) in other frames and units (1. at the top of this file, for (2.34)). The drawn
+// case has A = diag(a), n = 3..4 (the oracle's body). In three cases of four it is seen in the
+// frame of a rotation R of R^n (exact in rationals, generators.hpp): A' = R A R^T is not diagonal,
+// and M' = R M R^T, O' = R O R^T solve (2.34) and dO/dt = O Omega for A', since Omega' = R Omega R^T
+// solves A' Omega' + Omega' A' = M'. In three cases of four M is also scaled by lambda = 2^k,
+// k = -64..64, and the time by 1/lambda ((2.34) is homogeneous of degree 2 in M, Omega linear in
+// M). A step that uses only A's diagonal (Omega_ij = M_ij / (a_i + a_j), right for a diagonal A
+// only) or has a cut-off on |M| fails here; every other Manakov check draws diagonal A and
+// |M_ij| >= 1/8.
+template <class T>
+struct ManakovFrame {
+  std::vector<T> a;
+  ManakovState<T> x0;  // in the drawn frame, A = diag(a)
+  MatX<T> R;           // the frame (the identity: not rotated)
+  T lambda = T(1);     // the scale of M (1: not scaled)
+
+  // A state of the drawn problem seen in the frame, in the scaled units.
+  ManakovState<T> seen(const ManakovState<T>& x) const {
+    const MatX<T> M = (R * x.M * R.transpose()).eval();
+    return {((M - M.transpose()) * (lambda / T(2))).eval(), (R * x.O * R.transpose()).eval()};
   }
-  const double needed = c.order > 0 ? c.order - 0.1 : 0.9;
-  const bool holds = fit.slope >= needed;
-  if (c.order > 0)
-    judge_claim("order", true, holds,
-                in.name + fmt(": measured order %.3f in the regime '", fit.slope) + regime +
-                    fmt("', claimed %g", c.order) + " (" + ScalarInfo<T>::name + ")");
-  require(in.name + ": in the regime '" + regime + "' the error at t converges at order >= " + fmt("%.1f", needed) +
-              (c.order > 0 ? fmt(" (claimed order %g)", c.order) : std::string(" (any convergent method)")),
-          holds,
-          fmt("measured slope %.4f\n", fit.slope) + fit.table + "  inputs, by the notes' names:\n" + inputs +
-              (r.lambda != T(1)
-                   ? std::string("  the state is scaled: the same motion in other units. A cut-off on the size of Pi or "
-                                 "Omega (a body 'at rest' below some |Pi|), or an iteration stopped at an absolute "
-                                 "tolerance such as eps (1 + |Pi|), is the usual cause; make tolerances relative to |Pi|\n")
-                   : std::string()) +
-              (r.regime != 0 ? std::string("  a step that treats this regime separately (a 'fast path' for steady rotation "
-                                           "about a principal axis, a branch for I1 = I2) is the usual cause")
-                             : std::string()));
+  MatX<T> A() const {
+    const MatX<T> B = (R * dyn::diag_of(a) * R.transpose()).eval();
+    return ((B + B.transpose()) / T(2)).eval();
+  }
+  std::string name() const {
+    return std::string(R.isIdentity(T(0)) ? "A diagonal" : "A = R diag(a) R^T not diagonal") +
+           (lambda == T(1) ? "" : ", M scaled by " + to_string_full(lambda) + " and time by its inverse");
+  }
+};
+
+template <class T>
+void manakov_integrator_converges_in_every_frame(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  ManakovFrame<T> f;
+  const int n = dyn::pick<T>(gen::uniform(3, 5));
+  f.a = dyn::draw_generic_manakov_a<T>(n);
+  f.x0 = ManakovState<T>{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
+  f.R = dyn::pick<T>(gen::uniform(0, 4)) != 0 ? dyn::pick<T>(gen::rotation<T>(n)) : MatX<T>::Identity(n, n);
+  if (dyn::pick<T>(gen::uniform(0, 4)) != 0) f.lambda = gen::pow2<T>(gen::zigzag(dyn::pick<T>(gen::uniform(0, 129))));
+  const MatX<T> A = f.A();
+  const ManakovState<T> x0 = f.seen(f.x0);
+  const ManakovState<T> exact = f.seen(dyn::oracle_manakov(f.a, f.x0, {T(1)}).front());
+  const T t_end = T(1) / f.lambda;
+  const T size = norm_inf(x0.M);
+  std::vector<double> hs, errs, floors;
+  for (int N : {8, 16, 32, 64}) {
+    const T h = t_end / T(N);
+    const ManakovState<T> x = run_steps(in, A, x0, h, N);
+    hs.push_back(1.0 / N);
+    errs.push_back(to_double(std::max(T(max_abs((x.M - exact.M).eval()) / size), T(max_abs((x.O - exact.O).eval())))));
+    floors.push_back(16.0 * eps_double<T>() * N * n);
+  }
+  judge_convergence(in.name, c, ScalarInfo<T>::name, "Manakov, n = " + std::to_string(n) + ", " + f.name(), hs, errs,
+                    floors,
+                    named("A", A) + named("M", x0.M) + named("O", x0.O) + "    t = " + to_string_full(t_end) +
+                        ", h = t/8 ... t/64\n",
+                    std::string(f.lambda != T(1) ? kScaleHint : "") +
+                        (f.R.isIdentity(T(0)) ? ""
+                                              : "  A is not diagonal here (a diagonal body seen in a rotated frame): a "
+                                                "step that takes Omega_ij = M_ij / (A_ii + A_jj), or reads only A's "
+                                                "diagonal, is the usual cause; Omega must solve A Omega + Omega A = M "
+                                                "(2.34) for the whole A\n"));
 }
 
 // The 50-digit floor (see the top of this file). Generic state, one step of h = 2^-40; the error
@@ -379,6 +458,17 @@ GM_PROPERTY(integrator_converges_in_every_regime, integrator_scalars,
              .negative_controls = {"principal_axis_fast_path", "symmetric_top_branch", "midpoint_at_rest_below_1e_10"},
              .cases = {.d = 60, .mp = 20, .q = 0},
              .step = StepKind::RigidBody});
+
+GM_PROPERTY(manakov_integrator_converges_in_every_frame, integrator_scalars,
+            {.id = "manakov_integrator_converges_in_every_frame",
+             .spec = "s2.manakov-flow",
+             .title = "the Manakov step converges to the flow of (2.34) at its claimed order (at least order 1 if "
+                      "none) for a non-diagonal A (a diagonal body in a rotated frame) and at every scale of M",
+             .tolerance = ToleranceClass::Truncation,
+             .needs = {},
+             .negative_controls = {"manakov_midpoint_diagonal_A_only", "midpoint_at_rest_below_1e_10"},
+             .cases = {.d = 60, .mp = 12, .q = 0},
+             .step = StepKind::Manakov});
 
 GM_PROPERTY(integrator_50_digit_floor, integrator_mp50_scalars,
             {.id = "integrator_50_digit_floor",

@@ -92,21 +92,43 @@ GM_MUTANT(rk4_double_inside, "classical RK4 computing its stages in double preci
 });
 GM_MUTANT_WRONG_ONLY_IN(rk4_double_inside, ScalarKind::MP50);
 
-// A "body at rest" guard: the step returns the state unchanged when |Pi| < 1e-10, as if such a
-// body did not move. It does, in other units: Euler's equations are homogeneous, and O turns at
-// |I^-1 Pi| however small. Seen only where a state is drawn that small with its time scaled to
-// match (integrator_converges_in_every_regime); every other check draws |Pi_i| >= 1/8.
-GM_MUTANT(midpoint_at_rest_below_1e_10, "implicit midpoint that leaves a body with |Pi| < 1e-10 at rest", [](auto& s) {
-  using T = scalar_of<decltype(s)>;
-  if constexpr (!is_exact_v<T>) {
-    for (auto& in : s.integrators)
-      if (in.name == "implicit_midpoint")
-        in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
-          if (x.Pi.cwiseAbs().maxCoeff() < T(1e-10)) return x;
-          return ref::implicit_midpoint_step<T>(I, x, h);
-        };
-  }
-});
+// A "body at rest" guard: the step returns the state unchanged when |Pi| < 1e-10 (or, for an
+// SO(n) body, |M| < 1e-10), as if such a body did not move. It does, in other units: Euler's
+// equations and (2.34) are homogeneous, and O turns at |Omega| however small. Seen only where a
+// state is drawn that small with its time scaled to match (integrator_converges_in_every_regime,
+// manakov_integrator_converges_in_every_frame); every other check draws entries >= 1/8.
+GM_MUTANT(midpoint_at_rest_below_1e_10, "implicit midpoint that leaves a body with |Pi| or |M| < 1e-10 at rest",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            if constexpr (!is_exact_v<T>) {
+              for (auto& in : s.integrators)
+                if (in.name == "implicit_midpoint") {
+                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
+                    if (x.Pi.cwiseAbs().maxCoeff() < T(1e-10)) return x;
+                    return ref::implicit_midpoint_step<T>(I, x, h);
+                  };
+                  in.manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) -> ManakovState<T> {
+                    if (x.M.cwiseAbs().maxCoeff() < T(1e-10)) return x;
+                    return ref::manakov_implicit_midpoint_step<T>(A, x, h);
+                  };
+                }
+            }
+          });
+
+// Omega from M_ij / (A_ii + A_jj) inside the Manakov step: the solution of A Omega + Omega A = M
+// (2.34) for a diagonal A, the body every Manakov integrator check drew before. For a body whose
+// A is not diagonal (the same body in a rotated frame) the step integrates another system.
+GM_MUTANT(manakov_midpoint_diagonal_A_only, "implicit midpoint whose Manakov step reads only the diagonal of A",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            if constexpr (!is_exact_v<T>) {
+              for (auto& in : s.integrators)
+                if (in.name == "implicit_midpoint")
+                  in.manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) -> ManakovState<T> {
+                    return ref::manakov_implicit_midpoint_step<T>(MatX<T>(A.diagonal().asDiagonal()), x, h);
+                  };
+            }
+          });
 
 // The time step kept in a float (a `float dt` field, a single-precision setting): h is rounded to
 // 24 bits before the step, a relative change of up to 2^-24 that the dyadic steps 1/4 and 1/N of
