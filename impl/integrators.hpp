@@ -164,9 +164,10 @@ MatX<T> fixed_point(const MatX<T>& start, const F& F_, const char* who) {
   T last(-1);
   for (int iter = 0; iter < 400; ++iter) {
     MatX<T> next = F_(cur);
+    // Relative to the iterate's size: an absolute floor (max(1, |M|)) stops at once for a slowly
+    // turning body (|M| << 1), leaving one iteration: not symmetric, invariants not kept.
     const T change = max_abs((next - cur).eval());
-    T size = max_abs(next);
-    if (size < T(1)) size = T(1);
+    const T size = max_abs(next);
     cur = std::move(next);
     if (change <= T(2) * eps<T>() * size) return cur;
     if (last >= T(0) && change >= last && change <= T(64) * eps<T>() * size) return cur;

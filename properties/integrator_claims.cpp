@@ -23,6 +23,7 @@
 #include "properties/support/figures.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/order_claim.hpp"
+#include "properties/support/regimes.hpp"
 #include "properties/support/spectrum.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
@@ -126,26 +127,52 @@ void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const Inte
 // per degree of the invariant.
 constexpr int kSteps = 64;
 
+// Where the worst residual of an invariant claim was seen, for its evidence: a state scaled by
+// lambda = 2^k with the step scaled by 1/lambda (support/regimes.hpp, motion_scale).
+template <class T>
+std::string scaled_note(const T& lambda) {
+  return lambda == T(1) ? std::string()
+                        : " (worst at a state scaled by " + to_string_full(lambda) +
+                              " and h by its inverse: the same motion in other units, so a relative tolerance "
+                              "or a cut-off on the state's size is the likely cause)";
+}
+
+// The scale of the k-th of the kStates states of an invariant claim: the first as drawn, the
+// second slowly turning (2^-j, j = 0..64), the third fast (2^j), with h scaled by 1/lambda: the
+// same motion in other units (support/regimes.hpp).
+template <class T>
+T claim_state_scale(int k) {
+  return k == 0 ? T(1) : dyn::pick<T>(gen::motion_scale_side<T>(k == 1 ? -1 : 1));
+}
+
 // The worst drift of `invariant` over 64 steps of h = 1/8 from kStates generic states, each
-// relative to its scale.
+// relative to its scale. The momentum of the second and third is scaled by lambda and h by
+// 1/lambda (claim_state_scale); `scale_of` is taken on the drawn state and carried over as
+// lambda^degree (the invariant's degree in Pi), so the allowance does not change.
 template <class T, class Invariant, class Scale>
 void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const char* name, Invariant invariant, Scale scale_of,
                      int degree) {
-  T worst(0);
+  T worst(0), worst_lambda(1);
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
-    const T v0 = invariant(I, x0), scale = scale_of(I, x0);
+    const RigidBodyState<T> drawn{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+    const T lambda = claim_state_scale<T>(k);
+    const RigidBodyState<T> x0{(drawn.Pi * lambda).eval(), drawn.O};
+    T scale = scale_of(I, drawn);
+    for (int d = 0; d < degree; ++d) scale *= lambda;
+    const T v0 = invariant(I, x0);
     Series ser{std::string("invariants: ") + in.name, std::string(name) + scalar_tag<T>(), "t", "|residual|", false, true,
                {}, 0};
-    run(in, I, x0, T(1) / T(8), kSteps, [&](int n, const RigidBodyState<T>& x) {
+    run(in, I, x0, T(1) / (T(8) * lambda), kSteps, [&](int n, const RigidBodyState<T>& x) {
       const T r = abs_value(T(invariant(I, x) - v0));
-      if (worse(T(r / scale), worst)) worst = r / scale;  // a NaN stays the worst
+      if (worse(T(r / scale), worst)) worst = r / scale, worst_lambda = lambda;  // a NaN stays the worst
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
     if (k == 0) record_series(ser);
   }
-  judge_measured_claim<T>(claim, claimed, in.name, std::string(name) + " is kept to round-off over 64 steps", worst, T(kSteps), 16.0 * degree);
+  judge_measured_claim<T>(claim, claimed, in.name,
+                          std::string(name) + " is kept to round-off over 64 steps" + scaled_note(worst_lambda), worst,
+                          T(kSteps), 16.0 * degree);
 }
 
 template <class T>
@@ -304,22 +331,30 @@ constexpr int kManakovSteps = 32;
 
 template <class T, class F>
 void manakov_invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const std::string& name, int lo, int hi,
-                             F invariant, int degree) {
-  T worst(0);
+                             F invariant, int degree, int homogeneity) {
+  T worst(0), worst_lambda(1);
   for (int k = 0; k < kStates; ++k) {
-    const ManakovCase<T> m = draw_manakov_case<T>(lo, hi);
-    const auto v0 = invariant(m, m.x0);
+    ManakovCase<T> m = draw_manakov_case<T>(lo, hi);
     T scale(1);
     for (int d = 0; d < degree; ++d) scale *= dyn::at_least_one(norm_inf(m.x0.M)) * (d ? T(m.n) : T(1));
+    // M scaled by lambda and h by 1/lambda, as in invariant_claim; the invariant is homogeneous
+    // of degree `homogeneity` in M (-1: it mixes degrees, as the spectrum's eigenvalues and
+    // tr(M^4) do, and the states are not scaled).
+    const T lambda = homogeneity < 0 ? T(1) : claim_state_scale<T>(k);
+    m.x0.M *= lambda;
+    for (int d = 0; d < homogeneity; ++d) scale *= lambda;
+    const auto v0 = invariant(m, m.x0);
     Series ser{"invariants (Manakov): " + in.name, name + scalar_tag<T>(), "t", "|residual|", false, true, {}, 0};
-    run(in, m.A, m.x0, T(1) / T(8), kManakovSteps, [&](int n, const ManakovState<T>& x) {
+    run(in, m.A, m.x0, T(1) / (T(8) * lambda), kManakovSteps, [&](int n, const ManakovState<T>& x) {
       const T r = norm_inf((invariant(m, x) - v0).eval());
-      if (worse(T(r / scale), worst)) worst = r / scale;
+      if (worse(T(r / scale), worst)) worst = r / scale, worst_lambda = lambda;
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
     if (k == 0) record_series(ser);
   }
-  judge_measured_claim<T>(claim, claimed, in.name, name + " is kept to round-off over 32 steps", worst, T(kManakovSteps), 16.0 * degree);
+  judge_measured_claim<T>(claim, claimed, in.name,
+                          name + " is kept to round-off over 32 steps" + scaled_note(worst_lambda), worst,
+                          T(kManakovSteps), 16.0 * degree);
 }
 
 template <class T>
@@ -334,14 +369,14 @@ template <class T>
 void manakov_integrator_casimir(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   manakov_invariant_claim<T>(
       in, "casimir", c.casimir, "the Casimir tr(M^2)", 3, 5,
-      [](const ManakovCase<T>&, const ManakovState<T>& x) { return one(T((x.M * x.M).trace())); }, 2);
+      [](const ManakovCase<T>&, const ManakovState<T>& x) { return one(T((x.M * x.M).trace())); }, 2, 2);
 }
 
 template <class T>
 void manakov_integrator_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   manakov_invariant_claim<T>(
       in, "energy", c.energy, "the energy -tr(Omega M)/4", 3, 5,
-      [](const ManakovCase<T>& m, const ManakovState<T>& x) { return one(dyn::manakov_energy(m.a, x.M)); }, 2);
+      [](const ManakovCase<T>& m, const ManakovState<T>& x) { return one(dyn::manakov_energy(m.a, x.M)); }, 2, 2);
 }
 
 template <class T>
@@ -352,12 +387,13 @@ void manakov_integrator_orthogonality(const Subject<T>&, const Integrator<T>& in
         const MatX<T> E = x.O.transpose() * x.O - MatX<T>::Identity(m.n, m.n);
         return VecX<T>(E.reshaped());
       },
-      2);
+      2, 0);
 }
 
 // The spectrum for n = 5, where the quadratic invariants (tr M^2, and for n = 4 a Pfaffian-like
 // quadratic) no longer fix it: the eigenvalues lambda_j^2 of -M^2 and tr(M^4), on the scale
-// |M|^4 (the larger of the two scales), tr(M^4) being of degree 4.
+// |M|^4 (the larger of the two scales), tr(M^4) being of degree 4. Not scaled (homogeneity -1):
+// the two parts have different degrees in M.
 template <class T>
 void manakov_integrator_spectrum(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   manakov_invariant_claim<T>(
@@ -368,7 +404,7 @@ void manakov_integrator_spectrum(const Subject<T>&, const Integrator<T>& in, con
         v << ev, spectral::power_traces<T>(x.M, 4)[3];
         return v;
       },
-      4);
+      4, -1);
 }
 
 // Poisson map for the Lie-Poisson bracket of so(n)*, {F, H}(M) = -<M, [dF/dM, dH/dM]> (2.23) in
@@ -428,6 +464,9 @@ void manakov_integrator_poisson(const Subject<T>&, const Integrator<T>& in, cons
 
 #define GM_RB .cases = {.d = 10, .mp = 2, .q = 0}, .step = StepKind::RigidBody
 #define GM_MK .cases = {.d = 5, .mp = 1, .q = 0}, .step = StepKind::Manakov
+// The quadratic invariants in 50 digits: three cases, so that some state turns slowly enough
+// (2^-20 or less) for an absolute tolerance at 1e-50 to show (about 0.7 per case).
+#define GM_MK_SCALED .cases = {.d = 5, .mp = 3, .q = 0}, .step = StepKind::Manakov
 
 GM_PROPERTY(integrator_order, integrator_scalars,
             {.id = "integrator_order",
@@ -453,7 +492,7 @@ GM_PROPERTY(integrator_casimir, integrator_scalars,
              .title = "rigid-body integrator claiming the Casimir: |Pi|^2 kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
-             .negative_controls = {"rk4_claims_everything", "midpoint_one_iteration"},
+             .negative_controls = {"rk4_claims_everything", "midpoint_one_iteration", "midpoint_absolute_tolerance"},
              GM_RB});
 
 GM_PROPERTY(integrator_energy, integrator_scalars,
@@ -462,7 +501,7 @@ GM_PROPERTY(integrator_energy, integrator_scalars,
              .title = "rigid-body integrator claiming the energy: h (3.4) kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
-             .negative_controls = {"rk4_claims_everything", "midpoint_one_iteration"},
+             .negative_controls = {"rk4_claims_everything", "midpoint_one_iteration", "midpoint_absolute_tolerance"},
              GM_RB});
 
 GM_PROPERTY(integrator_orthogonality, integrator_scalars,
@@ -507,8 +546,8 @@ GM_PROPERTY(manakov_integrator_casimir, integrator_scalars,
              .title = "Manakov integrator claiming the Casimir: tr(M^2) kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
-             .negative_controls = {"rk4_claims_everything", "midpoint_one_iteration"},
-             GM_MK});
+             .negative_controls = {"rk4_claims_everything", "midpoint_one_iteration", "midpoint_absolute_tolerance"},
+             GM_MK_SCALED});
 
 GM_PROPERTY(manakov_integrator_energy, integrator_scalars,
             {.id = "manakov_integrator_energy",
@@ -516,8 +555,8 @@ GM_PROPERTY(manakov_integrator_energy, integrator_scalars,
              .title = "Manakov integrator claiming the energy: -tr(Omega M)/4 kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
-             .negative_controls = {"rk4_claims_everything", "manakov_isospectral_explicit"},
-             GM_MK});
+             .negative_controls = {"rk4_claims_everything", "manakov_isospectral_explicit", "midpoint_absolute_tolerance"},
+             GM_MK_SCALED});
 
 GM_PROPERTY(manakov_integrator_orthogonality, integrator_scalars,
             {.id = "manakov_integrator_orthogonality",
@@ -548,6 +587,7 @@ GM_PROPERTY(manakov_integrator_poisson, integrator_scalars,
 
 #undef GM_RB
 #undef GM_MK
+#undef GM_MK_SCALED
 
 }  // namespace properties_integrator_claims
 }  // namespace gm

@@ -110,8 +110,8 @@ RigidBodyRegime<T> draw_rigid_body_regime() {
     default:
       break;
   }
-  // k = 0, 1, -1, 2, -2, ..., 64, -64: a failing case shrinks to the scale nearest 1 that still fails.
-  if (dyn::pick<T>(gen::uniform(0, 2)) == 1) r.lambda = gen::pow2<T>(gen::zigzag(dyn::pick<T>(gen::uniform(0, 129))));
+  // In half of the cases (support/regimes.hpp); a failing case shrinks to the scale nearest 1 that still fails.
+  r.lambda = dyn::pick<T>(gen::motion_scale<T>(1, 2));
   r.x0 = RigidBodyState<T>{P, dyn::draw_rotation<T>()};
   const T rate = dyn::at_least_one(T(norm_inf(P) / r.I.minCoeff()));
   r.t_end = T(1) / rate;
@@ -240,7 +240,7 @@ void manakov_integrator_converges_in_every_frame(const Subject<T>&, const Integr
   f.a = dyn::draw_generic_manakov_a<T>(n);
   f.x0 = ManakovState<T>{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
   f.R = dyn::pick<T>(gen::uniform(0, 4)) != 0 ? dyn::pick<T>(gen::rotation<T>(n)) : MatX<T>::Identity(n, n);
-  if (dyn::pick<T>(gen::uniform(0, 4)) != 0) f.lambda = gen::pow2<T>(gen::zigzag(dyn::pick<T>(gen::uniform(0, 129))));
+  f.lambda = dyn::pick<T>(gen::motion_scale<T>(3, 4));
   const MatX<T> A = f.A();
   const ManakovState<T> x0 = f.seen(f.x0);
   const ManakovState<T> exact = f.seen(dyn::oracle_manakov(f.a, f.x0, {T(1)}).front());

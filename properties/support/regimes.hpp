@@ -41,6 +41,25 @@ T pow2(int e) {
   return x;
 }
 
+// The scale lambda of a motion seen in other units: 2^k, k = 0, 1, -1, ..., 64, -64, in `in`
+// cases of `of`, else 1 (both shrink toward 1). Euler's equations, (2.20) and (2.34) are
+// homogeneous of degree 2: x(t) solves them iff lambda x(lambda t) does, with the same attitude,
+// so a step from lambda x with h / lambda must give lambda times the step from x (exact in binary
+// floating point); a cut-off on the size of the state, or an absolute tolerance, breaks that.
+template <class T>
+rc::Gen<T> motion_scale(int in, int of) {
+  return rc::gen::map(rc::gen::pair(uniform(0, of), uniform(0, 129)), [in, of](const std::pair<int, int>& p) {
+    return p.first >= of - in ? pow2<T>(zigzag(p.second)) : T(1);
+  });
+}
+
+// One side of it: 2^(sign j), j = 0..64, shrinking toward 1; sign -1 for a slowly turning body
+// (cut-offs, absolute tolerances), +1 for a fast one (overflow, hard-coded step limits).
+template <class T>
+rc::Gen<T> motion_scale_side(int sign) {
+  return rc::gen::map(uniform(0, 65), [sign](int j) { return pow2<T>(sign * j); });
+}
+
 inline constexpr int kVectorRegimes = 8;
 
 // Non-dyadic values k / (3 * 2^bits): exact in rationals, correctly rounded in Real50 and double,
