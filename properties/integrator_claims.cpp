@@ -128,7 +128,7 @@ void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const Inte
 constexpr int kSteps = 64;
 
 // Where the worst residual of an invariant claim was seen, for its evidence: a state scaled by
-// lambda = 2^k with the step scaled by 1/lambda (support/regimes.hpp, motion_scale).
+// lambda = 2^k with the step scaled by 1/lambda (claim_state_scale below).
 template <class T>
 std::string scaled_note(const T& lambda) {
   return lambda == T(1) ? std::string()
