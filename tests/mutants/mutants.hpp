@@ -66,9 +66,12 @@ struct MutantSetRegistrar {
 
 }  // namespace gm
 
+// Already defined only when tests/unity/compiles_alone.py parses a file alone (parse_only.hpp).
+#ifndef GM_MUTANT
 #define GM_MUTANT(name, description, ...) \
   static const ::gm::MutantRegistrar gm_mutant_##name{#name, description, __VA_ARGS__}
 #define GM_MUTANT_WRONG_ONLY_IN(name, ...) \
   static const ::gm::MutantScalarsRegistrar gm_mutant_scalars_##name{#name, {__VA_ARGS__}}
 #define GM_MUTANT_SET(name, description, ...) \
   static const ::gm::MutantSetRegistrar gm_mutant_set_##name{#name, description, __VA_ARGS__}
+#endif
