@@ -26,6 +26,7 @@
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/tolerance.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace gm {
@@ -137,10 +138,14 @@ void manakov_integrator_equivariant(const Subject<T>&, const Integrator<T>& in, 
 
 // Steps of the long run: 10^5 in double; in 50 digits each step costs ~100 times more, so fewer
 // (the 50-digit run decides "conserved" against a budget thirty orders lower, and the double run
-// sees the long-time drift).
+// sees the long-time drift). A claim nobody made is characterised, not verified (issue 32): its
+// run is a tenth as long, at least `floor` steps, and its evidence says so. Nothing can fail on
+// an unclaimed row, so no negative control or mutant depends on its length; the full run costs
+// an interpreted implementation (one protocol call per step) 100-300 s for a row nobody asked for.
 template <class T>
-int long_run_steps(int double_steps, int mp_steps) {
-  return std::is_same_v<T, double> ? double_steps : mp_steps;
+int long_run_steps(bool claimed, int double_steps, int mp_steps, int floor) {
+  const int full = std::is_same_v<T, double> ? double_steps : mp_steps;
+  return claimed ? full : std::max(std::min(full, floor), full / 10);
 }
 
 // The round-off budget of a run of N steps: the energy of each state carries a few eps of
@@ -171,7 +176,8 @@ void long_time_energy(const std::string& integrator, bool claimed, const std::st
   record_series(ser);
   const auto cls = longtime::classify_energy_error(ts, es, roundoff_budget<T>(steps));
   const bool holds = cls.kind != longtime::EnergyKind::Drifting;
-  const std::string evidence = integrator + ": " + what + fmt(", %g steps of h = %g", steps, to_double(h)) + ": " +
+  const std::string evidence = integrator + ": " + what + fmt(", %g steps of h = %g", steps, to_double(h)) +
+                               (claimed ? "" : " (not claimed: characterised over a tenth of the claimed run)") + ": " +
                                cls.evidence() + scalar_tag<T>();
   record_note(evidence);  // no timing: notes are compared between runs (class shards)
   judge_claim("bounded_energy", claimed, holds, evidence);
@@ -188,7 +194,7 @@ void integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const
   const Vec3<T> I = dyn::draw_generic_inertia<T>();
   RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
   const T h = T(1) / T(4);
-  const int steps = long_run_steps<T>(100000, 4000);
+  const int steps = long_run_steps<T>(c.bounded_energy, 100000, 4000, 1000);
   long_time_energy<T>(
       in.name, c.bounded_energy, "the energy h (3.4) over a long run", steps, h,
       [&](int n) {
@@ -206,7 +212,7 @@ void manakov_integrator_bounded_energy(const Subject<T>&, const Integrator<T>& i
   const MatX<T> A = dyn::diag_of(a);
   ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
   const T h = T(1) / T(8);
-  const int steps = long_run_steps<T>(20000, 400);
+  const int steps = long_run_steps<T>(c.bounded_energy, 20000, 400, 100);
   long_time_energy<T>(
       in.name, c.bounded_energy, "the energy -tr(Omega M)/4 over a long run, n = " + std::to_string(n), steps, h,
       [&](int s) {
