@@ -27,16 +27,16 @@ using nlohmann::json;
 
 std::string default_equivalent_path() { return std::string(GM_SOURCE_DIR) + "/spec/equivalent_mutants.json"; }
 
-std::map<std::string, std::string> load_equivalent(const std::string& path) {
+std::map<std::string, Equivalence> load_equivalent(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("cannot read " + path);
   json j = json::parse(in);
-  std::map<std::string, std::string> out;
+  std::map<std::string, Equivalence> out;
   for (const auto& e : j.at("equivalent")) {
     const std::string name = e.at("mutant").get<std::string>();
     const std::string why = e.at("argument").get<std::string>();
     if (why.empty()) throw std::runtime_error(path + ": mutant '" + name + "' has no argument");
-    out[name] = why;
+    out[name] = Equivalence{why, e.value("alone_only", false)};
   }
   return out;
 }
@@ -200,7 +200,7 @@ MutantsRun run_mutants(const MutantsOptions& o) {
       return j.dump();
     });
   std::size_t done = 0;
-  iso.on_finished = [&](std::size_t) {
+  iso.on_finished = [&](std::size_t, const harness::TaskResult&) {
     ++done;
     if (!o.verbose && (done % 25 == 0 || done == tasks.size()))
       std::cerr << "geomech mutants: " << done << "/" << tasks.size() << " mutants\n";
@@ -218,7 +218,8 @@ MutantsRun run_mutants(const MutantsOptions& o) {
     r.seconds = results[i].seconds;
     if (auto it = run.equivalent.find(m.name); it != run.equivalent.end()) {
       r.equivalent = true;
-      r.equivalence_argument = it->second;
+      r.equivalent_alone_only = it->second.alone_only;
+      r.equivalence_argument = it->second.argument;
     }
     std::set<std::string> specs;
     for (const Property* p : candidates(m, excluded))
@@ -254,7 +255,7 @@ Tally tally(const MutantsRun& run, bool alone, const std::string& slot, const st
     const ModeResult& m = alone ? r.alone : r.full;
     if (!m.ran) continue;
     ++t.mutants;
-    if (r.equivalent)
+    if (r.equivalent_in(alone))
       ++t.equivalent;
     else if (m.killed)
       ++t.killed;
@@ -325,7 +326,7 @@ std::string console_table(const MutantsRun& run) {
   for (const auto& n : run.unknown_equivalents) os << "warning: equivalent list names no mutant: " << n << "\n";
   std::vector<const MutantResult*> surv;
   for (const auto& r : run.results)
-    if (!r.equivalent && ((r.full.ran && !r.full.killed) || (r.alone.ran && !r.alone.killed))) surv.push_back(&r);
+    if (r.survives()) surv.push_back(&r);
   if (!surv.empty()) {
     os << "\nsurvivors (not equivalent):\n";
     for (const auto* r : surv) {
@@ -382,13 +383,15 @@ std::string markdown_report(const MutantsRun& run) {
   table("spec entry", spec_order(run), false);
   os << "## Survivors\n\n";
   for (const auto& r : run.results) {
-    if (r.equivalent || !((r.full.ran && !r.full.killed) || (r.alone.ran && !r.alone.killed))) continue;
+    if (!r.survives()) continue;
     os << "- `" << r.name << "`" << (r.full.killed ? " (alone only)" : "") << ": " << r.description << ". Replay: `"
        << replay(run, r) << "`\n";
   }
   os << "\n## Equivalent mutants\n\n";
   for (const auto& r : run.results)
-    if (r.equivalent) os << "- `" << r.name << "`: " << r.equivalence_argument << "\n";
+    if (r.equivalent)
+      os << "- `" << r.name << "`" << (r.equivalent_alone_only ? " (with the slot alone; killed in the full reference)" : "")
+         << ": " << r.equivalence_argument << "\n";
   if (!run.baseline_failures.empty()) {
     os << "\n## Properties failing on the reference (left out)\n\n";
     for (const auto& b : run.baseline_failures) os << "- " << b << "\n";
@@ -414,6 +417,7 @@ std::string json_report(const MutantsRun& run) {
                             {"integrator", r.integrator},
                             {"description", r.description},
                             {"equivalent", r.equivalent},
+                            {"equivalent_alone_only", r.equivalent_alone_only},
                             {"equivalence_argument", r.equivalence_argument},
                             {"spec_entries", r.spec_entries},
                             {"full", mode_json(r.full)},

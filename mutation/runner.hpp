@@ -39,10 +39,24 @@ struct ModeResult {
 struct MutantResult {
   std::string name, slot, op, op_class, description, integrator;
   bool equivalent = false;
+  // Equivalent with the mutated slot alone only (issue 36: a negated hat_n is another valid
+  // convention of so(n) coordinates on its own, and wrong beside the reference's vee_n).
+  bool equivalent_alone_only = false;
   std::string equivalence_argument;
+  // Whether the mutant is out of the denominator in the mode `alone` (or the full reference).
+  bool equivalent_in(bool alone) const { return equivalent && (alone || !equivalent_alone_only); }
+  // Survives in a mode where it is not equivalent.
+  bool survives() const {
+    return (!equivalent_in(false) && full.ran && !full.killed) || (!equivalent_in(true) && alone.ran && !alone.killed);
+  }
   std::vector<std::string> spec_entries;  // spec entries of the properties that apply to it
   ModeResult full, alone;
   double seconds = 0;
+};
+
+struct Equivalence {
+  std::string argument;
+  bool alone_only = false;
 };
 
 struct Tally {
@@ -53,14 +67,15 @@ struct Tally {
 struct MutantsRun {
   std::vector<MutantResult> results;
   std::vector<std::string> baseline_failures;  // properties failing on the reference itself (left out)
-  std::map<std::string, std::string> equivalent;  // name -> argument
+  std::map<std::string, Equivalence> equivalent;  // name -> argument
   std::vector<std::string> unknown_equivalents;   // names in the file that are no mutant
   double seconds = 0;
   MutantsOptions options;
 };
 
-// Equivalent mutants: name -> argument. Throws on a malformed file.
-std::map<std::string, std::string> load_equivalent(const std::string& path);
+// Equivalent mutants: name -> argument, and whether only with the mutated slot alone ("alone_only":
+// true in the file). Throws on a malformed file.
+std::map<std::string, Equivalence> load_equivalent(const std::string& path);
 std::string default_equivalent_path();
 
 MutantsRun run_mutants(const MutantsOptions& o);

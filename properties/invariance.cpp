@@ -1,6 +1,7 @@
 // Left invariance (Definition 1.1) of the rigid body and the sign of the Euler-Poincare equation
 // for right-invariant systems (Remark 1.1, (1.1)).
 #include "properties/registry.hpp"
+#include "properties/support/coordinates.hpp"
 #include "properties/support/generators.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
@@ -78,11 +79,11 @@ void right_invariant_sign_1_1(const Subject<T>& s) {
   const Vec3<T> mu_dot = -s.euler_3_8(I, P);
   const T scale = T(2) * (norm_inf(P) + T(1)) * Hs * (norm_inf(I) + T(1)) * T(9);
   require_close("(1.1): d/dt dl/deta = -ad*_eta dl/deta", mu_dot,
-                Vec3<T>(-s.ad_star(LieAlgebraId::so3, VecX<T>(eta), VecX<T>(mu))), scale, 48);
+                Vec3<T>(-coords::ad_star_so3_in_hat_coordinates(s, eta, mu)), scale, 48);
   // Witness that the left-invariant sign fails here: I = (1, 2, 3), O = Id, Pi = (1, 1, 0).
   const Vec3<T> I_w(T(1), T(2), T(3)), P_w(T(1), T(1), T(0));
   const Vec3<T> eta_w = -vee_of<T>((s.reconstruction_2_10(Mat3<T>::Identity(), s.omega_3_5(I_w, P_w))).eval());
-  const Vec3<T> plus = s.ad_star(LieAlgebraId::so3, VecX<T>(eta_w), VecX<T>(Vec3<T>(-P_w)));
+  const Vec3<T> plus = coords::ad_star_so3_in_hat_coordinates(s, eta_w, Vec3<T>(-P_w));
   require("the left-invariant sign + ad*_eta mu does not hold for the right-invariant system (witness)",
           Vec3<T>(-s.euler_3_8(I_w, P_w)) != plus);
 }

@@ -645,6 +645,30 @@ TEST(TrajectoryFiles, TheExamplesAreJudgedAsTheirAuthorsShouldExpect) {
     }
 }
 
+// Issue 36: Lie-Euler on a spherical body is exact (its Omega never changes), so every error is at
+// round-off. Its order-1 claim holds as "exact for this problem", not "not measurable"; the same
+// files claimed at order 2 also pass (an exact step satisfies any order). Control: the midpoint
+// files at a false order 4 still fail (above).
+TEST(TrajectoryFiles, AnExactStepPassesAnyOrderClaim) {
+  const std::vector<std::string> files{example("spherical_lie_euler_h0.1.txt"), example("spherical_lie_euler_h0.05.txt"),
+                                       example("spherical_lie_euler_h0.025.txt")};
+  for (int order : {1, 2}) {
+    TrajectoryCheckOptions o;
+    o.order = order;
+    const CheckResult r = check_trajectories(files, o);
+    EXPECT_TRUE(r.ok()) << console_report(r, nullptr);
+    const Verdict* v = nullptr;
+    for (const auto& x : r.verdicts)
+      if (x.property == "trajectory_order") v = &x;
+    ASSERT_NE(v, nullptr);
+    EXPECT_EQ(v->outcome, Outcome::Pass) << v->message;
+    EXPECT_NE(v->message.find("exact for this problem (error at round-off for every step size)"), std::string::npos)
+        << v->message;
+    ASSERT_EQ(v->claims.size(), 1u);
+    EXPECT_TRUE(v->claims[0].holds) << v->claims[0].evidence;
+  }
+}
+
 TEST(TrajectoryFiles, ConvergenceSlopeLeavesOutTheRoundoffPlateau) {
   std::vector<std::pair<double, double>> pts;
   for (double h = 0.1; h > 1e-6; h /= 2) pts.emplace_back(h, std::max(3 * h * h, 1e-9));

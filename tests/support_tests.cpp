@@ -2,6 +2,7 @@
 // roundoff scales with eps), generators (exactly representable, rotations exactly orthogonal).
 #include "properties/support/generators.hpp"
 #include "properties/support/long_time.hpp"
+#include "properties/support/order_claim.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include "tests/support/rc_failure.hpp"
@@ -168,6 +169,35 @@ TEST(LongTime, ClassifiesDriftOscillationRoundoffAndBlowup) {
   const auto c = longtime::classify_energy_error(t, drift, budget);
   EXPECT_NEAR(c.slope, 1e-9, 2e-10);  // the fitted drift of the window maxima
   EXPECT_NE(c.evidence().find("drifting"), std::string::npos);
+}
+
+// Issue 36: errors at round-off at every step size are an exact step: any claimed order holds,
+// with a note saying so. Controls: one error above its floor with two below is "not measurable"
+// (no finding: another check must decide), and a clean slope of 1 against a claim of 2 is false.
+TEST(OrderClaim, AnExactStepHoldsAnyClaimedOrder) {
+  const std::vector<double> hs{0.25, 0.125, 0.0625, 0.03125}, floors(4, 1e-13);
+  auto judge = [&](const std::vector<double>& errs, int claimed) {
+    recorded_claims().clear();
+    recorded_notes().clear();
+    judge_order_claim("step", claimed, "", " (double)", hs, errs, floors);
+  };
+  judge({3e-15, 1e-14, 2e-15, 5e-14}, 2);
+  ASSERT_EQ(recorded_claims().size(), 1u);
+  EXPECT_TRUE(recorded_claims()[0].holds);
+  EXPECT_NE(recorded_claims()[0].evidence.find("exact for this problem (error at round-off for every step size"),
+            std::string::npos) << recorded_claims()[0].evidence;
+
+  judge({1e-3, 5e-14, 2e-15, 5e-14}, 2);
+  EXPECT_TRUE(recorded_claims().empty());
+  ASSERT_EQ(recorded_notes().size(), 1u);
+  EXPECT_NE(recorded_notes()[0].find("order not measurable"), std::string::npos) << recorded_notes()[0];
+
+  const std::string why = failure_of([&] { judge({0.25, 0.125, 0.0625, 0.03125}, 2); });  // order 1 claimed as 2
+  EXPECT_NE(why.find("false claim 'order': step: measured order 1.000, claimed 2"), std::string::npos) << why;
+  ASSERT_EQ(recorded_claims().size(), 1u);
+  EXPECT_FALSE(recorded_claims()[0].holds);
+  recorded_claims().clear();
+  recorded_notes().clear();
 }
 
 }  // namespace

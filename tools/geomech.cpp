@@ -21,6 +21,7 @@
 #include "harness/remote_subject.hpp"
 #include "harness/report.hpp"
 #include "harness/sandbox.hpp"
+#include "harness/slot_conventions.hpp"
 #include "harness/slot_names.hpp"
 #include "harness/student_registry.hpp"
 #include "harness/trajectory.hpp"
@@ -371,21 +372,61 @@ std::string other_language_signature(const SlotInfo& s, bool python) {
   return "function r = " + std::string(s.name) + "(" + out + ")  % r: " + describe(result);
 }
 
+// Issue 36: each slot's convention (fixed by the notes, or free and learned from the student's own
+// hat), after its meaning; then the integrators' interface. `prefix` starts each line of text.
+// `text` wrapped at 100 columns after `prefix`, continuation lines indented under it.
+void print_wrapped(const std::string& text, const std::string& prefix) {
+  std::istringstream words(text);
+  std::string line = prefix, word;
+  while (words >> word) {
+    if (line.size() > prefix.size() && line.size() + 1 + word.size() > 100) {
+      std::cout << line << "\n";
+      line = prefix + "  ";
+    }
+    line += (line.size() > prefix.size() && line.back() != ' ' ? " " : "") + word;
+  }
+  std::cout << line << "\n";
+}
+
+void print_convention(const std::string& slot, const std::string& prefix) {
+  const std::string c = harness::slot_convention(slot);
+  if (!c.empty()) print_wrapped("convention: " + c, prefix);
+}
+
+// The integrators' interface: its first line is prose (wrapped, as a comment in Python and
+// Octave), the rest code.
+void print_interface(const std::string& language, const std::string& comment) {
+  std::istringstream lines(harness::integrator_interface(language));
+  std::string line;
+  std::getline(lines, line);
+  print_wrapped(line, comment);
+  while (std::getline(lines, line)) std::cout << line << "\n";
+}
+
 int run_slots(const std::string& language) {
   if (language.empty()) {
-    for (const auto& s : subject_slots())
+    for (const auto& s : subject_slots()) {
       std::cout << s.name << "  " << s.signature << "\n    " << s.place << ": " << s.meaning << "\n";
+      print_convention(s.name, "    ");
+    }
+    std::cout << "\n";
+    print_interface("cpp", "");
     std::cout << "\nBy concept (slot names are the notes' equation numbers):\n";
     for (const auto& c : harness::slot_concepts())
       std::cout << "  " << std::left << std::setw(40) << c.concept_name << c.slot << "\n";
     return 0;
   }
   const bool python = language == "python";
+  const std::string comment = python ? "# " : "% ";
   std::cout << (python ? "## Python: functions named after the slots (scalars: float, mpmath.mpf, fractions.Fraction)\n\n"
                        : "## Octave / MATLAB: functions named after the slots (double only)\n\n")
             << "```" << (python ? "python" : "matlab") << "\n";
-  for (const auto& s : subject_slots())
-    std::cout << other_language_signature(s, python) << "\n    " << (python ? "# " : "% ") << s.place << ": " << s.meaning << "\n";
+  for (const auto& s : subject_slots()) {
+    std::cout << other_language_signature(s, python) << "\n    " << comment << s.place << ": " << s.meaning << "\n";
+    print_convention(s.name, "    " + comment);
+  }
+  std::cout << "\n";
+  print_interface(python ? "python" : "octave", comment);
   std::cout << "```\n";
   return 0;
 }

@@ -8,6 +8,7 @@ This is how the trajectory files next to this script were made (plain Python, no
     ../../geomech check-trajectory midpoint_h*.txt --order 2 --preserves casimir,energy,orthogonality
     ../../geomech check-trajectory explicit_euler_h0.01.txt --preserves casimir     # a false claim
     ../../geomech check-trajectory sign_error_h0.01.txt                             # wrong equations
+    ../../geomech check-trajectory spherical_lie_euler_h*.txt --order 1             # exact here: a pass
 
 The format (docs/TRAJECTORY_FORMAT.md): a header of '# key: value' lines, then one row per
 output time: t, Pi1, Pi2, Pi3 and the 9 entries of O row by row. Print 17 significant digits
@@ -77,6 +78,27 @@ def explicit_euler_step(pi, O, h, sign=1.0):
     return new_pi, tuple(tuple(O[i][j] + h * dO[i][j] for j in range(3)) for i in range(3))
 
 
+def rotation(w, h):
+    """exp(h hat(w)) by Rodrigues' formula: the exact rotation about w by the angle h |w|."""
+    angle = h * math.sqrt(sum(x * x for x in w))
+    if angle == 0.0:
+        return ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
+    K = hat(tuple(x * h / angle for x in w))
+    K2 = matmul(K, K)
+    s, c = math.sin(angle), 1.0 - math.cos(angle)
+    return tuple(tuple((1.0 if i == j else 0.0) + s * K[i][j] + c * K2[i][j] for j in range(3)) for i in range(3))
+
+
+def lie_euler_step(pi, O, h, sign=1.0):
+    """Lie-Euler: Omega frozen at the start of the step, both parts moved by its exact rotation,
+    Pi <- exp(-h hat(Omega)) Pi and O <- O exp(h hat(Omega)). First order in general; exact for a
+    spherical body, whose Omega = Pi / I stays constant (Pi x Omega = 0)."""
+    omega = tuple(sign * p / i for p, i in zip(pi, I))
+    R = rotation(omega, h)
+    new_pi = tuple(sum(R[k][i] * pi[k] for k in range(3)) for i in range(3))  # R^T Pi = exp(-h hat(Omega)) Pi
+    return new_pi, matmul(O, R)
+
+
 def write(name, step, h, method, sign=1.0):
     pi, O = PI0, ((1.0, 0.0, 0.0), (0.0, 1.0, 0.0), (0.0, 0.0, 1.0))
     steps = round(T_END / h)
@@ -103,3 +125,8 @@ if __name__ == "__main__":
         write("midpoint_h%s.txt" % h, midpoint_step, h, "implicit midpoint, Cayley for O")
     write("explicit_euler_h0.01.txt", explicit_euler_step, 0.01, "explicit Euler")
     write("sign_error_h0.01.txt", midpoint_step, 0.01, "implicit midpoint with dPi/dt = Omega x Pi", sign=-1.0)
+    # A spherical body: Lie-Euler is exact for it, so its error is at round-off at every step size
+    # and an order claim is judged "exact for this problem" (issue 36), not "not measurable".
+    I = (1.5, 1.5, 1.5)
+    for h in (0.1, 0.05, 0.025):
+        write("spherical_lie_euler_h%s.txt" % h, lie_euler_step, h, "Lie-Euler (exact rotations), spherical body")

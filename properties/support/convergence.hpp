@@ -49,6 +49,16 @@ inline SlopeFit loglog_slope(const std::vector<double>& h, const std::vector<dou
   return f;
 }
 
+// Every error finite and at or below its round-off floor: the method is exact for the problem at
+// every step size tried (a first-order method on a spherical body, whose motion is a rotation
+// about a fixed axis, for instance), and no slope can be measured or is needed.
+inline bool at_roundoff_everywhere(const std::vector<double>& err, const std::vector<double>& floor) {
+  if (err.empty()) return false;
+  for (std::size_t i = 0; i < err.size(); ++i)
+    if (!std::isfinite(err[i]) || i >= floor.size() || err[i] > floor[i]) return false;
+  return true;
+}
+
 // The first step size at which the error is not finite (NaN or inf), or 0 when all are finite. A
 // method that blows up at some step is not "at round-off": a claimed order is then false, and the
 // slope fit (which treats points below the floor as a plateau) must not be left to decide.

@@ -1,6 +1,8 @@
 // The verdict on an integrator's order claim from its errors at a fixed time as the step shrinks
 // (integrator_claims.cpp, integrator_canonical.cpp): one rule for every kind of step.
 //   - an error that is not finite at some step fails a claimed order (a blow-up is not a plateau);
+//   - an error at round-off at every step size is an exact step for this problem: any claimed
+//     order holds (issue 36), and the note says so;
 //   - the log-log slope over the points above the round-off floors (conv::loglog_slope) must be
 //     within 0.1 of the claim; with fewer than 3 such points the order is not measurable (noted);
 //   - the measured order is always noted, claimed or not.
@@ -32,8 +34,17 @@ inline void judge_order_claim(const std::string& integrator, int claimed, const 
     return;
   }
   const auto fit = conv::loglog_slope(hs, errs, floors);
+  if (conv::at_roundoff_everywhere(errs, floors)) {
+    // Exact for this problem (issue 36): an error at round-off at every step size contradicts no
+    // order; a claimed one holds, and the note says why no slope was measured.
+    const std::string exact = integrator + ": exact for this problem (error at round-off for every step size" +
+                              where + "); any claimed order holds" + scalar;
+    if (claimed > 0) judge_claim("order", true, true, exact);
+    record_note(exact);
+    return;
+  }
   if (fit.used < 3) {
-    record_note(integrator + ": errors at round-off for every step tried" + where + "; order not measurable" + scalar);
+    record_note(integrator + ": fewer than three step sizes above round-off" + where + "; order not measurable" + scalar);
     return;
   }
   std::snprintf(buf, sizeof buf, ": measured order %.3f", fit.slope);

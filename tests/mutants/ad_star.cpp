@@ -75,6 +75,18 @@ GM_MUTANT(lie_hat_sl2_transposed, "lie_hat for sl(2, R) building [[a, c], [b, -a
   };
 });
 
+// sl(2, R) with the sign of the last diagonal entry lost: [[a, b], [c, a]] is not traceless, so
+// not in sl(2, R) whatever the basis (issue 36: the basis itself is the student's choice, and the
+// transposed one above is a basis; it fails only beside a lie_vee that reads the documented one).
+GM_MUTANT(lie_hat_sl2_not_traceless, "lie_hat for sl(2, R) building [[a, b], [c, a]] (not traceless)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.lie_hat = [](LieAlgebraId g, const VecX<T>& x) -> MatX<T> {
+    MatX<T> m = ref::lie_hat<T>(g, x);
+    if (g == LieAlgebraId::sl2) m(1, 1) = -m(1, 1);
+    return m;
+  };
+});
+
 GM_MUTANT(lie_vee_sl2_transposed, "lie_vee for sl(2, R) reading (m00, m10, m01) (transposed)", [](auto& s) {
   using T = scalar_of<decltype(s)>;
   s.lie_vee = [](LieAlgebraId g, const MatX<T>& m) -> VecX<T> {
