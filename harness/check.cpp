@@ -8,9 +8,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include <unistd.h>
 
@@ -254,7 +256,72 @@ void account_for_slots(CheckResult& result, const SubjectSet& s, const CheckConf
   }
 }
 
+// One check's verdicts from how its task ended: the verdicts it returned (if they are its own), or
+// one verdict saying how it ended (a crash, a timeout, a forgery); NOT PROVIDED ones say why.
+std::vector<Verdict> verdicts_of(const SubjectSet& s, const SubjectInfo& info, const CheckConfig& cfg, const Item& item,
+                                 const TaskResult& t) {
+  std::vector<Verdict> vs;
+  if (t.status == TaskResult::Status::Ok) {
+    try {
+      vs = verdicts_from_string(t.payload);
+      check_verdicts_belong_to(vs, item);
+    } catch (const ForeignResult& e) {
+      vs = {abnormal_verdict(s, item, t, cfg.run)};  // an ERROR, with the seed and timing of this check
+      vs.back().message = e.what();
+    } catch (const std::exception& e) {
+      TaskResult bad = t;
+      bad.status = TaskResult::Status::Ok;
+      vs = {abnormal_verdict(s, item, bad, cfg.run)};
+      vs.back().message += std::string(" (") + e.what() + ")";
+    }
+  } else {
+    vs = {abnormal_verdict(s, item, t, cfg.run)};
+  }
+  for (auto& v : vs) explain_not_provided(v, *item.property, s, info);
+  return vs;
+}
+
+// Where a check goes in the schedule (run_check): smaller first.
+std::tuple<int, int, int, int> schedule_key(const Item& item, bool replayed) {
+  const Property& p = *item.property;
+  int group;
+  if (p.scope == Scope::Integrator)
+    group = p.id.find("bounded_energy") != std::string::npos ? 4 : 3;  // the long runs last
+  else if (p.needs.size() == 1 && p.id.rfind("definition_", 0) == 0)
+    group = 0;  // a slot's own definition check
+  else
+    group = p.tolerance == ToleranceClass::Exact ? 1 : 2;  // identities before flows
+  const int scalar = item.kind == ScalarKind::Double ? 0 : item.kind == ScalarKind::Exact ? 1 : 2;
+  return {replayed ? 0 : 1, group, scalar, 0};
+}
+
 }  // namespace
+
+std::string check_key(const Verdict& v) {
+  return v.property + "/" + v.scalar + (v.integrator.empty() ? "" : "/" + v.integrator);
+}
+
+std::set<std::string> failed_checks_in_report(const std::string& dir) {
+  std::set<std::string> out;
+  if (dir.empty()) return out;
+  try {
+    std::ifstream in(dir + "/verdicts.json");
+    if (!in) return out;
+    const nlohmann::json j = nlohmann::json::parse(in);
+    for (const auto& v : j.at("verdicts")) {
+      const std::string outcome = v.at("outcome").get<std::string>();
+      if (outcome != "FAIL" && outcome != "CRASH" && outcome != "TIMEOUT" && outcome != "ERROR") continue;
+      Verdict key;
+      key.property = v.at("property").get<std::string>();
+      key.scalar = v.at("scalar").get<std::string>();
+      key.integrator = v.value("integrator", std::string());
+      out.insert(check_key(key));
+    }
+  } catch (const std::exception&) {
+    // no previous report, or one this version cannot read: nothing to replay first
+  }
+  return out;
+}
 
 int scalar_rank(const std::string& scalar) {
   if (scalar == "double") return 0;
@@ -349,8 +416,27 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     result.selection = sel.str();
   }
 
+  // The order that finds the likely mistake first (issue 32): what failed last time; then every
+  // slot's own definition check, in every scalar; then the other properties, algebraic identities
+  // before flows; then the integrators' claims after the slots their steps call; the long runs
+  // (bounded energy, then the pictures and the work-precision diagram) last. Within a group double
+  // and the exact rationals before 50 digits, which cost most. The verdicts are sorted afterwards:
+  // the order changes when a result is known, never what it is.
+  std::vector<bool> replayed(items.size(), false);
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    Verdict v = base_verdict(s, items[i]);
+    replayed[i] = cfg.failed_before.count(check_key(v)) > 0;
+  }
+  std::vector<std::size_t> order(items.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const auto ka = schedule_key(items[a], replayed[a]), kb = schedule_key(items[b], replayed[b]);
+    return ka < kb;
+  });
+
   std::vector<std::function<std::string()>> tasks;
-  for (const auto& item : items) {
+  for (std::size_t i : order) {
+    const Item item = items[i];
     tasks.push_back([&s, item, &cfg]() {
       if (item.integrator.empty()) return verdicts_to_string(run_property(*item.property, s, item.kind, cfg.run));
       const SubjectSet one = only_integrator(s, item.kind, item.integrator);
@@ -370,40 +456,49 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   io.isolate = cfg.isolate;
   io.prepare_worker = info.prepare_worker;
   io.worker_done = info.worker_done;
-  std::size_t finished = 0;
-  const bool show_progress = cfg.progress && ::isatty(STDERR_FILENO);
-  io.on_finished = [&](std::size_t) {
-    ++finished;
-    if (show_progress) std::fprintf(stderr, "\rgeomech: %zu/%zu checks done", finished, tasks.size());
+
+  // Each check's verdicts the moment it ends, told to the listeners (check_events.hpp).
+  std::vector<std::vector<Verdict>> by_task(n_items);
+  CheckProgress progress;
+  progress.total = tasks.size();
+  std::map<std::size_t, std::string> running;
+  auto task_name = [&](std::size_t t) {
+    if (t >= n_items) return std::string("pictures and work-precision diagram");
+    const Item& item = items[order[t]];
+    return item.property->id + " [" + scalar_name(item.kind) + (item.integrator.empty() ? "" : ", " + item.integrator) + "]";
+  };
+  auto tell_progress = [&]() {
+    progress.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // What is left, at the pace so far (the long runs come last and make this an underestimate
+    // until they start; it says "about").
+    progress.left = progress.done == 0 ? -1.0
+                                       : progress.elapsed / static_cast<double>(progress.done) *
+                                             static_cast<double>(progress.total - progress.done);
+    progress.running.clear();
+    for (const auto& [t, name] : running) progress.running.push_back(name);
+    for (CheckListener* l : cfg.listeners) l->progress(progress);
+  };
+  std::size_t replay_count = 0;
+  for (bool r : replayed) replay_count += r;
+  for (CheckListener* l : cfg.listeners) l->scheduled(progress.total, replay_count);
+  io.on_started = [&](std::size_t t) {
+    running[t] = task_name(t);
+    tell_progress();
+  };
+  io.on_finished = [&](std::size_t t, const TaskResult& result) {
+    running.erase(t);
+    ++progress.done;
+    if (t < n_items) {
+      by_task[t] = verdicts_of(s, info, cfg, items[order[t]], result);
+      progress.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      for (CheckListener* l : cfg.listeners) l->finished(by_task[t], replayed[order[t]], progress);
+    }
+    tell_progress();
   };
   const auto results = run_isolated(tasks, io);
-  if (show_progress) std::fprintf(stderr, "\r%60s\r", "");
 
-  for (std::size_t i = 0; i < n_items; ++i) {
-    const Item& item = items[i];
-    const TaskResult& t = results[i];
-    std::vector<Verdict> vs;
-    if (t.status == TaskResult::Status::Ok) {
-      try {
-        vs = verdicts_from_string(t.payload);
-        check_verdicts_belong_to(vs, item);
-      } catch (const ForeignResult& e) {
-        vs = {abnormal_verdict(s, item, t, cfg.run)};  // an ERROR, with the seed and timing of this check
-        vs.back().message = e.what();
-      } catch (const std::exception& e) {
-        TaskResult bad = t;
-        bad.status = TaskResult::Status::Ok;
-        vs = {abnormal_verdict(s, item, bad, cfg.run)};
-        vs.back().message += std::string(" (") + e.what() + ")";
-      }
-    } else {
-      vs = {abnormal_verdict(s, item, t, cfg.run)};
-    }
-    for (auto& v : vs) {
-      explain_not_provided(v, *item.property, s, info);
-      result.verdicts.push_back(std::move(v));
-    }
-  }
+  for (std::size_t t = 0; t < n_items; ++t)
+    for (auto& v : by_task[t]) result.verdicts.push_back(std::move(v));
   for (std::size_t j = 0; j < portrait_tasks.size(); ++j)
     result.portraits.push_back(portrait_from_task(portrait_tasks[j], results[n_items + j]));
 
@@ -414,6 +509,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   });
   account_for_slots(result, s, cfg);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (CheckListener* l : cfg.listeners) l->ended(result);
   return result;
 }
 

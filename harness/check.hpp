@@ -7,11 +7,13 @@
 // in a scalar the subject has no instantiation for, gets a NOT PROVIDED verdict with the reason.
 #pragma once
 
+#include "harness/check_events.hpp"
 #include "properties/runner.hpp"
 
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -61,9 +63,21 @@ struct CheckConfig {
   int jobs = 1;                         // children at once
   bool isolate = true;                  // fork per property (false: in-process, for a debugger)
   long memory_limit_mb = 4096;
-  bool progress = false;                // a progress line on stderr
   bool portraits = true;                // integrator pictures (convergence, invariants) besides the verdicts
+  // Told as each check starts and ends (check_events.hpp); not owned.
+  std::vector<CheckListener*> listeners;
+  // The checks that failed in the previous run of the same report ("property/scalar" or
+  // "property/scalar/integrator", check_key): they run first, so that a re-run says within about
+  // a second whether each is fixed (issue 32, like Hypothesis's example database).
+  std::set<std::string> failed_before;
 };
+
+// "property/scalar[/integrator]": a check's name across runs (CheckConfig::failed_before).
+std::string check_key(const Verdict& v);
+
+// The checks of the report in `dir` (its verdicts.json) that failed, crashed, timed out or could not
+// run; empty when there is no readable report there.
+std::set<std::string> failed_checks_in_report(const std::string& dir);
 
 struct IntegratorInfo {
   std::string name;

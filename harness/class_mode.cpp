@@ -262,7 +262,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   io.timeout_seconds = o.timeout_per_implementation;
   io.memory_limit_mb = 0;  // the compilers need what they need
   std::size_t done = 0;
-  io.on_finished = [&](std::size_t i) {
+  io.on_finished = [&](std::size_t i, const TaskResult&) {
     std::cerr << "  [" << ++done << "/" << impls.size() << "] " << impls[i].name << "\n";
   };
   const auto results = run_isolated(tasks, io);

@@ -1,5 +1,6 @@
 #include "harness/cli.hpp"
 
+#include "harness/console_stream.hpp"
 #include "harness/report.hpp"
 
 #include <iostream>
@@ -7,6 +8,8 @@
 #include <sstream>
 #include <thread>
 #include <algorithm>
+
+#include <unistd.h>
 
 namespace gm::harness {
 
@@ -76,7 +79,6 @@ CheckConfig config_from(const CheckCliOptions& o) {
   c.memory_limit_mb = o.memory_limit_mb;
   c.isolate = !o.no_isolation;
   c.portraits = !o.no_portraits && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty();
-  c.progress = !o.quiet;
   return c;
 }
 
@@ -117,7 +119,13 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
     std::cerr << "geomech: warning: " << e.what() << " (places in the notes will not be shown)\n";
   }
   const Catalogue* c = cat ? &*cat : nullptr;
-  const CheckResult r = run_check(subject, info, cfg);
+  // Results as they happen (issue 32): the console listens to the run; the checks that failed in
+  // the previous run of this report run first.
+  CheckConfig streaming = cfg;
+  streaming.failed_before = failed_checks_in_report(o.report_dir);
+  ConsoleStream console(subject.name, info, cfg.run.seed, o.quiet, std::cout, std::cerr, ::isatty(STDERR_FILENO) != 0);
+  streaming.listeners.push_back(&console);
+  const CheckResult r = run_check(subject, info, streaming);
   if (o.quiet) {
     std::cout << r.subject << ": " << r.verdict_word() << " (" << r.count(Outcome::Pass) << " PASS, "
               << r.count(Outcome::Fail) << " FAIL, " << r.count(Outcome::NotProvided) << " NOT PROVIDED, "

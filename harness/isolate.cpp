@@ -220,6 +220,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
     g_worker = 0;
     for (std::size_t i = 0; i < tasks.size(); ++i) {
       const auto start = Clock::now();
+      if (o.on_started) o.on_started(i);
       if (prepare(0, i)) {
         try {
           results[i].payload = tasks[i]();
@@ -231,7 +232,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         if (o.worker_done) o.worker_done(0, true);
       }
       results[i].seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      if (o.on_finished) o.on_finished(i);
+      if (o.on_finished) o.on_finished(i, results[i]);
     }
     return results;
   }
@@ -246,8 +247,9 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
   auto start_one = [&](std::size_t i) {
     int w = 0;
     while (busy[static_cast<std::size_t>(w)]) ++w;
+    if (o.on_started) o.on_started(i);
     if (!prepare(w, i)) {
-      if (o.on_finished) o.on_finished(i);
+      if (o.on_finished) o.on_finished(i, results[i]);
       return;
     }
     busy[static_cast<std::size_t>(w)] = true;
@@ -338,7 +340,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         }
         const std::size_t index = r.index;
         it = running.erase(it);
-        if (o.on_finished) o.on_finished(index);
+        if (o.on_finished) o.on_finished(index, results[index]);
       } else {
         ++it;
       }

@@ -14,13 +14,17 @@
 
 namespace gm::harness {
 
+struct TaskResult;
+
 struct IsolationOptions {
   int jobs = 1;                  // children running at once
   double timeout_seconds = 120;  // wall-clock limit per task
   long memory_limit_mb = 4096;   // address-space limit of a child (not applied under AddressSanitizer)
   bool isolate = true;           // false: run the tasks in this process, one after the other (debugging)
-  // Called in the parent as each task finishes (index, result), e.g. for progress output.
-  std::function<void(std::size_t)> on_finished;
+  // Called in the parent as each task starts (index), and as it finishes (index, its result): a
+  // check reports each result the moment it is known (issue 32, harness/check_events.hpp).
+  std::function<void(std::size_t)> on_started;
+  std::function<void(std::size_t, const TaskResult&)> on_finished;
   // Worker slots (issue 15): a running task occupies one of `jobs` slots, numbered from 0; in the
   // task, current_worker() is its slot. prepare_worker(w) runs in this process before a task is
   // started in slot w (an implementation running out of process keeps one server per slot, started

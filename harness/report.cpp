@@ -24,10 +24,6 @@ namespace {
 
 const Property* property_of(const Verdict& v) { return find_property(v.property); }
 
-bool is_problem(Outcome o) {
-  return o == Outcome::Fail || o == Outcome::Crash || o == Outcome::Timeout || o == Outcome::Error;
-}
-
 std::string eps_text(double units) {
   char buf[48];
   std::snprintf(buf, sizeof buf, "%.2g eps", units);
@@ -39,21 +35,7 @@ std::string eps_text(double units) {
 // How the report names a slot to fix: "slot `x`" for C++ (the slot is the function's name there);
 // for an implementation in another language, the function in the student's file.
 std::string slot_named(const CheckResult& r, const std::string& slot, const char* quote) {
-  const std::string q(quote), name = q + slot + q;
-  const std::string file = std::filesystem::path(r.info.source).filename().string();
-  if (r.info.language == "python") return "Python function " + name + (file.empty() ? "" : " in " + file);
-  if (r.info.language == "octave") return "Octave function " + name + (file.empty() ? "" : " in " + file);
-  return "slot " + name;
-}
-
-std::string first_line(const std::string& s) {
-  std::size_t at = 0;
-  for (;;) {
-    const auto n = s.find('\n', at);
-    const std::string line = n == std::string::npos ? s.substr(at) : s.substr(at, n - at);
-    if (n == std::string::npos || (line != "Exception thrown with message:" && !line.empty())) return line;
-    at = n + 1;
-  }
+  return harness::slot_named(r.info, slot, quote);
 }
 
 std::string file_safe(const std::string& s) {
@@ -277,6 +259,28 @@ std::vector<Figure> report_figures(const CheckResult& r) {
   return out;
 }
 
+std::string slot_named(const SubjectInfo& info, const std::string& slot, const char* quote) {
+  const std::string q(quote), name = q + slot + q;
+  const std::string file = std::filesystem::path(info.source).filename().string();
+  if (info.language == "python") return "Python function " + name + (file.empty() ? "" : " in " + file);
+  if (info.language == "octave") return "Octave function " + name + (file.empty() ? "" : " in " + file);
+  return "slot " + name;
+}
+
+std::string first_line(const std::string& s) {
+  std::size_t at = 0;
+  for (;;) {
+    const auto n = s.find('\n', at);
+    const std::string line = n == std::string::npos ? s.substr(at) : s.substr(at, n - at);
+    if (n == std::string::npos || (line != "Exception thrown with message:" && !line.empty())) return line;
+    at = n + 1;
+  }
+}
+
+bool is_problem(Outcome o) {
+  return o == Outcome::Fail || o == Outcome::Crash || o == Outcome::Timeout || o == Outcome::Error;
+}
+
 RootCauses root_causes(const CheckResult& r) {
   RootCauses rc;
   for (const auto& v : r.verdicts) {
@@ -338,8 +342,26 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     os << "\n";
   }
   if (!not_run.empty()) {
-    os << "(" << not_run.size() << " more properties are not provided in any scalar:";
-    for (const auto& n : not_run) os << " " << n;
+    // Issue 33: a partial file reads as what was written and how it fared, not as a list of what
+    // was not: the properties that need other slots are counted here and listed in report.md.
+    std::set<std::string> provided;
+    for (const auto& [scalar, slots] : r.provided) provided.insert(slots.begin(), slots.end());
+    const RootCauses rc = root_causes(r);
+    std::size_t unexercised = 0;
+    for (const auto& slot : provided) unexercised += r.exercised.count(slot) == 0;
+    os << "(" << provided.size() << " of " << subject_slots().size() << " slots provided";
+    if (!provided.empty()) {
+      os << ", " << (unexercised == 0 ? std::string("all checked") : std::to_string(provided.size() - unexercised) + " checked");
+      os << ", " << rc.broken.size() << " wrong by their own check";
+      if (!rc.broken.empty()) {
+        os << " (";
+        bool first = true;
+        for (const auto& [slot, v] : rc.broken) os << (first ? "" : ", ") << slot, first = false;
+        os << ")";
+      }
+    }
+    os << "; " << not_run.size() << " more properties need slots or integrators this implementation does not provide"
+       << " (report.md lists them)";
     os << ")\n";
   }
   os << "\nsummary: " << summary_counts(r) << "  (" << seconds_text(r.seconds) << ")\n";

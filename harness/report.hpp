@@ -41,6 +41,14 @@ struct RootCauses {
 };
 RootCauses root_causes(const CheckResult& r);
 
+// How a report names a slot to fix: "slot 'x'" for C++; for another language, the function in the
+// student's file ("Python function 'casimir' in mine.py").
+std::string slot_named(const SubjectInfo& info, const std::string& slot, const char* quote);
+// The first line of a message that says something (RapidCheck's "Exception thrown with message:"
+// skipped).
+std::string first_line(const std::string& s);
+bool is_problem(Outcome o);  // FAIL, CRASH, TIMEOUT or ERROR
+
 std::string console_report(const CheckResult& r, const Catalogue* catalogue, bool details = true);
 std::string markdown_report(const CheckResult& r, const Catalogue* catalogue);
 std::string junit_report(const CheckResult& r);
