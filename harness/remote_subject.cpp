@@ -1,5 +1,7 @@
 #include "harness/remote_subject.hpp"
 
+#include "harness/slot_names.hpp"
+
 #include "core/data_path.hpp"
 
 #include "harness/isolate.hpp"
@@ -12,7 +14,9 @@
 #include <cstring>
 #include <fcntl.h>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <sstream>
 #include <poll.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
@@ -446,8 +450,18 @@ RemoteDescription parse_hello(const json& h) {
           x.claims.*bc.member = c.value(bc.name, false);
           known.insert(bc.name);
         }
+        // Issue 33: a claim the suite does not know is not verified, so it fails the check (UNCHECKED)
+        // instead of passing with a warning, naming the claim it probably means and every known one.
         for (const auto& [k, v] : c.items())
-          if (!known.count(k)) d.warnings.push_back("integrator '" + x.name + "' claims '" + k + "', which is not a claim the harness knows (ignored)");
+          if (!known.count(k)) {
+            const std::vector<std::string> names(known.begin(), known.end());
+            const std::string guess = harness::closest_claim(k, names);
+            std::string list;
+            for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+            d.unchecked.push_back("integrator '" + x.name + "' claims '" + k + "', which is not a claim the suite knows, so " +
+                                  "nothing can verify it" + (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
+                                  " The claims are: " + list);
+          }
       }
       d.integrators.push_back(std::move(x));
     }
@@ -551,6 +565,20 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
     for (const auto& [slot, why] : slots) info.slot_notes[scalar][slot] = why;
   for (const auto& w : d.warnings) info.warnings.push_back(w);
   if (d.language == "python" || d.language == "octave") info.language = d.language;
+  // "did you mean" for a function named like a slot but not as one (`energy`, `euler`), as for C++.
+  if (!info.source.empty() && !info.language.empty()) {
+    std::vector<std::string> names;
+    std::error_code ec;
+    if (std::filesystem::is_directory(info.source, ec)) {
+      for (const auto& e : std::filesystem::directory_iterator(info.source, ec))
+        if (e.path().extension() == ".m") names.push_back(e.path().stem().string());
+    } else if (std::ifstream in{info.source}) {
+      std::ostringstream text;
+      text << in.rdbuf();
+      names = info.language == "python" ? harness::python_function_names(text.str()) : harness::octave_function_names(text.str());
+    }
+    for (const auto& advice : harness::slot_name_advice(names)) info.warnings.push_back(advice);
+  }
   for (const auto& u : d.unchecked) info.unchecked.push_back(u);
   for (const auto& [scalar, why] : d.scalar_unavailable) info.scalar_unavailable[scalar] = why;
   for (const char* scalar : {"double", "mp50", "exact"}) {

@@ -97,6 +97,37 @@ std::vector<std::string> cpp_function_names(const std::string& source) {
   return {names.begin(), names.end()};
 }
 
+std::vector<std::string> python_function_names(const std::string& source) {
+  static const std::regex decl(R"((?:^|\n)def\s+([A-Za-z_]\w*)\s*\()");
+  std::set<std::string> names;
+  for (auto it = std::sregex_iterator(source.begin(), source.end(), decl); it != std::sregex_iterator(); ++it)
+    names.insert((*it)[1].str());
+  return {names.begin(), names.end()};
+}
+
+std::vector<std::string> octave_function_names(const std::string& source) {
+  static const std::regex decl(R"((?:^|\n)\s*function\s+(?:\[?[\w\s,]*\]?\s*=\s*)?([A-Za-z_]\w*)\s*[\(\n;])");
+  std::set<std::string> names;
+  for (auto it = std::sregex_iterator(source.begin(), source.end(), decl); it != std::sregex_iterator(); ++it)
+    names.insert((*it)[1].str());
+  return {names.begin(), names.end()};
+}
+
+std::string closest_claim(const std::string& key, const std::vector<std::string>& known) {
+  const std::string low = lower(key);
+  std::string best;
+  std::size_t best_d = 4;
+  for (const auto& k : known) {
+    const std::size_t d = distance(low, k);
+    const bool prefix = k.size() >= 4 && (low.rfind(k.substr(0, 4), 0) == 0);  // "symmetry" for "symmetric"
+    if ((d < best_d && d * 3 <= k.size()) || (prefix && best.empty())) {
+      best = k;
+      best_d = d;
+    }
+  }
+  return best;
+}
+
 std::vector<std::string> slot_name_advice(const std::vector<std::string>& names) {
   std::vector<std::string> out;
   static const std::set<std::string> not_slots = {"rigid_body_step", "manakov_step", "clebsch_step", "manakov_clebsch_step", "main", "name", "claims",
