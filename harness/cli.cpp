@@ -131,6 +131,7 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
               << r.count(Outcome::Fail) << " FAIL, " << r.count(Outcome::NotProvided) << " NOT PROVIDED, "
               << r.count(Outcome::Crash) << " CRASH, " << r.count(Outcome::Timeout) << " TIMEOUT, "
               << r.count(Outcome::Error) << " ERROR)\n";
+    for (const auto& u : r.unchecked) std::cout << "UNCHECKED: " << u << "\n";  // why it is not a pass
   } else {
     std::cout << console_report(r, c);
   }
