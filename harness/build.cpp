@@ -579,8 +579,9 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   link.push_back(tc.property_library);
   if (!o.server) link.push_back("-Wl,--no-whole-archive");
   for (const auto& l : tc.other_libraries) link.push_back(l);
-  const fs::path program = dir / (o.server ? "server" : "check");
-  const fs::path link_file = dir / (o.server ? "link-server.cmd" : "link.cmd");
+  const std::string program_name = !o.program_name.empty() ? o.program_name : o.server ? "server" : "check";
+  const fs::path program = dir / program_name;
+  const fs::path link_file = dir / ("link-" + program_name + ".cmd");
   link.push_back("-o");
   link.push_back(program.string());
   const std::string link_cmd = shell_join(link);

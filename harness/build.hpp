@@ -59,6 +59,7 @@ struct BuildOptions {
   bool exact = true;            // compile the exact-rational instantiation
   bool server = false;          // link the protocol server (untrusted mode) instead of the check program
   bool sandbox = false;         // compile and link inside the sandbox, from a copy of the source
+  std::string program_name;     // the linked program's file name (default "check", or "server")
 };
 
 struct BuildResult {

@@ -46,6 +46,8 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_flag("--no-isolation", o.no_isolation, "run checks in this process (for a debugger; a crash ends the run)");
   app.add_flag("--no-portraits", o.no_portraits, "do not draw the integrator pictures");
   app.add_flag("--quiet,-q", o.quiet, "print only the summary");
+  app.add_flag("--definitions", o.definitions_only,
+               "only every slot's own definition check, in double (a first look; no report unless --report)");
 }
 
 CheckConfig config_from(const CheckCliOptions& o) {
@@ -79,6 +81,14 @@ CheckConfig config_from(const CheckCliOptions& o) {
   c.memory_limit_mb = o.memory_limit_mb;
   c.isolate = !o.no_isolation;
   c.portraits = !o.no_portraits && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty();
+  if (o.definitions_only) {
+    for (const auto& p : properties())
+      if (p.scope == Scope::Subject && p.needs.size() == 1 && p.id.rfind("definition_", 0) == 0 &&
+          (o.properties.empty() || std::find(o.properties.begin(), o.properties.end(), p.id) != o.properties.end()))
+        c.properties.push_back(p.id);
+    c.scalars = {ScalarKind::Double};
+    c.portraits = false;
+  }
   return c;
 }
 
@@ -107,6 +117,7 @@ std::vector<std::string> to_args(const CheckCliOptions& o) {
   if (o.no_isolation) a.push_back("--no-isolation");
   if (o.no_portraits) a.push_back("--no-portraits");
   if (o.quiet) a.push_back("--quiet");
+  if (o.definitions_only) a.push_back("--definitions");
   return a;
 }
 
@@ -126,6 +137,11 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
   ConsoleStream console(subject.name, info, cfg.run.seed, o.quiet, std::cout, std::cerr, ::isatty(STDERR_FILENO) != 0);
   streaming.listeners.push_back(&console);
   const CheckResult r = run_check(subject, info, streaming);
+  if (o.definitions_only && o.report_dir.empty()) {  // a first look: its failures were streamed
+    std::cout << "geomech: first look: " << r.ran() << " slot checks in double, " << console.failures_printed()
+              << (console.failures_printed() == 1 ? " failure" : " failures") << "\n";
+    return r.exit_code();
+  }
   if (o.quiet) {
     std::cout << r.subject << ": " << r.verdict_word() << " (" << r.count(Outcome::Pass) << " PASS, "
               << r.count(Outcome::Fail) << " FAIL, " << r.count(Outcome::NotProvided) << " NOT PROVIDED, "

@@ -33,6 +33,9 @@ struct CheckCliOptions {
   bool no_isolation = false;
   bool no_portraits = false;
   bool quiet = false;      // only the summary line and the report's path
+  // Only every slot's own definition check, in double, no report, no pictures: the first look
+  // `geomech check FILE.cpp` takes while the other scalars compile (issue 32).
+  bool definitions_only = false;
 };
 
 void add_check_options(CLI::App& app, CheckCliOptions& o);

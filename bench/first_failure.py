@@ -1,0 +1,35 @@
+#!/usr/bin/env python3
+"""Time from a command to the first thing a student can act on (issue 32): runs the command, reads
+its output as it comes, and stops it at the first FIRST FIX or FALSE CLAIM line, printing the time.
+The whole run is then one command whose duration is that time, so a timing tool that runs a command
+several times (hyperfine, for instance) measures it directly:
+
+    bench/first_failure.py ./geomech check examples/students/bug_floor_division.py
+    bench/first_failure.py ./geomech check examples/students/bug_euler_sign.cpp --cache-dir "$(mktemp -d)"
+
+Exit status 0 when such a line came, 1 when the command ended without one."""
+import os
+import signal
+import subprocess
+import sys
+import time
+
+
+def main(argv):
+    if not argv:
+        sys.exit(__doc__)
+    start = time.monotonic()
+    p = subprocess.Popen(argv, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True, start_new_session=True)
+    for line in p.stdout:
+        if "FIRST FIX" in line or "FALSE CLAIM" in line:
+            print(f"{time.monotonic() - start:.2f} s to: {line.strip()[:160]}")
+            os.killpg(p.pid, signal.SIGKILL)
+            p.wait()
+            return 0
+    p.wait()
+    print(f"no FIRST FIX or FALSE CLAIM line in {time.monotonic() - start:.2f} s (exit status {p.returncode})")
+    return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
