@@ -1,9 +1,11 @@
 #include "harness/check.hpp"
 
+#include "harness/inert_text.hpp"
 #include "harness/isolate.hpp"
 #include "harness/portrait.hpp"
 #include "harness/work_precision.hpp"
 #include "harness/verdict_io.hpp"
+#include "properties/support/show.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -277,7 +279,15 @@ std::vector<Verdict> verdicts_of(const SubjectSet& s, const SubjectInfo& info, c
   } else {
     vs = {abnormal_verdict(s, item, t, cfg.run)};
   }
-  for (auto& v : vs) explain_not_provided(v, *item.property, s, info);
+  for (auto& v : vs) {
+    explain_not_provided(v, *item.property, s, info);
+    // What the code under test wrote or raised reaches the reports as inert text (issue 34).
+    v.message = inert_text(v.message);
+    for (auto& [type, value] : v.counterexample) value = inert_text(value);
+    for (auto& n : v.notes) n = inert_text(n);
+    for (auto& c : v.claims) c.evidence = inert_text(c.evidence);
+    v.discard_reason = inert_text(v.discard_reason);
+  }
   return vs;
 }
 
@@ -291,7 +301,9 @@ std::tuple<int, int, int, int> schedule_key(const Item& item, bool replayed) {
     group = 0;  // a slot's own definition check
   else
     group = p.tolerance == ToleranceClass::Exact ? 1 : 2;  // identities before flows
-  const int scalar = item.kind == ScalarKind::Double ? 0 : item.kind == ScalarKind::Exact ? 1 : 2;
+  // Exact first where a property runs in rationals: its counterexample is the clearest (no
+  // tolerance) and its cases are cheap; then double; 50 digits cost most.
+  const int scalar = item.kind == ScalarKind::Exact ? 0 : item.kind == ScalarKind::Double ? 1 : 2;
   return {replayed ? 0 : 1, group, scalar, 0};
 }
 
@@ -370,6 +382,9 @@ std::string reproduce_command(const CheckResult& r, const Verdict& v) {
 
 CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckConfig& cfg) {
   const auto start = std::chrono::steady_clock::now();
+  // Values and types in failures are written in the implementation's language (support/show.hpp);
+  // the checks' processes inherit it.
+  show_style() = info.language == "python" ? ShowStyle::Python : info.language == "octave" ? ShowStyle::Octave : ShowStyle::Cpp;
   CheckResult result;
   result.subject = s.name;
   result.description = s.description;
@@ -419,8 +434,8 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   // The order that finds the likely mistake first (issue 32): what failed last time; then every
   // slot's own definition check, in every scalar; then the other properties, algebraic identities
   // before flows; then the integrators' claims after the slots their steps call; the long runs
-  // (bounded energy, then the pictures and the work-precision diagram) last. Within a group double
-  // and the exact rationals before 50 digits, which cost most. The verdicts are sorted afterwards:
+  // (bounded energy, then the pictures and the work-precision diagram) last. Within a group the
+  // exact rationals and double before 50 digits, which cost most. The verdicts are sorted afterwards:
   // the order changes when a result is known, never what it is.
   std::vector<bool> replayed(items.size(), false);
   for (std::size_t i = 0; i < items.size(); ++i) {

@@ -281,13 +281,23 @@ bool is_problem(Outcome o) {
   return o == Outcome::Fail || o == Outcome::Crash || o == Outcome::Timeout || o == Outcome::Error;
 }
 
+// Which of two failures of a slot's own check shows it more clearly (issue 33): an exact
+// counterexample (it fails in rationals, no tolerance involved) before a float one, and among float
+// ones the residual farthest above its allowance; a marginal case (a few eps over) comes last.
+bool clearer(const Verdict& a, const Verdict& b) {
+  const bool ea = a.scalar == "exact" && a.outcome == Outcome::Fail, eb = b.scalar == "exact" && b.outcome == Outcome::Fail;
+  if (ea != eb) return ea;
+  return a.worst_eps_units > b.worst_eps_units;
+}
+
 RootCauses root_causes(const CheckResult& r) {
   RootCauses rc;
   for (const auto& v : r.verdicts) {
     if (!is_problem(v.outcome)) continue;
     const Property* p = property_of(v);
-    if (p && p->needs.size() == 1 && p->scope == Scope::Subject && !rc.broken.count(p->needs.front()))
-      rc.broken[p->needs.front()] = &v;
+    if (!p || p->needs.size() != 1 || p->scope != Scope::Subject) continue;
+    auto it = rc.broken.find(p->needs.front());
+    if (it == rc.broken.end() || clearer(v, *it->second)) rc.broken[p->needs.front()] = &v;
   }
   for (const auto& [slot, direct] : rc.broken) rc.explained.insert(direct->property);
   std::set<std::string> listed;

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <unordered_map>
 
@@ -159,6 +160,28 @@ const RcEnv& rc_env() {
   return env;
 }
 
+// The type of a counterexample value in the student's language (issue 33): Python and Octave
+// students never wrote Vec3<Real50>.
+std::string in_language(const std::string& shown) {
+  const ShowStyle style = show_style();
+  if (style == ShowStyle::Cpp) return shown;
+  static const std::regex typed(R"((Vec|Mat)(\w+)<(\w+)>)");
+  std::smatch m;
+  auto scalar = [&](const std::string& S) {
+    if (style == ShowStyle::Octave) return std::string("double");
+    return S == "Rational" ? std::string("Fraction") : S == "double" ? std::string("float") : std::string("mpf");
+  };
+  if (std::regex_match(shown, m, typed)) {
+    const std::string kind = m[1], dims = m[2], S = scalar(m[3]);
+    if (style == ShowStyle::Octave)
+      return kind == "Vec" ? (dims == "X" ? "column vector" : dims + "x1 column vector") : (dims == "XxX" ? "matrix" : dims + " matrix");
+    return kind == "Vec" ? (dims == "X" ? "list of " : dims + "-list of ") + S
+                         : (dims == "XxX" ? "list of rows of " : dims + " list of rows of ") + S;
+  }
+  if (shown == "double" || shown == "Real50" || shown == "Rational") return scalar(shown);
+  return shown;
+}
+
 // RapidCheck names counterexample values by their C++ type; Eigen-over-Boost types are pages
 // long. Shorten them to Vec3<Rational>, Mat3x3<Real50>, VecX<double>, ...
 std::string pretty_type(const std::string& t) {
@@ -245,22 +268,35 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   SilentListener listener(start, o, params.maxSuccess);
   std::optional<rc::detail::TestResult> result;
   int budget_passed = -1;  // >= 0: the case budget stopped the run after this many passing cases
-  try {
-    result = rc::detail::checkProperty(
-        rc::detail::toProperty([&] {
-          if (listener.shrink_budget_spent()) RC_DISCARD(kShrinkStopped);
-          recorded_series().clear();
-          recorded_notes().clear();
-          try {
-            fn();
-          } catch (const SlotMissing& e) {
-            missing_slot = e.slot();
-            throw;
-          }
-        }),
-        metadata, params, listener, reproduce);
-  } catch (const CaseBudgetSpent& b) {
-    budget_passed = b.passed;
+  auto attempt = [&](const std::unordered_map<std::string, rc::detail::Reproduce>& with) {
+    try {
+      result = rc::detail::checkProperty(
+          rc::detail::toProperty([&] {
+            if (listener.shrink_budget_spent()) RC_DISCARD(kShrinkStopped);
+            recorded_series().clear();
+            recorded_notes().clear();
+            try {
+              fn();
+            } catch (const SlotMissing& e) {
+              missing_slot = e.slot();
+              throw;
+            }
+          }),
+          metadata, params, listener, with);
+    } catch (const CaseBudgetSpent& b) {
+      budget_passed = b.passed;
+    }
+  };
+  attempt(reproduce);
+  // Issue 33: a replayed case that passes alone, where the check it came from failed, depends on
+  // what the implementation kept from earlier calls (a cache, a global). The replay then runs the
+  // whole sequence of the check again, from its seed, and names the state if it fails there.
+  bool state_between_calls = false;
+  if (rc::detail::Error replay_error; !reproduce.empty() && result && result->match(replay_error) &&
+                                      replay_error.description.find("not a failure") != std::string::npos) {
+    attempt({});
+    rc::detail::FailureResult again;
+    state_between_calls = result && result->match(again);
   }
 
   v.series = recorded_series();
@@ -296,6 +332,12 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
     } else {
       v.outcome = Outcome::Fail;
       v.message = failure.description;
+      if (state_between_calls)
+        v.message = "fails after " + std::to_string(failure.numSuccess) +
+                    " earlier cases of this check, not alone: the case replayed by itself passes, so the "
+                    "implementation keeps state between calls (a cache, a global, a default argument changed in "
+                    "place) and a later call sees what an earlier one left. The whole sequence replays with "
+                    "--seed instead of --reproduce.\n" + failure.description;
       auto example = failure.counterExample;
       if (listener.failed && failure.description.find(kShrinkStopped) != std::string::npos) {
         // The final run of the smallest case was discarded by the shrink budget: that case failed
@@ -304,8 +346,9 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
         v.message = listener.failure_description;
         example = listener.failure_example;
       }
-      for (const auto& [type, value] : example) v.counterexample.emplace_back(pretty_type(type), value);
-      v.reproduce = rc::detail::reproduceMapToString({{metadata.id, failure.reproduce}});
+      for (const auto& [type, value] : example) v.counterexample.emplace_back(in_language(pretty_type(type)), value);
+      // A state-dependent failure replays as the whole sequence (the seed), not as its last case.
+      if (!state_between_calls) v.reproduce = rc::detail::reproduceMapToString({{metadata.id, failure.reproduce}});
     }
   } else if (result->match(gave_up)) {
     v.outcome = Outcome::Error;
@@ -395,6 +438,14 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
 }  // namespace
 
 std::vector<Verdict> run_property(const Property& p, const SubjectSet& s, ScalarKind k, const RunOptions& o) {
+  // A slot's own definition check compares the subject's result with the notes' formula: its
+  // failures say "yours" and "the notes'" rather than lhs and rhs (issue 33).
+  struct Sides {
+    detail::SideNames saved = detail::side_names();
+    ~Sides() { detail::side_names() = saved; }
+  } restore;
+  const bool definition = p.scope == Scope::Subject && p.needs.size() == 1 && p.id.rfind("definition_", 0) == 0;
+  detail::side_names() = definition ? detail::SideNames{"yours", "the notes'"} : detail::SideNames{};
   switch (k) {
     case ScalarKind::Double: return run_in<double>(p, s, k, o, &p.d, &p.int_d);
     case ScalarKind::MP50: return run_in<Real50>(p, s, k, o, &p.mp, &p.int_mp);

@@ -168,5 +168,51 @@ TEST(Runner, TheShrinkBudgetKeepsTheSmallestFailureFoundSoFar) {
   EXPECT_EQ(again.message, v.message);
 }
 
+// Issue 33: a failure that depends on what the implementation kept from earlier calls (here a call
+// counter: right for the first 5 calls of a process, wrong after) fails in a check, and its replay
+// alone, in a fresh process (the counter reset), passes. The replay is then not an ERROR ("Reproduced
+// result is not a failure") but runs the whole sequence again and fails, saying so; its replay is
+// by seed (no reproduce string). Control: a failure that does not depend on state replays as usual.
+int g_calls = 0;
+
+TEST(Runner, AFailureThatNeedsEarlierCallsIsNamedAndReplaysTheSequence) {
+  Property p = half_discarding();
+  p.d = [](const Subject<double>&) {
+    const int k = *rc::gen::inRange(0, 100);
+    ++g_calls;
+    require("the slot is right", g_calls <= 5, "k = " + std::to_string(k) + ", call " + std::to_string(g_calls));
+  };
+  RunOptions o;
+  o.honour_rc_params = false;
+  g_calls = 0;
+  const Verdict v = run_property(p, reference_subject(), ScalarKind::Double, o).at(0);
+  ASSERT_EQ(v.outcome, Outcome::Fail) << format_verdict(v);
+  ASSERT_FALSE(v.reproduce.empty());
+  RunOptions replay = o;
+  replay.reproduce = v.reproduce;
+  g_calls = 0;  // a fresh process
+  const Verdict again = run_property(p, reference_subject(), ScalarKind::Double, replay).at(0);
+  EXPECT_EQ(again.outcome, Outcome::Fail) << format_verdict(again);
+  EXPECT_NE(again.message.find("not alone: the case replayed by itself passes, so the implementation keeps state "
+                               "between calls"),
+            std::string::npos)
+      << again.message;
+  // (the replay of the case alone was one call more, so the sequence fails a case earlier than before)
+  EXPECT_NE(again.message.find("earlier cases of this check, not alone"), std::string::npos) << again.message;
+  EXPECT_TRUE(again.reproduce.empty()) << "replayed by seed, the whole sequence";
+
+  // The control: a stateless failure replays as itself, without the note.
+  p.d = [](const Subject<double>&) {
+    const int k = *rc::gen::inRange(0, 100);
+    require("k < 50", k < 50, "k = " + std::to_string(k));
+  };
+  const Verdict w = run_property(p, reference_subject(), ScalarKind::Double, o).at(0);
+  ASSERT_EQ(w.outcome, Outcome::Fail);
+  replay.reproduce = w.reproduce;
+  const Verdict w2 = run_property(p, reference_subject(), ScalarKind::Double, replay).at(0);
+  EXPECT_EQ(w2.outcome, Outcome::Fail);
+  EXPECT_EQ(w2.message.find("keeps state between calls"), std::string::npos) << w2.message;
+}
+
 }  // namespace
 }  // namespace gm

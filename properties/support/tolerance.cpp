@@ -1,5 +1,7 @@
 #include "properties/support/tolerance.hpp"
 
+#include <algorithm>
+
 #include "properties/support/figures.hpp"
 
 #include <cstdio>
@@ -23,21 +25,31 @@ ResidualLog& residual_log() {
 
 namespace detail {
 
+SideNames& side_names() {
+  static SideNames names;
+  return names;
+}
+
 std::string describe_failure(std::string_view what, std::string_view kind, const std::string& lhs,
                              const std::string& rhs, const std::string& diff, const std::string& residual,
                              double units, const std::string& allowed) {
+  const SideNames& sides = side_names();
+  const bool named = sides.lhs != "lhs";
+  const std::string diff_name = named ? "difference" : "lhs-rhs";
+  const std::size_t width = std::max({sides.lhs.size(), sides.rhs.size(), diff_name.size(), std::size_t(8)});
+  auto label = [&](const std::string& l) { return "  " + l + std::string(width - l.size() + 1, ' ') + "= "; };
   std::ostringstream os;
   os << what << " does not hold (" << kind << " tolerance)\n"
-     << "  lhs      = " << lhs << "\n"
-     << "  rhs      = " << rhs << "\n"
-     << "  lhs-rhs  = " << diff << "\n"
-     << "  residual = " << residual;
+     << label(sides.lhs) << lhs << "\n"
+     << label(sides.rhs) << rhs << "\n"
+     << label(diff_name) << diff << "\n"
+     << label("residual") << residual;
   if (kind != "exact") {
     char buf[64];
     std::snprintf(buf, sizeof buf, "%.3g", units);
     os << " (" << buf << " eps * scale)";
   }
-  os << "\n  allowed  = " << allowed;
+  os << "\n" << label("allowed") << allowed;
   return os.str();
 }
 

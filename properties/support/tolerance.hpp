@@ -101,6 +101,14 @@ double eps_units(const T& residual, const T& scale) {
   }
 }
 
+// How a failure names the two sides of a comparison (issue 33): a definition check compares the
+// subject's slot with the notes' formula and says "yours" and "the notes'"; the other properties
+// compare two computations and say "lhs" and "rhs". The runner sets them for each property.
+struct SideNames {
+  std::string lhs = "lhs", rhs = "rhs";
+};
+SideNames& side_names();
+
 std::string describe_failure(std::string_view what, std::string_view kind, const std::string& lhs,
                              const std::string& rhs, const std::string& diff, const std::string& residual,
                              double units, const std::string& allowed);
@@ -120,8 +128,8 @@ void require_close_plain(std::string_view what, const X& lhs, const X& rhs, cons
   auto& log = residual_log();
   ++log.checks;
   if (!detail::finite(lhs) || !detail::finite(rhs)) {
-    fail(std::string(what) + ": non-finite value (NaN or Inf); a NaN is never a pass\n  lhs = " +
-            show_value(lhs) + "\n  rhs = " + show_value(rhs));
+    fail(std::string(what) + ": non-finite value (NaN or Inf); a NaN is never a pass\n  " + detail::side_names().lhs +
+         " = " + show_value(lhs) + "\n  " + detail::side_names().rhs + " = " + show_value(rhs));
   }
   const T residual = T(detail::residual_of(lhs, rhs));
   T allowed(0);
