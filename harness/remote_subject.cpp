@@ -1,5 +1,6 @@
 #include "harness/remote_subject.hpp"
 
+#include "harness/inert_text.hpp"
 #include "harness/slot_names.hpp"
 
 #include "core/data_path.hpp"
@@ -555,15 +556,15 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   info.worker_done = [conn](int w, bool normally) { conn->worker_done(w, normally); };
   SubjectSet s;
   s.name = name;
-  s.description = d.description.empty() ? "a " + d.language + " implementation" : d.description;
+  s.description = d.description.empty() ? "a " + d.language + " implementation" : harness::inert_text(d.description);
   s.d = make_part<double>(conn, d);
   s.mp = make_part<Real50>(conn, d);
   s.q = make_part<Rational>(conn, d);
   for (const auto& i : d.integrators)
     if (i.has_claims) s.claims.push_back(i.claims);
   for (const auto& [scalar, slots] : d.notes)
-    for (const auto& [slot, why] : slots) info.slot_notes[scalar][slot] = why;
-  for (const auto& w : d.warnings) info.warnings.push_back(w);
+    for (const auto& [slot, why] : slots) info.slot_notes[scalar][slot] = harness::inert_text(why);
+  for (const auto& w : d.warnings) info.warnings.push_back(harness::inert_text(w));
   if (d.language == "python" || d.language == "octave") info.language = d.language;
   // "did you mean" for a function named like a slot but not as one (`energy`, `euler`), as for C++.
   if (!info.source.empty() && !info.language.empty()) {
@@ -579,7 +580,7 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
     }
     for (const auto& advice : harness::slot_name_advice(names)) info.warnings.push_back(advice);
   }
-  for (const auto& u : d.unchecked) info.unchecked.push_back(u);
+  for (const auto& u : d.unchecked) info.unchecked.push_back(harness::inert_text(u));
   for (const auto& [scalar, why] : d.scalar_unavailable) info.scalar_unavailable[scalar] = why;
   for (const char* scalar : {"double", "mp50", "exact"}) {
     const bool have = (std::string(scalar) == "double" ? s.d != nullptr

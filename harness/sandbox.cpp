@@ -43,10 +43,14 @@ long processes_of(unsigned uid) {
 unsigned sandbox_uid() { return ::geteuid() == 0 ? kNobody : ::geteuid(); }
 
 std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const SandboxSpec& spec) {
-  std::vector<std::string> cmd;
+  // The sandbox's own processes (setpriv, bubblewrap, its init in the new PID namespace) start from
+  // an empty environment (issue 34): inside, /proc/1/environ is bubblewrap's, and it must hold
+  // nothing of the harness's (the lecturer's or CI's tokens and paths). --clearenv below does the
+  // same for the submission itself.
+  std::vector<std::string> cmd{which("env"), "-i", "PATH=/usr/bin:/bin"};
   if (::geteuid() == 0)
-    cmd = {which("setpriv"), "--reuid=" + std::to_string(kNobody), "--regid=" + std::to_string(kNobody),
-           "--clear-groups", "--"};
+    cmd.insert(cmd.end(), {which("setpriv"), "--reuid=" + std::to_string(kNobody), "--regid=" + std::to_string(kNobody),
+                           "--clear-groups", "--"});
   cmd.insert(cmd.end(), {which("bwrap"), "--unshare-all", "--die-with-parent", "--new-session", "--clearenv"});
   for (const char* sys : {"/usr", "/etc"}) cmd.insert(cmd.end(), {"--ro-bind", sys, sys});
   for (const char* link : {"/bin", "/sbin", "/lib", "/lib64", "/lib32", "/libx32"}) {

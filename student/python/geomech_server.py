@@ -216,12 +216,22 @@ def load(path):
     return mod
 
 
+def inert(text):
+    """Text from the student's code as it may travel and be shown (issue 34): a lone surrogate (from
+    bytes decoded with surrogateescape, or '\\udcff' written in a string), which json.dumps would
+    send as an escape no UTF-8 reader accepts, becomes the visible text \\udcff. Control characters
+    are made visible on the harness's side, where every report is written."""
+    if not isinstance(text, str):
+        text = repr(text)
+    return text.encode("utf-8", "backslashreplace").decode("utf-8")
+
+
 def student_traceback(exc):
     """The traceback without the server's own frames."""
     tb = exc.__traceback__
     while tb is not None and tb.tb_frame.f_code.co_filename == __file__:
         tb = tb.tb_next
-    return "".join(traceback.format_exception(type(exc), exc, tb)).rstrip()
+    return inert("".join(traceback.format_exception(type(exc), exc, tb)).rstrip())
 
 
 def get(obj, key, default=None):
@@ -302,7 +312,7 @@ def probe(fn, sig, scalar):
     except Exception as e:
         tb = student_traceback(e).splitlines()
         return "fails in %s: %s" % ({"double": "float", "mp50": "mpmath.mpf", "exact": "Fraction"}[scalar],
-                                   tb[-1] if tb else repr(e))
+                                   tb[-1] if tb else inert(repr(e)))
 
 
 class Lines:
@@ -359,12 +369,12 @@ def answer(req, functions, steps):
             value = fn(*args)
             results.append({"ok": encode(sig[0], scalar, value)})
         except Inexact as e:
-            results.append({"error": "%s returned %s" % (slot, e)})
+            results.append({"error": inert("%s returned %s" % (slot, e))})
         except SystemExit as e:
             results.append({"error": "%s called sys.exit(%r): a slot function must return its value" % (slot, e.code)})
         except Exception as e:
             tb = student_traceback(e)
-            results.append({"error": tb.splitlines()[-1] if tb else repr(e), "traceback": tb})
+            results.append({"error": tb.splitlines()[-1] if tb else inert(repr(e)), "traceback": tb})
     return {"id": req.get("id"), "results": results}
 
 
@@ -496,7 +506,7 @@ def main():
         integrators.append(entry)
         for s in isteps:
             steps[(iname, s)] = get(obj, s)
-    description = getattr(mod, "description", None) or ((mod.__doc__ or "").strip().splitlines() or [""])[0]
+    description = inert(getattr(mod, "description", None) or ((mod.__doc__ or "").strip().splitlines() or [""])[0])
     hello = {"protocol": PROTOCOL, "version": VERSION, "language": "python",
              "language_version": sys.version.split()[0], "description": description,
              "slots": slots, "integrators": integrators, "notes": notes, "warnings": warnings,
