@@ -51,6 +51,10 @@ std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const S
   if (::geteuid() == 0)
     cmd.insert(cmd.end(), {which("setpriv"), "--reuid=" + std::to_string(kNobody), "--regid=" + std::to_string(kNobody),
                            "--clear-groups", "--"});
+  // Inside, /proc/1/cmdline is this command line: what it binds is a private copy under a fresh
+  // temporary name (harness/private_copy.hpp), not the lecturer's folders (issue 34). bubblewrap
+  // stays PID 1 (--as-pid-1 was tried: a server that is PID 1 ignores the signals the kernel sends
+  // it, SIGXFSZ at the file-size limit among them, and reaps no orphan).
   cmd.insert(cmd.end(), {which("bwrap"), "--unshare-all", "--die-with-parent", "--new-session", "--clearenv"});
   for (const char* sys : {"/usr", "/etc"}) cmd.insert(cmd.end(), {"--ro-bind", sys, sys});
   for (const char* link : {"/bin", "/sbin", "/lib", "/lib64", "/lib32", "/libx32"}) {
@@ -63,6 +67,7 @@ std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const S
   cmd.insert(cmd.end(), {"--proc", "/proc", "--dev", "/dev", "--size",
                          std::to_string(static_cast<long long>(spec.limits.scratch_mb) << 20), "--tmpfs", "/tmp"});
   for (const auto& p : spec.read_only) cmd.insert(cmd.end(), {"--ro-bind", p, p});
+  for (const auto& [here, inside] : spec.mounts) cmd.insert(cmd.end(), {"--ro-bind", here, inside});
   if (!spec.writable.empty()) cmd.insert(cmd.end(), {"--bind", spec.writable, spec.writable});
   cmd.insert(cmd.end(), {"--setenv", "PATH", "/usr/bin:/bin", "--setenv", "HOME", "/tmp", "--setenv", "LANG", "C.UTF-8"});
   for (const auto& [k, v] : spec.env) cmd.insert(cmd.end(), {"--setenv", k, v});

@@ -11,6 +11,9 @@
 //   - no network (own network namespace with no interface up), no other process (own PID
 //     namespace), a new session (no terminal), no capabilities; when started as root, it runs as
 //     nobody (so the process limit applies: root is exempt from RLIMIT_NPROC);
+//   - no environment but the documented one, in its own processes and in the sandbox's (bubblewrap
+//     is its PID 1: /proc/1/environ is empty but for PATH, /proc/1/cmdline names only the private
+//     copy's temporary folder, harness/private_copy.hpp) (issue 34);
 //   - limits: address space, CPU time, processes, size of any file written, open files.
 #pragma once
 
@@ -31,6 +34,10 @@ struct SandboxLimits {
 
 struct SandboxSpec {
   std::vector<std::string> read_only;  // visible read-only, at the same path
+  // Visible read-only at another path (path here, path inside): a submission and the suite's files
+  // it needs are shown under neutral names (/submission, /geomech), so that nothing inside, not
+  // even the program's own command line, names a folder of the machine (issue 34).
+  std::vector<std::pair<std::string, std::string>> mounts;
   std::string writable;                // a directory visible read-write at the same path (or empty)
   std::string chdir;                   // working directory inside (default /tmp)
   std::vector<std::pair<std::string, std::string>> env;  // the environment inside (besides PATH, HOME, LANG)

@@ -20,6 +20,7 @@
 #include "harness/protocol_codec.hpp"
 #include "harness/remote_subject.hpp"
 #include "harness/report.hpp"
+#include "harness/private_copy.hpp"
 #include "harness/sandbox.hpp"
 #include "harness/slot_conventions.hpp"
 #include "harness/slot_names.hpp"
@@ -38,8 +39,12 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <thread>
+#include <csignal>
+#include <sys/prctl.h>
+#include <unistd.h>
 #include <iomanip>
 #include <iostream>
 #include <map>
@@ -213,14 +218,25 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
   std::string language, why;
   std::vector<std::string> cmd = protocol::server_command(file, &language, &why);
   nlohmann::json notes;
+  // What the sandbox sees of this machine besides the system: a private copy of the submission
+  // and of the suite's server, under neutral names (harness/private_copy.hpp).
+  std::optional<harness::PrivateCopy> copy;
+  try {
+    copy.emplace();
+  } catch (const std::exception& e) {
+    std::cerr << "geomech check: " << e.what() << "\n";
+    return 2;
+  }
   if (!cmd.empty()) {
     // Python or Octave: the interpreter and its libraries are in /usr; the server script and the
-    // student's file are shown read-only, nothing else.
-    for (std::size_t i = 1; i < cmd.size(); ++i)
-      if (fs::exists(cmd[i], ec)) {
-        cmd[i] = fs::canonical(cmd[i], ec).string();
-        spec.read_only.push_back(cmd[i]);
-      }
+    // student's file (or folder) are the last two arguments.
+    try {
+      cmd[cmd.size() - 2] = copy->add(cmd[cmd.size() - 2], "geomech");
+      cmd.back() = copy->add(cmd.back(), "submission");
+    } catch (const std::exception& e) {
+      std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+      return 2;
+    }
   } else if (fs::path(file).extension() == ".cpp" || fs::path(file).extension() == ".cc") {
     const harness::Toolchain tc = harness::load_toolchain(harness::default_toolchain_path());
     bo.server = true;
@@ -235,14 +251,19 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
               << std::fixed << std::setprecision(1) << b.seconds << " s\n";
     notes = b.notes;
     language = "c++";
-    cmd = {b.program};
-    spec.read_only.push_back(b.program);
+    try {
+      cmd = {copy->add(b.program, "submission")};
+    } catch (const std::exception& e) {
+      std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+      return 2;
+    }
     for (const auto& f : tc.flags)
       if (f.find("-fsanitize=") == 0 && f.find("address") != std::string::npos) spec.limits.memory_mb = 0;
   } else {
     std::cerr << "geomech check: " << file << ": untrusted mode checks .cpp, .py and .m files\n";
     return 2;
   }
+  spec.mounts = copy->mounts();
   return run_protocol_check(file, harness::sandboxed(cmd, spec), language, o, notes, " --untrusted", t0, bo.name);
 }
 
@@ -483,6 +504,14 @@ int run_catalogue(bool markdown, bool check, const std::string& path) {
 }  // namespace gm
 
 int main(int argc, char** argv) {
+  // A check started by a class run dies with it (harness/class_mode.cpp): an interrupted class
+  // leaves no check running behind it, writing into the reports a resumed run is writing.
+  if (std::getenv("GEOMECH_DIE_WITH_PARENT")) {
+    const pid_t parent = ::getppid();
+    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (::getppid() != parent) return 2;
+    ::unsetenv("GEOMECH_DIE_WITH_PARENT");
+  }
   CLI::App app{"geomech: the rigid-body lecture notes as an executable specification"};
   app.require_subcommand(1);
 
@@ -523,11 +552,22 @@ int main(int argc, char** argv) {
   gm::harness::add_check_options(*klass, class_opts.check);
   std::string shard;
   klass->add_option("--shard", shard, "K/N: check only the K-th of N deterministic shares of the folder (CI matrix, Slurm array)");
+  klass->add_flag("--fresh", class_opts.fresh,
+                  "check every implementation again (by default a re-run resumes: one unchanged since its last complete "
+                  "check, in source, options and suite, is not checked again)");
+  auto add_grade_options = [](CLI::App& app, gm::harness::GradeOptions& g) {
+    app.add_option("--grades", g.csv, "write a gradebook CSV for Moodle or Canvas (docs/GRADEBOOK.md)");
+    app.add_option("--rubric", g.rubric, "the rubric of --grades, JSON (default: partial credit per correct slot)");
+    app.add_option("--roster", g.roster, "CSV: implementation name -> the identifiers the LMS matches students on");
+  };
+  add_grade_options(*klass, class_opts.grades);
   std::vector<std::string> merge_dirs;
   std::string merge_out;
   auto* merge = app.add_subcommand("merge-class", "combine the report folders of check-class --shard K/N runs into one class report");
   merge->add_option("out", merge_out, "the folder for the combined report")->required();
   merge->add_option("shards", merge_dirs, "the shards' report folders")->required();
+  gm::harness::GradeOptions merge_grades;
+  add_grade_options(*merge, merge_grades);
 
   gm::harness::TrajectoryCheckOptions tro;
   std::vector<std::string> trajectory_files, tr_inertia, tr_preserves;
@@ -628,7 +668,7 @@ int main(int argc, char** argv) {
       }
       return gm::run_builtin_check(subject, co);
     }
-    if (*merge) return gm::harness::merge_class(merge_dirs, merge_out);
+    if (*merge) return gm::harness::merge_class(merge_dirs, merge_out, merge_grades);
     if (*klass) {
       if (!shard.empty()) {
         const auto slash = shard.find('/');
