@@ -1,4 +1,5 @@
 #include "harness/class_mode.hpp"
+#include "harness/gradebook.hpp"
 #include "harness/sandbox.hpp"
 
 #include "harness/isolate.hpp"
@@ -8,11 +9,16 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <csignal>
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
+#include <set>
 #include <sstream>
 
 namespace gm::harness {
@@ -47,6 +53,194 @@ std::string cell(int pass, int run, int np, int problems) {
   if (problems > 0) os << " (" << problems << " bad)";
   if (np > 0) os << " +" << np << " n/p";
   return os.str();
+}
+
+// A row as class-shard.json and class-row.json keep it (its report is read from its folder).
+json row_json(const Row& row) {
+  return {{"name", row.impl.name}, {"source", row.impl.source}, {"built", row.built},
+          {"build_message", row.build_message}, {"build_seconds", row.build_seconds},
+          {"exit_code", row.exit_code}, {"check_seconds", row.check_seconds}, {"problem", row.problem}};
+}
+
+// The row back, with the report of a checked implementation read from `reports`/<name>.
+Row row_from_json(const json& r, const fs::path& reports) {
+  Row row;
+  row.impl = {r.at("name"), r.at("source")};
+  row.built = r.at("built");
+  row.build_message = r.at("build_message");
+  row.build_seconds = r.at("build_seconds");
+  row.exit_code = r.at("exit_code");
+  row.check_seconds = r.at("check_seconds");
+  row.problem = r.at("problem");
+  if (row.built && row.problem.empty()) {
+    std::ifstream f(reports / row.impl.name / "verdicts.json");
+    try {
+      row.report = json::parse(f);
+    } catch (const std::exception& e) {
+      row.problem = std::string("its report cannot be read: ") + e.what();
+    }
+  }
+  return row;
+}
+
+// What a check of an implementation depends on, as a fingerprint (FNV-1a, 64 bits): its source
+// (the file, or every file of its folder, by name and content), the options it is checked with and
+// the suite itself (this program's bytes). Equal fingerprints: the same check would run again.
+struct Fingerprint {
+  std::uint64_t h = 14695981039346656037ull;
+  void add(std::string_view bytes) {
+    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ 0xff) * 1099511628211ull;  // a separator, so that ("ab", "c") differs from ("a", "bc")
+  }
+  void add_file(const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::ostringstream os;
+    os << f.rdbuf();
+    add(os.str());
+  }
+  void add_tree(const fs::path& p) {
+    std::error_code ec;
+    if (fs::is_directory(p, ec)) {
+      std::vector<fs::path> entries;
+      for (const auto& e : fs::directory_iterator(p, ec)) entries.push_back(e.path());
+      std::sort(entries.begin(), entries.end());
+      for (const auto& e : entries) {
+        add(e.filename().string());
+        add_tree(e);
+      }
+    } else {
+      add_file(p);
+    }
+  }
+  std::string hex() const {
+    std::ostringstream os;
+    os << std::hex << std::setw(16) << std::setfill('0') << h;
+    return os.str();
+  }
+};
+
+const std::string& suite_identity() {
+  static const std::string id = [] {
+    Fingerprint f;
+    f.add_file("/proc/self/exe");
+    return f.hex();
+  }();
+  return id;
+}
+
+// One student's results as the gradebook reads them.
+StudentResult student_result(const Row& row) {
+  StudentResult s;
+  s.name = row.impl.name;
+  s.report = row.impl.name + "/report.md";
+  if (!row.built && row.problem.empty()) {
+    s.status = "does not compile";
+    s.first_fix = "does not compile";
+    return s;
+  }
+  if (!row.problem.empty()) {
+    s.status = "not checked";
+    s.first_fix = row.problem.substr(0, row.problem.find('\n'));
+    return s;
+  }
+  s.status = "checked";
+  std::set<std::string> provided;
+  const json by_scalar = row.report.value("provided", json::object());
+  for (const auto& [scalar, slots] : by_scalar.items())
+    for (const auto& slot : slots) provided.insert(slot.get<std::string>());
+  // Credit only for what a check exercised: a slot no selected property calls is not known correct.
+  const json exercised = row.report.value("exercised", json::object());
+  for (const auto& slot : provided)
+    if (exercised.contains(slot) && !exercised.at(slot).empty()) s.provided.push_back(slot);
+  for (const auto& f : row.report.value("first_fix", json::array())) {
+    s.wrong.push_back(f.at("slot"));
+    if (s.first_fix.empty()) s.first_fix = f.at("line");
+  }
+  for (const auto& v : row.report.at("verdicts")) {
+    const std::string out = v.at("outcome").get<std::string>();
+    if (out == "NOT PROVIDED") continue;
+    auto& a = s.areas[v.value("area", "?")];
+    ++a.second;
+    if (out == "PASS") ++a.first;
+  }
+  for (const auto& integ : row.report.value("integrators", json::array()))
+    for (const auto& c : integ.at("claims")) {
+      const std::string claimed = c.value("claimed", "");
+      if (claimed.empty() || claimed == "no" || claimed == "-") continue;  // a claim nobody made
+      s.claims.push_back({integ.at("name"), c.at("claim"), c.at("status")});
+    }
+  return s;
+}
+
+// One student in words (issue 34): what was provided, what is wrong (the first fix), the claims
+// that failed, and where the report is.
+std::string in_words(const Row& row) {
+  const StudentResult s = student_result(row);
+  std::ostringstream os;
+  os << "- **" << row.impl.name << "**";
+  if (s.status != "checked") {
+    os << ": " << (s.status == "does not compile" ? "does not compile (the compiler's message is below)"
+                                                   : "not checked: " + s.first_fix)
+       << ".\n";
+    return os.str();
+  }
+  const std::string language = row.report.value("language", "c++");
+  os << " (" << (language == "python" ? "Python" : language == "octave" ? "Octave" : "C++") << "): "
+     << row.report.value("verdict", std::string("?")) << ". ";
+  std::size_t integrators = row.report.value("integrators", json::array()).size();
+  std::set<std::string> provided;
+  const json by_scalar = row.report.value("provided", json::object());
+  for (const auto& [scalar, slots] : by_scalar.items())
+    for (const auto& slot : slots) provided.insert(slot.get<std::string>());
+  os << provided.size() << (provided.size() == 1 ? " slot" : " slots");
+  if (integrators > 0) os << " and " << integrators << (integrators == 1 ? " integrator" : " integrators");
+  os << " provided; ";
+  if (s.wrong.empty()) {
+    os << "no slot wrong by its own check";
+    if (s.provided.size() < provided.size())
+      os << " (" << provided.size() - s.provided.size() << " not exercised by the checks run)";
+  } else {
+    os << s.wrong.size() << " wrong (";
+    for (std::size_t i = 0; i < s.wrong.size(); ++i) os << (i ? ", " : "") << s.wrong[i];
+    os << "); first fix: " << s.first_fix;
+  }
+  std::vector<std::string> failed, verified;
+  for (const auto& c : s.claims)
+    (c.status == "verified" ? verified : failed).push_back(c.integrator + " " + c.claim + (c.status == "verified" ? "" : " (" + c.status + ")"));
+  if (!verified.empty() || !failed.empty()) {
+    os << "; claims: " << verified.size() << " of " << (verified.size() + failed.size()) << " verified";
+    if (!failed.empty()) {
+      os << ", failed: ";
+      for (std::size_t i = 0; i < failed.size(); ++i) os << (i ? "; " : "") << failed[i];
+    }
+  }
+  const json counts = row.report.value("counts", json::object());
+  int problems = 0;
+  for (const char* k : {"FAIL", "CRASH", "TIMEOUT", "ERROR"}) problems += counts.value(k, 0);
+  if (problems > 0) os << "; " << problems << (problems == 1 ? " check fails" : " checks fail") << " in all";
+  const auto unchecked = row.report.value("unchecked", json::array());
+  if (!unchecked.empty()) os << "; " << unchecked.size() << " could not be checked";
+  os << ". [report](" << s.report << ")\n";
+  return os.str();
+}
+
+// A finished task's row (the payload of the task in run_class), with its report read.
+Row row_of(const Implementation& impl, const TaskResult& t, const std::string& report_dir) {
+  Row row;
+  row.impl = impl;
+  if (t.status != TaskResult::Status::Ok) {
+    row.problem = "checking it " + (t.detail.empty() ? std::string("failed") : t.detail);
+    return row;
+  }
+  json j = json::parse(t.payload);
+  j["name"] = impl.name;
+  j["source"] = impl.source;
+  for (const char* k : {"build_message", "problem"})
+    if (!j.contains(k)) j[k] = "";
+  for (const char* k : {"build_seconds", "check_seconds"})
+    if (!j.contains(k)) j[k] = 0.0;
+  if (!j.contains("exit_code")) j["exit_code"] = -1;
+  return row_from_json(j, report_dir);
 }
 
 }  // namespace
@@ -90,13 +284,56 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
 }
 
 
-// The summary table (summary.md and the console) of a class's rows, sharded or not.
-static int summarise_class(const std::string& class_dir, const std::vector<Row>& rows, const std::string& report_dir) {
+namespace {
+
+// The gradebook's inputs, read and checked before anything is checked (a misspelt rubric key is
+// found in a second, not after the class).
+struct Grades {
+  std::string csv;
+  Rubric rubric;
+  std::optional<Roster> roster;
+};
+
+std::string read_text(const std::string& path, const char* what) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot read the " + std::string(what) + " " + path);
+  std::ostringstream os;
+  os << f.rdbuf();
+  return os.str();
+}
+
+std::optional<Grades> load_grades(const GradeOptions& g) {
+  if (g.csv.empty()) {
+    if (!g.rubric.empty() || !g.roster.empty())
+      throw std::runtime_error("--rubric and --roster shape the gradebook: give --grades FILE.csv too");
+    return std::nullopt;
+  }
+  Grades out;
+  out.csv = g.csv;
+  if (!g.rubric.empty()) out.rubric = parse_rubric(read_text(g.rubric, "rubric"), g.rubric);
+  if (!g.roster.empty()) out.roster = parse_roster(read_text(g.roster, "roster"), g.roster);
+  return out;
+}
+
+}  // namespace
+
+// The summary (summary.md and, when final, the console) of a class's rows, sharded or not: the
+// table, each student in words, the compiler's and the harness's messages; the gradebook when
+// asked. `pending`: implementations not checked yet (a summary written while the class runs).
+static int summarise_class(const std::string& class_dir, const std::vector<Row>& rows, const std::string& report_dir,
+                           const std::optional<Grades>& grades = std::nullopt,
+                           const std::vector<std::string>& pending = {}, bool final = true) {
   // The summary table.
   const auto& areas = area_names();
   std::ostringstream md, console;
-  md << "# geomech class report: " << class_dir << "\n\n"
-     << rows.size() << " implementations. Each cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or "
+  md << "# geomech class report: " << class_dir << "\n\n";
+  if (!pending.empty()) {
+    md << "**In progress: " << rows.size() << " of " << rows.size() + pending.size()
+       << " implementations checked.** Not yet checked (a run stopped now resumes with them): ";
+    for (std::size_t i = 0; i < pending.size(); ++i) md << (i ? ", " : "") << pending[i];
+    md << ".\n\n";
+  }
+  md << rows.size() << " implementations. Each cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or "
         "ERROR), then the checks not provided (n/p). Details in each implementation's report.\n\n"
      << "| implementation | result |";
   for (const auto& a : areas) md << " " << a << " |";
@@ -143,6 +380,8 @@ static int summarise_class(const std::string& class_dir, const std::vector<Row>&
     md << " " << (row.built && row.problem.empty() ? "[" + link + "](" + link + ")" : "-") << " |\n";
     console << "\n";
   }
+  md << "\n## Each student in words\n\n";
+  for (const auto& row : rows) md << in_words(row);
   md << "\n";
   for (const auto& row : rows) {
     if (!row.built && row.problem.empty()) {
@@ -154,8 +393,21 @@ static int summarise_class(const std::string& class_dir, const std::vector<Row>&
     }
   }
   write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
+  if (!final) return bad == 0 ? 0 : 1;
   std::cout << console.str() << "\nsummary: " << report_dir << "/summary.md; one report per implementation in "
             << report_dir << "/<name>/report.md\n";
+  if (grades) {
+    std::vector<StudentResult> students;
+    for (const auto& row : rows) students.push_back(student_result(row));
+    write_file_atomically(grades->csv, write_gradebook_csv(students, grades->rubric, grades->roster));
+    const auto assignment = resolve_assignment(grades->rubric, students);
+    std::cout << "grades: " << grades->csv << " (" << grades->rubric.source << "; " << assignment.size()
+              << " slots in the assignment";
+    if (!grades->rubric.assignment) std::cout << ": every slot a student of the class provides";
+    std::cout << "; docs/GRADEBOOK.md)\n";
+    if (grades->roster)
+      for (const auto& w : roster_warnings(students, *grades->roster)) std::cout << "warning: " << w << "\n";
+  }
   return bad == 0 ? 0 : 1;
 }
 
@@ -180,6 +432,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
   const std::string front = o.front_door.empty() ? "geomech" : o.front_door;
 
+  const auto grades = load_grades(o.grades);  // a bad rubric is said before anything runs
   if (o.untrusted)
     if (const std::string why = sandbox_unavailable(); !why.empty()) throw std::runtime_error(why);
   std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir
@@ -198,9 +451,64 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
                      pr.output.substr(0, 2000);
     return j.dump(-1, ' ', false, json::error_handler_t::replace);
   };
+  // Resuming (issue 34): what each check depends on, and the implementations whose complete result
+  // from an earlier run (class-row.json beside the report, written once the check has ended) has
+  // the same fingerprint. A check cut off by an interruption left no class-row.json: it runs again.
+  std::string options_text = o.untrusted ? "untrusted" : "trusted";
+  for (const auto& a : to_args(o.check)) options_text += '\0' + a;
+  std::vector<std::string> prints(impls.size());
+  std::vector<std::optional<Row>> finished(impls.size());
+  std::vector<std::size_t> to_check;
+  std::size_t resumed = 0;
+  for (std::size_t i = 0; i < impls.size(); ++i) {
+    Fingerprint f;
+    f.add(suite_identity());
+    f.add(options_text);
+    const fs::path source(impls[i].source);
+    if (fs::equivalent(source.parent_path(), o.dir, ec) || fs::is_directory(source, ec)) {
+      f.add_tree(source);
+      // What a file directly in the class folder may include: the folder's other files.
+      if (!fs::is_directory(source, ec))
+        for (const auto& e : fs::directory_iterator(o.dir, ec)) {
+          const auto ext = e.path().extension();
+          if (e.is_regular_file() && ext != ".cpp" && ext != ".py" && ext != ".m") f.add(e.path().filename().string()), f.add_file(e.path());
+        }
+    } else {
+      f.add_tree(source.parent_path());  // a student's own folder, with its headers
+    }
+    prints[i] = f.hex();
+    const fs::path row_file = fs::path(report_dir) / impls[i].name / "class-row.json";
+    if (!o.fresh && fs::exists(row_file, ec)) {
+      try {
+        std::ifstream in(row_file);
+        const json j = json::parse(in);
+        if (j.at("format") == "geomech-class-row 1" && j.at("fingerprint") == prints[i]) {
+          Row row = row_from_json(j.at("row"), report_dir);
+          if (row.problem.rfind("its report cannot be read", 0) != 0) {
+            finished[i] = std::move(row);
+            ++resumed;
+            continue;
+          }
+        }
+      } catch (const std::exception&) {
+        // unreadable: checked again
+      }
+    }
+    fs::remove(row_file, ec);
+    to_check.push_back(i);
+  }
+  if (resumed > 0)
+    std::cerr << "geomech check-class: " << resumed << " of " << impls.size()
+              << " implementations are unchanged since their last complete check (source, options and suite) and are "
+                 "not checked again (--fresh checks everyone)\n";
+
   std::vector<std::function<std::string()>> tasks;
-  for (const auto& impl : impls) {
+  for (std::size_t i : to_check) {
+    const Implementation& impl = impls[i];
     tasks.push_back([&, impl]() {
+      // A check started here dies with this run (a Ctrl-C or a killed job stops the class, not
+      // just its parent): tools/geomech.cpp reads this.
+      ::setenv("GEOMECH_DIE_WITH_PARENT", "1", 1);
       json j;
       const std::string ext = fs::path(impl.source).extension().string();
       std::error_code dir_ec;
@@ -262,38 +570,38 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   io.timeout_seconds = o.timeout_per_implementation;
   io.memory_limit_mb = 0;  // the compilers need what they need
   std::size_t done = 0;
-  io.on_finished = [&](std::size_t i, const TaskResult&) {
-    std::cerr << "  [" << ++done << "/" << impls.size() << "] " << impls[i].name << "\n";
+  // For the test of an interrupted run (tests/run_class_resume.cmake): after N implementations,
+  // this process stops itself with the signal named (INT, as Ctrl-C; KILL, as a killed job).
+  long stop_after = -1;
+  int stop_signal = 0;
+  if (const char* t = std::getenv("GEOMECH_TEST_STOP_AFTER")) {
+    const std::string spec(t);
+    stop_after = std::atol(spec.c_str());
+    stop_signal = spec.find("KILL") != std::string::npos ? SIGKILL : SIGINT;
+  }
+  io.on_finished = [&](std::size_t t, const TaskResult& result) {
+    const std::size_t i = to_check[t];
+    Row row = row_of(impls[i], result, report_dir);
+    // The result is kept the moment it is known (class-row.json, then the summary, both atomic),
+    // so an interruption loses at most the checks still running.
+    std::error_code dir_ec;
+    fs::create_directories(fs::path(report_dir) / impls[i].name, dir_ec);
+    json keep{{"format", "geomech-class-row 1"}, {"fingerprint", prints[i]}, {"row", row_json(row)}};
+    write_file_atomically((fs::path(report_dir) / impls[i].name / "class-row.json").string(), keep.dump(1));
+    finished[i] = std::move(row);
+    std::vector<Row> so_far;
+    std::vector<std::string> pending;
+    for (std::size_t k = 0; k < impls.size(); ++k)
+      if (finished[k]) so_far.push_back(*finished[k]);
+      else pending.push_back(impls[k].name);
+    summarise_class(o.dir, so_far, report_dir, std::nullopt, pending, false);
+    std::cerr << "  [" << ++done + resumed << "/" << impls.size() << "] " << impls[i].name << "\n";
+    if (stop_after >= 0 && static_cast<long>(done) >= stop_after) ::raise(stop_signal);
   };
-  const auto results = run_isolated(tasks, io);
+  run_isolated(tasks, io);
 
   std::vector<Row> rows;
-  for (std::size_t i = 0; i < impls.size(); ++i) {
-    Row row;
-    row.impl = impls[i];
-    const TaskResult& t = results[i];
-    if (t.status != TaskResult::Status::Ok) {
-      row.problem = "checking it " + (t.detail.empty() ? std::string("failed") : t.detail);
-      rows.push_back(row);
-      continue;
-    }
-    const json j = json::parse(t.payload);
-    row.built = j.at("built").get<bool>();
-    row.build_message = j.value("build_message", "");
-    row.build_seconds = j.value("build_seconds", 0.0);
-    row.exit_code = j.value("exit_code", -1);
-    row.check_seconds = j.value("check_seconds", 0.0);
-    row.problem = j.value("problem", "");
-    if (row.built && row.problem.empty()) {
-      std::ifstream f(fs::path(report_dir) / impls[i].name / "verdicts.json");
-      try {
-        row.report = json::parse(f);
-      } catch (const std::exception& e) {
-        row.problem = std::string("its report cannot be read: ") + e.what();
-      }
-    }
-    rows.push_back(row);
-  }
+  for (auto& r : finished) rows.push_back(*r);
 
   // What a merge needs to rebuild the summary: the rows, with the class and the shard they belong to.
   json shard;
@@ -302,20 +610,19 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   shard["implementations"] = all_impls.size();
   shard["shard"] = {o.shard_k, o.shard_n};
   shard["rows"] = json::array();
-  for (const auto& row : rows)
-    shard["rows"].push_back({{"name", row.impl.name}, {"source", row.impl.source}, {"built", row.built},
-                             {"build_message", row.build_message}, {"build_seconds", row.build_seconds},
-                             {"exit_code", row.exit_code}, {"check_seconds", row.check_seconds},
-                             {"problem", row.problem}});
+  for (const auto& row : rows) shard["rows"].push_back(row_json(row));
   write_file_atomically((fs::path(report_dir) / "class-shard.json").string(), shard.dump(1));
   if (o.shard_n > 1)
     std::cerr << "geomech check-class: shard " << o.shard_k << "/" << o.shard_n << " written to " << report_dir
               << "; combine the shards with `geomech merge-class OUT SHARD_DIR...`\n";
-  return summarise_class(o.dir, rows, report_dir);
+  if (resumed > 0)
+    std::cout << "(" << resumed << " of " << impls.size() << " implementations resumed from the previous run, unchanged)\n";
+  return summarise_class(o.dir, rows, report_dir, grades);
 }
 
-int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir) {
+int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir, const GradeOptions& grade_options) {
   if (shard_dirs.empty()) throw std::runtime_error("merge-class: no shard folders given");
+  const auto grades = load_grades(grade_options);
   std::vector<Row> rows;
   std::string klass;
   std::size_t total = 0;
@@ -347,23 +654,8 @@ int merge_class(const std::vector<std::string>& shard_dirs, const std::string& o
     }
     if (!seen.insert(k).second) throw std::runtime_error(file.string() + ": shard " + std::to_string(k) + " given twice");
     for (const auto& r : j.at("rows")) {
-      Row row;
-      row.impl = {r.at("name"), r.at("source")};
-      row.built = r.at("built");
-      row.build_message = r.at("build_message");
-      row.build_seconds = r.at("build_seconds");
-      row.exit_code = r.at("exit_code");
-      row.check_seconds = r.at("check_seconds");
-      row.problem = r.at("problem");
+      Row row = row_from_json(r, dir);
       const fs::path report = fs::path(dir) / row.impl.name;
-      if (row.built && row.problem.empty()) {
-        std::ifstream rf(report / "verdicts.json");
-        try {
-          row.report = json::parse(rf);
-        } catch (const std::exception& e) {
-          row.problem = std::string("its report cannot be read: ") + e.what();
-        }
-      }
       if (fs::exists(report) && fs::absolute(report) != fs::absolute(fs::path(out_dir) / row.impl.name)) {
         fs::remove_all(fs::path(out_dir) / row.impl.name, ec);
         fs::copy(report, fs::path(out_dir) / row.impl.name, fs::copy_options::recursive, ec);
@@ -382,7 +674,7 @@ int merge_class(const std::vector<std::string>& shard_dirs, const std::string& o
     throw std::runtime_error("merge-class: the shards hold " + std::to_string(rows.size()) + " implementations, the class " +
                              std::to_string(total));
   std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.impl.name < b.impl.name; });
-  return summarise_class(klass, rows, out_dir);
+  return summarise_class(klass, rows, out_dir, grades);
 }
 
 }  // namespace gm::harness

@@ -1,5 +1,7 @@
 // Class mode: a folder of implementations checked in parallel, one report per implementation and
-// one summary table (implementation x area of the notes).
+// one summary (implementation x area of the notes, then each student in words), optionally a
+// gradebook CSV. The summary is rewritten, atomically, as each implementation finishes, so an
+// interrupted run leaves one for what is done, and a re-run resumes where it stopped.
 //
 // Implementations are the *.cpp, *.py and *.m files directly in the folder (Python and Octave run
 // through docs/PROTOCOL.md), and each sub-folder holding exactly
@@ -16,6 +18,14 @@
 
 namespace gm::harness {
 
+// The gradebook export (harness/gradebook.hpp, docs/GRADEBOOK.md): written with the summary when
+// `csv` is set; the rubric and the roster are read before anything is checked.
+struct GradeOptions {
+  std::string csv;     // --grades FILE.csv
+  std::string rubric;  // --rubric FILE.json (default: partial credit per correct slot)
+  std::string roster;  // --roster FILE.csv (implementation name -> the LMS's identifiers)
+};
+
 struct ClassOptions {
   std::string dir;
   std::string report_dir;          // default: geomech-reports/<folder name>
@@ -31,6 +41,11 @@ struct ClassOptions {
   // by name, every N-th from the K-th on); `merge_class` combines the shards' report folders.
   int shard_k = 1;
   int shard_n = 1;
+  // Resuming (issue 34): an implementation whose report is complete and whose source, options and
+  // suite are unchanged since (class-row.json beside its report holds their fingerprint) is not
+  // checked again; --fresh checks everyone.
+  bool fresh = false;
+  GradeOptions grades;
 };
 
 struct Implementation {
@@ -50,6 +65,6 @@ std::vector<Implementation> shard_of(const std::vector<Implementation>& all, int
 // `geomech merge-class OUT SHARD_DIR...`: the shards' results (class-shard.json and one report per
 // implementation in each shard folder) as one class report in OUT, with the same summary table as
 // an unsharded run. Throws std::runtime_error for a missing, repeated or foreign shard.
-int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir);
+int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir, const GradeOptions& grades = {});
 
 }  // namespace gm::harness

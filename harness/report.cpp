@@ -781,6 +781,22 @@ json json_report(const CheckResult& r, const Catalogue* c) {
     integrators.push_back({{"name", i.name}, {"steps", i.steps}, {"scalars", i.scalars}, {"claims", claims}});
   }
   j["integrators"] = integrators;
+  // The slots wrong by their own check, the one most other failures call first, each with the line
+  // the console's FIRST FIX prints (a class summary says them in words, issue 34).
+  j["language"] = r.info.language.empty() ? "c++" : r.info.language;
+  json first_fix = json::array();
+  {
+    const RootCauses rc = root_causes(r);
+    for (const auto& slot : rc.order) {
+      const Verdict* direct = rc.broken.at(slot);
+      first_fix.push_back({{"slot", slot},
+                           {"property", direct->property},
+                           {"scalar", direct->scalar},
+                           {"line", slot_named(r, slot, "'") + " is wrong: its own check " + direct->property +
+                                        " fails in " + direct->scalar + ": " + first_line(direct->message)}});
+    }
+  }
+  j["first_fix"] = first_fix;
   json verdicts = json::array();
   for (const auto& v : r.verdicts) {
     json jv = to_json(v);

@@ -1,0 +1,387 @@
+// Gradebook export: rubric parsing, scoring and RFC 4180 CSV for Moodle / Canvas.
+// The LMS facts behind the column choices are documented in GRADEBOOK.md.
+#include "harness/gradebook.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+#include <stdexcept>
+
+namespace gm::harness {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void rubric_error(const Rubric& r, const std::string& key, const std::string& expected) {
+  throw std::runtime_error("rubric \"" + r.source + "\": key \"" + key + "\": " + expected);
+}
+
+// A weight is a finite JSON number >= 0 (JSON booleans are not numbers here).
+double read_weight(const Rubric& r, const json& v, const std::string& key) {
+  if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0)
+    rubric_error(r, key, "expected a number >= 0, got " + v.dump());
+  return v.get<double>();
+}
+
+const json& read_object(const Rubric& r, const json& v, const std::string& key) {
+  if (!v.is_object()) rubric_error(r, key, "expected an object of weights, got " + v.dump());
+  return v;
+}
+
+// The identifier columns of each format, before the grade column.
+const std::vector<std::string> kMoodleIds = {"Implementation", "Username", "Email address", "ID number"};
+const std::vector<std::string> kCanvasIds = {"Student", "ID", "SIS User ID", "SIS Login ID", "Section"};
+
+// Canvas drops any column whose header contains one of these (its total columns),
+// so a grade item named like that would never be imported.
+const std::vector<std::string> kCanvasTotals = {"Current Score", "Current Points", "Current Grade",
+                                                "Final Score",   "Final Points",   "Final Grade",
+                                                "Override Score", "Override Grade", "Override Status"};
+
+void check_item(const Rubric& r) {
+  if (r.item.empty()) rubric_error(r, "item", "expected a non-empty string");
+  for (unsigned char c : r.item)
+    if (c < 0x20) rubric_error(r, "item", "expected a single line without control characters");
+  const auto& ids = r.format == LmsFormat::canvas ? kCanvasIds : kMoodleIds;
+  if (std::find(ids.begin(), ids.end(), r.item) != ids.end() ||
+      (r.format == LmsFormat::moodle && r.feedback && r.item == "Feedback"))
+    rubric_error(r, "item", "\"" + r.item + "\" clashes with a fixed column name");
+  if (r.format == LmsFormat::canvas)
+    for (const auto& word : kCanvasTotals)
+      if (r.item.find(word) != std::string::npos)
+        rubric_error(r, "item", "Canvas would not read a column named \"" + r.item + "\" as an assignment");
+}
+
+double weight_of(const std::map<std::string, double>& weights, double fallback, const std::string& name) {
+  auto it = weights.find(name);
+  return it == weights.end() ? fallback : it->second;
+}
+
+// Integer cents keep rounding and printing identical on every machine and locale.
+long long cents(double value) { return std::llround(value * 100.0); }
+
+// Feedback goes into one CSV cell: no line breaks or tabs, single spaces.
+std::string one_line(std::string_view text) {
+  std::string out;
+  for (unsigned char c : text) {
+    if (c < 0x20 || c == 0x7f) c = ' ';
+    if (c == ' ' && (out.empty() || out.back() == ' ')) continue;
+    out += static_cast<char>(c);
+  }
+  while (!out.empty() && out.back() == ' ') out.pop_back();
+  return out;
+}
+
+// "a, b, c +4 more": long lists would drown the one line the student reads.
+std::string short_list(const std::vector<std::string>& items, std::size_t keep = 5) {
+  std::string out;
+  for (std::size_t i = 0; i < items.size() && i < keep; ++i) out += (i ? ", " : "") + items[i];
+  if (items.size() > keep) out += " +" + std::to_string(items.size() - keep) + " more";
+  return out;
+}
+
+// Cuts at a UTF-8 character boundary so the LMS never sees half a character.
+std::string clip_feedback(std::string text, std::size_t max_bytes = 400) {
+  if (text.size() <= max_bytes) return text;
+  std::size_t cut = max_bytes - 3;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return text.substr(0, cut) + "...";
+}
+
+std::string csv_row(const std::vector<std::string>& fields) {
+  std::string line;
+  for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + csv_field(fields[i]);
+  return line + "\r\n";  // RFC 4180 line break; both importers also accept it (GRADEBOOK.md)
+}
+
+}  // namespace
+
+Rubric parse_rubric(std::string_view json_text, const std::string& source) {
+  Rubric r;
+  r.source = source;
+  json doc;
+  try {
+    doc = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw std::runtime_error("rubric \"" + source + "\": not valid JSON: " + e.what());
+  }
+  if (!doc.is_object()) rubric_error(r, "(top level)", "expected a JSON object");
+  for (const auto& [key, v] : doc.items()) {
+    if (key == "item") {
+      if (!v.is_string()) rubric_error(r, key, "expected a string, got " + v.dump());
+      r.item = v.get<std::string>();
+    } else if (key == "points") {
+      if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() <= 0)
+        rubric_error(r, key, "expected a number > 0, got " + v.dump());
+      r.points = v.get<double>();
+    } else if (key == "format") {
+      if (v == "moodle") r.format = LmsFormat::moodle;
+      else if (v == "canvas") r.format = LmsFormat::canvas;
+      else rubric_error(r, key, "expected \"moodle\" or \"canvas\", got " + v.dump());
+    } else if (key == "feedback") {
+      if (!v.is_boolean()) rubric_error(r, key, "expected true or false, got " + v.dump());
+      r.feedback = v.get<bool>();
+    } else if (key == "slots" || key == "claims") {
+      const bool slots = key == "slots";
+      for (const auto& [name, w] : read_object(r, v, key).items()) {
+        const double weight = read_weight(r, w, key + "." + name);
+        if (name == "default") (slots ? r.slot_default : r.claim_default) = weight;
+        else (slots ? r.slot_weights : r.claim_weights)[name] = weight;
+      }
+    } else if (key == "areas") {
+      for (const auto& [name, w] : read_object(r, v, key).items()) {
+        if (std::find(kKnownAreas.begin(), kKnownAreas.end(), name) == kKnownAreas.end())
+          rubric_error(r, key + "." + name, "unknown area; expected one of \"sec. 1\", \"sec. 2\", "
+                                            "\"sec. 3\", \"momentum maps\", \"integrators\"");
+        r.area_weights[name] = read_weight(r, w, key + "." + name);
+      }
+    } else if (key == "claims_weight") {
+      r.claims_weight = read_weight(r, v, key);
+    } else if (key == "assignment") {
+      if (!v.is_array() || v.empty()) rubric_error(r, key, "expected a non-empty list of slot names");
+      std::vector<std::string> slots;
+      for (const auto& s : v) {
+        if (!s.is_string() || s.get<std::string>().empty())
+          rubric_error(r, key, "expected slot names as non-empty strings, got " + s.dump());
+        if (std::find(slots.begin(), slots.end(), s.get<std::string>()) != slots.end())
+          rubric_error(r, key, "slot " + s.dump() + " is listed twice");
+        slots.push_back(s.get<std::string>());
+      }
+      r.assignment = slots;
+    } else {
+      rubric_error(r, key, "unknown key; expected item, points, format, feedback, slots, assignment, "
+                           "areas, claims_weight or claims");
+    }
+  }
+  check_item(r);
+  // Reject weights that leave nothing to earn. With an explicit assignment the
+  // slot maximum is known now; otherwise any positive slot weight may count.
+  double slot_max = 0;
+  if (r.assignment) {
+    for (const auto& s : *r.assignment) slot_max += weight_of(r.slot_weights, r.slot_default, s);
+  } else {
+    slot_max = r.slot_default;
+    for (const auto& [name, w] : r.slot_weights) slot_max += w;
+  }
+  double area_max = 0;
+  for (const auto& [name, w] : r.area_weights) area_max += w;
+  if (slot_max + area_max + r.claims_weight <= 0)
+    rubric_error(r, r.assignment ? "assignment" : "slots",
+                 "the weights make the maximum grade 0; give a slot, an area or claims_weight a positive weight");
+  return r;
+}
+
+std::vector<std::string> resolve_assignment(const Rubric& rubric, const std::vector<StudentResult>& cls) {
+  if (rubric.assignment) return *rubric.assignment;
+  std::set<std::string> all;
+  for (const auto& s : cls) all.insert(s.provided.begin(), s.provided.end());
+  return {all.begin(), all.end()};
+}
+
+Score score_student(const StudentResult& st, const Rubric& r, const std::vector<std::string>& assignment) {
+  double slot_max = 0, max = r.claims_weight;
+  for (const auto& s : assignment) slot_max += weight_of(r.slot_weights, r.slot_default, s);
+  max += slot_max;
+  for (const auto& [name, w] : r.area_weights) max += w;
+  if (max <= 0)
+    rubric_error(r, "assignment", "the maximum grade is 0 for this class (" + std::to_string(assignment.size()) +
+                                      " assignment slots); list the slots under \"assignment\"");
+  Score out;
+  std::vector<std::string> notes;
+  if (st.status != "checked") {
+    out.breakdown.push_back("not graded: " + st.status);
+    notes.push_back("0 points, " + st.status);
+  } else {
+    const std::set<std::string> provided(st.provided.begin(), st.provided.end());
+    const std::set<std::string> wrong(st.wrong.begin(), st.wrong.end());
+    double earned = 0;
+    int correct = 0;
+    std::vector<std::string> missing;
+    for (const auto& s : assignment) {
+      if (!provided.count(s)) missing.push_back(s);
+      else if (!wrong.count(s)) ++correct, earned += weight_of(r.slot_weights, r.slot_default, s);
+    }
+    if (slot_max > 0)
+      out.breakdown.push_back("slots " + std::to_string(correct) + "/" + std::to_string(assignment.size()));
+    for (const auto& [area, w] : r.area_weights) {
+      if (w <= 0) continue;
+      auto it = st.areas.find(area);
+      const int run = it == st.areas.end() ? 0 : it->second.second;
+      const int passed = run <= 0 ? 0 : std::clamp(it->second.first, 0, run);
+      if (run > 0) earned += (w * passed) / run;  // no checks run: no evidence, no credit
+      out.breakdown.push_back(area + " " + std::to_string(passed) + "/" + std::to_string(run));
+    }
+    if (r.claims_weight > 0) {
+      double made = 0, verified = 0;
+      int n_made = 0, n_verified = 0;
+      for (const auto& c : st.claims) {
+        const double w = weight_of(r.claim_weights, r.claim_default, c.claim);
+        if (c.status == "not claimed" || w <= 0) continue;
+        made += w, ++n_made;
+        if (c.status == "verified") verified += w, ++n_verified;
+      }
+      if (made > 0) earned += (r.claims_weight * verified) / made;  // no claims made: no claim credit
+      out.breakdown.push_back("claims " + std::to_string(n_verified) + "/" + std::to_string(n_made) + " verified");
+    }
+    out.points = static_cast<double>(cents((earned * r.points) / max)) / 100.0;
+    std::string summary;
+    for (const auto& b : out.breakdown) summary += (summary.empty() ? "" : ", ") + b;
+    notes.push_back(summary);
+    std::vector<std::string> wrong_list(wrong.begin(), wrong.end()), false_claims;
+    for (const auto& c : st.claims)
+      if (c.status == "FALSE CLAIM") false_claims.push_back(c.integrator + " " + c.claim);
+    if (!wrong_list.empty()) notes.push_back("wrong: " + short_list(wrong_list));
+    if (!missing.empty()) notes.push_back("missing: " + short_list(missing));
+    if (!false_claims.empty()) notes.push_back("false claims: " + short_list(false_claims));
+  }
+  if (!one_line(st.first_fix).empty()) notes.push_back("fix first: " + one_line(st.first_fix));
+  if (!st.report.empty()) notes.push_back("report: " + one_line(st.report));
+  std::string text;
+  for (const auto& n : notes) text += (text.empty() ? "" : "; ") + n;
+  out.feedback = clip_feedback(one_line(text));
+  return out;
+}
+
+std::vector<std::string> gradebook_header(const Rubric& r) {
+  std::vector<std::string> h = r.format == LmsFormat::canvas ? kCanvasIds : kMoodleIds;
+  h.push_back(r.item);
+  if (r.format == LmsFormat::moodle && r.feedback) h.push_back("Feedback");
+  return h;
+}
+
+std::string write_gradebook_csv(const std::vector<StudentResult>& cls, const Rubric& r,
+                                const std::optional<Roster>& roster) {
+  std::vector<const StudentResult*> rows;
+  for (const auto& s : cls) rows.push_back(&s);
+  std::sort(rows.begin(), rows.end(), [](auto* a, auto* b) { return a->name < b->name; });
+  for (std::size_t i = 1; i < rows.size(); ++i)
+    if (rows[i]->name == rows[i - 1]->name)
+      throw std::runtime_error("gradebook: implementation name \"" + rows[i]->name + "\" appears twice");
+  const auto assignment = resolve_assignment(r, cls);
+  std::string out = csv_row(gradebook_header(r));
+  // Canvas reads the maximum for the assignment column from this row.
+  if (r.format == LmsFormat::canvas) out += csv_row({"Points Possible", "", "", "", "", format_points(r.points)});
+  for (const auto* s : rows) {
+    const Score score = score_student(*s, r, assignment);
+    RosterEntry id;
+    const bool listed = roster && roster->count(s->name);
+    if (listed) id = roster->at(s->name);
+    else id.username = id.full_name = s->name;  // no roster row: the implementation name identifies
+    if (r.format == LmsFormat::canvas) {
+      out += csv_row({id.full_name.empty() ? s->name : id.full_name, id.canvas_id, id.sis_user_id,
+                      id.sis_login_id, id.section, format_points(score.points)});
+    } else {
+      std::vector<std::string> f = {s->name, id.username, id.email, id.id_number, format_points(score.points)};
+      if (r.feedback) f.push_back(score.feedback);
+      out += csv_row(f);
+    }
+  }
+  return out;
+}
+
+Roster parse_roster(std::string_view text, const std::string& source) {
+  const auto fail = [&](const std::string& what) { throw std::runtime_error("roster \"" + source + "\": " + what); };
+  if (text.substr(0, 3) == "\xEF\xBB\xBF") text.remove_prefix(3);  // spreadsheets like to add a BOM
+  std::vector<std::vector<std::string>> rows;
+  try {
+    rows = parse_csv(text);
+  } catch (const std::runtime_error& e) {
+    fail(e.what());
+  }
+  const auto trim = [](std::string s) {
+    s.erase(0, s.find_first_not_of(" \t"));
+    s.erase(s.find_last_not_of(" \t") + 1);
+    return s;
+  };
+  if (rows.empty()) fail("empty file; expected a header row with a \"name\" column");
+  const std::vector<std::string> known = {"name", "full_name", "username", "email", "id_number",
+                                          "canvas_id", "sis_user_id", "sis_login_id", "section"};
+  std::vector<std::string> header;
+  for (const auto& h : rows[0]) {
+    header.push_back(trim(h));
+    if (std::find(known.begin(), known.end(), header.back()) == known.end())
+      fail("unknown column \"" + header.back() + "\"; expected name, full_name, username, email, "
+           "id_number, canvas_id, sis_user_id, sis_login_id, section");
+  }
+  if (std::find(header.begin(), header.end(), "name") == header.end()) fail("no \"name\" column");
+  Roster roster;
+  for (std::size_t i = 1; i < rows.size(); ++i) {
+    if (rows[i].size() == 1 && trim(rows[i][0]).empty()) continue;  // blank line
+    if (rows[i].size() != header.size())
+      fail("row " + std::to_string(i + 1) + " has " + std::to_string(rows[i].size()) + " fields, header has " +
+           std::to_string(header.size()));
+    std::map<std::string, std::string> f;
+    for (std::size_t c = 0; c < header.size(); ++c) f[header[c]] = trim(rows[i][c]);
+    if (f["name"].empty()) fail("row " + std::to_string(i + 1) + " has an empty name");
+    if (roster.count(f["name"])) fail("name \"" + f["name"] + "\" appears twice");
+    roster[f["name"]] = {f["full_name"], f["username"], f["email"], f["id_number"],
+                         f["canvas_id"], f["sis_user_id"], f["sis_login_id"], f["section"]};
+  }
+  return roster;
+}
+
+std::vector<std::string> roster_warnings(const std::vector<StudentResult>& cls, const Roster& roster) {
+  std::vector<std::string> out;
+  std::set<std::string> names;
+  for (const auto& s : cls) {
+    names.insert(s.name);
+    if (!roster.count(s.name)) out.push_back("\"" + s.name + "\" has no roster row; its name is used as identifier");
+  }
+  for (const auto& [name, entry] : roster)
+    if (!names.count(name)) out.push_back("roster row \"" + name + "\" matches no implementation in the class");
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+std::string csv_field(std::string_view v) {
+  if (v.find_first_of(",\"\r\n") == std::string_view::npos) return std::string(v);
+  std::string q = "\"";
+  for (char c : v) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return q + "\"";
+}
+
+std::vector<std::vector<std::string>> parse_csv(std::string_view t) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string field;
+  bool in_quotes = false, closed = false, any = false;  // closed: a quoted field just ended
+  int line = 1, opened_at = 0;
+  const auto fail = [&](const std::string& what) {
+    throw std::runtime_error("CSV line " + std::to_string(line) + ": " + what);
+  };
+  const auto end_field = [&] { row.push_back(field), field.clear(), closed = false; };
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const char c = t[i];
+    any = true;
+    if (in_quotes) {
+      if (c == '"' && i + 1 < t.size() && t[i + 1] == '"') field += '"', ++i;
+      else if (c == '"') in_quotes = false, closed = true;
+      else field += c, line += c == '\n';
+    } else if (c == ',') {
+      end_field();
+    } else if (c == '\r' || c == '\n') {
+      if (c == '\r' && (i + 1 >= t.size() || t[++i] != '\n')) fail("carriage return without line feed");
+      end_field(), rows.push_back(std::move(row)), row.clear(), ++line, any = false;
+    } else if (closed) {
+      fail("text after a closing quote");
+    } else if (c == '"') {
+      if (!field.empty()) fail("quote inside an unquoted field");
+      in_quotes = true, opened_at = line;
+    } else {
+      field += c;
+    }
+  }
+  if (in_quotes) throw std::runtime_error("CSV line " + std::to_string(opened_at) + ": unbalanced quote");
+  if (any) end_field(), rows.push_back(std::move(row));
+  return rows;
+}
+
+std::string format_points(double value) {
+  const long long c = cents(value), a = c < 0 ? -c : c;
+  const std::string frac = std::to_string(a % 100);
+  return (c < 0 ? "-" : "") + std::to_string(a / 100) + "." + (frac.size() < 2 ? "0" : "") + frac;
+}
+
+}  // namespace gm::harness

@@ -1,0 +1,118 @@
+// Gradebook export for `geomech check-class --grades FILE.csv [--rubric FILE.json]`.
+//
+// Turns the per-student results of a class check into one CSV file that the
+// gradebook import of Moodle or Canvas accepts. The grading policy lives in a
+// small JSON rubric (see GRADEBOOK.md); everything here is pure: no file I/O,
+// so the caller decides where the text goes and writes it atomically.
+#pragma once
+
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace gm::harness {
+
+struct ClaimResult {
+  std::string integrator;  // e.g. "midpoint"
+  std::string claim;       // e.g. "order", "casimir", "energy", "symmetric", "bounded_energy", ...
+  std::string status;      // "verified", "FALSE CLAIM", "UNCHECKED", "not claimed"... (only "verified" earns credit)
+};
+
+struct StudentResult {
+  std::string name;                   // the implementation's name in the class (file stem or folder name); unique
+  std::string status;                 // "checked", "does not compile", "not checked"
+  std::vector<std::string> provided;  // slot names the submission provides (any scalar) and a check exercised
+  std::vector<std::string> wrong;     // provided slots the check found wrong
+  std::map<std::string, std::pair<int, int>> areas;  // area name -> (checks passed, checks run)
+  std::vector<ClaimResult> claims;    // every claim an integrator made, with its verdict
+  std::string first_fix;              // one line, may be empty: what to fix first
+  std::string report;                 // relative link to the student's report, e.g. "alice/report.md"
+};
+
+// Which LMS import the CSV is shaped for; the two want different columns.
+enum class LmsFormat { moodle, canvas };
+
+// Area names a rubric may weight. A misspelt area would silently cost every
+// student its share, so the rubric parser rejects names not listed here.
+inline const std::vector<std::string> kKnownAreas = {"sec. 1", "sec. 2", "sec. 3", "momentum maps",
+                                                     "integrators"};
+
+// The grading policy. A default-constructed Rubric is the documented default:
+// partial credit per correct slot, out of 100, Moodle columns.
+struct Rubric {
+  std::string source = "(default rubric)";  // file name, quoted in error messages
+  std::string item = "geomech";             // grade item / assignment column header
+  double points = 100;                      // maximum grade
+  LmsFormat format = LmsFormat::moodle;
+  bool feedback = true;                     // Moodle only: add a feedback column
+  double slot_default = 1;                  // credit per correct slot not named below
+  std::map<std::string, double> slot_weights;
+  std::optional<std::vector<std::string>> assignment;  // unset: every slot the class provides
+  std::map<std::string, double> area_weights;          // absent area: weight 0
+  double claims_weight = 0;                 // share of the grade for claims (0: claims ignored)
+  double claim_default = 1;                 // relative weight of a claim not named below
+  std::map<std::string, double> claim_weights;
+};
+
+// Parses rubric JSON. Throws std::runtime_error naming `source`, the offending
+// key and what was expected (unknown key, wrong type, negative weight, ...).
+Rubric parse_rubric(std::string_view json_text, const std::string& source);
+
+// LMS identifiers for one implementation, read from an optional roster CSV
+// with a `name` column and any of the columns named in the comments.
+struct RosterEntry {
+  std::string full_name;     // full_name: Canvas "Student" (it matches by name last)
+  std::string username;      // username: Moodle "Username"
+  std::string email;         // email: Moodle "Email address"
+  std::string id_number;     // id_number: Moodle "ID number"
+  std::string canvas_id;     // canvas_id: Canvas "ID" (numeric Canvas user id)
+  std::string sis_user_id;   // sis_user_id: Canvas "SIS User ID"
+  std::string sis_login_id;  // sis_login_id: Canvas "SIS Login ID"
+  std::string section;       // section: Canvas "Section"
+};
+using Roster = std::map<std::string, RosterEntry>;  // keyed by implementation name
+
+// Parses a roster CSV (UTF-8, optional BOM, CRLF or LF). Throws
+// std::runtime_error naming `source` on malformed CSV, a missing `name`
+// column, an unknown column, an empty or duplicate name.
+Roster parse_roster(std::string_view csv_text, const std::string& source);
+
+// Roster problems worth telling the lecturer: students without a roster row
+// (they fall back to their implementation name) and roster rows without a student.
+std::vector<std::string> roster_warnings(const std::vector<StudentResult>& cls, const Roster& roster);
+
+// The slots the assignment asks for: the rubric's list, or else every slot at
+// least one student of the class provides (sorted).
+std::vector<std::string> resolve_assignment(const Rubric& rubric, const std::vector<StudentResult>& cls);
+
+struct Score {
+  double points = 0;                   // 0 .. rubric.points, rounded to 2 decimals
+  std::vector<std::string> breakdown;  // e.g. "slots 3/4", "sec. 1 5/6", "claims 2/3 verified"
+  std::string feedback;                // one short line for the LMS feedback column
+};
+
+// Scores one student against an already resolved assignment. Throws
+// std::runtime_error if the rubric's maximum is 0 for this assignment.
+Score score_student(const StudentResult& student, const Rubric& rubric,
+                    const std::vector<std::string>& assignment);
+
+// The exact header row for the rubric's format and item.
+std::vector<std::string> gradebook_header(const Rubric& rubric);
+
+// The whole class as CSV text: UTF-8 without BOM, CRLF line ends, rows sorted
+// by implementation name. Throws std::runtime_error on duplicate names.
+std::string write_gradebook_csv(const std::vector<StudentResult>& cls, const Rubric& rubric,
+                                const std::optional<Roster>& roster = std::nullopt);
+
+// CSV helpers (RFC 4180), public so tests and callers can check the shape.
+std::string csv_field(std::string_view value);  // quotes only when needed
+// Strict parser: accepts CRLF or LF; throws std::runtime_error (with a line
+// number) on an unbalanced quote, a quote inside an unquoted field, text after
+// a closing quote or a bare CR.
+std::vector<std::vector<std::string>> parse_csv(std::string_view text);
+std::string format_points(double value);  // "75.00", independent of any locale
+
+}  // namespace gm::harness

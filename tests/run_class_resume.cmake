@@ -1,0 +1,110 @@
+# A lecturer's class run that nothing stops from finishing (issue 34), in untrusted mode:
+#  - the class lies in a private folder (mode 0700, as `mktemp -d` makes it); run as root (as CI
+#    runs), the sandbox runs as nobody, who cannot enter it: every Python and Octave submission
+#    must still be checked (each from a private read-only copy), with its verdict;
+#  - a run stopped after one implementation by SIGINT (Ctrl-C), then after one more by SIGKILL (a
+#    killed job), leaves a summary of what is done each time, and the next run resumes: it checks
+#    only what was not finished and ends with the same summary.md as an uninterrupted run;
+#  - a submission changed since is checked again; --fresh checks everyone (the control: the same
+#    run without resuming says nothing was resumed);
+#  - --grades writes the gradebook CSV.
+#   cmake -DGEOMECH=... -DEXAMPLES=examples/students -DOUT=dir -P run_class_resume.cmake
+file(REMOVE_RECURSE ${OUT})
+set(class ${OUT}/private)
+file(MAKE_DIRECTORY ${class}/octave_folder)
+file(COPY ${EXAMPLES}/numpy_double_only.py ${EXAMPLES}/bug_elementwise.m DESTINATION ${class})
+# A Python file whose vee (2.11) has one sign wrong.
+file(WRITE ${class}/wrong_vee.py "def hat(v):\n    return [[0, -v[2], v[1]], [v[2], 0, -v[0]], [-v[1], v[0], 0]]\n\n\n"
+                                 "def vee(m):\n    return [m[2][1], m[0][2], -m[1][0]]\n")
+file(WRITE ${class}/octave_folder/hat.m "function m = hat(v)\n  m = [0, -v(3), v(2); v(3), 0, -v(1); -v(2), v(1), 0];\nend\n")
+file(WRITE ${class}/octave_folder/vee.m "function v = vee(m)\n  v = [m(3, 2); m(1, 3); m(2, 1)];\nend\n")
+file(CHMOD ${class} DIRECTORY_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE)
+set(options --scalar double --parallel 1 -p definition_hat -p definition_vee -p definition_hamiltonian_3_4
+            -p definition_reconstruction_2_10 -p definition_hat_n -p definition_vee_n)
+
+function(run_class dir env expect_status)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env ${env} ${GEOMECH} check-class ${class} --report ${dir} ${options}
+                          --grades ${dir}.csv ${ARGN}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(out "${out}${err}" PARENT_SCOPE)
+  if(expect_status STREQUAL "signal")
+    # (cmake -E env reports the child's death by a signal as status 1 and "User interrupt" or the
+    # signal's name; what matters is what the stopped run left on disk, checked below)
+    if(status EQUAL 0)
+      message(FATAL_ERROR "${env}: the run should have been stopped by its signal, it ended with ${status}:\n${out}${err}")
+    endif()
+  elseif(NOT status EQUAL ${expect_status})
+    message(FATAL_ERROR "exit status ${status}, expected ${expect_status}:\n${out}${err}")
+  endif()
+endfunction()
+
+# The uninterrupted run.
+run_class(${OUT}/full "GEOMECH_UNUSED=1" 1)
+file(READ ${OUT}/full/summary.md full)
+foreach(row "numpy_double_only:PASS" "wrong_vee:FAIL" "bug_elementwise:FAIL" "octave_folder:PASS")
+  string(REPLACE ":" ";" parts ${row})
+  list(GET parts 0 name)
+  list(GET parts 1 verdict)
+  string(REGEX MATCH "\n\\| *${name} *\\|[^\n]*" line "${full}")
+  string(FIND "${line}" "${verdict}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "the row of ${name} does not say ${verdict} (a private folder must not stop a check):\n${full}")
+  endif()
+endforeach()
+string(FIND "${full}" "NOT CHECKED" not_checked)
+if(NOT not_checked EQUAL -1)
+  message(FATAL_ERROR "a submission in the private folder was not checked:\n${full}")
+endif()
+# Each student in words, with the first fix of the wrong one.
+string(FIND "${full}" "- **wrong_vee** (Python): FAIL." words)
+string(FIND "${full}" "first fix: Python function 'vee' in wrong_vee.py is wrong" fix)
+if(words EQUAL -1 OR fix EQUAL -1)
+  message(FATAL_ERROR "the summary does not say in words what is wrong with wrong_vee:\n${full}")
+endif()
+# The gradebook: a header and one row per student, CRLF line ends.
+file(STRINGS ${OUT}/full.csv grades)
+list(LENGTH grades n)
+list(GET grades 0 header)
+if(NOT n EQUAL 5 OR NOT header MATCHES "^Implementation,Username,Email address,ID number,geomech,Feedback")
+  message(FATAL_ERROR "the gradebook is not a header and 4 rows (${n} lines):\n${grades}")
+endif()
+
+# Stopped by SIGINT after one implementation, then by SIGKILL after one more.
+run_class(${OUT}/stopped "GEOMECH_TEST_STOP_AFTER=1:INT" signal)
+file(READ ${OUT}/stopped/summary.md partial)
+if(NOT partial MATCHES "In progress: 1 of 4 implementations checked")
+  message(FATAL_ERROR "after SIGINT the summary does not say what is done:\n${partial}")
+endif()
+run_class(${OUT}/stopped "GEOMECH_TEST_STOP_AFTER=1:KILL" signal)
+if(NOT out MATCHES "1 of 4 implementations are unchanged")
+  message(FATAL_ERROR "the run after SIGINT did not resume:\n${out}")
+endif()
+file(READ ${OUT}/stopped/summary.md partial)
+if(NOT partial MATCHES "In progress: 2 of 4 implementations checked")
+  message(FATAL_ERROR "after SIGKILL the summary does not say what is done:\n${partial}")
+endif()
+run_class(${OUT}/stopped "GEOMECH_UNUSED=1" 1)
+if(NOT out MATCHES "2 of 4 implementations are unchanged")
+  message(FATAL_ERROR "the run after SIGKILL did not resume:\n${out}")
+endif()
+file(READ ${OUT}/stopped/summary.md resumed)
+if(NOT resumed STREQUAL full)
+  message(FATAL_ERROR "the resumed run's summary differs from the uninterrupted one:\n${resumed}\n---\n${full}")
+endif()
+file(READ ${OUT}/stopped.csv resumed_grades)
+file(READ ${OUT}/full.csv full_grades)
+if(NOT resumed_grades STREQUAL full_grades)
+  message(FATAL_ERROR "the resumed run's gradebook differs from the uninterrupted one")
+endif()
+
+# A changed submission is checked again; --fresh checks everyone.
+file(APPEND ${class}/numpy_double_only.py "\n# changed after its check\n")
+run_class(${OUT}/stopped "GEOMECH_UNUSED=1" 1)
+if(NOT out MATCHES "3 of 4 implementations are unchanged")
+  message(FATAL_ERROR "a changed submission was not checked again:\n${out}")
+endif()
+run_class(${OUT}/stopped "GEOMECH_UNUSED=1" 1 --fresh)
+if(out MATCHES "unchanged")
+  message(FATAL_ERROR "control: --fresh resumed something:\n${out}")
+endif()
+message(STATUS "private folder checked; interrupted twice and resumed to the same summary and gradebook")
