@@ -138,7 +138,8 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
   streaming.listeners.push_back(&console);
   const CheckResult r = run_check(subject, info, streaming);
   if (o.definitions_only && o.report_dir.empty()) {  // a first look: its failures were streamed
-    std::cout << "geomech: first look: " << r.ran() << " slot checks in double, " << console.failures_printed()
+    std::cout << "geomech: first look: " << r.ran() << (r.ran() == 1 ? " slot check" : " slot checks") << " in double, "
+              << console.failures_printed()
               << (console.failures_printed() == 1 ? " failure" : " failures") << "\n";
     return r.exit_code();
   }
