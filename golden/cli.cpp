@@ -30,6 +30,8 @@ struct TrajectoryOptions {
   std::string title;
   std::string output;
   bool allow_nonphysical = false;  // accept moments violating the triangle inequality
+  bool certify = false;            // prove the digits (golden/certify.hpp)
+  int certified_digits = 45;       // refuse below this many certified digits
 };
 
 int run_trajectory(const TrajectoryOptions& o) {
@@ -50,6 +52,8 @@ int run_trajectory(const TrajectoryOptions& o) {
     rq.name = o.name;
     rq.title = o.title;
     rq.digits = o.digits;
+    rq.certify = o.certify;
+    rq.certified_digits = std::min(o.certified_digits, o.digits - 1);
     rq.problem = make_problem(o.system, "--system " + o.system, 0, std::move(params), std::move(initial), true);
     rq.times = parse_times_argument(o.times);
     if (const std::string note = nonphysical_inertia(rq.problem); !note.empty()) {
@@ -129,6 +133,9 @@ void add_commands(CLI::App& app) {
   r->add_option("--only", regen->only, "only this fixture (repeatable; see `geomech golden list`)");
   r->add_option("--dir", regen->dir, "fixture directory (default: the source tree's golden/fixtures)");
   r->add_flag("--quiet", regen->quiet, "no per-fixture timing lines");
+  r->add_flag("--no-certify", regen->no_certify,
+              "leave out the certificates (ball-arithmetic enclosures): to time them against the rest; the committed "
+              "fixtures carry theirs");
   r->callback([regen] {
     const int s = regenerate(*regen, std::cout, std::cerr);
     if (s != 0) exit_with(s);
@@ -145,6 +152,11 @@ void add_commands(CLI::App& app) {
   t->add_option("--name", traj->name, "the trajectory's name (default: trajectory)");
   t->add_option("--title", traj->title, "one line describing it (default: the system's)");
   t->add_option("--output,-o", traj->output, "write to this file (atomically) instead of standard output");
+  t->add_flag("--certify", traj->certify,
+              "prove the printed digits by a validated Taylor method in ball arithmetic (Arb) and write each row's "
+              "certified radius; refused, naming the time, where fewer digits than --certified-digits can be proved");
+  t->add_option("--certified-digits", traj->certified_digits, "digits --certify must prove (default 45, at most --digits - 1)")
+      ->check(CLI::Range(1, 55));
   t->add_flag("--allow-nonphysical", traj->allow_nonphysical,
               "accept moments of inertia that violate the triangle inequality (no body has them; the notes' examples do)");
   t->callback([traj] {

@@ -329,9 +329,10 @@ class Reader {
         throw error(l.number, "expected '#: format " + std::string(kFormatName) + " " + std::to_string(kFormatVersion) +
                                   "', found " + quote(l.text));
       long long v = 0;
-      if (!parse_int(tok[1], 1, 1000000, v) || v != kFormatVersion)
-        throw error(l.number, "unsupported format version " + quote(tok[1]) + " (this reader reads version " +
+      if (!parse_int(tok[1], 1, 1000000, v) || v < 1 || v > kFormatVersion)
+        throw error(l.number, "unsupported format version " + quote(tok[1]) + " (this reader reads versions 1 to " +
                                   std::to_string(kFormatVersion) + ")");
+      f.format_version = static_cast<int>(v);
     }
     f.name = identifier_field("name", 64);
     f.system = identifier_field("system", 64);
@@ -348,6 +349,10 @@ class Reader {
       const std::string* d = f.checks.back().setting("max_abs_diff");
       if (!d) throw error(l.number, "a check must give its max_abs_diff=<decimal> against the generator");
       nonnegative_decimal(*d, l.number, "max_abs_diff");
+    }
+    if (f.format_version >= 2 && peek_field() == "certificate") {
+      f.certificate = method_field("certificate");
+      f.certified = true;
     }
     {
       const Line& l = expect_field("accuracy");
@@ -392,9 +397,26 @@ class Reader {
                     "truncated: the file ends after " + std::to_string(f.rows.size()) + " of " + std::to_string(samples) +
                         " data rows, without its '#: end' line");
       const Line& l = lines_[pos_];
+      if (is_field(l.text) && f.certified && field_key(l.text) == "certified_radius") {
+        // "#: certified_radius T R" after the data rows, one per row in order (version 2).
+        const auto tok = split(l.text.substr(2));
+        if (tok.size() != 3) throw error(l.number, "'#: certified_radius' takes a time and a radius");
+        const std::size_t i = f.certified_radius.size();
+        if (i >= f.rows.size() || f.rows.size() != samples)
+          throw error(l.number, "a certified_radius line before the data rows end, or more of them than rows");
+        if (tok[1] != f.times[i])
+          throw error(l.number, "certified_radius for t = " + quote(tok[1]) + ", expected the row t = " + f.times[i]);
+        nonnegative_decimal(std::string(tok[2]), l.number, "certified_radius");
+        f.certified_radius.emplace_back(tok[2]);
+        ++pos_;
+        continue;
+      }
       if (is_field(l.text)) {
         const std::string key = field_key(l.text);
         if (key != "end") throw error(l.number, "unexpected header field '" + key + "' among the data rows");
+        if (f.certified && f.certified_radius.size() != f.rows.size())
+          throw error(l.number, "the certificate gives a certified_radius for " + std::to_string(f.certified_radius.size()) +
+                                    " of the " + std::to_string(f.rows.size()) + " rows");
         if (f.rows.size() != samples)
           throw error(l.number, "truncated: " + std::to_string(f.rows.size()) + " data rows, the header says samples " +
                                     std::to_string(samples));
@@ -404,6 +426,7 @@ class Reader {
       }
       if (f.rows.size() == samples)
         throw error(l.number, "more data rows than the " + std::to_string(samples) + " the header announces");
+      if (!f.certified_radius.empty()) throw error(l.number, "a data row after the certified_radius lines");
       const auto tok = split(l.text);
       if (tok.size() != f.columns.size() + 1)
         throw error(l.number, "wrong number of columns: " + std::to_string(tok.size()) + " values, expected " +
@@ -504,8 +527,8 @@ class Reader {
     const std::string found = field_key(l.text);
     if (found != key) {
       static const char* known[] = {"format", "name", "system", "title", "equations", "parameter", "initial",
-                                    "working_precision", "generator", "check", "accuracy", "condition",
-                                    "digits", "samples", "columns", "end"};
+                                    "working_precision", "generator", "check", "certificate", "accuracy", "condition",
+                                    "digits", "samples", "columns", "certified_radius", "end"};
       const bool is_known = std::find(std::begin(known), std::end(known), found) != std::end(known);
       throw error(l.number, std::string(is_known ? "header field '" : "unknown header field '") + found +
                                 "' where '#: " + key + "' was expected (fields come in the order of golden/README.md)");
@@ -656,6 +679,7 @@ std::string write_fixture(const Fixture& f) {
   };
   method("generator", f.generator);
   for (const auto& c : f.checks) method("check", c);
+  if (f.certified) method("certificate", f.certificate);
   o << "#: accuracy " << f.accuracy << "\n";
   o << "#: condition " << f.condition << "\n";
   o << "#: digits " << f.digits << "\n";
@@ -668,6 +692,8 @@ std::string write_fixture(const Fixture& f) {
     for (const auto& v : f.rows[i]) o << " " << v;
     o << "\n";
   }
+  if (f.certified)
+    for (std::size_t i = 0; i < f.rows.size(); ++i) o << "#: certified_radius " << f.times[i] << " " << f.certified_radius[i] << "\n";
   o << "#: end\n";
   return o.str();
 }

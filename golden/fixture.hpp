@@ -35,7 +35,10 @@
 namespace gm::golden {
 
 inline constexpr const char* kFormatName = "geomech-golden";
-inline constexpr int kFormatVersion = 1;
+// Version 2 (issue 35) adds the certificate: a "#: certificate ..." line after the checks and,
+// after the data rows, one "#: certified_radius T R" line per row. Version 1 files (no
+// certificate) are still read.
+inline constexpr int kFormatVersion = 2;
 
 // Limits on what a fixture or a request may contain (golden/README.md, "Limits").
 inline constexpr int kMinDigits = 17;
@@ -87,6 +90,10 @@ struct Fixture {
   int working_precision = 0;         // decimal digits of the generating arithmetic
   MethodRecord generator;
   std::vector<MethodRecord> checks;  // independent reproductions, each with max_abs_diff
+  bool certified = false;            // version 2 with a certificate
+  MethodRecord certificate;          // how the enclosures were computed (golden/certify.hpp)
+  std::vector<std::string> certified_radius;  // per row: a proved bound on |value - exact| (decimal)
+  int format_version = kFormatVersion;
   std::string accuracy;              // bound on |value - exact| for every value (decimal)
   std::string condition;             // max over samples of |dx(t)/dx(0)|_inf (decimal)
   std::vector<std::string> times;    // sample times, canonical decimals

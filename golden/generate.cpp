@@ -1,6 +1,7 @@
 // The 70-digit generation of golden trajectories. The only translation unit that instantiates
 // the Taylor oracle and the extrapolation solver on Real70.
 #include "golden/generate.hpp"
+#include "golden/certify.hpp"
 
 #include "golden/arguments.hpp"
 
@@ -257,6 +258,30 @@ Fixture generate(const Request& rq, GenerationReport* report) {
   // generator's, and the generator within the largest disagreement of every check.
   f.accuracy = round_up_1digit(convert<Rational>(worst) + largest_half_ulp);
   f.condition = format_significant(Rational(condition), 2);
+  if (rq.certify) {
+    const auto t0 = std::chrono::steady_clock::now();
+    Certificate cert;
+    try {
+      cert = certify_rows(pr, rq.times, f.rows);
+    } catch (const std::runtime_error& e) {
+      throw VerificationError("trajectory '" + rq.name + "' cannot be certified: " + e.what());
+    }
+    // The first row whose radius leaves fewer digits than asked, if any: refused, saying when.
+    for (std::size_t i = 0; i < f.rows.size(); ++i) {
+      Rational scale(1);
+      for (const auto& v : f.rows[i]) scale = std::max(scale, abs(parse_decimal(v)));
+      if (parse_decimal(cert.row_radius[i]) > pow10(-rq.certified_digits) * scale)
+        throw VerificationError("trajectory '" + rq.name + "' cannot be certified to " +
+                                std::to_string(rq.certified_digits) + " digits: at t = " + f.times[i] +
+                                " the proved radius is " + cert.row_radius[i] + " (the enclosure grew from " +
+                                "the exact initial data through the wrapping effect of ball arithmetic; a shorter time "
+                                "span or fewer digits can be certified)");
+    }
+    f.certified = true;
+    f.certificate = cert.record;
+    f.certified_radius = cert.row_radius;
+    if (report) report->timings.push_back({"certificate", seconds_since(t0)});
+  }
   if (report) report->seconds = seconds_since(start);
   return f;
 }

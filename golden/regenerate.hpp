@@ -18,6 +18,9 @@ struct RegenerateOptions {
   bool check = false;
   std::vector<std::string> only;   // fixture names; empty: all
   bool quiet = false;
+  // Without the certificates (golden/certify.hpp): for timing them against the rest, and for a
+  // directory other than the committed fixtures (which carry theirs: --check would then differ).
+  bool no_certify = false;
 };
 
 // Exit status: 0 done (or all equal), 1 a fixture differs or could not be verified, 2 bad input

@@ -471,7 +471,35 @@ TEST(golden_bad_input, MissingEndLine) {
   expect_rejected(edited([](auto& l) { l.pop_back(); }), line_count() - 1, "without its '#: end' line");
 }
 TEST(golden_bad_input, MoreRowsThanAnnounced) {
-  expect_rejected(edited([](auto& l) { l.insert(l.end() - 1, l[l.size() - 2]); }), line_count(), "more data rows");
+  // The last data row twice (the certified_radius lines and '#: end' follow the data rows).
+  const int last = index_of("#: certified_radius") - 1;
+  expect_rejected(edited([&](auto& l) { l.insert(l.begin() + last, l[last]); }), last + 2, "more data rows");
+}
+// A version 1 file (before the certificates) is still read, without a certificate.
+TEST(golden_format, VersionOneWithoutCertificateIsStillRead) {
+  std::string v1;
+  for (const auto& l : stable_lines()) {
+    if (l.rfind("#: certificate", 0) == 0 || l.rfind("#: certified_radius", 0) == 0) continue;
+    v1 += (l == "#: format geomech-golden 2" ? std::string("#: format geomech-golden 1") : l) + "\n";
+  }
+  const Fixture f = parse_fixture(v1, "v1.golden");
+  EXPECT_EQ(f.format_version, 1);
+  EXPECT_FALSE(f.certified);
+  EXPECT_EQ(f.rows, load_fixture(committed_path("free_rigid_body_stable")).rows);
+}
+// Version 2: the certificate's radii, one per row, in order (issue 35).
+TEST(golden_bad_input, CertifiedRadiusForAnotherTime) {
+  const int at = index_of("#: certified_radius");
+  expect_rejected(edited([&](auto& l) { l[at] = "#: certified_radius 0.25 5e-51"; }), at + 1, "certified_radius for t = '0.25'");
+}
+TEST(golden_bad_input, CertifiedRadiusMissingForARow) {
+  const int at = index_of("#: end") - 1;  // the last row's radius
+  expect_rejected(edited([&](auto& l) { l.erase(l.begin() + at); }), line_count() - 1,
+                  "the certificate gives a certified_radius for 10 of the 11 rows");
+}
+TEST(golden_bad_input, CertifiedRadiusNegative) {
+  const int at = index_of("#: certified_radius");
+  expect_rejected(edited([&](auto& l) { l[at] = "#: certified_radius 0 -5e-51"; }), at + 1, "certified_radius");
 }
 TEST(golden_bad_input, WrongColumnCount) {
   expect_rejected(edited([](auto& l) { l[kFirstRow + 2] += " 1.0e+00"; }), kFirstRow + 3, "wrong number of columns");
@@ -542,10 +570,10 @@ TEST(golden_bad_input, TamperedValueBreaksAnInvariant) {
                   0, "invariant");
 }
 TEST(golden_bad_input, UnsupportedFormatVersion) {
-  expect_rejected(edited([](auto& l) { l[2] = "#: format geomech-golden 2"; }), 3, "unsupported format version");
+  expect_rejected(edited([](auto& l) { l[2] = "#: format geomech-golden 3"; }), 3, "unsupported format version");
 }
 TEST(golden_bad_input, WrongFormatName) {
-  expect_rejected(edited([](auto& l) { l[2] = "#: format csv 1"; }), 3, "expected '#: format geomech-golden 1'");
+  expect_rejected(edited([](auto& l) { l[2] = "#: format csv 1"; }), 3, "expected '#: format geomech-golden 2'");
 }
 TEST(golden_bad_input, HeaderFieldsOutOfOrder) {
   expect_rejected(edited([](auto& l) { std::swap(l[3], l[4]); }), 4, "header field 'system' where '#: name'");
