@@ -218,7 +218,7 @@ std::vector<IntegratorInfo> integrator_info(const SubjectSet& s) {
 // could not be checked at all (issue 13: a check that ran nothing is not a pass).
 void account_for_slots(CheckResult& result, const SubjectSet& s, const CheckConfig& cfg) {
   result.narrowed = !cfg.properties.empty() || !cfg.spec_prefix.empty() || cfg.scalars.size() < 3 ||
-                    !cfg.integrator.empty() || !cfg.run.reproduce.empty();
+                    !cfg.integrator.empty() || !cfg.run.reproduce.empty() || !cfg.only_checks.empty();
   std::map<std::string, std::set<std::string>> by_slot;
   for (const auto& v : result.verdicts) {
     if (v.outcome == Outcome::NotProvided) continue;
@@ -402,6 +402,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     if (!cfg.spec_prefix.empty() && p.spec.rfind(cfg.spec_prefix, 0) != 0) continue;
     for (ScalarKind k : cfg.scalars) {
       if (!p.runs_in(k)) continue;
+      if (!cfg.only_checks.empty() && !cfg.only_checks.count(p.id + "/" + scalar_name(k))) continue;
       if (p.scope == Scope::Integrator) {
         auto names = integrators_for(p, s, k);
         const bool has_any = !names.empty();
@@ -428,6 +429,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
       for (auto k : cfg.scalars) sel << " " << scalar_name(k);
     }
     if (!cfg.integrator.empty()) sel << "; integrator " << cfg.integrator;
+    if (!cfg.only_checks.empty()) sel.str(cfg.selection_note);
     result.selection = sel.str();
   }
 

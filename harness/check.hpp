@@ -57,6 +57,8 @@ struct CheckConfig {
   std::string spec_prefix;              // only properties whose spec entry starts with this
   std::vector<ScalarKind> scalars{ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact};
   std::string integrator;               // only this integrator (empty: all)
+  std::set<std::string> only_checks;    // only these "property/scalar" (empty: all): --quick
+  std::string selection_note;           // said with the selection (the quick profile's provenance)
   RunOptions run;                       // seed, case counts, reproduce string
   double timeout_seconds = 60;          // per (property, scalar, integrator)
   bool timeout_given = false;           // --timeout was given: timeout_factor() does not apply

@@ -1,4 +1,5 @@
 #include "harness/cli.hpp"
+#include "harness/quick_profile.hpp"
 
 #include "harness/console_stream.hpp"
 #include "harness/report.hpp"
@@ -46,6 +47,9 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_flag("--no-isolation", o.no_isolation, "run checks in this process (for a debugger; a crash ends the run)");
   app.add_flag("--no-portraits", o.no_portraits, "do not draw the integrator pictures");
   app.add_flag("--quiet,-q", o.quiet, "print only the summary");
+  app.add_flag("--quick", o.quick,
+               "only the checks of the quick profile: the few that kill every mutant the whole suite kills, chosen from "
+               "the kill matrix (spec/quick_profile.json); the full check stays the default");
   app.add_flag("--definitions", o.definitions_only,
                "only every slot's own definition check, in double (a first look; no report unless --report)");
 }
@@ -81,6 +85,16 @@ CheckConfig config_from(const CheckCliOptions& o) {
   c.memory_limit_mb = o.memory_limit_mb;
   c.isolate = !o.no_isolation;
   c.portraits = !o.no_portraits && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty();
+  if (o.quick) {
+    try {
+      const QuickSelection q = load_quick_profile(default_quick_profile_path());
+      c.only_checks = q.checks;
+      c.selection_note = "quick profile: " + q.provenance;
+    } catch (const std::exception& e) {
+      throw CLI::ValidationError("--quick", e.what());
+    }
+    c.portraits = false;
+  }
   if (o.definitions_only) {
     for (const auto& p : properties())
       if (p.scope == Scope::Subject && p.needs.size() == 1 && p.id.rfind("definition_", 0) == 0 &&
@@ -118,6 +132,7 @@ std::vector<std::string> to_args(const CheckCliOptions& o) {
   if (o.no_portraits) a.push_back("--no-portraits");
   if (o.quiet) a.push_back("--quiet");
   if (o.definitions_only) a.push_back("--definitions");
+  if (o.quick) a.push_back("--quick");
   return a;
 }
 

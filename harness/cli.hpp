@@ -36,6 +36,8 @@ struct CheckCliOptions {
   // Only every slot's own definition check, in double, no report, no pictures: the first look
   // `geomech check FILE.cpp` takes while the other scalars compile (issue 32).
   bool definitions_only = false;
+  // The quick profile (harness/quick_profile.hpp): only its checks.
+  bool quick = false;
 };
 
 void add_check_options(CLI::App& app, CheckCliOptions& o);

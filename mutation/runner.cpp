@@ -1,4 +1,5 @@
 #include "mutation/runner.hpp"
+#include "mutation/kill_matrix.hpp"
 
 #include "harness/isolate.hpp"
 #include "harness/report.hpp"
@@ -77,18 +78,49 @@ ModeResult run_mode(const SubjectSet& s, const std::vector<const Property*>& pro
   ro.seed = o.seed;
   ro.case_factor = o.case_factor;
   ro.honour_rc_params = false;
+  if (o.matrix) {
+    // The matrix asks whether each check kills, not for the smallest counterexample: no shrinking,
+    // and no new case after a second (at least one case runs), so that a mutant that makes a check
+    // slow costs a bounded time there.
+    ro.shrink = false;
+    ro.case_budget_seconds = 1.0;
+  }
   std::set<std::string> ran;
+  // The matrix of one mutant stops starting new cells after this long: an integrator's mutant
+  // applies to every integrator property, whose long runs would otherwise take minutes each; the
+  // cells left out are counted (matrix_skipped) and the quick profile uses the measured ones.
+  const auto mode_start = std::chrono::steady_clock::now();
+  constexpr double kMatrixBudgetSeconds = 20;
   for (ScalarKind k : {ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact}) {
     for (const Property* p : props) {
       if (!p->runs_in(k)) continue;
+      if (o.matrix &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - mode_start).count() > kMatrixBudgetSeconds) {
+        ++r.matrix_skipped;
+        continue;
+      }
       std::vector<Verdict> vs;
+      const std::string cell = p->id + "/" + scalar_name(k);
+      const auto started = std::chrono::steady_clock::now();
+      auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(); };
       try {
         vs = run_property(*p, s, k, ro);
       } catch (const std::exception& e) {
+        if (!r.killed) r.killed_by = p->id + " [" + scalar_name(k) + "] threw: " + first_line(e.what());
         r.killed = true;
-        r.killed_by = p->id + " [" + scalar_name(k) + "] threw: " + first_line(e.what());
-        if (!o.verbose) return r;
+        if (o.matrix) r.cells[cell] = {true, seconds()};
+        if (!o.verbose && !o.matrix) return r;
         continue;
+      }
+      if (o.matrix) {
+        bool ran_here = false, killed_here = false;
+        for (const Verdict& v : vs) {
+          if (v.outcome == Outcome::NotProvided) continue;
+          if (v.outcome == Outcome::Error && v.message.find("without listing it in its needs") != std::string::npos) continue;
+          ran_here = true;
+          killed_here = killed_here || v.outcome != Outcome::Pass;
+        }
+        if (ran_here) r.cells[cell] = {killed_here, seconds()};
       }
       for (const Verdict& v : vs) {
         std::string where = p->id + " [" + v.scalar + (v.integrator.empty() ? "" : " " + v.integrator) + "]";
@@ -104,7 +136,7 @@ ModeResult run_mode(const SubjectSet& s, const std::vector<const Property*>& pro
           r.killed = true;
           r.killed_by = where + " " + outcome_name(v.outcome) + ": " + first_line(v.message);
         }
-        if (!o.verbose) return r;
+        if (!o.verbose && !o.matrix) return r;
       }
     }
   }
@@ -112,8 +144,11 @@ ModeResult run_mode(const SubjectSet& s, const std::vector<const Property*>& pro
 }
 
 json mode_json(const ModeResult& m) {
+  json cells = json::object();
+  for (const auto& [k, v] : m.cells) cells[k] = {v.first, v.second};
   return json{{"ran", m.ran},         {"killed", m.killed}, {"killed_by", m.killed_by}, {"properties", m.properties},
-              {"undeclared", m.undeclared}, {"log", m.log}, {"error", m.error}};
+              {"undeclared", m.undeclared}, {"log", m.log}, {"error", m.error}, {"cells", cells},
+              {"matrix_skipped", m.matrix_skipped}};
 }
 ModeResult mode_from(const json& j) {
   ModeResult m;
@@ -124,6 +159,9 @@ ModeResult mode_from(const json& j) {
   m.undeclared = j.value("undeclared", std::vector<std::string>{});
   m.log = j.value("log", std::vector<std::string>{});
   m.error = j.value("error", "");
+  m.matrix_skipped = j.value("matrix_skipped", 0);
+  if (j.contains("cells"))
+    for (const auto& [k, v] : j.at("cells").items()) m.cells[k] = {v.at(0).get<bool>(), v.at(1).get<double>()};
   return m;
 }
 
@@ -189,7 +227,9 @@ MutantsRun run_mutants(const MutantsOptions& o) {
       }
       if (o.alone && m.alone) {
         try {
-          alone = run_mode(m.alone(ref), props, o);
+          MutantsOptions alone_options = o;
+          alone_options.matrix = false;  // the matrix is of the full reference
+          alone = run_mode(m.alone(ref), props, alone_options);
         } catch (const std::exception& e) {
           alone.ran = true;
           alone.error = e.what();
@@ -396,6 +436,7 @@ std::string markdown_report(const MutantsRun& run) {
     os << "\n## Properties failing on the reference (left out)\n\n";
     for (const auto& b : run.baseline_failures) os << "- " << b << "\n";
   }
+  if (run.options.matrix) os << "\n" << matrix_markdown(run);
   return os.str();
 }
 
@@ -408,6 +449,7 @@ std::string json_report(const MutantsRun& run) {
   j["score_full"] = {{"killed", f.killed}, {"equivalent", f.equivalent}, {"survived", f.survived}, {"mutants", f.mutants}, {"score", f.score()}};
   j["score_alone"] = {{"killed", a.killed}, {"equivalent", a.equivalent}, {"survived", a.survived}, {"mutants", a.mutants}, {"score", a.score()}};
   j["baseline_failures"] = run.baseline_failures;
+  if (run.options.matrix) j["quick_profile"] = quick_profile_json(choose_quick_profile(run), run);
   j["mutants"] = json::array();
   for (const auto& r : run.results)
     j["mutants"].push_back({{"name", r.name},
@@ -456,6 +498,14 @@ int mutants_command(const MutantsOptions& o) {
       harness::write_file_atomically(o.report_dir + "/mutants.md", markdown_report(run));
       harness::write_file_atomically(o.report_dir + "/mutants.json", json_report(run));
       std::cout << "report: " << o.report_dir << "/mutants.md\n";
+    }
+    if (o.matrix) {
+      const QuickProfile q = choose_quick_profile(run);
+      std::cout << quick_profile_summary(q);
+      if (!o.quick_profile_out.empty()) {
+        harness::write_file_atomically(o.quick_profile_out, quick_profile_json(q, run).dump(1) + "\n");
+        std::cout << "quick profile: " << o.quick_profile_out << "\n";
+      }
     }
   } catch (const std::exception& e) {
     std::cerr << "geomech mutants: " << e.what() << "\n";

@@ -24,6 +24,11 @@ struct MutantsOptions {
   std::string equivalent_file; // default: spec/equivalent_mutants.json in the source tree
   bool alone = true;           // also run the "alone" mode
   std::string front_door = "geomech";
+  // Issue 32: the kill matrix. Every property and scalar runs on every mutant in the full
+  // reference (no stop at the first kill), timed; the report gains the matrix and the quick
+  // profile chosen from it (mutation/kill_matrix.hpp), written to `quick_profile_out` if set.
+  bool matrix = false;
+  std::string quick_profile_out;
 };
 
 struct ModeResult {
@@ -34,6 +39,9 @@ struct ModeResult {
   std::vector<std::string> undeclared;  // properties that called a slot they do not declare (alone mode)
   std::vector<std::string> log;         // verbose: one line per verdict
   std::string error;
+  // With --matrix: "property/scalar" -> (killed there, seconds it took).
+  std::map<std::string, std::pair<bool, double>> cells;
+  int matrix_skipped = 0;  // cells not started: the mutant's matrix budget was spent
 };
 
 struct MutantResult {

@@ -619,6 +619,11 @@ int main(int argc, char** argv) {
   mut->add_option("--slot", mo.slot, "only the mutants of this slot (rigid_body_step / manakov_step for integrators)");
   mut->add_option("--mutant", mo.mutant, "only this mutant (e.g. euler_3_8:negate_result)");
   mut->add_flag("--verbose", mo.verbose, "every property's verdict on each mutant (no early stop)");
+  mut->add_flag("--matrix", mo.matrix,
+                "the kill matrix: every property and scalar on every mutant of the full reference, timed, and the quick "
+                "profile chosen from it (in the report)");
+  mut->add_option("--write-quick-profile", mo.quick_profile_out,
+                  "with --matrix: write the quick profile (`geomech check --quick`) to this file (spec/quick_profile.json)");
   mut->add_option("--case-factor", mo.case_factor, "multiplies the properties' case counts (default 0.3)")
       ->check(CLI::PositiveNumber);
   mut->add_option("--seed", mo.seed, "base seed (default fixed)");
