@@ -128,6 +128,15 @@ const std::string& suite_identity() {
   return id;
 }
 
+// The slots a report says were provided, in any scalar.
+std::set<std::string> provided_slots(const json& report) {
+  std::set<std::string> out;
+  const json by_scalar = report.value("provided", json::object());
+  for (const auto& [scalar, slots] : by_scalar.items())
+    for (const auto& slot : slots) out.insert(slot.get<std::string>());
+  return out;
+}
+
 // One student's results as the gradebook reads them.
 StudentResult student_result(const Row& row) {
   StudentResult s;
@@ -144,10 +153,7 @@ StudentResult student_result(const Row& row) {
     return s;
   }
   s.status = "checked";
-  std::set<std::string> provided;
-  const json by_scalar = row.report.value("provided", json::object());
-  for (const auto& [scalar, slots] : by_scalar.items())
-    for (const auto& slot : slots) provided.insert(slot.get<std::string>());
+  const std::set<std::string> provided = provided_slots(row.report);
   // Credit only for what a check exercised: a slot no selected property calls is not known correct.
   const json exercised = row.report.value("exercised", json::object());
   for (const auto& slot : provided)
@@ -188,10 +194,7 @@ std::string in_words(const Row& row) {
   os << " (" << (language == "python" ? "Python" : language == "octave" ? "Octave" : "C++") << "): "
      << row.report.value("verdict", std::string("?")) << ". ";
   std::size_t integrators = row.report.value("integrators", json::array()).size();
-  std::set<std::string> provided;
-  const json by_scalar = row.report.value("provided", json::object());
-  for (const auto& [scalar, slots] : by_scalar.items())
-    for (const auto& slot : slots) provided.insert(slot.get<std::string>());
+  const std::set<std::string> provided = provided_slots(row.report);
   os << provided.size() << (provided.size() == 1 ? " slot" : " slots");
   if (integrators > 0) os << " and " << integrators << (integrators == 1 ? " integrator" : " integrators");
   os << " provided; ";
