@@ -22,6 +22,7 @@
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
 #include "properties/support/long_time.hpp"
+#include "properties/support/named_inputs.hpp"
 #include "properties/support/roundoff_claim.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/tolerance.hpp"
@@ -46,23 +47,28 @@ constexpr int kNoetherSteps = 64;
 template <class T>
 void integrator_noether(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   T worst(0);
+  std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
     RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+    const std::string drawn = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + "    h = 1/8, 64 steps\n";
+    if (k == 0) inputs = drawn;
     const Vec3<T> pi0 = x.O * x.Pi;
     const T scale = dyn::at_least_one(norm_inf(x.Pi));
     Series ser{"Noether: " + in.name, "|O Pi - O0 Pi0|" + scalar_tag<T>(), "t", "|residual|", false, true, {}, 0};
     for (int n = 1; n <= kNoetherSteps; ++n) {
       x = in.rigid_body_step(I, x, T(1) / T(8));
       const T r = norm_inf(Vec3<T>(x.O * x.Pi - pi0)) / scale;
-      if (worse(r, worst)) worst = r;
+      if (worse(r, worst)) worst = r, inputs = drawn;
       ser.points.emplace_back(n / 8.0, to_double(r));
     }
     if (k == 0) record_series(ser);
   }
-  judge_roundoff_claim<T>("noether", c.noether, in.name,
-                          "the spatial momentum pi = O Pi (Theorem 2.2) is kept to round-off over 64 steps", worst,
-                          T(kNoetherSteps), 32);
+  showing_inputs([&] { return inputs; }, [&] {
+    judge_roundoff_claim<T>("noether", c.noether, in.name,
+                            "the spatial momentum pi = O Pi (Theorem 2.2) is kept to round-off over 64 steps", worst,
+                            T(kNoetherSteps), 32);
+  });
 }
 
 // O M O^T is of degree 3 in the state and each entry sums n^2 products: scale n^2 max(1, |M|),
@@ -72,21 +78,26 @@ constexpr int kManakovNoetherSteps = 32;
 template <class T>
 void manakov_integrator_noether(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   T worst(0);
+  std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const int n = dyn::pick<T>(rc::gen::inRange(3, 7));
     const MatX<T> A = dyn::diag_of(dyn::draw_generic_manakov_a<T>(n));
     ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
+    const std::string drawn = named("A", A) + named("M", x.M) + named("O", x.O) + "    h = 1/8, 32 steps\n";
+    if (k == 0) inputs = drawn;
     const MatX<T> m0 = x.O * x.M * x.O.transpose();
     const T scale = T(n * n) * dyn::at_least_one(norm_inf(x.M));
     for (int s = 1; s <= kManakovNoetherSteps; ++s) {
       x = in.manakov_step(A, x, T(1) / T(8));
       const T r = max_abs(MatX<T>(x.O * x.M * x.O.transpose() - m0)) / scale;
-      if (worse(r, worst)) worst = r;
+      if (worse(r, worst)) worst = r, inputs = drawn;
     }
   }
-  judge_roundoff_claim<T>("noether", c.noether, in.name,
-                          "the spatial momentum O M O^T is kept to round-off over 32 steps (n = 3..6)", worst,
-                          T(kManakovNoetherSteps), 48);
+  showing_inputs([&] { return inputs; }, [&] {
+    judge_roundoff_claim<T>("noether", c.noether, in.name,
+                            "the spatial momentum O M O^T is kept to round-off over 32 steps (n = 3..6)", worst,
+                            T(kManakovNoetherSteps), 48);
+  });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -100,17 +111,22 @@ template <class T>
 void integrator_equivariant(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   const T h = T(1) / T(4);
   T worst(0);
+  std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
     const RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
     const Mat3<T> R = dyn::draw_rotation<T>();
+    const std::string drawn = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + named("R", R) + "    h = 1/4\n";
+    if (k == 0) inputs = drawn;
     const RigidBodyState<T> a = in.rigid_body_step(I, x, h);
     const RigidBodyState<T> b = in.rigid_body_step(I, RigidBodyState<T>{x.Pi, Mat3<T>(R * x.O)}, h);
     const T r = std::max(max_abs(Vec3<T>(b.Pi - a.Pi)), max_abs(Mat3<T>(b.O - R * a.O)));
-    if (worse(r, worst)) worst = r;
+    if (worse(r, worst)) worst = r, inputs = drawn;
   }
-  judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
-                          "step(Pi, R O) = (Pi', R O'): the step commutes with rotating the attitude", worst, T(1), 64);
+  showing_inputs([&] { return inputs; }, [&] {
+    judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
+                            "step(Pi, R O) = (Pi', R O'): the step commutes with rotating the attitude", worst, T(1), 64);
+  });
 }
 
 // n = 3..6: entries of products summed over n terms, scale n.
@@ -118,19 +134,24 @@ template <class T>
 void manakov_integrator_equivariant(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   const T h = T(1) / T(4);
   T worst(0);
+  std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const int n = dyn::pick<T>(rc::gen::inRange(3, 7));
     const MatX<T> A = dyn::diag_of(dyn::draw_generic_manakov_a<T>(n));
     const ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
     const MatX<T> R = dyn::pick<T>(gen::rotation<T>(n));
+    const std::string drawn = named("A", A) + named("M", x.M) + named("O", x.O) + named("R", R) + "    h = 1/4\n";
+    if (k == 0) inputs = drawn;
     const ManakovState<T> a = in.manakov_step(A, x, h);
     const ManakovState<T> b = in.manakov_step(A, ManakovState<T>{x.M, MatX<T>(R * x.O)}, h);
     const T r = std::max(max_abs(MatX<T>(b.M - a.M)), max_abs(MatX<T>(b.O - R * a.O))) / T(n);
-    if (worse(r, worst)) worst = r;
+    if (worse(r, worst)) worst = r, inputs = drawn;
   }
-  judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
-                          "Manakov step(M, R O) = (M', R O'): the step commutes with rotating the attitude (n = 3..6)",
-                          worst, T(1), 64);
+  showing_inputs([&] { return inputs; }, [&] {
+    judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
+                            "Manakov step(M, R O) = (M', R O'): the step commutes with rotating the attitude (n = 3..6)",
+                            worst, T(1), 64);
+  });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -195,12 +216,15 @@ void integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const
   RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
   const T h = T(1) / T(4);
   const int steps = long_run_steps<T>(c.bounded_energy, 100000, 4000, 1000);
-  long_time_energy<T>(
-      in.name, c.bounded_energy, "the energy h (3.4) over a long run", steps, h,
-      [&](int n) {
-        if (n > 0) x = in.rigid_body_step(I, x, h);
-        return dyn::energy(I, x.Pi);
-      });
+  const std::string inputs = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + "    h = 1/4\n";
+  showing_inputs([&] { return inputs; }, [&] {
+    long_time_energy<T>(
+        in.name, c.bounded_energy, "the energy h (3.4) over a long run", steps, h,
+        [&](int n) {
+          if (n > 0) x = in.rigid_body_step(I, x, h);
+          return dyn::energy(I, x.Pi);
+        });
+  });
 }
 
 // Manakov, n = 3 or 4, h = 1/8: 20000 steps in double, 400 in 50 digits (each step is a
@@ -213,12 +237,15 @@ void manakov_integrator_bounded_energy(const Subject<T>&, const Integrator<T>& i
   ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
   const T h = T(1) / T(8);
   const int steps = long_run_steps<T>(c.bounded_energy, 20000, 400, 100);
-  long_time_energy<T>(
-      in.name, c.bounded_energy, "the energy -tr(Omega M)/4 over a long run, n = " + std::to_string(n), steps, h,
-      [&](int s) {
-        if (s > 0) x = in.manakov_step(A, x, h);
-        return dyn::manakov_energy(a, x.M);
-      });
+  const std::string inputs = named("A", A) + named("M", x.M) + named("O", x.O) + "    h = 1/8\n";
+  showing_inputs([&] { return inputs; }, [&] {
+    long_time_energy<T>(
+        in.name, c.bounded_energy, "the energy -tr(Omega M)/4 over a long run, n = " + std::to_string(n), steps, h,
+        [&](int s) {
+          if (s > 0) x = in.manakov_step(A, x, h);
+          return dyn::manakov_energy(a, x.M);
+        });
+  });
 }
 
 }  // namespace

@@ -15,10 +15,13 @@
 #pragma once
 
 #include "core/subject.hpp"
+#include "properties/support/claims.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/show.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
+
+#include <rapidcheck.h>
 
 #include <string>
 #include <vector>
@@ -144,6 +147,24 @@ Diagnosis diagnose(const Field<T>& f, const Vec3<T>& I, const RigidBodyState<T>&
   else
     d.text = pi_text + (pi_text.empty() || om_text.empty() ? "" : "; ") + om_text;
   return d;
+}
+
+// Runs `judge` (a claim's verdict); when it fails, `explanation()` (the step's own equation, measured
+// only then) leads the failure and the evidence of every false claim it recorded: a false claim
+// explains itself in the claims table as well as in its FIRST FIX.
+template <class Explain, class Judge>
+void explaining_claims(Explain&& explanation, Judge&& judge) {
+  const std::size_t before = recorded_claims().size();
+  try {
+    judge();
+  } catch (rc::detail::CaseResult& r) {
+    const std::string why = explanation();
+    for (std::size_t k = before; k < recorded_claims().size(); ++k)
+      if (recorded_claims()[k].claimed && !recorded_claims()[k].holds)
+        recorded_claims()[k].evidence = why + "; measured: " + recorded_claims()[k].evidence;
+    r.description = why + "\n" + r.description;
+    throw;
+  }
 }
 
 }  // namespace gm::stepfield

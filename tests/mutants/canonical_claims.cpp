@@ -91,6 +91,40 @@ GM_MUTANT(clebsch_midpoint_loose_solve,
           LooseMidpoint{});
 GM_MUTANT_WRONG_ONLY_IN(clebsch_midpoint_loose_solve, ScalarKind::MP50);
 
+// Issue 33's negative controls for the Clebsch steps' own equations. (3.23) written with the
+// notes' printed momentum M = (P^T Q - Q^T P)/2 (erratum mm.manakov-clebsch): Omega is linear in M,
+// so the field is -1/2 of (3.23)'s and the step is the midpoint rule with -h/2. (3.21) with the
+// sign of both equations reversed (dQ/dt = Omega x Q): the midpoint rule with -h. Both stay
+// symplectic and symmetric; their order claims are false, and the failures must name the equation
+// followed (tests/step_field_tests.cpp).
+GM_MUTANT(manakov_clebsch_midpoint_printed_M,
+          "the Clebsch midpoint rule for (3.23) with the notes' printed M = (P^T Q - Q^T P)/2 (erratum "
+          "mm.manakov-clebsch), still claiming order 2",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            if constexpr (!is_exact_v<T>) {
+              for (auto& i : s.integrators)
+                if (i.name == "clebsch_midpoint")
+                  i.manakov_clebsch_step = [](const MatX<T>& A, const MatXPair<T>& z, const T& h) {
+                    return ref::manakov_clebsch_midpoint_step<T>(A, z, T(-h / T(2)));
+                  };
+            }
+          });
+
+GM_MUTANT(clebsch_midpoint_sign_flipped,
+          "the Clebsch midpoint rule for (3.21) with dQ/dt = Omega x Q, dP/dt = Omega x P (both signs "
+          "reversed), still claiming order 2",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            if constexpr (!is_exact_v<T>) {
+              for (auto& i : s.integrators)
+                if (i.name == "clebsch_midpoint")
+                  i.clebsch_step = [](const Vec3<T>& I, const Vec3Pair<T>& z, const T& h) {
+                    return ref::clebsch_midpoint_step<T>(I, z, T(-h));
+                  };
+            }
+          });
+
 // Classical RK4 on (Q, P) claiming symplecticity: it is not symplectic (no explicit Runge-Kutta
 // method is).
 GM_MUTANT_SET(rk4_claims_symplectic, "classical RK4 on the Clebsch variables claiming to be symplectic",

@@ -197,6 +197,25 @@ GM_MUTANT(manakov_isospectral_explicit,
             }
           });
 
+// Issue 33's negative control for the Manakov step's own equation: the implicit midpoint rule of
+// dM/dt = [Omega, M], the commutator of (2.36) reversed (its M is the reference step's taken with
+// -h), the attitude still turned by dO/dt = O Omega. A midpoint rule, so it keeps tr(M^2), the
+// energy and O^T O; of the midpoint's claims only the order is false, and the failure must say why:
+// "your step follows dM/dt = [Omega, M] ... (2.36) is [M, Omega]" (tests/step_field_tests.cpp).
+GM_MUTANT(manakov_midpoint_commutator_reversed,
+          "a Manakov midpoint step whose own right-hand side has the commutator of (2.36) reversed, "
+          "dM/dt = [Omega, M], still claiming order 2",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            if constexpr (!is_exact_v<T>) {
+              if (auto* i = find_integrator(s, "implicit_midpoint"))
+                i->manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) {
+                  return ManakovState<T>{ref::manakov_implicit_midpoint_step<T>(A, x, T(-h)).M,
+                                         ref::manakov_implicit_midpoint_step<T>(A, x, h).O};
+                };
+            }
+          });
+
 GM_MUTANT_SET(rk4_claims_everything,
               "classical RK4 claiming symmetry, the Casimir, the energy, orthogonality, the spectrum and the Poisson "
               "property",
