@@ -80,6 +80,12 @@ RigidBodyState<T> run(const Integrator<T>& in, const Vec3<T>& I, RigidBodyState<
   return x;
 }
 
+// A rigid-body case by the notes' names (issue 33).
+template <class T>
+std::string rigid_body_inputs(const Vec3<T>& I, const RigidBodyState<T>& x) {
+  return named("I", I) + named("Pi", x.Pi) + named("O", x.O);
+}
+
 template <class T>
 T state_distance(const RigidBodyState<T>& a, const RigidBodyState<T>& b) {
   return std::max(max_abs((a.Pi - b.Pi).eval()), max_abs((a.O - b.O).eval()));
@@ -141,8 +147,10 @@ void integrator_order(const Subject<T>&, const Integrator<T>& in, const Integrat
     ser.points.emplace_back(hs.back(), errs.back());
   }
   record_series(ser);
-  explaining_step(in, I, [&] { return std::vector<RigidBodyState<T>>{x0, exact}; },
-                  [&] { judge_order_claim(in.name, c.order, "", scalar_tag<T>(), hs, errs, floors); });
+  explaining_step(in, I, [&] { return std::vector<RigidBodyState<T>>{x0, exact}; }, [&] {
+    showing_inputs([&] { return rigid_body_inputs(I, x0) + "    h = 1/8, halved down to 1/128; t = 1\n"; },
+                   [&] { judge_order_claim(in.name, c.order, "", scalar_tag<T>(), hs, errs, floors); });
+  });
 }
 
 // Symmetry: step(h) then step(-h) returns to the start, at round-off: two steps, each accurate to
@@ -151,14 +159,18 @@ template <class T>
 void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   const T h = T(1) / T(4);
   T worst(0);  // in units of the scale, which is max(1, |Pi|) <= 1 for these draws
+  std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
     const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
     const RigidBodyState<T> back = in.rigid_body_step(I, in.rigid_body_step(I, x0, h), -h);
     const T r = state_distance(back, x0);
-    if (worse(r, worst)) worst = r;
+    if (k == 0 || worse(r, worst)) worst = r, inputs = rigid_body_inputs(I, x0) + "    h = 1/4\n";
   }
-  judge_measured_claim<T>("symmetric", c.symmetric, in.name, "step(h) then step(-h) returns to the start", worst, T(1), 64);
+  showing_inputs([&] { return inputs; }, [&] {
+    judge_measured_claim<T>("symmetric", c.symmetric, in.name, "step(h) then step(-h) returns to the start", worst, T(1),
+                            64);
+  });
 }
 
 // Invariants over 64 steps of h = 1/8: round-off accumulates at most linearly, k = 16 per step and
@@ -224,10 +236,14 @@ void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, c
     return std::vector<RigidBodyState<T>>{x_first, run(in, I_first, x_first, T(1) / T(8), kSteps)};
   };
   explaining_step(in, I_first, states, [&] {
-    judge_measured_claim<T>(claim, claimed, in.name,
-                            std::string(name) + " is kept to round-off over 64 steps" +
-                                scaled_note(worst_lambda, unscaled, T(T(16.0 * degree) * T(kSteps) * eps<T>())),
-                            worst, T(kSteps), 16.0 * degree);
+    showing_inputs([&] { return rigid_body_inputs(I_first, x_first) + "    h = 1/8, 64 steps (the first case drawn)\n"; },
+                   [&] {
+                     judge_measured_claim<T>(claim, claimed, in.name,
+                                             std::string(name) + " is kept to round-off over 64 steps" +
+                                                 scaled_note(worst_lambda, unscaled,
+                                                             T(T(16.0 * degree) * T(kSteps) * eps<T>())),
+                                             worst, T(kSteps), 16.0 * degree);
+                   });
   });
 }
 
@@ -257,19 +273,24 @@ void integrator_energy(const Subject<T>&, const Integrator<T>& in, const Integra
 template <class T>
 void integrator_orthogonality(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   T worst(0);
+  std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
     const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+    if (k == 0) inputs = rigid_body_inputs(I, x0) + "    h = 1/8, 64 steps\n";
     Series ser{std::string("invariants: ") + in.name, "|O^T O - Id|" + scalar_tag<T>(), "t", "|residual|", false, true, {},
                0};
     run(in, I, x0, T(1) / T(8), kSteps, [&](int n, const RigidBodyState<T>& x) {
       const T r = max_abs((x.O.transpose() * x.O - Mat3<T>::Identity()).eval());
-      if (worse(r, worst)) worst = r;
+      if (worse(r, worst)) worst = r, inputs = rigid_body_inputs(I, x0) + "    h = 1/8, 64 steps\n";
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
     if (k == 0) record_series(ser);
   }
-  judge_measured_claim<T>("orthogonality", c.orthogonality, in.name, "O^T O = Id is kept to round-off over 64 steps", worst, T(kSteps), 32);
+  showing_inputs([&] { return inputs; }, [&] {
+    judge_measured_claim<T>("orthogonality", c.orthogonality, in.name, "O^T O = Id is kept to round-off over 64 steps",
+                            worst, T(kSteps), 32);
+  });
 }
 
 // Poisson map for the bracket (3.6): with Phi the Pi-part of one step (O = Id; the Pi-part of a
@@ -279,10 +300,11 @@ void integrator_orthogonality(const Subject<T>&, const Integrator<T>& in, const 
 // in 50 digits. The defect's round-off is ~2 |Pi| * roundoff_factor8 eps |Pi|: k = 16 on the scale
 // |Pi|^2 roundoff_factor8. A non-Poisson second-order method shows ~h^3 = 1e-2 at h = 1/4.
 template <class T>
-T poisson_defect(const Integrator<T>& in) {
+T poisson_defect(const Integrator<T>& in, std::string* inputs) {
   const Vec3<T> I = dyn::draw_generic_inertia<T>();
   const Vec3<T> Pi = dyn::draw_generic_momentum<T>();
   const T h = T(1) / T(4);
+  *inputs = named("I", I) + named("Pi", Pi) + "    O = Id, h = 1/4\n";
   auto phi = [&](const Vec3<T>& p) { return Vec3<T>(in.rigid_body_step(I, RigidBodyState<T>{p, Mat3<T>::Identity()}, h).Pi); };
   Mat3<T> D;
   for (int j = 0; j < 3; ++j)
@@ -300,12 +322,15 @@ T poisson_defect(const Integrator<T>& in) {
 template <class T>
 void integrator_poisson(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   T worst(0);  // in units of |Pi|^2 roundoff_factor8 (|Pi| <= 1 here, so of roundoff_factor8)
+  std::string inputs, drawn;
   for (int k = 0; k < kStates; ++k) {
-    const T r = poisson_defect<T>(in);
-    if (worse(r, worst)) worst = r;
+    const T r = poisson_defect<T>(in, &drawn);
+    if (k == 0 || worse(r, worst)) worst = r, inputs = drawn;
   }
-  judge_measured_claim<T>("poisson", c.poisson, in.name, "D Phi J(Pi) D Phi^T = J(Phi(Pi)): a Poisson map for (3.6)", worst,
-                 deriv::roundoff_factor8<T>(), 16);
+  showing_inputs([&] { return inputs; }, [&] {
+    judge_measured_claim<T>("poisson", c.poisson, in.name, "D Phi J(Pi) D Phi^T = J(Phi(Pi)): a Poisson map for (3.6)",
+                            worst, deriv::roundoff_factor8<T>(), 16);
+  });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -496,12 +521,13 @@ void manakov_integrator_spectrum(const Subject<T>&, const Integrator<T>& in, con
 // the coordinates m_ij = M_ij (i < j), orthonormal for (2.15): J(M)_(ij),(kl) = -<M, [E_ij, E_kl]>.
 // n = 4 (6 coordinates). Same difference scheme and tolerance as for the rigid body.
 template <class T>
-T manakov_poisson_defect(const Integrator<T>& in) {
+T manakov_poisson_defect(const Integrator<T>& in, std::string* inputs) {
   const int n = 4, d = 6;
   const auto a = dyn::draw_generic_manakov_a<T>(n);
   const MatX<T> A = dyn::diag_of(a);
   const MatX<T> M0 = dyn::draw_generic_skew<T>(n);
   const T h = T(1) / T(4);
+  *inputs = named("A", A) + named("M", M0) + "    O = Id, h = 1/4\n";
   std::vector<std::pair<int, int>> idx;
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) idx.push_back({i, j});
@@ -537,12 +563,16 @@ T manakov_poisson_defect(const Integrator<T>& in) {
 template <class T>
 void manakov_integrator_poisson(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   T worst(0);
+  std::string inputs, drawn;
   for (int k = 0; k < kStates; ++k) {
-    const T r = manakov_poisson_defect<T>(in);
-    if (worse(r, worst)) worst = r;
+    const T r = manakov_poisson_defect<T>(in, &drawn);
+    if (k == 0 || worse(r, worst)) worst = r, inputs = drawn;
   }
-  judge_measured_claim<T>("poisson", c.poisson, in.name, "D Phi J(M) D Phi^T = J(Phi(M)): a Poisson map for the Lie-Poisson bracket of so(4)*",
-                 worst, T(T(6) * deriv::roundoff_factor8<T>()), 16);
+  showing_inputs([&] { return inputs; }, [&] {
+    judge_measured_claim<T>("poisson", c.poisson, in.name,
+                            "D Phi J(M) D Phi^T = J(Phi(M)): a Poisson map for the Lie-Poisson bracket of so(4)*", worst,
+                            T(T(6) * deriv::roundoff_factor8<T>()), 16);
+  });
 }
 
 }  // namespace
