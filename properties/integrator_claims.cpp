@@ -97,13 +97,13 @@ T state_distance(const RigidBodyState<T>& a, const RigidBodyState<T>& b) {
 // The field is looked at in each of the states `states()` returns (only once the claim failed) and
 // the first where it is wrong is named (a state with O = Id, where a shrunk case ends, hides an
 // inertia applied in the wrong frame).
-template <class T, class States, class Judge>
-void explaining_step(const Integrator<T>& in, const Vec3<T>& I, States&& states, Judge&& judge) {
+template <class T, class States, class Diagnose, class Judge>
+void explaining_at(States&& states, Diagnose&& diagnose_at, Judge&& judge) {
   stepfield::explaining_claims(
       [&] {
         stepfield::Diagnosis d;
-        for (const RigidBodyState<T>& x : states()) {
-          d = stepfield::diagnose(stepfield::rigid_body_field(in, I, x), I, x);
+        for (const auto& x : states()) {
+          d = diagnose_at(x);
           if (!d.field_right) break;
         }
         return "the step's own equation: " + d.text + scalar_tag<T>();
@@ -111,18 +111,19 @@ void explaining_step(const Integrator<T>& in, const Vec3<T>& I, States&& states,
       judge);
 }
 
+template <class T, class States, class Judge>
+void explaining_step(const Integrator<T>& in, const Vec3<T>& I, States&& states, Judge&& judge) {
+  explaining_at<T>(
+      states, [&](const RigidBodyState<T>& x) { return stepfield::diagnose(stepfield::rigid_body_field(in, I, x), I, x); },
+      judge);
+}
+
 // The same for Manakov's step (support/step_field_matrix.hpp): (2.36), (2.34) and dO/dt = O Omega.
 template <class T, class States, class Judge>
 void explaining_manakov_step(const Integrator<T>& in, const MatX<T>& A, States&& states, Judge&& judge) {
-  stepfield::explaining_claims(
-      [&] {
-        stepfield::Diagnosis d;
-        for (const ManakovState<T>& x : states()) {
-          d = stepfield::diagnose_manakov(stepfield::manakov_field(in, A, x), A, x);
-          if (!d.field_right) break;
-        }
-        return "the step's own equation: " + d.text + scalar_tag<T>();
-      },
+  explaining_at<T>(
+      states,
+      [&](const ManakovState<T>& x) { return stepfield::diagnose_manakov(stepfield::manakov_field(in, A, x), A, x); },
       judge);
 }
 
