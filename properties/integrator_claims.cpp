@@ -91,41 +91,8 @@ T state_distance(const RigidBodyState<T>& a, const RigidBodyState<T>& b) {
   return std::max(max_abs((a.Pi - b.Pi).eval()), max_abs((a.O - b.O).eval()));
 }
 
-// A false claim explains itself (issue 33): the vector field the step follows at the state where
-// the claim was judged, against (3.8) and (2.10) (support/step_field.hpp), leads the failure and the
-// claims table's evidence.
-// The field is looked at in each of the states `states()` returns (only once the claim failed) and
-// the first where it is wrong is named (a state with O = Id, where a shrunk case ends, hides an
-// inertia applied in the wrong frame).
-template <class T, class States, class Diagnose, class Judge>
-void explaining_at(States&& states, Diagnose&& diagnose_at, Judge&& judge) {
-  stepfield::explaining_claims(
-      [&] {
-        stepfield::Diagnosis d;
-        for (const auto& x : states()) {
-          d = diagnose_at(x);
-          if (!d.field_right) break;
-        }
-        return "the step's own equation: " + d.text + scalar_tag<T>();
-      },
-      judge);
-}
-
-template <class T, class States, class Judge>
-void explaining_step(const Integrator<T>& in, const Vec3<T>& I, States&& states, Judge&& judge) {
-  explaining_at<T>(
-      states, [&](const RigidBodyState<T>& x) { return stepfield::diagnose(stepfield::rigid_body_field(in, I, x), I, x); },
-      judge);
-}
-
-// The same for Manakov's step (support/step_field_matrix.hpp): (2.36), (2.34) and dO/dt = O Omega.
-template <class T, class States, class Judge>
-void explaining_manakov_step(const Integrator<T>& in, const MatX<T>& A, States&& states, Judge&& judge) {
-  explaining_at<T>(
-      states,
-      [&](const ManakovState<T>& x) { return stepfield::diagnose_manakov(stepfield::manakov_field(in, A, x), A, x); },
-      judge);
-}
+using stepfield::explaining_manakov_step;
+using stepfield::explaining_step;
 
 // Order: errors against the Taylor oracle at t = 1 for h = 1/8 ... 1/128; the log-log slope over
 // the points above the round-off plateau (16 eps * scale per step) must be within 0.1 of the claim.
@@ -201,7 +168,7 @@ std::string scaled_note(const T& lambda, const T& drawn, const T& allowed) {
 // same motion in other units (support/regimes.hpp).
 template <class T>
 T claim_state_scale(int k) {
-  return k == 0 ? T(1) : dyn::pick<T>(gen::motion_scale_side<T>(k == 1 ? -1 : 1));
+  return k == 0 ? T(1) : dyn::pick<T>(gen::motion_scale_side<T>(k == 1 ? -1 : 1), "lambda (the state scaled by it)");
 }
 
 // The worst drift of `invariant` over 64 steps of h = 1/8 from kStates generic states, each
@@ -348,7 +315,7 @@ struct ManakovCase {
 template <class T>
 ManakovCase<T> draw_manakov_case(int lo, int hi) {
   ManakovCase<T> m;
-  m.n = dyn::pick<T>(rc::gen::inRange(lo, hi + 1));
+  m.n = dyn::pick<T>(rc::gen::inRange(lo, hi + 1), "n");
   m.a = dyn::draw_generic_manakov_a<T>(m.n);
   m.A = dyn::diag_of(m.a);
   m.x0 = ManakovState<T>{dyn::draw_generic_skew<T>(m.n), dyn::pick<T>(gen::rotation<T>(m.n))};

@@ -167,4 +167,31 @@ void explaining_claims(Explain&& explanation, Judge&& judge) {
   }
 }
 
+// A false claim explains itself (issue 33): the vector field the step follows at the state where
+// the claim was judged, against (3.8) and (2.10) (above), leads the failure and the
+// claims table's evidence.
+// The field is looked at in each of the states `states()` returns (only once the claim failed) and
+// the first where it is wrong is named (a state with O = Id, where a shrunk case ends, hides an
+// inertia applied in the wrong frame).
+template <class T, class States, class Diagnose, class Judge>
+void explaining_at(States&& states, Diagnose&& diagnose_at, Judge&& judge) {
+  stepfield::explaining_claims(
+      [&] {
+        stepfield::Diagnosis d;
+        for (const auto& x : states()) {
+          d = diagnose_at(x);
+          if (!d.field_right) break;
+        }
+        return "the step's own equation: " + d.text + scalar_tag<T>();
+      },
+      judge);
+}
+
+template <class T, class States, class Judge>
+void explaining_step(const Integrator<T>& in, const Vec3<T>& I, States&& states, Judge&& judge) {
+  explaining_at<T>(
+      states, [&](const RigidBodyState<T>& x) { return diagnose(rigid_body_field(in, I, x), I, x); },
+      judge);
+}
+
 }  // namespace gm::stepfield

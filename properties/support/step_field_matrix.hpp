@@ -204,4 +204,14 @@ Diagnosis diagnose_manakov_clebsch(const MatX<T>& field, const MatX<T>& A, const
       "(3.23)");
 }
 
+// A false claim of Manakov's step explains itself as the rigid body's does (explaining_at in
+// step_field.hpp): (2.36), (2.34) and dO/dt = O Omega.
+template <class T, class States, class Judge>
+void explaining_manakov_step(const Integrator<T>& in, const MatX<T>& A, States&& states, Judge&& judge) {
+  explaining_at<T>(
+      states,
+      [&](const ManakovState<T>& x) { return stepfield::diagnose_manakov(stepfield::manakov_field(in, A, x), A, x); },
+      judge);
+}
+
 }  // namespace gm::stepfield
