@@ -431,8 +431,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
       std::istringstream lines(v.message);
       for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
       if (!v.counterexample.empty() && v.message.find("inputs, by the notes' names:") == std::string::npos) {
-        os << (v.shrink_stopped ? "\n  counterexample (shrinking stopped by its time budget, not minimal):"
-                                : "\n  counterexample (shrunk):");
+        os << "\n  " << counterexample_heading(v);
         for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
       }
       if (v.outcome == Outcome::Fail && r.info.randomised)
@@ -690,7 +689,9 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       if (!v->counterexample.empty()) {
         md << (v->shrink_stopped ? "\nCounterexample (full precision; shrinking was stopped by its time budget, so it "
                                    "is the smallest failing case found by then, not a minimal one):\n\n"
-                                 : "\nCounterexample (shrunk, full precision):\n\n");
+                               : counterexample_by_name(*v)
+                                   ? "\nCounterexample (shrunk, full precision), by the notes' names:\n\n"
+                                   : "\nCounterexample (shrunk, full precision):\n\n");
         std::string ce;
         for (const auto& [type, value] : v->counterexample) ce += type + " = " + value + "\n";
         md << fence(ce);

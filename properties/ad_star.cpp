@@ -67,8 +67,8 @@ auto matrix_bracket(const Subject<T>& s, LieAlgebraId g) {
 template <class T>
 void ad_star_components_exercise(const Subject<T>& s) {
   {
-    const VecX<T> xi = *gen::vec<T>(6, kCoordMax, kCoordBits);
-    const VecX<T> mu = *gen::vec<T>(6, kCoordMax, kCoordBits);
+    const VecX<T> xi = *gen::vec<T>(6, kCoordMax, kCoordBits).as("xi");
+    const VecX<T> mu = *gen::vec<T>(6, kCoordMax, kCoordBits).as("mu");
     const auto c = structure_constants<T>(6, [&s](const VecX<T>& x, const VecX<T>& y) {
       return VecX<T>(s.so4_bracket_R6(Vec6<T>(x), Vec6<T>(y)));
     });
@@ -78,8 +78,8 @@ void ad_star_components_exercise(const Subject<T>& s) {
   }
   for (const LieAlgebraId g : kAlgebras) {
     const int d = dimension(g);
-    const VecX<T> xi = *gen::vec<T>(d, kCoordMax, kCoordBits);
-    const VecX<T> mu = *gen::vec<T>(d, kCoordMax, kCoordBits);
+    const VecX<T> xi = *gen::vec<T>(d, kCoordMax, kCoordBits).as("xi");
+    const VecX<T> mu = *gen::vec<T>(d, kCoordMax, kCoordBits).as("mu");
     const std::string name = lie_algebra_name(g);
     require_close(name + ": lie_vee(lie_hat(x)) = x", s.lie_vee(g, s.lie_hat(g, xi)), xi, norm_inf(xi), 0);
     const auto c = structure_constants<T>(d, matrix_bracket(s, g));
@@ -93,21 +93,22 @@ void ad_star_components_exercise(const Subject<T>& s) {
 template <class T>
 void ad_star_definition(const Subject<T>& s) {
   {
-    const Vec6<T> a = *gen::vec6<T>(kCoordMax, kCoordBits), m = *gen::vec6<T>(kCoordMax, kCoordBits),
-                  e = *gen::vec6<T>(kCoordMax, kCoordBits);
+    const Vec6<T> a = *gen::vec6<T>(kCoordMax, kCoordBits).as("xi (R^6)"),
+                  m = *gen::vec6<T>(kCoordMax, kCoordBits).as("mu (R^6)"),
+                  e = *gen::vec6<T>(kCoordMax, kCoordBits).as("eta (R^6)");
     require_close("so(4) = R^6: <ad*_xi mu, eta> = <mu, [xi, eta]_R6>", T(s.ad_star_so4_R6(a, m).dot(e)),
                   T(m.dot(s.so4_bracket_R6(a, e))), T(T(72) * norm_inf(a) * norm_inf(m) * norm_inf(e)), 12);
   }
   for (const LieAlgebraId g : kAlgebras) {
     const int d = dimension(g);
-    const VecX<T> xi = *gen::vec<T>(d, kCoordMax, kCoordBits);
-    const VecX<T> mu = *gen::vec<T>(d, kCoordMax, kCoordBits);
-    const VecX<T> eta = *gen::vec<T>(d, kCoordMax, kCoordBits);
+    const VecX<T> xi = *gen::vec<T>(d, kCoordMax, kCoordBits).as("xi");
+    const VecX<T> mu = *gen::vec<T>(d, kCoordMax, kCoordBits).as("mu");
+    const VecX<T> eta = *gen::vec<T>(d, kCoordMax, kCoordBits).as("eta");
     const T scale = T(2 * d * d * d) * norm_inf(xi) * norm_inf(mu) * norm_inf(eta);
     require_close(std::string(lie_algebra_name(g)) + ": <ad*_xi mu, eta> = <mu, [xi, eta]>",
                   T(s.ad_star(g, xi, mu).dot(eta)), T(mu.dot(matrix_bracket(s, g)(xi, eta))), scale, d * d + d + 4);
   }
-  const Vec3<T> xi = *gen::vec3<T>(kCoordMax, kCoordBits), mu = *gen::vec3<T>(kCoordMax, kCoordBits);
+  const Vec3<T> xi = *gen::vec3<T>(kCoordMax, kCoordBits).as("xi"), mu = *gen::vec3<T>(kCoordMax, kCoordBits).as("mu");
   require_close("so(3): ad*_xi mu = mu x xi", s.ad_star(LieAlgebraId::so3, VecX<T>(xi), VecX<T>(mu)),
                 VecX<T>(truth::cross(mu, xi)), T(T(18) * norm_inf(xi) * norm_inf(mu)), 11);
 }

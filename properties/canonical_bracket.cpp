@@ -48,38 +48,38 @@ void canonical_bracket_coordinates(const Subject<T>& s) {
 
 template <class T>
 void canonical_bracket_bilinear(const Subject<T>& s) {
-  const auto F1 = *gen::polynomial<T>(6);
-  const auto F2 = *gen::polynomial<T>(6);
-  const auto G = *gen::polynomial<T>(6);
-  const T a = *gen::scalar<T>(8, 2);
-  const T b = *gen::scalar<T>(8, 2);
-  const VecX<T> x = *gen::point<T>(6);
+  const auto F1 = *gen::polynomial<T>(6).as("F1");
+  const auto F2 = *gen::polynomial<T>(6).as("F2");
+  const auto G = *gen::polynomial<T>(6).as("G");
+  const T a = *gen::scalar<T>(8, 2).as("a");
+  const T b = *gen::scalar<T>(8, 2).as("b");
+  const VecX<T> x = *gen::point<T>(6).as("x");
   check_bilinear(canonical(s), F1, F2, G, a, b, x);
 }
 
 template <class T>
 void canonical_bracket_skew(const Subject<T>& s) {
-  const auto F = *gen::polynomial<T>(6);
-  const auto G = *gen::polynomial<T>(6);
-  const VecX<T> x = *gen::point<T>(6);
+  const auto F = *gen::polynomial<T>(6).as("F");
+  const auto G = *gen::polynomial<T>(6).as("G");
+  const VecX<T> x = *gen::point<T>(6).as("x");
   check_skew(canonical(s), F, G, x);
 }
 
 template <class T>
 void canonical_bracket_leibniz(const Subject<T>& s) {
-  const auto F = *gen::polynomial<T>(6);
-  const auto G = *gen::polynomial<T>(6);
-  const auto H = *gen::polynomial<T>(6);
-  const VecX<T> x = *gen::point<T>(6);
+  const auto F = *gen::polynomial<T>(6).as("F");
+  const auto G = *gen::polynomial<T>(6).as("G");
+  const auto H = *gen::polynomial<T>(6).as("H");
+  const VecX<T> x = *gen::point<T>(6).as("x");
   check_leibniz(canonical(s), F, G, H, x);
 }
 
 template <class T>
 void canonical_bracket_jacobi(const Subject<T>& s) {
-  const auto F = *gen::polynomial<T>(6);
-  const auto G = *gen::polynomial<T>(6);
-  const auto H = *gen::polynomial<T>(6);
-  const VecX<T> x = *gen::point<T>(6);
+  const auto F = *gen::polynomial<T>(6).as("F");
+  const auto G = *gen::polynomial<T>(6).as("G");
+  const auto H = *gen::polynomial<T>(6).as("H");
+  const VecX<T> x = *gen::point<T>(6).as("x");
   check_jacobi(canonical(s), F, G, H, x);
 }
 

@@ -17,7 +17,7 @@ namespace {
 
 template <class T>
 void definition_casimir(const Subject<T>& s) {
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   showing_inputs([&] { return named("Pi", P); }, [&] {
     require_close("slot casimir: c(Pi) = |Pi|^2 / 2, (2.27)", s.casimir(P), T(P.dot(P) / T(2)), T(P.squaredNorm()), 4);
   });
@@ -32,8 +32,8 @@ Vec3<T> grad_c(const Subject<T>& s, const Vec3<T>& P) {
 // rounds a few times on values of size (|Pi| + 1)^2: k = 16 + the triple product's 8.
 template <class T>
 void casimir_commutes_3_6(const Subject<T>& s) {
-  const Vec3<T> P = *gen::regime_vec3<T>();
-  const Vec3<T> df = *gen::regime_vec3<T>();
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
+  const Vec3<T> df = *gen::regime_vec3<T>().as("df/dPi");
   const Vec3<T> dc = grad_c(s, P);
   const T size = T((norm_inf(P) + T(1)) * (norm_inf(P) + T(1)));
   showing_inputs([&] { return named("Pi", P) + named("df/dPi", df); }, [&] {
@@ -45,8 +45,8 @@ void casimir_commutes_3_6(const Subject<T>& s) {
 // dc/dt = grad c . dPi/dt = 0 along (3.8).
 template <class T>
 void casimir_conserved_by_euler(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   const Vec3<T> dc = grad_c(s, P);
   const T size = T((norm_inf(P) + T(1)) * (norm_inf(P) + T(1)));
   showing_inputs([&] { return named("I", I) + named("Pi", P); }, [&] {

@@ -34,9 +34,9 @@ std::vector<Polynomial<T>> clebsch_Pi() {
 // the Lie-Poisson side 6 |Pi| |df| |dh| on the box |Pi| <= 2 |(Q, P)|^2.
 template <class T>
 void clebsch_map_is_poisson(const Subject<T>& s) {
-  const auto f = *gen::polynomial<T>(3, 3);
-  const auto h = *gen::polynomial<T>(3, 3);
-  const VecX<T> x = *gen::point<T>(6);
+  const auto f = *gen::polynomial<T>(3, 3).as("f");
+  const auto h = *gen::polynomial<T>(3, 3).as("h");
+  const VecX<T> x = *gen::point<T>(6).as("x");
   const Vec3<T> Q(x.head(3)), P(x.tail(3));
   const auto Pi_of = clebsch_Pi<T>();
   const Vec3<T> Pi = s.momentum_map(Q, P);
@@ -68,9 +68,9 @@ void clebsch_map_is_poisson(const Subject<T>& s) {
 // Sizes: w = |Pi| / min I bounds Omega; |dQ/dt| <= 2 w |Q|; |dPi/dt| <= 8 w |P| |Q|.
 template <class T>
 void clebsch_implies_euler(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> Q = *gen::vec3<T>();
-  const Vec3<T> P = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> Q = *gen::vec3<T>().as("Q");
+  const Vec3<T> P = *gen::vec3<T>().as("Pi");
   const auto [Q_dot, P_dot] = s.clebsch_3_21(I, Q, P);
   const Vec3<T> Pi = s.momentum_map(Q, P);
   const Vec3<T> Omega = Pi.cwiseQuotient(I);

@@ -22,7 +22,7 @@ namespace {
 // (2.11): hat(v) is the matrix with hat(v)_jk = -v_i eps_ijk.
 template <class T>
 void definition_hat(const Subject<T>& s) {
-  const Vec3<T> v = *gen::regime_vec3<T>();
+  const Vec3<T> v = *gen::regime_vec3<T>().as("v");
   showing_inputs([&] { return named("v", v); },
                  [&] { require_close("slot hat: hat(v) = (-v_i eps_ijk), (2.11)", s.hat(v), truth::skew_of(v), norm_inf(v), 0); });
 }
@@ -30,7 +30,7 @@ void definition_hat(const Subject<T>& s) {
 // vee inverts (2.11) on skew matrices.
 template <class T>
 void definition_vee(const Subject<T>& s) {
-  const Vec3<T> v = *gen::regime_vec3<T>();
+  const Vec3<T> v = *gen::regime_vec3<T>().as("v");
   const Mat3<T> S = truth::skew_of(v);
   showing_inputs([&] { return named("S", S); },
                  [&] { require_close("slot vee: vee(S) = (S_32, S_13, S_21) for skew S, (2.11)", s.vee(S), v, norm_inf(v), 0); });
@@ -40,8 +40,8 @@ void definition_vee(const Subject<T>& s) {
 // has n^2 products: k = 2 n^2 + 2.
 template <class T>
 void definition_pairing(const Subject<T>& s) {
-  const int n = *gen::uniform(2, 7);
-  const int e = *gen::uniform(-30, 31);
+  const int n = *gen::uniform(2, 7).as("n");
+  const int e = *gen::uniform(-30, 31).as("e (a scale 2^e)");
   const MatX<T> A = (*gen::mat<T>(n, n) * gen::pow2<T>(e)).eval();
   const MatX<T> B = *gen::uniform(0, 2) ? MatX<T>(*gen::mat<T>(n, n) / T(3)) : MatX<T>(*gen::mat<T>(n, n));
   showing_inputs([&] { return named("A", A) + named("B", B); }, [&] {
@@ -71,8 +71,8 @@ std::string n_text(int n) { return " (n = " + std::to_string(n) + ")"; }
 // hat_n is linear: hat_n(v, n) = sum v_k hat_n(e_k, n).
 template <class T>
 void definition_hat_n(const Subject<T>& s) {
-  const int n = *gen::uniform(2, 7);
-  const VecX<T> v = *gen::regime_vec<T>(truth::so_dimension(n));
+  const int n = *gen::uniform(2, 7).as("n");
+  const VecX<T> v = *gen::regime_vec<T>(truth::so_dimension(n)).as("v");
   std::string why;
   const auto basis = coords::learned_so_n(s, n, &why);
   showing_inputs([&] { return named("v", v) + "    n = " + std::to_string(n) + "\n"; }, [&] {
@@ -87,8 +87,8 @@ void definition_hat_n(const Subject<T>& s) {
 // vee_n reads back the coordinates of hat_n (the student's, or the documented ones without hat_n).
 template <class T>
 void definition_vee_n(const Subject<T>& s) {
-  const int n = *gen::uniform(2, 7);
-  const VecX<T> v = *gen::regime_vec<T>(truth::so_dimension(n));
+  const int n = *gen::uniform(2, 7).as("n");
+  const VecX<T> v = *gen::regime_vec<T>(truth::so_dimension(n)).as("v");
   const coords::Basis<T> basis = coords::so_n_for(s, n);
   const MatX<T> m = basis.matrix(v);
   std::string hint;
@@ -120,7 +120,7 @@ LieAlgebraId draw_algebra() {
 template <class T>
 void definition_lie_hat(const Subject<T>& s) {
   const LieAlgebraId g = draw_algebra();
-  const VecX<T> x = *gen::regime_vec<T>(truth::algebra_dimension(g));
+  const VecX<T> x = *gen::regime_vec<T>(truth::algebra_dimension(g)).as("x");
   std::string why;
   const auto basis = coords::learned_algebra(s, g, &why);
   showing_inputs([&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("x", x); }, [&] {
@@ -135,7 +135,7 @@ void definition_lie_hat(const Subject<T>& s) {
 template <class T>
 void definition_lie_vee(const Subject<T>& s) {
   const LieAlgebraId g = draw_algebra();
-  const VecX<T> x = *gen::regime_vec<T>(truth::algebra_dimension(g));
+  const VecX<T> x = *gen::regime_vec<T>(truth::algebra_dimension(g)).as("x");
   const coords::Basis<T> basis = coords::algebra_for(s, g);
   const MatX<T> m = basis.matrix(x);
   std::string hint;
@@ -174,8 +174,8 @@ template <class T>
 void definition_ad_star(const Subject<T>& s) {
   const LieAlgebraId g = draw_algebra();
   const int d = truth::algebra_dimension(g);
-  const VecX<T> xi = *gen::regime_vec<T>(d);
-  const VecX<T> mu = *gen::regime_vec<T>(d);
+  const VecX<T> xi = *gen::regime_vec<T>(d).as("xi");
+  const VecX<T> mu = *gen::regime_vec<T>(d).as("mu");
   const coords::Basis<T> basis = coords::algebra_for(s, g);
   const int n = basis.n;
   const T scale = T(norm_inf(xi) * norm_inf(mu) * basis.condition);
@@ -222,8 +222,8 @@ std::vector<std::optional<coords::Basis<T>>> so4_alternatives(const Subject<T>& 
 // SO(4) exercise: the bracket of R^6 is the commutator read through hat_4.
 template <class T>
 void definition_so4_bracket_R6(const Subject<T>& s) {
-  const VecX<T> a = *gen::regime_vec<T>(6);
-  const VecX<T> b = *gen::regime_vec<T>(6);
+  const VecX<T> a = *gen::regime_vec<T>(6).as("a");
+  const VecX<T> b = *gen::regime_vec<T>(6).as("b");
   const coords::Basis<T> basis = coords::so_n_for(s, 4);
   auto bracket_in = [&](const coords::Basis<T>& B) {
     const MatX<T> A = B.matrix(a), Bm = B.matrix(b);
@@ -249,8 +249,8 @@ void definition_so4_bracket_R6(const Subject<T>& s) {
 
 template <class T>
 void definition_ad_star_so4_R6(const Subject<T>& s) {
-  const VecX<T> xi = *gen::regime_vec<T>(6);
-  const VecX<T> mu = *gen::regime_vec<T>(6);
+  const VecX<T> xi = *gen::regime_vec<T>(6).as("xi");
+  const VecX<T> mu = *gen::regime_vec<T>(6).as("mu");
   const coords::Basis<T> basis = coords::so_n_for(s, 4);
   const T scale = T(norm_inf(xi) * norm_inf(mu));
   std::string hint;
@@ -285,7 +285,8 @@ T size3(const Vec3<T>& a, const Vec3<T>& b, const Vec3<T>& c) {
 // (3.6): {f, h}(Pi) = -Pi . (df x dh).
 template <class T>
 void definition_lie_poisson_3_6(const Subject<T>& s) {
-  const Vec3<T> Pi = *gen::regime_vec3<T>(), df = *gen::regime_vec3<T>(), dh = *gen::regime_vec3<T>();
+  const Vec3<T> Pi = *gen::regime_vec3<T>().as("Pi"), df = *gen::regime_vec3<T>().as("df/dPi"),
+                dh = *gen::regime_vec3<T>().as("dh/dPi");
   showing_inputs([&] { return named("Pi", Pi) + named("df/dPi", df) + named("dh/dPi", dh); }, [&] {
     require_close("slot lie_poisson_3_6: {f, h} = -Pi . (df x dh), (3.6)", s.lie_poisson_3_6(Pi, df, dh),
                   minus_triple(Pi, df, dh), size3(Pi, df, dh), 8);
@@ -296,7 +297,8 @@ void definition_lie_poisson_3_6(const Subject<T>& s) {
 // The matrix form sums more products: k = 24.
 template <class T>
 void definition_lie_poisson_2_23(const Subject<T>& s) {
-  const Vec3<T> Pi = *gen::regime_vec3<T>(), df = *gen::regime_vec3<T>(), dh = *gen::regime_vec3<T>();
+  const Vec3<T> Pi = *gen::regime_vec3<T>().as("Pi"), df = *gen::regime_vec3<T>().as("df/dPi"),
+                dh = *gen::regime_vec3<T>().as("dh/dPi");
   const Mat3<T> P = truth::skew_of(Pi), F = truth::skew_of(df), H = truth::skew_of(dh);
   showing_inputs([&] { return named("Pi_hat", P) + named("df_hat", F) + named("dh_hat", H); }, [&] {
     require_close("slot lie_poisson_2_23: {f, h} = -<Pi, [df, dh]> = -Pi . (df x dh), (2.23)",
@@ -307,7 +309,8 @@ void definition_lie_poisson_2_23(const Subject<T>& s) {
 // (3.13): {f, h} = -grad c . (grad f x grad h).
 template <class T>
 void definition_nambu_3_13(const Subject<T>& s) {
-  const Vec3<T> dc = *gen::regime_vec3<T>(), df = *gen::regime_vec3<T>(), dh = *gen::regime_vec3<T>();
+  const Vec3<T> dc = *gen::regime_vec3<T>().as("grad c"), df = *gen::regime_vec3<T>().as("grad f"),
+                dh = *gen::regime_vec3<T>().as("grad h");
   showing_inputs([&] { return named("grad c", dc) + named("grad f", df) + named("grad h", dh); }, [&] {
     require_close("slot nambu_3_13: {f, h} = -grad c . (grad f x grad h), (3.13)", s.nambu_3_13(dc, df, dh),
                   minus_triple(dc, df, dh), size3(dc, df, dh), 8);
@@ -317,7 +320,7 @@ void definition_nambu_3_13(const Subject<T>& s) {
 // (3.14): dx/dt = grad c x grad h.
 template <class T>
 void definition_nambu_motion_3_14(const Subject<T>& s) {
-  const Vec3<T> dc = *gen::regime_vec3<T>(), dh = *gen::regime_vec3<T>();
+  const Vec3<T> dc = *gen::regime_vec3<T>().as("grad c"), dh = *gen::regime_vec3<T>().as("grad h");
   showing_inputs([&] { return named("grad c", dc) + named("grad h", dh); }, [&] {
     require_close("slot nambu_motion_3_14: dx/dt = grad c x grad h, (3.14)", s.nambu_motion_3_14(dc, dh),
                   truth::cross(dc, dh), T(norm_inf(dc) * norm_inf(dh)), 4);
@@ -327,8 +330,8 @@ void definition_nambu_motion_3_14(const Subject<T>& s) {
 // Section 3.5: {f, h} = df/dq . dh/dp - df/dp . dh/dq, so that {q_i, p_j} = delta_ij.
 template <class T>
 void definition_canonical_bracket(const Subject<T>& s) {
-  const Vec3<T> fq = *gen::regime_vec3<T>(), fp = *gen::regime_vec3<T>();
-  const Vec3<T> hq = *gen::regime_vec3<T>(), hp = *gen::regime_vec3<T>();
+  const Vec3<T> fq = *gen::regime_vec3<T>().as("fq"), fp = *gen::regime_vec3<T>().as("fp");
+  const Vec3<T> hq = *gen::regime_vec3<T>().as("hq"), hp = *gen::regime_vec3<T>().as("hp");
   showing_inputs([&] { return named("df/dq", fq) + named("df/dp", fp) + named("dh/dq", hq) + named("dh/dp", hp); }, [&] {
     require_close("slot canonical_bracket: {f, h} = df/dq . dh/dp - df/dp . dh/dq", s.canonical_bracket(fq, fp, hq, hp),
                   T(fq.dot(hp) - fp.dot(hq)), T(norm_inf(fq) * norm_inf(hp) + norm_inf(fp) * norm_inf(hq)), 8);
@@ -338,7 +341,7 @@ void definition_canonical_bracket(const Subject<T>& s) {
 // The momentum-map section: J(q, p) = p x q, the cotangent lift of SO(3) acting on R^3.
 template <class T>
 void definition_momentum_map(const Subject<T>& s) {
-  const Vec3<T> q = *gen::regime_vec3<T>(), p = *gen::regime_vec3<T>();
+  const Vec3<T> q = *gen::regime_vec3<T>().as("q"), p = *gen::regime_vec3<T>().as("p");
   showing_inputs([&] { return named("q", q) + named("p", p); }, [&] {
     require_close("slot momentum_map: J(q, p) = p x q (the momentum-map section)", s.momentum_map(q, p),
                   truth::cross(p, q), T(norm_inf(q) * norm_inf(p)), 4);

@@ -48,8 +48,8 @@ std::string body_inputs(const Vec3<T>& I, const char* name, const Vec3<T>& x) {
 // (2.1), componentwise: I1 dOmega1/dt = (I2 - I3) Omega2 Omega3 and cyclically.
 template <class T>
 void definition_euler_2_1(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> W = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
   showing_inputs([&] { return body_inputs(I, "Omega", W); }, [&] {
     require_close("slot euler_2_1: dOmega/dt = I^-1 (I Omega x Omega), (2.1)", s.euler_2_1(I, W), omega_dot(I, W),
                   T(norm_inf(I) * W.squaredNorm() / min_moment(I)), 12);
@@ -58,8 +58,8 @@ void definition_euler_2_1(const Subject<T>& s) {
 
 template <class T>
 void definition_euler_2_2(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> W = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
   showing_inputs([&] { return body_inputs(I, "Omega", W); }, [&] {
     require_close("slot euler_2_2: I dOmega/dt = I Omega x Omega, (2.2)", s.euler_2_2(I, W), omega_dot(I, W),
                   T(norm_inf(I) * W.squaredNorm() / min_moment(I)), 12);
@@ -68,8 +68,8 @@ void definition_euler_2_2(const Subject<T>& s) {
 
 template <class T>
 void definition_euler_3_7(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
     require_close("slot euler_3_7: dPi/dt = Pi x I^-1 Pi, componentwise (3.7)", s.euler_3_7(I, P), pi_dot(I, P),
                   T(P.squaredNorm() / min_moment(I)), 12);
@@ -78,8 +78,8 @@ void definition_euler_3_7(const Subject<T>& s) {
 
 template <class T>
 void definition_euler_3_8(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
     require_close("slot euler_3_8: dPi/dt = Pi x I^-1 Pi, (3.8)", s.euler_3_8(I, P), pi_dot(I, P),
                   T(P.squaredNorm() / min_moment(I)), 12);
@@ -89,8 +89,8 @@ void definition_euler_3_8(const Subject<T>& s) {
 // (2.12)/(2.20): dPi_hat/dt = -[Omega_hat, Pi_hat], i.e. the hat of Pi x Omega.
 template <class T>
 void definition_euler_matrix_2_12(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   const Mat3<T> P_hat = truth::skew_of(P);
   showing_inputs([&] { return named("I", I) + named("Pi_hat", P_hat); }, [&] {
     require_close("slot euler_matrix_2_12: dPi/dt = -[Omega_hat, Pi_hat] = hat(Pi x Omega), (2.12)",
@@ -101,8 +101,8 @@ void definition_euler_matrix_2_12(const Subject<T>& s) {
 // (2.5): l = I Omega . Omega / 2.
 template <class T>
 void definition_lagrangian_2_5(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> W = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
   showing_inputs([&] { return body_inputs(I, "Omega", W); }, [&] {
     require_close("slot lagrangian_2_5: l = I Omega . Omega / 2, (2.5)", s.lagrangian_2_5(I, W),
                   T(W.dot(I.cwiseProduct(W)) / T(2)), T(norm_inf(I) * W.squaredNorm()), 8);
@@ -112,8 +112,8 @@ void definition_lagrangian_2_5(const Subject<T>& s) {
 // (2.13): l = <I Omega_hat, Omega_hat> / 2, the same number as (2.5).
 template <class T>
 void definition_lagrangian_2_13(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> W = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
   const Mat3<T> W_hat = truth::skew_of(W);
   showing_inputs([&] { return named("I", I) + named("Omega_hat", W_hat); }, [&] {
     require_close("slot lagrangian_2_13: l = <I Omega_hat, Omega_hat>/2 = I Omega . Omega / 2, (2.13)",
@@ -124,8 +124,8 @@ void definition_lagrangian_2_13(const Subject<T>& s) {
 // (3.1): Pi = dl/dOmega = I Omega.
 template <class T>
 void definition_legendre_3_1(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> W = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
   showing_inputs([&] { return body_inputs(I, "Omega", W); }, [&] {
     require_close("slot legendre_3_1: Pi = dl/dOmega = I Omega, (3.1)", s.legendre_3_1(I, W), Vec3<T>(I.cwiseProduct(W)),
                   T(norm_inf(I) * norm_inf(W)), 2);
@@ -135,8 +135,8 @@ void definition_legendre_3_1(const Subject<T>& s) {
 // (3.5): Omega = dh/dPi = I^-1 Pi.
 template <class T>
 void definition_omega_3_5(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
     require_close("slot omega_3_5: Omega = dh/dPi = I^-1 Pi, (3.5)", s.omega_3_5(I, P), Vec3<T>(P.cwiseQuotient(I)),
                   T(norm_inf(P) / min_moment(I)), 2);
@@ -146,8 +146,8 @@ void definition_omega_3_5(const Subject<T>& s) {
 // (3.3) and (3.4): h = Pi . Omega - l(Omega) = Pi . I^-1 Pi / 2.
 template <class T>
 void definition_hamiltonian_3_3(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
     require_close("slot hamiltonian_3_3: h = Pi . Omega - l(Omega) = Pi . I^-1 Pi / 2, (3.3)", s.hamiltonian_3_3(I, P),
                   energy(I, P), T(P.squaredNorm() / min_moment(I)), 16);
@@ -156,8 +156,8 @@ void definition_hamiltonian_3_3(const Subject<T>& s) {
 
 template <class T>
 void definition_hamiltonian_3_4(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
     require_close("slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4)", s.hamiltonian_3_4(I, P), energy(I, P),
                   T(P.squaredNorm() / min_moment(I)), 8);
@@ -167,8 +167,8 @@ void definition_hamiltonian_3_4(const Subject<T>& s) {
 // (2.21): h = <Pi, Omega_hat> - l, the same number as (3.4).
 template <class T>
 void definition_hamiltonian_2_21(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   const Mat3<T> P_hat = truth::skew_of(P);
   showing_inputs([&] { return named("I", I) + named("Pi_hat", P_hat); }, [&] {
     require_close("slot hamiltonian_2_21: h = <Pi, Omega_hat> - l = Pi . I^-1 Pi / 2, (2.21)",
@@ -179,8 +179,8 @@ void definition_hamiltonian_2_21(const Subject<T>& s) {
 // (3.16): dx1/dt = -a1 a3 x2 x3, dx2/dt = -a2 a3 x3 x1, dx3/dt = a1 a2 x1 x2.
 template <class T>
 void definition_nambu_3_16(const Subject<T>& s) {
-  const Vec3<T> a = *gen::regime_vec3<T>();
-  const Vec3<T> x = *gen::regime_vec3<T>();
+  const Vec3<T> a = *gen::regime_vec3<T>().as("a");
+  const Vec3<T> x = *gen::regime_vec3<T>().as("x");
   const Vec3<T> expected(-a(0) * a(2) * x(1) * x(2), -a(1) * a(2) * x(2) * x(0), a(0) * a(1) * x(0) * x(1));
   const Vec3<T> got = s.nambu_3_16(a, x);
   // The printed answer of the exercise: grad(a1 x1^2 + a3 x3^2) x grad(a2 x2^2 + a3 x3^2) / 4.
@@ -198,9 +198,9 @@ void definition_nambu_3_16(const Subject<T>& s) {
 // (3.21): with Pi = P x Q and Omega = I^-1 Pi, dQ/dt = Q x Omega and dP/dt = P x Omega.
 template <class T>
 void definition_clebsch_3_21(const Subject<T>& s) {
-  const Vec3<T> I = *gen::regime_inertia<T>();
-  const Vec3<T> Q = *gen::regime_vec3<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
+  const Vec3<T> Q = *gen::regime_vec3<T>().as("Q");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   const Vec3<T> W = truth::cross(P, Q).cwiseQuotient(I);
   const auto [dQ, dP] = s.clebsch_3_21(I, Q, P);
   const T scale = norm_inf(P) * norm_inf(Q) / min_moment(I);
@@ -215,8 +215,8 @@ void definition_clebsch_3_21(const Subject<T>& s) {
 // (2.10): dO/dt = O Omega_hat (Omega_hat = O^-1 dO/dt, left-invariant).
 template <class T>
 void definition_reconstruction_2_10(const Subject<T>& s) {
-  const Mat3<T> O = *gen::regime_rotation3<T>();
-  const Vec3<T> W = *gen::regime_vec3<T>();
+  const Mat3<T> O = *gen::regime_rotation3<T>().as("O");
+  const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
   showing_inputs([&] { return named("O", O) + named("Omega", W); }, [&] {
     require_close("slot reconstruction_2_10: dO/dt = O Omega_hat, (2.10)", s.reconstruction_2_10(O, W),
                   Mat3<T>(O * truth::skew_of(W)), norm_inf(W), 8);
@@ -226,8 +226,8 @@ void definition_reconstruction_2_10(const Subject<T>& s) {
 // Theorem 2.2 with the erratum of (2.30): pi = Ad*_{O^-1} Pi = O Pi.
 template <class T>
 void definition_spatial_momentum(const Subject<T>& s) {
-  const Mat3<T> O = *gen::regime_rotation3<T>();
-  const Vec3<T> P = *gen::regime_vec3<T>();
+  const Mat3<T> O = *gen::regime_rotation3<T>().as("O");
+  const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   const Vec3<T> pi = s.spatial_momentum(O, P);
   recognising_erratum(
       [&] { return (pi - O.transpose() * P).cwiseAbs().maxCoeff() <= T(8) * eps<T>() * norm_inf(P); }, "s2.noether",
@@ -242,8 +242,8 @@ void definition_spatial_momentum(const Subject<T>& s) {
 // Remark 2.1: I_space = O I O^-1 = O diag(I) O^T.
 template <class T>
 void definition_inertia_space(const Subject<T>& s) {
-  const Mat3<T> O = *gen::regime_rotation3<T>();
-  const Vec3<T> I = *gen::regime_inertia<T>();
+  const Mat3<T> O = *gen::regime_rotation3<T>().as("O");
+  const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   showing_inputs([&] { return named("O", O) + named("I", I); }, [&] {
     require_close("slot inertia_space: I_space = O I O^-1, Remark 2.1", s.inertia_space(O, I),
                   Mat3<T>(O * I.asDiagonal() * O.transpose()), norm_inf(I), 12);
@@ -253,11 +253,11 @@ void definition_inertia_space(const Subject<T>& s) {
 // (2.3) for N = 1..5 point masses m_k at the columns X_k of X.
 template <class T>
 void draw_masses(VecX<T>& m, MatX<T>& X) {
-  const int N = *gen::uniform(1, 6);
-  const int e = *gen::uniform(-20, 21);
-  const int em = *gen::uniform(-30, 31);  // masses in every binade, tiny ones included
+  const int N = *gen::uniform(1, 6).as("N");
+  const int e = *gen::uniform(-20, 21).as("e (a scale 2^e)");
+  const int em = *gen::uniform(-30, 31).as("em (a scale 2^em)");  // masses in every binade, tiny ones included
   const bool thirds = *gen::uniform(0, 4) == 3;
-  m = *gen::vec<T>(N, 64, 2);
+  m = *gen::vec<T>(N, 64, 2).as("m");
   for (int k = 0; k < N; ++k) m(k) = (abs_value(m(k)) + T(1)) * gen::pow2<T>(em);
   X = (*gen::mat<T>(3, N) * gen::pow2<T>(e)).eval();
   if (thirds) X = (X / T(3)).eval();
@@ -285,8 +285,8 @@ void definition_inertia_bilinear_2_3(const Subject<T>& s) {
   VecX<T> m;
   MatX<T> X;
   draw_masses(m, X);
-  const Vec3<T> a = *gen::regime_vec3<T>();
-  const Vec3<T> b = *gen::regime_vec3<T>();
+  const Vec3<T> a = *gen::regime_vec3<T>().as("a");
+  const Vec3<T> b = *gen::regime_vec3<T>().as("b");
   T expected(0);
   for (Eigen::Index k = 0; k < m.size(); ++k) {
     const Vec3<T> x = X.col(k);

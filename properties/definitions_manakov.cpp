@@ -37,8 +37,8 @@ std::string body_text(const gen::ManakovBody<T>& b) {
 // (2.34): M = A Omega + Omega A.
 template <class T>
 void definition_manakov_M(const Subject<T>& s) {
-  const int n = *gen::uniform(3, 7);
-  const auto b = *gen::manakov_body<T>(n);
+  const int n = *gen::uniform(3, 7).as("n");
+  const auto b = *gen::manakov_body<T>(n).as("body");
   const MatX<T> W = draw_omega<T>(n);
   showing_inputs([&] { return body_text(b) + named("Omega", W); }, [&] {
     require_close("slot manakov_M: M = A Omega + Omega A, (2.34) (n = " + std::to_string(n) + ")", s.manakov_M(b.A, W),
@@ -51,8 +51,8 @@ void definition_manakov_M(const Subject<T>& s) {
 // condition: k = 8 n^2.
 template <class T>
 void definition_manakov_Omega(const Subject<T>& s) {
-  const int n = *gen::uniform(3, 7);
-  const auto b = *gen::manakov_body<T>(n);
+  const int n = *gen::uniform(3, 7).as("n");
+  const auto b = *gen::manakov_body<T>(n).as("body");
   const MatX<T> W = draw_omega<T>(n);
   const MatX<T> M = b.A * W + W * b.A;
   showing_inputs([&] { return body_text(b) + named("M", M); }, [&] {
@@ -67,8 +67,8 @@ void definition_manakov_Omega(const Subject<T>& s) {
 // (2.34), (2.36): dM/dt = [M, Omega] with Omega from M.
 template <class T>
 void definition_manakov_2_34(const Subject<T>& s) {
-  const int n = *gen::uniform(3, 7);
-  const auto b = *gen::manakov_body<T>(n);
+  const int n = *gen::uniform(3, 7).as("n");
+  const auto b = *gen::manakov_body<T>(n).as("body");
   const MatX<T> W = draw_omega<T>(n);
   const MatX<T> M = b.A * W + W * b.A;
   showing_inputs([&] { return body_text(b) + named("M", M); }, [&] {
@@ -81,8 +81,8 @@ void definition_manakov_2_34(const Subject<T>& s) {
 // Proposition 2.4's Lagrangian: l(Omega) = -tr(Omega A Omega) / 2.
 template <class T>
 void definition_manakov_lagrangian(const Subject<T>& s) {
-  const int n = *gen::uniform(3, 7);
-  const auto b = *gen::manakov_body<T>(n);
+  const int n = *gen::uniform(3, 7).as("n");
+  const auto b = *gen::manakov_body<T>(n).as("body");
   const MatX<T> W = draw_omega<T>(n);
   showing_inputs([&] { return body_text(b) + named("Omega", W); }, [&] {
     require_close("slot manakov_lagrangian: l = -tr(Omega A Omega)/2, Proposition 2.4", s.manakov_lagrangian(b.A, W),
@@ -95,10 +95,10 @@ void definition_manakov_lagrangian(const Subject<T>& s) {
 // computed here through A's eigenvectors: Omega = R W R^T with W_ij = (R^T M R)_ij / (d_i + d_j).
 template <class T>
 void definition_manakov_clebsch_3_23(const Subject<T>& s) {
-  const int n = *gen::uniform(3, 7);
-  const auto b = *gen::manakov_body<T>(n);
-  const MatX<T> Q = *gen::mat<T>(n, n);
-  const MatX<T> P = *gen::mat<T>(n, n);
+  const int n = *gen::uniform(3, 7).as("n");
+  const auto b = *gen::manakov_body<T>(n).as("body");
+  const MatX<T> Q = *gen::mat<T>(n, n).as("Q");
+  const MatX<T> P = *gen::mat<T>(n, n).as("P");
   const MatX<T> M = Q.transpose() * P - P.transpose() * Q;
   const MatX<T> Mb = b.R.transpose() * M * b.R;
   MatX<T> Wb(n, n);

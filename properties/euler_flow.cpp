@@ -58,9 +58,10 @@ void euler_flow_conserves_casimir_and_energy(const Subject<T>& s) {
 // when |Pi_s| = |Pi_l|), any Pi_m.
 template <class T>
 void separatrix_data(Vec3<T>& I, Vec3<T>& Pi) {
-  const int perm = dyn::pick<T>(rc::gen::inRange(0, 6));
-  const T p = dyn::pick<T>(dyn::quarter<T>(1, 4)), q = dyn::pick<T>(dyn::quarter<T>(-4, 4));
-  const int sign = dyn::pick<T>(rc::gen::inRange(0, 2)) ? 1 : -1;
+  const int perm = dyn::pick<T>(rc::gen::inRange(0, 6), "axis order of I (one of the 6 permutations)");
+  const T p = dyn::pick<T>(dyn::quarter<T>(1, 4), "p (Pi_s = p, Pi_l = +-p)");
+  const T q = dyn::pick<T>(dyn::quarter<T>(-4, 4), "q (Pi_m)");
+  const int sign = dyn::pick<T>(rc::gen::inRange(0, 2), "sign (0: Pi_l = -p)") ? 1 : -1;
   const int order[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   const T moments[3] = {T(3) / T(4), T(1), T(3) / T(2)};
   const T comps[3] = {p, q, T(sign) * p};
@@ -75,7 +76,7 @@ void euler_flow_is_elliptic_solution(const Subject<T>& s) {
   Vec3<T> I = dyn::draw_inertia<T>();
   Vec3<T> Pi0 = dyn::draw_momentum<T>();
   // One case in four is put exactly on the separatrix (random draws essentially never are).
-  if (dyn::pick<T>(rc::gen::inRange(0, 4)) == 0) separatrix_data(I, Pi0);
+  if (dyn::pick<T>(rc::gen::inRange(0, 4), "on the separatrix (0: yes)") == 0) separatrix_data(I, Pi0);
   const oracle::FreeRigidBodySolution<T> exact({I(0), I(1), I(2)}, {Pi0(0), Pi0(1), Pi0(2)});
   RC_TAG(oracle::regime_name(exact.regime()));
   const T t_end = dyn::rigid_body_horizon<T>();

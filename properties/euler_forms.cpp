@@ -28,8 +28,8 @@ struct EulerCase {
 template <class T>
 EulerCase<T> draw_euler_case() {
   EulerCase<T> c;
-  c.I = *gen::inertia<T>();
-  c.Omega = *gen::vec3<T>();
+  c.I = *gen::inertia<T>().as("I");
+  c.Omega = *gen::vec3<T>().as("Omega");
   c.Pi = c.I.cwiseProduct(c.Omega);  // exact: dyadic times dyadic
   c.expected = momentum_rate_2_1(c.I, c.Omega);
   c.scale = norm_inf(c.I) * norm_inf(c.Omega) * norm_inf(c.Omega);

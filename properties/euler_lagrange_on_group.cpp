@@ -193,7 +193,7 @@ void check_euler_lagrange(const std::string& where, const CayleyChart<T>& chart,
   const ChartState<T> st(chart, l, *gen::vec<T>(d, 2, 2), *gen::vec<T>(d, 16, 3));
   // delta, relative to the size of dmu/dt: a miss of the reduced equation that is not lost in
   // its round-off; never zero, or the converse would test nothing.
-  VecX<T> delta = *gen::vec<T>(d, 8, 3);
+  VecX<T> delta = *gen::vec<T>(d, 8, 3).as("delta");
   if (max_abs(delta) == T(0)) delta(0) = T(1);
   const VecX<T> xi = st.xi(), mu = l.gradient(xi);
   const MatX<T> H = l.hessian(xi);

@@ -12,8 +12,8 @@ namespace {
 // on both sides (the truth's cross product rounds too).
 template <class T>
 void hat_is_cross_product(const Subject<T>& s) {
-  const Vec3<T> a = *gen::vec3<T>();
-  const Vec3<T> v = *gen::vec3<T>();
+  const Vec3<T> a = *gen::vec3<T>().as("a");
+  const Vec3<T> v = *gen::vec3<T>().as("v");
   require_close("hat(a) v = a x v", (s.hat(a) * v).eval(), truth::cross(a, v), T(norm_inf(a) * norm_inf(v)), 4);
   require_close("hat(a) is the matrix -a_i eps_ijk of (2.11)", s.hat(a), truth::skew_of(a), T(norm_inf(a)), 0);
 }
@@ -22,8 +22,8 @@ void hat_is_cross_product(const Subject<T>& s) {
 // Entries of the commutator are sums of four products (k = 8 with the right-hand side).
 template <class T>
 void hat_is_lie_algebra_isomorphism(const Subject<T>& s) {
-  const Vec3<T> a = *gen::vec3<T>();
-  const Vec3<T> b = *gen::vec3<T>();
+  const Vec3<T> a = *gen::vec3<T>().as("a");
+  const Vec3<T> b = *gen::vec3<T>().as("b");
   const Mat3<T> A = s.hat(a), B = s.hat(b);
   require_close("[hat(a), hat(b)] = hat(a x b)", (A * B - B * A).eval(), s.hat(truth::cross(a, b)),
                 T(norm_inf(a) * norm_inf(b)), 8);
@@ -32,8 +32,8 @@ void hat_is_lie_algebra_isomorphism(const Subject<T>& s) {
 // vee inverts hat on skew matrices, and hat(v) is skew.
 template <class T>
 void vee_inverts_hat(const Subject<T>& s) {
-  const Vec3<T> a = *gen::vec3<T>();
-  const Mat3<T> S = *gen::skew3<T>();
+  const Vec3<T> a = *gen::vec3<T>().as("a");
+  const Mat3<T> S = *gen::skew3<T>().as("S");
   require_close("vee(hat(a)) = a", s.vee(s.hat(a)), a, T(norm_inf(a)), 0);
   require_close("hat(vee(S)) = S for skew S", s.hat(s.vee(S)), S, T(norm_inf(S)), 0);
   const Mat3<T> H = s.hat(a);
@@ -44,8 +44,8 @@ void vee_inverts_hat(const Subject<T>& s) {
 // the right: k = 12.
 template <class T>
 void trace_pairing_is_dot_product(const Subject<T>& s) {
-  const Vec3<T> a = *gen::vec3<T>();
-  const Vec3<T> b = *gen::vec3<T>();
+  const Vec3<T> a = *gen::vec3<T>().as("a");
+  const Vec3<T> b = *gen::vec3<T>().as("b");
   const MatX<T> A = truth::skew_of(a), B = truth::skew_of(b);
   require_close("<hat(a), hat(b)> = a . b", s.pairing(A, B), T(a.dot(b)), T(norm_inf(a) * norm_inf(b)), 12);
 }

@@ -110,9 +110,9 @@ std::array<T, 7> minor_scales(const T& a) {
 // Sizes: each term m |a x X| |b x X| <= m (2 |a| |X|)(2 |b| |X|), summed over N masses.
 template <class T>
 void inertia_bilinear_form_2_3(const Subject<T>& s) {
-  const Body<T> B = *body<T>();
-  const Vec3<T> a = *gen::vec3<T>(8, 1);
-  const Vec3<T> b = *gen::vec3<T>(8, 1);
+  const Body<T> B = *body<T>().as("the body");
+  const Vec3<T> a = *gen::vec3<T>(8, 1).as("a");
+  const Vec3<T> b = *gen::vec3<T>(8, 1).as("b");
   T expected(0);
   for (Eigen::Index k = 0; k < B.m.size(); ++k) {
     const Vec3<T> Xk = B.X.col(k);
@@ -128,7 +128,7 @@ void inertia_bilinear_form_2_3(const Subject<T>& s) {
 // line through the origin (otherwise det I = 0: the line is an axis of zero moment).
 template <class T>
 void inertia_positive_definite(const Subject<T>& s) {
-  const Body<T> B = *body<T>();
+  const Body<T> B = *body<T>().as("the body");
   const Mat3<T> I = s.inertia_tensor_2_3(B.m, B.X);
   const T size = T(2) * T(B.m.sum()) * T(3) * norm_inf(B.X) * norm_inf(B.X);  // bounds every entry of I
   require_close("I is symmetric", I, Mat3<T>(I.transpose()), size, 8);
@@ -157,7 +157,7 @@ void inertia_positive_definite(const Subject<T>& s) {
 // det K = 0 (a principal moment equals the sum of the other two).
 template <class T>
 void inertia_triangle_inequalities(const Subject<T>& s) {
-  const Body<T> B = *body<T>();
+  const Body<T> B = *body<T>().as("the body");
   const Mat3<T> I = s.inertia_tensor_2_3(B.m, B.X);
   const Mat3<T> K = (I.trace() / T(2) * Mat3<T>::Identity() - I).eval();
   const T size = T(4) * T(B.m.sum()) * T(3) * norm_inf(B.X) * norm_inf(B.X);

@@ -128,7 +128,7 @@ MatX<T> draw_generic_matrix(int n) {
 template <class T>
 CanonicalCase<T> manakov_clebsch_case(const Integrator<T>& in, int lo, int hi) {
   CanonicalCase<T> c;
-  c.n = dyn::pick<T>(rc::gen::inRange(lo, hi + 1));
+  c.n = dyn::pick<T>(rc::gen::inRange(lo, hi + 1), "n");
   const int n = c.n;
   const std::vector<T> a = dyn::draw_generic_manakov_a<T>(n);
   const MatX<T> A = dyn::diag_of(a);
@@ -298,7 +298,7 @@ void canonical_symplectic(StepKind kind, const Integrator<T>& in, const Integrat
       for (int i = 0; i < 6; ++i) {
         MatX<T> d(rows, cols);
         for (Eigen::Index r = 0; r < rows; ++r)
-          for (Eigen::Index q = 0; q < cols; ++q) d(r, q) = T(dyn::pick<T>(rc::gen::inRange(-8, 9))) / T(8);
+          for (Eigen::Index q = 0; q < cols; ++q) d(r, q) = T(dyn::pick<T>(rc::gen::inRange(-8, 9), "8 d_rq")) / T(8);
         u.push_back(d);
       }
     }

@@ -80,7 +80,7 @@ void manakov_integrator_noether(const Subject<T>&, const Integrator<T>& in, cons
   T worst(0);
   std::string inputs;
   for (int k = 0; k < kStates; ++k) {
-    const int n = dyn::pick<T>(rc::gen::inRange(3, 7));
+    const int n = dyn::pick<T>(rc::gen::inRange(3, 7), "n");
     const MatX<T> A = dyn::diag_of(dyn::draw_generic_manakov_a<T>(n));
     ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
     const std::string drawn = named("A", A) + named("M", x.M) + named("O", x.O) + "    h = 1/8, 32 steps\n";
@@ -136,10 +136,10 @@ void manakov_integrator_equivariant(const Subject<T>&, const Integrator<T>& in, 
   T worst(0);
   std::string inputs;
   for (int k = 0; k < kStates; ++k) {
-    const int n = dyn::pick<T>(rc::gen::inRange(3, 7));
+    const int n = dyn::pick<T>(rc::gen::inRange(3, 7), "n");
     const MatX<T> A = dyn::diag_of(dyn::draw_generic_manakov_a<T>(n));
     const ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
-    const MatX<T> R = dyn::pick<T>(gen::rotation<T>(n));
+    const MatX<T> R = dyn::pick<T>(gen::rotation<T>(n), "R");
     const std::string drawn = named("A", A) + named("M", x.M) + named("O", x.O) + named("R", R) + "    h = 1/4\n";
     if (k == 0) inputs = drawn;
     const ManakovState<T> a = in.manakov_step(A, x, h);
@@ -231,7 +231,7 @@ void integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const
 // fixed-point solve of n x n matrices). The energy -tr(Omega M)/4 is positive definite.
 template <class T>
 void manakov_integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const int n = dyn::pick<T>(rc::gen::inRange(3, 5));
+  const int n = dyn::pick<T>(rc::gen::inRange(3, 5), "n");
   const auto a = dyn::draw_generic_manakov_a<T>(n);
   const MatX<T> A = dyn::diag_of(a);
   ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};

@@ -25,10 +25,10 @@ Vec3<T> vee_of(const Mat3<T>& m) {
 // (3 x 5) and the Lagrangian (2.13) (8).
 template <class T>
 void left_invariance_definition_1_1(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Mat3<T> O = *gen::rotation3<T>();
-  const Mat3<T> R = *gen::rotation3<T>();
-  const Vec3<T> W = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Mat3<T> O = *gen::rotation3<T>().as("O");
+  const Mat3<T> R = *gen::rotation3<T>().as("R");
+  const Vec3<T> W = *gen::vec3<T>().as("Omega");
   const T scale = T(14) * norm_inf(I) * norm_inf(W) * norm_inf(W);
   const Mat3<T> O_dot = s.reconstruction_2_10(O, W);
   require_close("(2.10): dO/dt = O Omega_hat", O_dot, (O * truth::skew_of(W)).eval(), T(T(6) * norm_inf(W)), 6);
@@ -64,9 +64,9 @@ void left_invariance_definition_1_1(const Subject<T>& s) {
 // equation compares quantities of size 2 |Pi| Hs.
 template <class T>
 void right_invariant_sign_1_1(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Mat3<T> O = *gen::rotation3<T>();
-  const Vec3<T> P = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Mat3<T> O = *gen::rotation3<T>().as("O");
+  const Vec3<T> P = *gen::vec3<T>().as("Pi");
   const T Hs = (norm_inf(P) + T(1)) * (norm_inf(P) + T(1)) / I.minCoeff();
   const Vec3<T> Omega = s.omega_3_5(I, P);
   const Mat3<T> O_dot = s.reconstruction_2_10(O, Omega);

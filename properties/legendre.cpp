@@ -25,8 +25,8 @@ T min_entry(const Vec3<T>& v) {
 // (2.5): l(Omega) = (1/2)(I1 Omega1^2 + I2 Omega2^2 + I3 Omega3^2).
 template <class T>
 void lagrangian_2_5_is_kinetic_energy(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> W = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> W = *gen::vec3<T>().as("Omega");
   require_close("lagrangian_2_5(I, Omega) = (1/2) sum I_i Omega_i^2", s.lagrangian_2_5(I, W), kinetic_energy_2_5(I, W),
                 T(norm_inf(I) * norm_inf(W) * norm_inf(W)), 8);
 }
@@ -34,8 +34,8 @@ void lagrangian_2_5_is_kinetic_energy(const Subject<T>& s) {
 // (2.13): l = (1/2) <I Omega_hat, Omega_hat> is the same number.
 template <class T>
 void lagrangian_2_13_is_kinetic_energy(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> W = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> W = *gen::vec3<T>().as("Omega");
   require_close("lagrangian_2_13(I, hat(Omega)) = (1/2) sum I_i Omega_i^2", s.lagrangian_2_13(I, truth::skew_of(W)),
                 kinetic_energy_2_5(I, W), T(norm_inf(I) * norm_inf(W) * norm_inf(W)), 16);
 }
@@ -43,8 +43,8 @@ void lagrangian_2_13_is_kinetic_energy(const Subject<T>& s) {
 // (3.1): Pi = dl/dOmega = I Omega (the fibre derivative of Definition 3.1).
 template <class T>
 void fibre_derivative_3_1(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> W = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> W = *gen::vec3<T>().as("Omega");
   const T scale = norm_inf(I) * (norm_inf(W) + T(1)) * (norm_inf(W) + T(1));
   const Vec3<T> dl = truth::gradient_of_quadratic<T>([&](const Vec3<T>& x) { return s.lagrangian_2_5(I, x); }, W);
   const Vec3<T> Pi = s.legendre_3_1(I, W);
@@ -55,8 +55,8 @@ void fibre_derivative_3_1(const Subject<T>& s) {
 // (3.3) and (3.4): h = Pi . Omega - l(Omega) = sum Pi_i^2 / (2 I_i).
 template <class T>
 void hamiltonian_3_3_is_3_4(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> P = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> P = *gen::vec3<T>().as("Pi");
   const T scale = (norm_inf(P) + T(1)) * (norm_inf(P) + T(1)) / min_entry(I);
   T expected(0);
   for (int i = 0; i < 3; ++i) expected += P(i) * P(i) / (T(2) * I(i));
@@ -67,8 +67,8 @@ void hamiltonian_3_3_is_3_4(const Subject<T>& s) {
 // (3.5): dh/dPi = I^-1 Pi = Omega.
 template <class T>
 void hamiltonian_gradient_3_5(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> P = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> P = *gen::vec3<T>().as("Pi");
   const T scale = (norm_inf(P) + T(1)) * (norm_inf(P) + T(1)) / min_entry(I);
   const Vec3<T> dh = truth::gradient_of_quadratic<T>([&](const Vec3<T>& x) { return s.hamiltonian_3_4(I, x); }, P);
   const Vec3<T> W = s.omega_3_5(I, P);
@@ -81,8 +81,8 @@ void hamiltonian_gradient_3_5(const Subject<T>& s) {
 // (orthonormal for (2.15), so the k-th directional derivative is the k-th coordinate).
 template <class T>
 void legendre_matrix_2_21(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> W = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> W = *gen::vec3<T>().as("Omega");
   const Vec3<T> P = I.cwiseProduct(W);
   const T scale = norm_inf(I) * (norm_inf(W) + T(1)) * (norm_inf(W) + T(1)) +
                   (norm_inf(P) + T(1)) * (norm_inf(P) + T(1)) / min_entry(I);

@@ -37,7 +37,7 @@ T hamiltonian_scale(const Vec3<T>& I, const Vec3<T>& P) {
 // Rounding: one triple product (5) of size 6 |Pi|; the matrix form 13 roundings of size 27 |Pi|.
 template <class T>
 void lie_poisson_table_3_11(const Subject<T>& s) {
-  const Vec3<T> P = *gen::vec3<T>();
+  const Vec3<T> P = *gen::vec3<T>().as("Pi");
   Mat3<T> table;
   table << T(0), -P(2), P(1),
            P(2), T(0), -P(0),
@@ -64,8 +64,8 @@ template <class T>
 void lie_poisson_casimir(const Subject<T>& s) {
   Polynomial<T> C(3);
   for (int i = 0; i < 3; ++i) C = C + Polynomial<T>::coordinate(3, i) * Polynomial<T>::coordinate(3, i);
-  const auto F = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto F = *gen::polynomial<T>(3).as("F");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   PointBracket<T> r3;
   r3.name = "lie_poisson_3_6";
   r3.at = [&s](const VecX<T>& y, const VecX<T>& a, const VecX<T>& b) {
@@ -90,16 +90,16 @@ void lie_poisson_casimir(const Subject<T>& s) {
 // polynomial). Scales: triple products of the inputs' sizes; k = 13 (matrix form) + 5.
 template <class T>
 void lie_poisson_hat_map_2_25(const Subject<T>& s) {
-  const Vec3<T> P = *gen::vec3<T>();
-  const Vec3<T> df = *gen::vec3<T>();
-  const Vec3<T> dh = *gen::vec3<T>();
+  const Vec3<T> P = *gen::vec3<T>().as("Pi");
+  const Vec3<T> df = *gen::vec3<T>().as("df/dPi");
+  const Vec3<T> dh = *gen::vec3<T>().as("dh/dPi");
   const T scale = T(27) * norm_inf(P) * norm_inf(df) * norm_inf(dh);
   const T r3 = s.lie_poisson_3_6(P, df, dh);
   require_close("(2.25): -<Pi_hat, [df_hat, dh_hat]> = -Pi . df x dh",
                 s.lie_poisson_2_23(truth::skew_of(P), truth::skew_of(df), truth::skew_of(dh)), r3, scale, 18);
   require_close("(2.25): -Pi . df x dh = -df . dh x Pi", r3, T(-df.dot(truth::cross(dh, P))), scale, 10);
-  const auto h = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto h = *gen::polynomial<T>(3).as("h");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   const Vec3<T> X(x);
   const Vec3<T> grad_h(h.gradient(x));
   const Vec3<T> expected = (-truth::cross(grad_h, X)).eval();
@@ -119,8 +119,8 @@ void lie_poisson_hat_map_2_25(const Subject<T>& s) {
 // |Pi|^2 / min I <= |Pi| Hs.
 template <class T>
 void lie_poisson_matrix_2_22_2_23(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const VecX<T> x = *gen::point<T>(3);
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   const Vec3<T> P(x);
   const Mat3<T> P_hat = truth::skew_of(P);
   const Vec3<T> dh = truth::gradient_of_quadratic<T>(
@@ -131,7 +131,7 @@ void lie_poisson_matrix_2_22_2_23(const Subject<T>& s) {
   require_close("(2.22): dPi/dt = -[dh/dPi, Pi]", P_dot, (-(dh_hat * P_hat - P_hat * dh_hat)).eval(),
                 T(T(6) * norm_inf(P) * Hs), 2 * kGradientOfH + 4 + 5);
 
-  const auto f = *gen::polynomial<T>(3);
+  const auto f = *gen::polynomial<T>(3).as("f");
   const Vec3<T> df(f.gradient(x));
   const Mat3<T> df_hat = truth::skew_of(df);
   const T R = norm_inf(x);
@@ -149,8 +149,8 @@ void lie_poisson_matrix_2_22_2_23(const Subject<T>& s) {
 // enters two products) + the triple product + the (3.7)/(3.8) side (16, as in euler_forms.cpp).
 template <class T>
 void lie_poisson_generates_euler_3_7(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> P = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> P = *gen::vec3<T>().as("Pi");
   const Vec3<T> dh = truth::gradient_of_quadratic<T>([&](const Vec3<T>& y) { return s.hamiltonian_3_4(I, y); }, P);
   const T scale = T(6) * norm_inf(P) * hamiltonian_scale(I, P);
   const int k = 2 * kGradientOfH + kTripleProductOps + 16;

@@ -52,12 +52,12 @@ PointBracket<T> lie_poisson_ad_star(const Subject<T>& s, LieAlgebraId g) {
 // polynomials of degree <= 4 in d variables.
 template <class T>
 void all_axioms(const PointBracket<T>& B, int d) {
-  const auto F = *gen::polynomial<T>(d);
-  const auto G = *gen::polynomial<T>(d);
-  const auto H = *gen::polynomial<T>(d);
-  const T a = *gen::scalar<T>(8, 2);
-  const T b = *gen::scalar<T>(8, 2);
-  const VecX<T> x = *gen::point<T>(d);
+  const auto F = *gen::polynomial<T>(d).as("F");
+  const auto G = *gen::polynomial<T>(d).as("G");
+  const auto H = *gen::polynomial<T>(d).as("H");
+  const T a = *gen::scalar<T>(8, 2).as("a");
+  const T b = *gen::scalar<T>(8, 2).as("b");
+  const VecX<T> x = *gen::point<T>(d).as("x");
   check_bilinear(B, F, H, G, a, b, x);
   check_skew(B, F, G, x);
   check_leibniz(B, F, G, H, x);

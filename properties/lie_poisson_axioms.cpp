@@ -52,41 +52,41 @@ PointBracket<T> lie_poisson_matrix(const Subject<T>& s) {
 template <class T, class MakeBracket>
 void bilinear_body(const Subject<T>& s, MakeBracket make) {
   const auto B = make(s);
-  const auto F1 = *gen::polynomial<T>(3);
-  const auto F2 = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const T a = *gen::scalar<T>(8, 2);
-  const T b = *gen::scalar<T>(8, 2);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto F1 = *gen::polynomial<T>(3).as("F1");
+  const auto F2 = *gen::polynomial<T>(3).as("F2");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const T a = *gen::scalar<T>(8, 2).as("a");
+  const T b = *gen::scalar<T>(8, 2).as("b");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   check_bilinear(B, F1, F2, G, a, b, x);
 }
 
 template <class T, class MakeBracket>
 void skew_body(const Subject<T>& s, MakeBracket make) {
   const auto B = make(s);
-  const auto F = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto F = *gen::polynomial<T>(3).as("F");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   check_skew(B, F, G, x);
 }
 
 template <class T, class MakeBracket>
 void leibniz_body(const Subject<T>& s, MakeBracket make) {
   const auto B = make(s);
-  const auto F = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const auto H = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto F = *gen::polynomial<T>(3).as("F");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const auto H = *gen::polynomial<T>(3).as("H");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   check_leibniz(B, F, G, H, x);
 }
 
 template <class T, class MakeBracket>
 void jacobi_body(const Subject<T>& s, MakeBracket make) {
   const auto B = make(s);
-  const auto F = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const auto H = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto F = *gen::polynomial<T>(3).as("F");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const auto H = *gen::polynomial<T>(3).as("H");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   check_jacobi(B, F, G, H, x);
 }
 

@@ -25,11 +25,11 @@ namespace {
 
 template <class T>
 void manakov_clebsch_variations_in_Q_and_P(const Subject<T>& s) {
-  const int n = dyn::pick<T>(rc::gen::inRange(3, 6));
+  const int n = dyn::pick<T>(rc::gen::inRange(3, 6), "n");
   const auto a = dyn::draw_manakov_a<T>(n);
   const MatX<T> A = dyn::diag_of(a);
-  const MatX<T> Q = dyn::pick<T>(gen::rotation<T>(n));
-  const MatX<T> P = dyn::pick<T>(gen::rotation<T>(n));
+  const MatX<T> Q = dyn::pick<T>(gen::rotation<T>(n), "Q");
+  const MatX<T> P = dyn::pick<T>(gen::rotation<T>(n), "P");
   const MatX<T> M = Q.transpose() * P - P.transpose() * Q;
   MatX<T> W(n, n);
   for (int i = 0; i < n; ++i)

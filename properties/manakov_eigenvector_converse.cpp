@@ -37,14 +37,14 @@ T horizon() {
 
 template <class T>
 void manakov_eigenvector_system_gives_2_36(const Subject<T>& s) {
-  const int n = dyn::pick<T>(rc::gen::inRange(3, 7));
+  const int n = dyn::pick<T>(rc::gen::inRange(3, 7), "n");
   const auto a = dyn::draw_manakov_a<T>(n);
   const MatX<T> A = dyn::diag_of(a);
-  const MatX<T> R0 = *gen::rotation<T>(n);
+  const MatX<T> R0 = *gen::rotation<T>(n).as("R0");
   // D: blocks [[0, mu_j], [-mu_j, 0]], mu_j = k / 4 with 1 <= |k| <= 16 (so M(0) is not 0).
   MatX<T> D = MatX<T>::Zero(n, n);
   for (int j = 0; j + 1 < n; j += 2) {
-    const int k = dyn::pick<T>(rc::gen::inRange(1, 17));
+    const int k = dyn::pick<T>(rc::gen::inRange(1, 17), "k (mu_j = k / 4)");
     D(j, j + 1) = T(k) / T(4);
     D(j + 1, j) = -T(k) / T(4);
   }

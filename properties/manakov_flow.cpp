@@ -29,7 +29,7 @@ T horizon() {
 
 template <class T>
 int draw_n() {
-  return dyn::pick<T>(rc::gen::inRange(3, 7));
+  return dyn::pick<T>(rc::gen::inRange(3, 7), "n");
 }
 
 // s2.isospectral: along the subject's (2.36), tr(M^k) for k = 1..n (which fix the characteristic
@@ -148,11 +148,11 @@ struct QP {
 template <class T>
 QP<T> draw_qp() {
   QP<T> d;
-  d.n = dyn::pick<T>(rc::gen::inRange(3, 6));
+  d.n = dyn::pick<T>(rc::gen::inRange(3, 6), "n");
   d.a = dyn::draw_manakov_a<T>(d.n);
   d.A = dyn::diag_of(d.a);
-  d.Q = dyn::pick<T>(gen::rotation<T>(d.n));
-  d.P = dyn::pick<T>(gen::rotation<T>(d.n));
+  d.Q = dyn::pick<T>(gen::rotation<T>(d.n), "Q");
+  d.P = dyn::pick<T>(gen::rotation<T>(d.n), "P");
   return d;
 }
 
@@ -271,9 +271,9 @@ template <class T>
 void matrix_euler_poincare_trace_pairing(const Subject<T>& s) {
   for (LieAlgebraId g : {LieAlgebraId::so3, LieAlgebraId::so4, LieAlgebraId::sl2}) {
     const int d = g == LieAlgebraId::so4 ? 6 : 3;
-    const VecX<T> xi = *gen::vec<T>(d);
+    const VecX<T> xi = *gen::vec<T>(d).as("xi");
     VecX<T> K(d);
-    for (int k = 0; k < d; ++k) K(k) = *gen::positive<T>(64, 2);
+    for (int k = 0; k < d; ++k) K(k) = *gen::positive<T>(64, 2).as("K_k (l = xi . K xi / 2)");
     const VecX<T> mu = K.cwiseProduct(xi);
     const VecX<T> dmu = s.ad_star(g, xi, mu);
     std::vector<MatX<T>> E;

@@ -14,8 +14,8 @@ namespace {
 // division, then a commutator: ~8; (3.8): ~5) with small constant factors from the sums.
 template <class T>
 void manakov_so3_is_euler(const Subject<T>& s) {
-  const Vec3<T> a = *gen::inertia<T>();  // positive entries
-  const Vec3<T> W = *gen::vec3<T>();
+  const Vec3<T> a = *gen::inertia<T>().as("a");  // positive entries
+  const Vec3<T> W = *gen::vec3<T>().as("Omega");
   const MatX<T> A = MatX<T>(a.asDiagonal());
   const MatX<T> W_hat = truth::skew_of(W);
   const Vec3<T> I(a(1) + a(2), a(2) + a(0), a(0) + a(1));

@@ -18,9 +18,9 @@ namespace {
 // bracket (which only selects components) add a few roundings: k = 8.
 template <class T>
 void momentum_map_generates_rotations(const Subject<T>& s) {
-  const Vec3<T> q = *gen::vec3<T>();
-  const Vec3<T> p = *gen::vec3<T>();
-  const Vec3<T> xi = *gen::vec3<T>();
+  const Vec3<T> q = *gen::vec3<T>().as("q");
+  const Vec3<T> p = *gen::vec3<T>().as("p");
+  const Vec3<T> xi = *gen::vec3<T>().as("xi");
   const T scale = T(6) * norm_inf(xi) * (norm_inf(q) + T(1)) * (norm_inf(p) + T(1));
   require_close("J(q, p) = p x q", s.momentum_map(q, p), truth::cross(p, q), T(T(2) * norm_inf(q) * norm_inf(p)), 2);
   const Vec3<T> dJ_dq =
@@ -44,9 +44,9 @@ void momentum_map_generates_rotations(const Subject<T>& s) {
 // (1), and ad* (two nonzero products per component, 4).
 template <class T>
 void momentum_map_infinitesimal_equivariance(const Subject<T>& s) {
-  const Vec3<T> q = *gen::vec3<T>();
-  const Vec3<T> p = *gen::vec3<T>();
-  const Vec3<T> xi = *gen::vec3<T>();
+  const Vec3<T> q = *gen::vec3<T>().as("q");
+  const Vec3<T> p = *gen::vec3<T>().as("p");
+  const Vec3<T> xi = *gen::vec3<T>().as("xi");
   const Vec3<T> q_dot = -truth::cross(xi, q), p_dot = -truth::cross(xi, p);
   const Vec3<T> J = s.momentum_map(q, p);
   const Vec3<T> J_dot = (s.momentum_map(q_dot, p) + s.momentum_map(q, p_dot)).eval();
@@ -61,9 +61,9 @@ void momentum_map_infinitesimal_equivariance(const Subject<T>& s) {
 // only. R is an exact rational rotation (rounded once in floats); |R q|_inf <= 3 |q|_inf.
 template <class T>
 void momentum_map_equivariance(const Subject<T>& s) {
-  const Mat3<T> R = *gen::rotation3<T>();
-  const Vec3<T> q = *gen::vec3<T>();
-  const Vec3<T> p = *gen::vec3<T>();
+  const Mat3<T> R = *gen::rotation3<T>().as("R");
+  const Vec3<T> q = *gen::vec3<T>().as("q");
+  const Vec3<T> p = *gen::vec3<T>().as("p");
   const Vec3<T> J = s.momentum_map(q, p);
   const T scale = T(18) * norm_inf(q) * norm_inf(p);
   require_close("J(R q, R p) = R J(q, p), R in SO(3)", s.momentum_map((R * q).eval(), (R * p).eval()), (R * J).eval(),

@@ -70,9 +70,9 @@ MatX<T> gradient_of_bilinear(const F& f, const MatX<T>& X) {
 // gradients and the brackets add sums of n^2 terms: scale n^2 |xi| (|Q| + 1) (|P| + 1), k = 8 n^2.
 template <class T>
 void momentum_map_right_action_generates_lift(const Subject<T>& s) {
-  const int n = dyn::pick<T>(rc::gen::inRange(3, 7));
-  const MatX<T> Q = dyn::pick<T>(gen::mat<T>(n, n, 32, 6));
-  const MatX<T> P = dyn::pick<T>(gen::mat<T>(n, n, 32, 6));
+  const int n = dyn::pick<T>(rc::gen::inRange(3, 7), "n");
+  const MatX<T> Q = dyn::pick<T>(gen::mat<T>(n, n, 32, 6), "Q");
+  const MatX<T> P = dyn::pick<T>(gen::mat<T>(n, n, 32, 6), "P");
   const MatX<T> xi = dyn::draw_skew<T>(n, 32);
   auto J_xi = [&](const MatX<T>& q, const MatX<T>& p) { return s.pairing(J_right<T>(q, p), xi); };
   const MatX<T> dJ_dQ = gradient_of_bilinear<T>([&](const MatX<T>& q) { return J_xi(q, P); }, Q);
@@ -101,9 +101,9 @@ template <class T>
 void momentum_map_right_action_equivariance(const Subject<T>& s) {
   for (LieAlgebraId g : {LieAlgebraId::so3, LieAlgebraId::so4}) {
     const int n = g == LieAlgebraId::so3 ? 3 : 4, d = g == LieAlgebraId::so3 ? 3 : 6;
-    const MatX<T> Q = dyn::pick<T>(gen::mat<T>(n, n, 32, 6));
-    const MatX<T> P = dyn::pick<T>(gen::mat<T>(n, n, 32, 6));
-    const VecX<T> x = dyn::pick<T>(gen::vec<T>(d, 32, 6));
+    const MatX<T> Q = dyn::pick<T>(gen::mat<T>(n, n, 32, 6), "Q");
+    const MatX<T> P = dyn::pick<T>(gen::mat<T>(n, n, 32, 6), "P");
+    const VecX<T> x = dyn::pick<T>(gen::vec<T>(d, 32, 6), "x");
     const MatX<T> xi = s.lie_hat(g, x);
     const MatX<T> J = J_right<T>(Q, P), J_dot = (J_right<T>((Q * xi).eval(), P) + J_right<T>(Q, (P * xi).eval())).eval();
     VecX<T> mu(d), mu_dot(d);

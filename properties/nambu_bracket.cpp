@@ -30,50 +30,50 @@ PointBracket<T> nambu(const Subject<T>& s, const Polynomial<T>& c) {
 
 template <class T>
 void nambu_3_13_bilinear(const Subject<T>& s) {
-  const auto c = *gen::polynomial<T>(3);
-  const auto F1 = *gen::polynomial<T>(3);
-  const auto F2 = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const T a = *gen::scalar<T>(8, 2);
-  const T b = *gen::scalar<T>(8, 2);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto c = *gen::polynomial<T>(3).as("c");
+  const auto F1 = *gen::polynomial<T>(3).as("F1");
+  const auto F2 = *gen::polynomial<T>(3).as("F2");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const T a = *gen::scalar<T>(8, 2).as("a");
+  const T b = *gen::scalar<T>(8, 2).as("b");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   check_bilinear(nambu(s, c), F1, F2, G, a, b, x);
 }
 
 template <class T>
 void nambu_3_13_skew(const Subject<T>& s) {
-  const auto c = *gen::polynomial<T>(3);
-  const auto F = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto c = *gen::polynomial<T>(3).as("c");
+  const auto F = *gen::polynomial<T>(3).as("F");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   check_skew(nambu(s, c), F, G, x);
 }
 
 template <class T>
 void nambu_3_13_leibniz(const Subject<T>& s) {
-  const auto c = *gen::polynomial<T>(3);
-  const auto F = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const auto H = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto c = *gen::polynomial<T>(3).as("c");
+  const auto F = *gen::polynomial<T>(3).as("F");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const auto H = *gen::polynomial<T>(3).as("H");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   check_leibniz(nambu(s, c), F, G, H, x);
 }
 
 // Theorem 3.1: Jacobi for an arbitrary c (here any polynomial of degree <= 4).
 template <class T>
 void nambu_jacobi_theorem_3_1(const Subject<T>& s) {
-  const auto c = *gen::polynomial<T>(3);
-  const auto F = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const auto H = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto c = *gen::polynomial<T>(3).as("c");
+  const auto F = *gen::polynomial<T>(3).as("F");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const auto H = *gen::polynomial<T>(3).as("H");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   check_jacobi(nambu(s, c), F, G, H, x);
 }
 
 // Exercise (3.15): Jacobi for c = x^T C x / 2 with C a random symmetric matrix.
 template <class T>
 void nambu_jacobi_quadratic_3_15(const Subject<T>& s) {
-  const MatX<T> C = *gen::symmetric<T>(3, 8, 2);
+  const MatX<T> C = *gen::symmetric<T>(3, 8, 2).as("C");
   Polynomial<T> c(3);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
@@ -82,10 +82,10 @@ void nambu_jacobi_quadratic_3_15(const Subject<T>& s) {
       ++e[static_cast<std::size_t>(j)];
       c.add(T(C(i, j) / T(2)), e);
     }
-  const auto F = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const auto H = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto F = *gen::polynomial<T>(3).as("F");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const auto H = *gen::polynomial<T>(3).as("H");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   require_close("c = x^T C x / 2 has gradient C x", c.gradient(x), (C * x).eval(), T(T(3) * norm_inf(C) * norm_inf(x)),
                 6);
   check_jacobi(nambu(s, c), F, G, H, x);
@@ -97,9 +97,9 @@ void nambu_jacobi_quadratic_3_15(const Subject<T>& s) {
 // Its size on the nodes' box is <= 2 |grad c| |grad h| (two products), rounded 2 + eval times.
 template <class T>
 void nambu_motion_divergence_free(const Subject<T>& s) {
-  const auto c = *gen::polynomial<T>(3);
-  const auto h = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto c = *gen::polynomial<T>(3).as("c");
+  const auto h = *gen::polynomial<T>(3).as("h");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   const int D = std::max(c.degree() - 1, 0) + std::max(h.degree() - 1, 0);
   const CentralNodes<T> nodes = central_nodes<T>(D);
   const T R = norm_inf(x) + nodes.radius();
@@ -125,10 +125,10 @@ void nambu_motion_divergence_free(const Subject<T>& s) {
 // {G, H} <= 6 |grad c| |grad G| |grad H|.
 template <class T>
 void nambu_vector_fields_theorem_3_1(const Subject<T>& s) {
-  const auto c = *gen::polynomial<T>(3);
-  const auto G = *gen::polynomial<T>(3);
-  const auto H = *gen::polynomial<T>(3);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto c = *gen::polynomial<T>(3).as("c");
+  const auto G = *gen::polynomial<T>(3).as("G");
+  const auto H = *gen::polynomial<T>(3).as("H");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   auto field = [&s, &c](const Polynomial<T>& F) {
     return [&s, &c, F](const VecX<T>& y) { return Vec3<T>(s.nambu_motion_3_14(Vec3<T>(c.gradient(y)), Vec3<T>(F.gradient(y)))); };
   };
@@ -170,12 +170,12 @@ void nambu_vector_fields_theorem_3_1(const Subject<T>& s) {
 // a2 c^2 (a polynomial of c, formed symbolically), and {c, h} = 0.
 template <class T>
 void nambu_casimirs_are_functions_of_c(const Subject<T>& s) {
-  const auto c = *gen::polynomial<T>(3);
-  const auto h = *gen::polynomial<T>(3);
-  const T a0 = *gen::scalar<T>(8, 2);
-  const T a1 = *gen::scalar<T>(8, 2);
-  const T a2 = *gen::scalar<T>(8, 2);
-  const VecX<T> x = *gen::point<T>(3);
+  const auto c = *gen::polynomial<T>(3).as("c");
+  const auto h = *gen::polynomial<T>(3).as("h");
+  const T a0 = *gen::scalar<T>(8, 2).as("a0");
+  const T a1 = *gen::scalar<T>(8, 2).as("a1");
+  const T a2 = *gen::scalar<T>(8, 2).as("a2");
+  const VecX<T> x = *gen::point<T>(3).as("x");
   const Polynomial<T> Phi_c = Polynomial<T>::constant(3, a0) + c.scaled(a1) + (c * c).scaled(a2);
   const auto B = nambu(s, c);
   check_casimir(B, "{c, h} = 0", c, h, x);
@@ -187,8 +187,8 @@ void nambu_casimirs_are_functions_of_c(const Subject<T>& s) {
 // the gradients, which can be any vectors. Sizes: 6 |dc|^2 |dh| and 6 |dc| |dh|^2.
 template <class T>
 void nambu_motion_3_14_tangent(const Subject<T>& s) {
-  const Vec3<T> dc = *gen::vec3<T>();
-  const Vec3<T> dh = *gen::vec3<T>();
+  const Vec3<T> dc = *gen::vec3<T>().as("grad c");
+  const Vec3<T> dh = *gen::vec3<T>().as("grad h");
   const Vec3<T> x_dot = s.nambu_motion_3_14(dc, dh);
   const T scale = T(6) * norm_inf(dc) * norm_inf(dh) * (norm_inf(dc) + norm_inf(dh));
   for (int i = 0; i < 3; ++i) {
@@ -208,10 +208,10 @@ void nambu_motion_3_14_tangent(const Subject<T>& s) {
 // of three shears with dyadic entries, so it is exact in every scalar and det = 1 exactly.
 template <class T>
 void nambu_motion_recombination(const Subject<T>& s) {
-  const Vec3<T> dc = *gen::vec3<T>();
-  const Vec3<T> dh = *gen::vec3<T>();
-  const T t1 = *gen::scalar<T>(8, 2), t2 = *gen::scalar<T>(8, 2), t3 = *gen::scalar<T>(8, 2);
-  const T scale_row = *gen::scalar<T>(8, 2);
+  const Vec3<T> dc = *gen::vec3<T>().as("grad c");
+  const Vec3<T> dh = *gen::vec3<T>().as("grad h");
+  const T t1 = *gen::scalar<T>(8, 2).as("t1"), t2 = *gen::scalar<T>(8, 2).as("t2"), t3 = *gen::scalar<T>(8, 2).as("t3");
+  const T scale_row = *gen::scalar<T>(8, 2).as("scale_row");
   Eigen::Matrix<T, 2, 2> S1, S2, S3;
   S1 << T(1), t1, T(0), T(1);
   S2 << T(1), T(0), t2, T(1);

@@ -37,9 +37,9 @@ struct SpherePoint {
 template <class T>
 SpherePoint<T> draw_sphere_point() {
   SpherePoint<T> s;
-  s.rho = *gen::positive<T>();
-  s.q = *gen::scalar<T>();
-  const T t = *gen::scalar<T>(64, 4);
+  s.rho = *gen::positive<T>().as("rho");
+  s.q = *gen::scalar<T>().as("q");
+  const T t = *gen::scalar<T>(64, 4).as("t");
   const T side = *rc::gen::element(1, -1) == 1 ? T(1) : T(-1);  // the other half of the circle
   s.cos = side * (T(1) - t * t) / (T(1) + t * t);
   s.sin = side * T(2) * t / (T(1) + t * t);
@@ -55,7 +55,7 @@ SpherePoint<T> draw_sphere_point() {
 template <class T>
 void nambu_level_sphere_bracket_is_canonical(const Subject<T>& s) {
   const SpherePoint<T> P = draw_sphere_point<T>();
-  const Vec3<T> a = *gen::vec3<T>(), b = *gen::vec3<T>();  // grad f(x), grad h(x)
+  const Vec3<T> a = *gen::vec3<T>().as("grad f(x)"), b = *gen::vec3<T>().as("grad h(x)");
   const T canonical = a.dot(P.e_q) * b.dot(P.e_p) - a.dot(P.e_p) * b.dot(P.e_q);
   // The coordinate functions themselves: grad q = e_3, grad p = grad azimuth = (-x_2, x_1, 0) / rho^2.
   const Vec3<T> grad_q(T(0), T(0), T(1));
@@ -78,7 +78,7 @@ void nambu_level_sphere_bracket_is_canonical(const Subject<T>& s) {
 template <class T>
 void nambu_level_sphere_motion_is_canonical(const Subject<T>& s) {
   const SpherePoint<T> P = draw_sphere_point<T>();
-  const Vec3<T> dh = *gen::vec3<T>();
+  const Vec3<T> dh = *gen::vec3<T>().as("grad h");
   const Vec3<T> v = s.nambu_motion_3_14(P.x, dh);
   const T size_x = norm_inf(P.x), size_h = norm_inf(dh);
   const T dp_dt = (P.x(0) * v(1) - P.x(1) * v(0)) / (P.rho * P.rho);

@@ -26,9 +26,9 @@ Polynomial<T> half_square_norm() {
 // -grad c . grad f x grad h, the triple scalar product of gradients.
 template <class T>
 void lie_poisson_is_nambu_2_27(const Subject<T>& s) {
-  const Vec3<T> P = *gen::vec3<T>();
-  const Vec3<T> df = *gen::vec3<T>();
-  const Vec3<T> dh = *gen::vec3<T>();
+  const Vec3<T> P = *gen::vec3<T>().as("Pi");
+  const Vec3<T> df = *gen::vec3<T>().as("grad f");
+  const Vec3<T> dh = *gen::vec3<T>().as("grad h");
   const Vec3<T> dc(half_square_norm<T>().gradient(VecX<T>(P)));
   const T scale = T(6) * norm_inf(P) * norm_inf(df) * norm_inf(dh);
   const T nambu = s.nambu_3_13(dc, df, dh);
@@ -45,8 +45,8 @@ void lie_poisson_is_nambu_2_27(const Subject<T>& s) {
 // (twice: it enters a cross product) + the cross product and a dot product + (3.8) itself.
 template <class T>
 void rigid_body_sphere_energy_ellipsoid(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> x = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> x = *gen::vec3<T>().as("x");
   const Vec3<T> dc(half_square_norm<T>().gradient(VecX<T>(x)));
   const Vec3<T> dh = truth::gradient_of_quadratic<T>([&](const Vec3<T>& y) { return s.hamiltonian_3_4(I, y); }, x);
   const Vec3<T> x_dot = s.euler_3_8(I, x);
@@ -68,7 +68,7 @@ void rigid_body_sphere_energy_ellipsoid(const Subject<T>& s) {
 template <class T>
 void rigid_body_hyperbolic_cylinders(const Subject<T>& s) {
   const Vec3<T> I(T(1), T(1) / T(2), T(1) / T(3));
-  const Vec3<T> x = *gen::vec3<T>();
+  const Vec3<T> x = *gen::vec3<T>().as("x");
   const T n = norm_inf(x);
   const T scale = T(12) * n * n * n;
   const Vec3<T> x_dot_7 = s.euler_3_7(I, x);
@@ -111,16 +111,16 @@ Vec3<T> printed_3_16(const Vec3<T>& a, const Vec3<T>& x) {
 // The exercise's own example I = diag(1, 1/2, 1/3) has c = (1, -2, 1): checked here as a witness.
 template <class T>
 void system_3_16_is_rigid_body(const Subject<T>& s) {
-  const Vec3<Rational> aq = constrained_a(*gen::signed_int(16), *gen::signed_int(16));
+  const Vec3<Rational> aq = constrained_a(*gen::signed_int(16).as("4 a1"), *gen::signed_int(16).as("4 a2"));
   const Vec3<T> a = convert_matrix<T>(aq);
-  const Vec3<T> x = *gen::vec3<T>(64, 4);
+  const Vec3<T> x = *gen::vec3<T>(64, 4).as("x");
   const T n = norm_inf(x), an = norm_inf(a);
   const Vec3<T> x_dot = s.nambu_3_16(a, x);
   require_close("nambu_3_16 is (3.16) as printed", x_dot, printed_3_16(a, x), T(an * an * n * n), 6);
   require_close("(3.16) with 1/a1 + 1/a2 = 1/a3 conserves |x|^2: x . dx/dt = 0", T(x.dot(x_dot)), T(0),
                 T(T(3) * an * an * n * n * n), 10);
   // The rigid body with these moments (u1 shifted off the values that make some u_i zero).
-  Rational u1(*gen::signed_int(8));
+  Rational u1(*gen::signed_int(8).as("u1"));
   Vec3<Rational> u;
   for (;;) {
     u = Vec3<Rational>(u1, Rational(u1 + aq(0) * aq(1)), Rational(u1 + aq(0) * aq(1) - aq(0) * aq(2)));
@@ -151,8 +151,8 @@ void system_3_16_is_rigid_body(const Subject<T>& s) {
 // a rigid body.)
 template <class T>
 void system_3_16_nambu_form(const Subject<T>& s) {
-  const Vec3<T> a = convert_matrix<T>(constrained_a(*gen::signed_int(16), *gen::signed_int(16)));
-  const Vec3<T> x = *gen::vec3<T>(64, 4);
+  const Vec3<T> a = convert_matrix<T>(constrained_a(*gen::signed_int(16).as("4 a1"), *gen::signed_int(16).as("4 a2")));
+  const Vec3<T> x = *gen::vec3<T>(64, 4).as("x");
   const T n = norm_inf(x), an = norm_inf(a);
   const Vec3<T> x_dot = s.nambu_3_16(a, x);
   require_close("nambu_3_16 is (3.16) as printed in the exercise", x_dot, printed_3_16(a, x), T(an * an * n * n), 6);

@@ -68,9 +68,9 @@ void noether_spatial_momentum_conserved(const Subject<T>& s) {
 // rationals, for rational rotations.
 template <class T>
 void noether_endpoint_term_2_28(const Subject<T>& s) {
-  const Mat3<T> O = *gen::rotation3<T>();
-  const Vec3<T> Pi = *gen::vec3<T>();
-  const Vec3<T> xi = *gen::vec3<T>();
+  const Mat3<T> O = *gen::rotation3<T>().as("O");
+  const Vec3<T> Pi = *gen::vec3<T>().as("Pi");
+  const Vec3<T> xi = *gen::vec3<T>().as("xi");
   const Mat3<T> xi_hat = truth::skew_of(xi);
   const Mat3<T> Xi_hat = O.transpose() * xi_hat * O;
   const Vec3<T> pi = s.spatial_momentum(O, Pi);
@@ -162,9 +162,10 @@ void coadjoint_motion_2_33(const Subject<T>& s) {
 template <class T>
 void ad_star_identity_for(const Subject<T>& s, LieAlgebraId g) {
   const int d = g == LieAlgebraId::so4 ? 6 : 3;
-  const VecX<T> a = *gen::vec<T>(d, 16, 6), b = *gen::vec<T>(d, 16, 6);
-  const VecX<T> mu0 = *gen::vec<T>(d, 64, 6), mu1 = *gen::vec<T>(d, 64, 6), mu2 = *gen::vec<T>(d, 64, 6);
-  const T t0 = *gen::scalar<T>(64, 6);
+  const VecX<T> a = *gen::vec<T>(d, 16, 6).as("a"), b = *gen::vec<T>(d, 16, 6).as("b");
+  const VecX<T> mu0 = *gen::vec<T>(d, 64, 6).as("mu0"), mu1 = *gen::vec<T>(d, 64, 6).as("mu1"),
+                mu2 = *gen::vec<T>(d, 64, 6).as("mu2");
+  const T t0 = *gen::scalar<T>(64, 6).as("t0");
   const MatX<T> A = s.lie_hat(g, a), B = s.lie_hat(g, b);
   std::vector<MatX<T>> E;
   for (int k = 0; k < d; ++k) {

@@ -17,8 +17,8 @@ namespace {
 // |W| on each side, hence k = 8 with scale |W|.
 template <class T>
 void reconstruction_is_left_invariant(const Subject<T>& s) {
-  const Mat3<T> O = *gen::rotation3<T>();
-  const Vec3<T> W = *gen::vec3<T>();
+  const Mat3<T> O = *gen::rotation3<T>().as("O");
+  const Vec3<T> W = *gen::vec3<T>().as("Omega");
   const Mat3<T> expected = O * truth::skew_of(W);
   require_close("reconstruction_2_10(O, Omega) = O hat(Omega), i.e. O^-1 dO/dt = hat(Omega) (left-invariant)",
                 s.reconstruction_2_10(O, W), expected, T(norm_inf(W)), 8);
@@ -29,17 +29,17 @@ void reconstruction_is_left_invariant(const Subject<T>& s) {
 // Rational, then rounded once entrywise (so it stays exactly symmetric).
 template <class T>
 MatX<T> draw_inertia_matrix(int n) {
-  const bool diagonal = *rc::gen::arbitrary<bool>();
+  const bool diagonal = *rc::gen::arbitrary<bool>().as("A diagonal");
   const VecX<Rational> a = *rc::gen::map(rc::gen::container<std::vector<int>>(static_cast<std::size_t>(n), rc::gen::inRange(1, 65)),
                                            [](const std::vector<int>& ks) {
                                              VecX<Rational> v(static_cast<Eigen::Index>(ks.size()));
                                              for (std::size_t i = 0; i < ks.size(); ++i)
                                                v(static_cast<Eigen::Index>(i)) = Rational(ks[i]) / Rational(4);
                                              return v;
-                                           });
+                                           }).as("a (A = R diag(a) R^T)");
   MatX<Rational> A = a.asDiagonal();
   if (!diagonal) {
-    const MatX<Rational> R = *gen::rotation<Rational>(n);
+    const MatX<Rational> R = *gen::rotation<Rational>(n).as("R (A = R diag(a) R^T)");
     A = (R * A * R.transpose()).eval();
   }
   return convert_matrix<T>(A);
@@ -52,9 +52,9 @@ MatX<T> draw_inertia_matrix(int n) {
 // 2n |A| |Omega|.
 template <class T>
 void manakov_omega_solves_2_34(const Subject<T>& s) {
-  const int n = *rc::gen::inRange(3, 6);
+  const int n = *rc::gen::inRange(3, 6).as("n");
   const MatX<T> A = draw_inertia_matrix<T>(n);
-  const MatX<T> M = *gen::skew<T>(n);
+  const MatX<T> M = *gen::skew<T>(n).as("M");
   const MatX<T> W = s.manakov_Omega(A, M);
   require("manakov_Omega(A, M) is n x n", W.rows() == n && W.cols() == n,
           "got a " + std::to_string(W.rows()) + " x " + std::to_string(W.cols()) + " matrix for n = " + std::to_string(n));

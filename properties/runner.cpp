@@ -228,6 +228,32 @@ std::string pretty_type(const std::string& t) {
   return S.empty() ? t : S;
 }
 
+// Whether a counterexample label is a type as pretty_type and in_language render it (a drawn value
+// without a name) rather than a name given by the property.
+bool is_type_label(const std::string& label) {
+  static const std::regex type(
+      R"((.*(<|::).*)|int|unsigned( int)?|long|bool|double|float|char|Real50|Real70|Rational|Fraction|mpf|matrix|)"
+      R"((\d+ )?(list of|column vector|matrix).*|\d+x\d+ column vector|(\d+-)?list of .*)");
+  return std::regex_match(label, type);
+}
+
+}  // namespace
+
+bool counterexample_by_name(const Verdict& v) {
+  if (v.counterexample.empty()) return false;
+  for (const auto& [label, value] : v.counterexample)
+    if (is_type_label(label)) return false;
+  return true;
+}
+
+std::string counterexample_heading(const Verdict& v) {
+  std::string h = v.shrink_stopped ? "counterexample (shrinking stopped by its time budget; not minimal)"
+                                   : "counterexample (shrunk)";
+  return h + (counterexample_by_name(v) ? ", by the notes' names:" : ":");
+}
+
+namespace {
+
 int default_cases(const Property& p, ScalarKind k) {
   switch (k) {
     case ScalarKind::Double: return p.cases.d;
@@ -492,8 +518,7 @@ std::string format_verdict(const Verdict& v) {
     for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
   }
   if (!v.counterexample.empty() && v.message.find("inputs, by the notes' names:") == std::string::npos) {
-    os << (v.shrink_stopped ? "\n  counterexample (shrinking stopped by its time budget; not minimal):"
-                            : "\n  counterexample (shrunk):");
+    os << "\n  " << counterexample_heading(v);
     for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
   }
   if (v.outcome == Outcome::Fail) {

@@ -83,4 +83,11 @@ bool is_reproduce_string(const std::string& text, std::string* why = nullptr);
 // The command line that replays a failing verdict through the `geomech` tool.
 std::string reproduce_command(const Verdict& v);
 
+// A counterexample's values are named by the notes' symbols where the property drew them with a
+// name (gen(...).as("Pi"): "Pi = [...]"), by their type otherwise ("Vec3<double> = [...]").
+// True when every value has a name; the heading then says so.
+bool counterexample_by_name(const Verdict& v);
+// "counterexample (shrunk), by the notes' names:" and its variants, for the text reports.
+std::string counterexample_heading(const Verdict& v);
+
 }  // namespace gm

@@ -15,8 +15,8 @@ namespace {
 // cross products); the pairing sums 16 products (k = 18).
 template <class T>
 void so4_hat_is_lie_algebra_isomorphism(const Subject<T>& s) {
-  const VecX<T> a = *gen::vec<T>(6);
-  const VecX<T> b = *gen::vec<T>(6);
+  const VecX<T> a = *gen::vec<T>(6).as("a");
+  const VecX<T> b = *gen::vec<T>(6).as("b");
   const MatX<T> A = s.hat_n(a, 4), B = s.hat_n(b, 4);
   const T ab = norm_inf(a) * norm_inf(b);
   require_close("so(4): hat(a) is skew", MatX<T>(A.transpose()), MatX<T>(-A), norm_inf(a), 0);
@@ -32,12 +32,12 @@ void so4_hat_is_lie_algebra_isomorphism(const Subject<T>& s) {
 // ad*_Omega mu with mu = vee(M). Sizes: |M| <= 2 |a| |Omega|, |[M, Omega]| <= 8 |M| |Omega|.
 template <class T>
 void so4_euler_poincare_R6(const Subject<T>& s) {
-  const Vec3<T> a3 = *gen::inertia<T>();
-  const T a4 = *gen::positive<T>(64, 2);
+  const Vec3<T> a3 = *gen::inertia<T>().as("a3");
+  const T a4 = *gen::positive<T>(64, 2).as("a4");
   VecX<T> a(4);
   a << a3(0), a3(1), a3(2), a4;
   const MatX<T> A = MatX<T>(a.asDiagonal());
-  const VecX<T> W = *gen::vec<T>(6);
+  const VecX<T> W = *gen::vec<T>(6).as("Omega");
   const MatX<T> W_hat = s.hat_n(W, 4);
   const MatX<T> M = s.manakov_M(A, W_hat);
   const VecX<T> mu = s.vee_n(M);

@@ -15,9 +15,9 @@ namespace {
 // |Omega|, so the quadratic form is <= 36 |I| |Omega|^2; k: O (1), omega (3), I_space (6), the form (5).
 template <class T>
 void space_lagrangian_remark_2_1(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Mat3<T> O = *gen::rotation3<T>();
-  const Vec3<T> W = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Mat3<T> O = *gen::rotation3<T>().as("O");
+  const Vec3<T> W = *gen::vec3<T>().as("Omega");
   const Vec3<T> omega = O * W;
   const Mat3<T> I_space = s.inertia_space(O, I);
   require_close("Remark 2.1: l(Omega) = (1/2) omega . I_space omega, I_space = O I O^-1",
@@ -37,9 +37,9 @@ void space_lagrangian_remark_2_1(const Subject<T>& s) {
 // product with d^2 (1), the weighted sum (nodes.ops()), the commutator (4).
 template <class T>
 void space_inertia_variation_hint(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const MatX<Rational> O0 = *gen::rotation<Rational>(3);
-  const MatX<Rational> S = *gen::skew<Rational>(3, 8, 2);
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const MatX<Rational> O0 = *gen::rotation<Rational>(3).as("O0");
+  const MatX<Rational> S = *gen::skew<Rational>(3, 8, 2).as("S");
   const Rational S2 = S(2, 1) * S(2, 1) + S(0, 2) * S(0, 2) + S(1, 0) * S(1, 0);
   const CentralNodes<Rational> qnodes = central_nodes<Rational>(4);
   const CentralNodes<T> nodes = central_nodes<T>(4);

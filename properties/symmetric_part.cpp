@@ -14,8 +14,8 @@ namespace {
 // <Pi_skew, Omega_hat> = vee(Pi_skew) . Omega. Sizes: 9 products of |Pi| |Omega|, summed; k = 12.
 template <class T>
 void symmetric_part_does_not_pair(const Subject<T>& s) {
-  const Mat3<T> Pi = *gen::mat3<T>();
-  const Vec3<T> W = *gen::vec3<T>();
+  const Mat3<T> Pi = *gen::mat3<T>().as("Pi");
+  const Vec3<T> W = *gen::vec3<T>().as("Omega");
   const Mat3<T> W_hat = truth::skew_of(W);
   const Mat3<T> sym = ((Pi + Pi.transpose()) / T(2)).eval(), skew = ((Pi - Pi.transpose()) / T(2)).eval();
   const T scale = T(9) * norm_inf(Pi) * norm_inf(W);
@@ -32,8 +32,8 @@ void symmetric_part_does_not_pair(const Subject<T>& s) {
 // commutator (4), on both entries compared.
 template <class T>
 void matrix_euler_keeps_pi_skew(const Subject<T>& s) {
-  const Vec3<T> I = *gen::inertia<T>();
-  const Vec3<T> P = *gen::vec3<T>();
+  const Vec3<T> I = *gen::inertia<T>().as("I");
+  const Vec3<T> P = *gen::vec3<T>().as("Pi");
   const Mat3<T> F = s.euler_matrix_2_12(I, truth::skew_of(P));
   require_close("Remark 2.3: (dPi/dt)_sym = 0 when Pi is skew, so the symmetric part stays zero",
                 ((F + F.transpose()) / T(2)).eval(), Mat3<T>::Zero().eval(),

@@ -46,8 +46,8 @@ struct Bump {
 template <class T, int N>
 Bump<T, N> draw_bump(int dim = N) {
   Bump<T, N> b;
-  b.c0 = dyn::pick<T>(gen::vec<T>(dim, 32, 6));
-  b.c1 = dyn::pick<T>(gen::vec<T>(dim, 32, 6));
+  b.c0 = dyn::pick<T>(gen::vec<T>(dim, 32, 6), "c0 (the bump (T - 2t)(c0 + t c1) + t (T - t) c1)");
+  b.c1 = dyn::pick<T>(gen::vec<T>(dim, 32, 6), "c1 (the bump)");
   if (b.c0.isZero() && b.c1.isZero()) {
     for (int i = 0; i < b.c0.size(); ++i) b.c0(i) = T(i % 2 ? -1 : 1) / T(4 << i);
     b.c1(0) = T(1) / T(8);
@@ -123,8 +123,10 @@ template <class T>
 void restricted_variation_2_8(const Subject<T>& s) {
   // w_i(t, s) = p0 + p1 t + p2 s + p3 t s + p4 t^2 + p5 s^2, for two vectors w_1, w_2.
   std::vector<Vec3<T>> p1, p2;
-  for (int k = 0; k < 6; ++k) p1.push_back(*gen::vec3<T>(64, 6)), p2.push_back(*gen::vec3<T>(64, 6));
-  const T t0 = *gen::scalar<T>(64, 6), s0 = *gen::scalar<T>(64, 6);
+  for (int k = 0; k < 6; ++k)
+    p1.push_back(*gen::vec3<T>(64, 6).as("p" + std::to_string(k) + " of w_1")),
+        p2.push_back(*gen::vec3<T>(64, 6).as("p" + std::to_string(k) + " of w_2"));
+  const T t0 = *gen::scalar<T>(64, 6).as("t0"), s0 = *gen::scalar<T>(64, 6).as("s0");
   const HD<T> t(t0, T(1), T(0), T(0)), sv(s0, T(0), T(1), T(0));
   auto w_of = [&](const std::vector<Vec3<T>>& p, bool inverse) {
     Eigen::Matrix<HD<T>, 3, 1> w;
@@ -221,7 +223,7 @@ template <class T>
 void ep_first_variation_for(const Subject<T>& s, LieAlgebraId g) {
   const int d = truth::algebra_dimension(g);
   const GeneralLagrangian<T> l = draw_lagrangian<T>(d);
-  const VecX<T> xi0 = dyn::pick<T>(gen::vec<T>(d, 32, 6));
+  const VecX<T> xi0 = dyn::pick<T>(gen::vec<T>(d, 32, 6), "xi0");
   const auto eta = draw_bump<T, Eigen::Dynamic>(d);
   const auto bump = draw_bump<T, Eigen::Dynamic>(d);
   // The rules start at 8 points: with the quartic term a 4-point rule can be pre-asymptotic, its
@@ -435,7 +437,7 @@ MatX<T> skew_n(const VecX<T>& v, int n) {
 // under delta Omega = dXi/dt + [Omega, Xi] (Xi skew, vanishing at the ends), vanishes. n = 3..5.
 template <class T>
 void manakov_variational_principle(const Subject<T>& s) {
-  const int n = dyn::pick<T>(rc::gen::inRange(3, 6));
+  const int n = dyn::pick<T>(rc::gen::inRange(3, 6), "n");
   const auto a = dyn::draw_manakov_a<T>(n);
   const MatX<T> A = dyn::diag_of(a);
   const MatX<T> M0 = dyn::draw_skew<T>(n, 32);
@@ -501,8 +503,8 @@ void hamilton_pontryagin_variation_so_n(const Subject<T>& s) {
   // system afresh at every call (examples/students/correct.hpp): at n = 6 in 50 digits that made
   // one check of a correct implementation exceed the 60 s a check may take. Dimension-specific
   // mistakes show in double; what 50 digits add (precision lost to double) shows at any n.
-  const int n = dyn::pick<T>(rc::gen::inRange(3, std::is_same_v<T, double> ? 7 : 5));
-  const auto b = dyn::pick<T>(gen::manakov_body<T>(n));
+  const int n = dyn::pick<T>(rc::gen::inRange(3, std::is_same_v<T, double> ? 7 : 5), "n");
+  const auto b = dyn::pick<T>(gen::manakov_body<T>(n), "body");
   const T d_min = b.d.minCoeff();
   const MatX<T> M0 = (dyn::draw_skew<T>(n, 32) * d_min).eval();
   const int m = n * (n - 1) / 2;
@@ -615,9 +617,9 @@ void reconstruction_solves_euler_lagrange(const Subject<T>& s) {
 template <class T>
 void right_invariant_for(const Subject<T>& s, LieAlgebraId g) {
   const int m = g == LieAlgebraId::sl2 ? 2 : 3;
-  const VecX<T> xi0 = dyn::pick<T>(gen::vec<T>(3, 32, 6));
+  const VecX<T> xi0 = dyn::pick<T>(gen::vec<T>(3, 32, 6), "xi0");
   VecX<T> K(3);
-  for (int k = 0; k < 3; ++k) K(k) = dyn::pick<T>(dyn::quarter<T>(2, 8));
+  for (int k = 0; k < 3; ++k) K(k) = dyn::pick<T>(dyn::quarter<T>(2, 8), "K_k");
   const auto eta = draw_bump<T, 3>(), bump = draw_bump<T, 3>();
   const auto grid = var::gauss_grid<T>(kT<T>);
   const MatX<T> g0 = MatX<T>::Identity(m, m);
@@ -749,8 +751,10 @@ template <class T>
 void ep_product_space_for(const Subject<T>& s, LieAlgebraId g) {
   const int d = g == LieAlgebraId::so4 ? 6 : 3;
   VecX<T> K(d);
-  for (int k = 0; k < d; ++k) K(k) = dyn::pick<T>(dyn::quarter<T>(2, 8));
-  const auto eighth = [] { return T(dyn::pick<T>(dyn::quarter<T>(-1, 1)) / T(2)); };  // -1/8, 0 or 1/8
+  for (int k = 0; k < d; ++k) K(k) = dyn::pick<T>(dyn::quarter<T>(2, 8), "K_k");
+  const auto eighth = [] {  // -1/8, 0 or 1/8
+    return T(dyn::pick<T>(dyn::quarter<T>(-1, 1), "2 B_ij or 2 c_j (an entry -1/8, 0 or 1/8)") / T(2));
+  };
   MatX<T> B(2, d);
   VecX<T> c(d);
   for (int j = 0; j < d; ++j) {
@@ -760,8 +764,8 @@ void ep_product_space_for(const Subject<T>& s, LieAlgebraId g) {
   }
   Vec2<T> a(eighth(), eighth());
   const ProductSpaceBody<T> body(std::move(K), std::move(B), std::move(a), std::move(c));
-  const VecX<T> mu0 = dyn::pick<T>(gen::vec<T>(d, 32, 6));
-  const Vec2<T> y0 = dyn::pick<T>(gen::vec<T>(2, 32, 6)), p0 = dyn::pick<T>(gen::vec<T>(2, 32, 6));
+  const VecX<T> mu0 = dyn::pick<T>(gen::vec<T>(d, 32, 6), "mu0");
+  const Vec2<T> y0 = dyn::pick<T>(gen::vec<T>(2, 32, 6), "y0"), p0 = dyn::pick<T>(gen::vec<T>(2, 32, 6), "p0");
   const auto eta = draw_bump<T, Eigen::Dynamic>(d);
   const auto zeta = draw_bump<T, 2>();
   const auto bump = draw_bump<T, Eigen::Dynamic>(d);

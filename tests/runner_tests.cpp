@@ -93,6 +93,36 @@ TEST(Runner, WithoutShrinkingAFailureStaysAFailure) {
   EXPECT_NE(unshrunk.message, shrunk.message) << "the first failing draw of 0..999 is not the smallest one";
 }
 
+// Issue 33: a value drawn with a name (gen.as("k")) is shown by that name, and the heading says
+// the inputs are by the notes' names; the control: the same draw without a name is shown by its
+// type, and the heading does not say so (tests/property_tests.cpp requires every negative control's
+// failure to be of the first kind).
+TEST(Runner, ACounterexampleDrawnWithNamesIsShownByThem) {
+  Property p = half_discarding();
+  p.d = [](const Subject<double>&) {
+    const int k = *rc::gen::inRange(0, 1000).as("k (the notes' symbol)");
+    const double x = *rc::gen::just(0.5).as("x");
+    require("k < 10", k < 10 || x != 0.5, "k = " + std::to_string(k));
+  };
+  const Verdict named = run_in_double(p);
+  ASSERT_EQ(named.outcome, Outcome::Fail) << format_verdict(named);
+  EXPECT_TRUE(counterexample_by_name(named)) << format_verdict(named);
+  EXPECT_NE(format_verdict(named).find("by the notes' names:\n    k (the notes' symbol) = 10\n    x = 0.5"),
+            std::string::npos)
+      << format_verdict(named);
+
+  p.d = [](const Subject<double>&) {
+    const int k = *rc::gen::inRange(0, 1000);
+    const double x = *rc::gen::just(0.5).as("x");
+    require("k < 10", k < 10 || x != 0.5, "k = " + std::to_string(k));
+  };
+  const Verdict typed = run_in_double(p);
+  ASSERT_EQ(typed.outcome, Outcome::Fail) << format_verdict(typed);
+  EXPECT_FALSE(counterexample_by_name(typed)) << "one value has no name: " << format_verdict(typed);
+  EXPECT_NE(format_verdict(typed).find("counterexample (shrunk):\n    int = 10"), std::string::npos)
+      << format_verdict(typed);
+}
+
 // Issue 15: the case budget. A property whose cases take 20 ms each, with 40 planned and a budget of
 // 0.1 s, passes on the cases it had time for (at least one), and says how many of how many. The
 // control: without a budget all 40 run.

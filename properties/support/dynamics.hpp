@@ -38,6 +38,8 @@
 
 #include <rapidcheck.h>
 
+#include <string>
+
 #include <array>
 #include <cmath>
 #include <vector>
@@ -52,12 +54,14 @@ namespace gm::dyn {
 // every range: a sphere at rest). In multiprecision every rerun of a flow property costs tens of
 // milliseconds, so there the draw is not shrunk either (a failing case is reported as drawn, and
 // the double run of the same property shrinks it).
+// `name` is what a counterexample calls the value (the notes' symbol, or what the value is of one):
+// "a (I = (b + c, c + a, a + b))" rather than "double".
 template <class T, class G>
-auto pick(const G& g) {
+auto pick(const G& g, const std::string& name = {}) {
   if constexpr (std::is_same_v<T, double>)
-    return *rc::gen::resize(100, g);
+    return *rc::gen::resize(100, g).as(name);
   else
-    return *rc::gen::noShrink(rc::gen::resize(100, g));
+    return *rc::gen::noShrink(rc::gen::resize(100, g)).as(name);
 }
 
 // A value k / 4 with lo <= k <= hi, shrinking toward lo / 4.
@@ -70,7 +74,9 @@ rc::Gen<T> quarter(int lo, int hi) {
 // inequalities strict; shrinks toward the sphere I = (1, 1, 1).
 template <class T>
 Vec3<T> draw_inertia() {
-  const T a = pick<T>(quarter<T>(2, 8)), b = pick<T>(quarter<T>(2, 8)), c = pick<T>(quarter<T>(2, 8));
+  const T a = pick<T>(quarter<T>(2, 8), "a (I = (b + c, c + a, a + b))");
+  const T b = pick<T>(quarter<T>(2, 8), "b (I = (b + c, c + a, a + b))");
+  const T c = pick<T>(quarter<T>(2, 8), "c (I = (b + c, c + a, a + b))");
   return Vec3<T>(b + c, c + a, a + b);
 }
 
@@ -85,14 +91,14 @@ Vec3<T> draw_triaxial_inertia() {
 // Body angular momentum with components k / 64, |k| <= 64, not zero.
 template <class T>
 Vec3<T> draw_momentum() {
-  Vec3<T> P = pick<T>(gen::vec3<T>(64, 6));
+  Vec3<T> P = pick<T>(gen::vec3<T>(64, 6), "Pi (0 is replaced by [1, 0, 0])");
   if (P.isZero()) P(0) = T(1);
   return P;
 }
 
 template <class T>
 Mat3<T> draw_rotation() {
-  return pick<T>(gen::rotation3<T>());
+  return pick<T>(gen::rotation3<T>(), "O");
 }
 
 // Generic data, where a degenerate draw (a sphere, a symmetric top, Pi along an axis, an
@@ -101,10 +107,10 @@ Mat3<T> draw_rotation() {
 // order, and momenta whose components all have size >= 1/8.
 template <class T>
 Vec3<T> draw_generic_inertia() {
-  const T a = pick<T>(quarter<T>(2, 8));
-  const T b = a + pick<T>(quarter<T>(1, 4));
-  const T c = b + pick<T>(quarter<T>(1, 4));
-  const int perm = pick<T>(rc::gen::inRange(0, 6));
+  const T a = pick<T>(quarter<T>(2, 8), "a (I = (b + c, c + a, a + b) in an axis order)");
+  const T b = a + pick<T>(quarter<T>(1, 4), "b - a");
+  const T c = b + pick<T>(quarter<T>(1, 4), "c - b");
+  const int perm = pick<T>(rc::gen::inRange(0, 6), "axis order of I (one of the 6 permutations)");
   const int order[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
   const T I[3] = {b + c, c + a, a + b};
   return Vec3<T>(I[order[perm][0]], I[order[perm][1]], I[order[perm][2]]);
@@ -112,8 +118,8 @@ Vec3<T> draw_generic_inertia() {
 
 template <class T>
 T generic_entry() {
-  const int k = pick<T>(rc::gen::inRange(8, 65));
-  const bool negative = pick<T>(rc::gen::inRange(0, 2)) == 1;
+  const int k = pick<T>(rc::gen::inRange(8, 65), "k (an entry +-k/64)");
+  const bool negative = pick<T>(rc::gen::inRange(0, 2), "sign (1: the entry is -k/64)") == 1;
   return T(negative ? -k : k) / T(64);
 }
 
@@ -126,8 +132,8 @@ Vec3<T> draw_generic_momentum() {
 // size in [1/8, 1] (drawn as the momentum's components).
 template <class T>
 std::vector<T> draw_generic_manakov_a(int n) {
-  std::vector<T> a{pick<T>(quarter<T>(2, 4))};
-  for (int i = 1; i < n; ++i) a.push_back(a.back() + pick<T>(quarter<T>(1, 2)));
+  std::vector<T> a{pick<T>(quarter<T>(2, 4), "a_0 (A = diag(a))")};
+  for (int i = 1; i < n; ++i) a.push_back(a.back() + pick<T>(quarter<T>(1, 2), "a_i - a_(i-1)"));
   return a;
 }
 
@@ -146,7 +152,7 @@ MatX<T> draw_generic_skew(int n) {
 template <class T>
 std::vector<T> draw_manakov_a(int n) {
   std::vector<T> a;
-  for (int i = 0; i < n; ++i) a.push_back(pick<T>(quarter<T>(2, 8)));
+  for (int i = 0; i < n; ++i) a.push_back(pick<T>(quarter<T>(2, 8), "a_i (A = diag(a))"));
   return a;
 }
 
@@ -159,7 +165,7 @@ MatX<T> diag_of(const std::vector<T>& a) {
 
 template <class T>
 MatX<T> draw_skew(int n, int max_abs = 64) {
-  MatX<T> M = pick<T>(gen::skew<T>(n, max_abs, 6));
+  MatX<T> M = pick<T>(gen::skew<T>(n, max_abs, 6), "M (0 is replaced by E_12 - E_21)");
   if (M.isZero()) M(0, 1) = T(1), M(1, 0) = T(-1);
   return M;
 }

@@ -81,10 +81,11 @@ struct GeneralLagrangian {
 
 template <class T>
 GeneralLagrangian<T> draw_lagrangian(int d) {
-  GeneralLagrangian<T> l{*gen::vec<T>(d, 8, 3), MatX<T>::Zero(d, d), T(*rc::gen::inRange(0, 5)) / T(4)};
+  GeneralLagrangian<T> l{*gen::vec<T>(d, 8, 3).as("a (l(xi) = a . xi + xi.K xi / 2 + c (xi.K xi)^2 / 8)"),
+                          MatX<T>::Zero(d, d), T(*rc::gen::inRange(0, 5).as("4 c")) / T(4)};
   for (int i = 0; i < d; ++i) {
-    l.K(i, i) = T(*rc::gen::inRange(8, 17)) / T(4);
-    for (int j = 0; j < i; ++j) l.K(i, j) = l.K(j, i) = *gen::scalar<T>(d <= 8 ? 4 : 1, 4);
+    l.K(i, i) = T(*rc::gen::inRange(8, 17).as("4 K_ii")) / T(4);
+    for (int j = 0; j < i; ++j) l.K(i, j) = l.K(j, i) = *gen::scalar<T>(d <= 8 ? 4 : 1, 4).as("K_ij");
   }
   return l;
 }
