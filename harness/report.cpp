@@ -430,7 +430,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
       os << "\n  " << v.title;
       std::istringstream lines(v.message);
       for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
-      if (!v.counterexample.empty() && v.message.find("inputs, by the notes' names:") == std::string::npos) {
+      if (!v.counterexample.empty() && !inputs_in_message(v)) {
         os << "\n  " << counterexample_heading(v);
         for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
       }
@@ -686,7 +686,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
           md << ", " << md_cell(e->place) << " (notes, line " << e->line << "): " << md_cell(e->statement);
       md << "\n\n";
       md << fence(v->message);
-      if (!v->counterexample.empty()) {
+      if (!v->counterexample.empty() && !inputs_in_message(*v)) {
         md << (v->shrink_stopped ? "\nCounterexample (full precision; shrinking was stopped by its time budget, so it "
                                    "is the smallest failing case found by then, not a minimal one):\n\n"
                                : counterexample_by_name(*v)
@@ -727,7 +727,8 @@ std::string junit_report(const CheckResult& r) {
     x << "    <testcase classname=\"" << xml_escape(r.subject + "." + v.scalar) << "\" name=\""
       << xml_escape(row_name(v)) << "\" time=\"" << t << "\">\n";
     std::string body = v.title + "\nspec entry: " + v.spec + "\n" + v.message;
-    for (const auto& [type, value] : v.counterexample) body += "\n" + type + " = " + value;
+    if (!inputs_in_message(v))
+      for (const auto& [type, value] : v.counterexample) body += "\n" + type + " = " + value;
     if (is_problem(v.outcome)) body += "\nreproduce: " + reproduce_command(r, v);
     switch (v.outcome) {
       case Outcome::Fail:

@@ -42,8 +42,9 @@ template <class T>
 void definition_pairing(const Subject<T>& s) {
   const int n = *gen::uniform(2, 7).as("n");
   const int e = *gen::uniform(-30, 31).as("e (a scale 2^e)");
-  const MatX<T> A = (*gen::mat<T>(n, n) * gen::pow2<T>(e)).eval();
-  const MatX<T> B = *gen::uniform(0, 2) ? MatX<T>(*gen::mat<T>(n, n) / T(3)) : MatX<T>(*gen::mat<T>(n, n));
+  const MatX<T> A = (*gen::mat<T>(n, n).as("A / 2^e") * gen::pow2<T>(e)).eval();
+  const MatX<T> B = *gen::uniform(0, 2).as("B in thirds (1: yes)") ? MatX<T>(*gen::mat<T>(n, n).as("3 B") / T(3))
+                                                                : MatX<T>(*gen::mat<T>(n, n).as("B"));
   showing_inputs([&] { return named("A", A) + named("B", B); }, [&] {
     require_close("slot pairing: <A, B> = tr(A^T B)/2, (2.15)", s.pairing(A, B), T(A.cwiseProduct(B).sum() / T(2)),
                   T(norm_inf(A) * norm_inf(B) * T(n * n)), 2.0 * n * n + 2);
@@ -112,7 +113,7 @@ void definition_vee_n(const Subject<T>& s) {
 
 LieAlgebraId draw_algebra() {
   static const LieAlgebraId all[] = {LieAlgebraId::so3, LieAlgebraId::so4, LieAlgebraId::sl2};
-  return all[*gen::uniform(0, 3)];
+  return all[*gen::uniform(0, 3).as("the algebra (0 so(3), 1 so(4), 2 sl(2, R))")];
 }
 
 // lie_hat: lie_hat(g, e_k) is a basis of g (so(3), so(4): coordinates as for hat_n; sl(2, R): any

@@ -256,10 +256,10 @@ void draw_masses(VecX<T>& m, MatX<T>& X) {
   const int N = *gen::uniform(1, 6).as("N");
   const int e = *gen::uniform(-20, 21).as("e (a scale 2^e)");
   const int em = *gen::uniform(-30, 31).as("em (a scale 2^em)");  // masses in every binade, tiny ones included
-  const bool thirds = *gen::uniform(0, 4) == 3;
+  const bool thirds = *gen::uniform(0, 4).as("X in thirds (3: yes)") == 3;
   m = *gen::vec<T>(N, 64, 2).as("m");
   for (int k = 0; k < N; ++k) m(k) = (abs_value(m(k)) + T(1)) * gen::pow2<T>(em);
-  X = (*gen::mat<T>(3, N) * gen::pow2<T>(e)).eval();
+  X = (*gen::mat<T>(3, N).as("X / 2^e (before the thirds)") * gen::pow2<T>(e)).eval();
   if (thirds) X = (X / T(3)).eval();
 }
 

@@ -24,9 +24,9 @@ MatX<T> commutator_of(const MatX<T>& X, const MatX<T>& Y) {
 // representable in double) a quarter of the time.
 template <class T>
 MatX<T> draw_omega(int n) {
-  const int e = *gen::uniform(0, 2) ? *gen::uniform(-20, 21) : 0;
-  const bool thirds = *gen::uniform(0, 4) == 3;
-  return (*gen::skew<T>(n) * gen::pow2<T>(e) / T(thirds ? 3 : 1)).eval();
+  const int e = *gen::uniform(0, 2).as("Omega scaled (1: yes)") ? *gen::uniform(-20, 21).as("e (a scale 2^e)") : 0;
+  const bool thirds = *gen::uniform(0, 4).as("Omega in thirds (3: yes)") == 3;
+  return (*gen::skew<T>(n).as("Omega / 2^e (before the thirds)") * gen::pow2<T>(e) / T(thirds ? 3 : 1)).eval();
 }
 
 template <class T>

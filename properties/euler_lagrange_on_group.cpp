@@ -190,7 +190,8 @@ template <class T>
 void check_euler_lagrange(const std::string& where, const CayleyChart<T>& chart, const ReducedRate<T>& rate) {
   const int d = chart.dim();
   const GeneralLagrangian<T> l = draw_lagrangian<T>(d);
-  const ChartState<T> st(chart, l, *gen::vec<T>(d, 2, 2), *gen::vec<T>(d, 16, 3));
+  const ChartState<T> st(chart, l, *gen::vec<T>(d, 2, 2).as("q (chart coordinates)"),
+                         *gen::vec<T>(d, 16, 3).as("dq/dt"));
   // delta, relative to the size of dmu/dt: a miss of the reduced equation that is not lost in
   // its round-off; never zero, or the converse would test nothing.
   VecX<T> delta = *gen::vec<T>(d, 8, 3).as("delta");

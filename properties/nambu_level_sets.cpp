@@ -40,7 +40,7 @@ SpherePoint<T> draw_sphere_point() {
   s.rho = *gen::positive<T>().as("rho");
   s.q = *gen::scalar<T>().as("q");
   const T t = *gen::scalar<T>(64, 4).as("t");
-  const T side = *rc::gen::element(1, -1) == 1 ? T(1) : T(-1);  // the other half of the circle
+  const T side = *rc::gen::element(1, -1).as("side") == 1 ? T(1) : T(-1);  // the other half of the circle
   s.cos = side * (T(1) - t * t) / (T(1) + t * t);
   s.sin = side * T(2) * t / (T(1) + t * t);
   s.x = Vec3<T>(s.rho * s.cos, s.rho * s.sin, s.q);

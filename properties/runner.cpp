@@ -246,6 +246,10 @@ bool counterexample_by_name(const Verdict& v) {
   return true;
 }
 
+bool inputs_in_message(const Verdict& v) {
+  return v.message.find("inputs, by the notes' names:") != std::string::npos;
+}
+
 std::string counterexample_heading(const Verdict& v) {
   std::string h = v.shrink_stopped ? "counterexample (shrinking stopped by its time budget; not minimal)"
                                    : "counterexample (shrunk)";
@@ -517,7 +521,7 @@ std::string format_verdict(const Verdict& v) {
     std::istringstream lines(v.message);
     for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
   }
-  if (!v.counterexample.empty() && v.message.find("inputs, by the notes' names:") == std::string::npos) {
+  if (!v.counterexample.empty() && !inputs_in_message(v)) {
     os << "\n  " << counterexample_heading(v);
     for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
   }

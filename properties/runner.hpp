@@ -87,6 +87,9 @@ std::string reproduce_command(const Verdict& v);
 // name (gen(...).as("Pi"): "Pi = [...]"), by their type otherwise ("Vec3<double> = [...]").
 // True when every value has a name; the heading then says so.
 bool counterexample_by_name(const Verdict& v);
+// True when the failure message already shows the inputs by the notes' names (showing_inputs):
+// the reports then leave RapidCheck's list of drawn values out, as it says the same less clearly.
+bool inputs_in_message(const Verdict& v);
 // "counterexample (shrunk), by the notes' names:" and its variants, for the text reports.
 std::string counterexample_heading(const Verdict& v);
 

@@ -94,8 +94,7 @@ class NegativeControlTest : public ::testing::Test {
                   << format_verdict(v) << "\n";
         // Issue 33: a failure shows its inputs by the notes' names, never as RapidCheck's list of
         // C++ types ("double = 0.5"): named in the message (showing_inputs) or drawn with a name.
-        if (!v.counterexample.empty() && v.message.find("inputs, by the notes' names:") == std::string::npos &&
-            !counterexample_by_name(v))
+        if (!v.counterexample.empty() && !inputs_in_message(v) && !counterexample_by_name(v))
           ADD_FAILURE() << "the counterexample of '" << p_->id << "' has values without a name (draw them with "
                         << "gen(...).as(\"name\") or dyn::pick(gen, \"name\"), or show them with showing_inputs):\n"
                         << format_verdict(v);

@@ -22,7 +22,9 @@
 #pragma once
 
 #include "properties/support/generators.hpp"
+#include "properties/support/show.hpp"
 
+#include <ostream>
 #include <string>
 
 namespace gm::gen {
@@ -194,6 +196,13 @@ struct ManakovBody {
   MatX<T> R;
   T spread;
 };
+
+// A counterexample shows the body as the notes name it: A, and the D and R it was made from.
+template <class T>
+void showValue(const ManakovBody<T>& b, std::ostream& os) {
+  os << "A = " << show_matrix(b.A) << " (R diag(d) R^T with d = " << show_matrix(b.d) << ", R = " << show_matrix(b.R)
+     << ")";
+}
 
 // n in [3, 6]; regimes: diagonal (0), rotated (1), rotated with two equal entries of D (2),
 // scaled by 2^s, s in [-20, 20] (3).
