@@ -162,7 +162,11 @@ const std::vector<Example>& examples() {
        {}},
       {"bug_order_claim",
        "a first-order Lie-Trotter splitting claiming order 2 and symmetry",
-       {},
+       // Issue 33: its field is right at every state drawn, fast (scaled) motions included, and the
+       // false claim says so first; its inputs are by the notes' names.
+       {{"integrator_converges_in_every_regime", {"double", "mp50"}, "FAIL",
+         "the step's own equation: your step's vector field is right"},
+        {"integrator_local_order", {"double", "mp50"}, "FAIL", "inputs, by the notes' names:\n    I = "}},
        {{"lie_trotter", "order", "FALSE CLAIM"},
         {"lie_trotter", "symmetric", "FALSE CLAIM"},
         {"lie_trotter", "casimir", "verified"},

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 
 namespace gm {
@@ -181,6 +182,39 @@ TEST(StepField, AFalseClebschOrderClaimSaysWhichEquationTheStepFollows) {
                    "your step follows dQ/dt = Omega x Q");
   expect_explained("manakov_clebsch_integrator_order", "manakov_clebsch_midpoint_printed_M", "clebsch_midpoint",
                    "your step's momentum is the notes' printed M = (P^T Q - Q^T P)/2");
+}
+
+// The rigid body's field (step_field.hpp) is extrapolated from steps small against the motion's own
+// time scale: a right step on a motion scaled by 2^18 (it turns 2^18 times faster) is said right, as
+// on the same motion unscaled and slowed down by 2^-30. Before, the steps started at 2^-8 whatever
+// the speed, and a right step on a fast motion was said to follow a field it does not (the regime
+// convergence of examples/students/bug_order_claim.cpp led with that). The control: a step of the
+// reversed cross product is named at every one of these scales.
+TEST(StepField, AFastMotionIsLookedAtOnItsOwnTimeScale) {
+  const Vec3<double> I(1.75, 1.5, 1.25);
+  const Vec3<double> Pi(0.375, -0.5, 0.625);
+  auto hat = [](const Vec3<double>& w) {
+    Mat3<double> W;
+    W << 0, -w(2), w(1), w(2), 0, -w(0), -w(1), w(0), 0;
+    return W;
+  };
+  Integrator<double> reversed;
+  reversed.name = "euler_reversed";
+  reversed.rigid_body_step = [hat](const Vec3<double>& I, const RigidBodyState<double>& x, const double& h) {
+    const Vec3<double> W = x.Pi.cwiseQuotient(I);
+    return RigidBodyState<double>{Vec3<double>(x.Pi + h * W.cross(x.Pi)), Mat3<double>(x.O + h * x.O * hat(W))};
+  };
+  for (const double lambda : {1.0, 262144.0, std::ldexp(1.0, -30)}) {
+    const RigidBodyState<double> x{Vec3<double>(Pi * lambda), Mat3<double>::Identity()};
+    for (const auto& in : reference_subject().get<double>()->integrators)
+      if (in.rigid_body_step) {
+        const Diagnosis g = stepfield::diagnose(stepfield::rigid_body_field(in, I, x), I, x);
+        EXPECT_TRUE(g.field_right) << in.name << ", Pi scaled by " << lambda << ": " << g.text;
+      }
+    const Diagnosis wrong = stepfield::diagnose(stepfield::rigid_body_field(reversed, I, x), I, x);
+    EXPECT_FALSE(wrong.field_right) << lambda;
+    EXPECT_NE(wrong.text.find("the cross product is reversed"), std::string::npos) << lambda << ": " << wrong.text;
+  }
 }
 
 }  // namespace

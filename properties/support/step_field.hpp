@@ -57,12 +57,27 @@ int first_exponent() {
   return std::is_same_v<T, double> ? 8 : 24;
 }
 
+// The first of the six steps: h0 = 2^-first_exponent against the motion's own time scale 1 / rate,
+// by powers of two. A state scaled by lambda turns lambda times faster: at h = 2^-8 a motion scaled
+// by 2^18 turns many times within one step, and the extrapolated "field" is nothing the step
+// follows; a motion scaled by 2^-30 moves so little in 2^-13 that (step(x, h) - x)/h is round-off.
+// Motions with rate in [1/64, 2] (the unscaled states of every check) keep h0.
+template <class T>
+T first_step(const T& rate) {
+  T h(1);
+  for (int k = 0; k < first_exponent<T>(); ++k) h /= T(2);
+  const T h0 = h;
+  if (!(rate > T(0))) return h;  // at rest (or not a number): nothing to scale by
+  while (h * rate > T(2) * h0) h /= T(2);
+  while (h * rate < h0 / T(64)) h *= T(2);
+  return h;
+}
+
 template <class T>
 Field<T> rigid_body_field(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x) {
   std::vector<T> hs;
   std::vector<Vec3<T>> dPi, dOmega;
-  T h(1);
-  for (int k = 0; k < first_exponent<T>(); ++k) h /= T(2);
+  T h = first_step<T>(max_abs(Vec3<T>(x.Pi.cwiseQuotient(I))));  // the rate: |Omega| of (3.5)
   for (int k = 0; k < 6; ++k, h /= T(2)) {
     const RigidBodyState<T> y = in.rigid_body_step(I, x, h);
     hs.push_back(h);

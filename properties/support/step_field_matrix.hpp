@@ -21,14 +21,14 @@
 
 namespace gm::stepfield {
 
-// step(x, h) - x divided by h at h = 2^-k (k from first_exponent<T>(), six values), extrapolated to
-// h = 0. `difference(h)` returns step(x, h) - x as one matrix.
+// step(x, h) - x divided by h at six steps halving from first_step(rate) (step_field.hpp: small
+// against the motion's time scale 1 / rate), extrapolated to h = 0. `difference(h)` returns
+// step(x, h) - x as one matrix.
 template <class T, class Difference>
-MatX<T> rate_at_zero(Difference&& difference, T* spread) {
+MatX<T> rate_at_zero(Difference&& difference, T* spread, const T& rate = T(1)) {
   std::vector<T> hs;
   std::vector<MatX<T>> d;
-  T h(1);
-  for (int k = 0; k < first_exponent<T>(); ++k) h /= T(2);
+  T h = first_step<T>(rate);
   for (int k = 0; k < 6; ++k, h /= T(2)) {
     hs.push_back(h);
     d.push_back(MatX<T>(difference(h) / h));
@@ -89,7 +89,7 @@ ManakovField<T> manakov_field(const Integrator<T>& in, const MatX<T>& A, const M
         d.bottomRows(n) = x.O.transpose() * (y.O - x.O);
         return d;
       },
-      &f.spread);
+      &f.spread, T(max_abs(x.M) / A.diagonal().minCoeff()));  // about |Omega| of (2.34)
   f.M_dot = D.topRows(n);
   f.Omega = D.bottomRows(n);
   return f;
