@@ -48,13 +48,7 @@ void canonical_bracket_coordinates(const Subject<T>& s) {
 
 template <class T>
 void canonical_bracket_bilinear(const Subject<T>& s) {
-  const auto F1 = *gen::polynomial<T>(6).as("F1");
-  const auto F2 = *gen::polynomial<T>(6).as("F2");
-  const auto G = *gen::polynomial<T>(6).as("G");
-  const T a = *gen::scalar<T>(8, 2).as("a");
-  const T b = *gen::scalar<T>(8, 2).as("b");
-  const VecX<T> x = *gen::point<T>(6).as("x");
-  check_bilinear(canonical(s), F1, F2, G, a, b, x);
+  check_bilinear_drawn(canonical(s), 6);
 }
 
 template <class T>

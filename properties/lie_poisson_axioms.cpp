@@ -51,14 +51,7 @@ PointBracket<T> lie_poisson_matrix(const Subject<T>& s) {
 
 template <class T, class MakeBracket>
 void bilinear_body(const Subject<T>& s, MakeBracket make) {
-  const auto B = make(s);
-  const auto F1 = *gen::polynomial<T>(3).as("F1");
-  const auto F2 = *gen::polynomial<T>(3).as("F2");
-  const auto G = *gen::polynomial<T>(3).as("G");
-  const T a = *gen::scalar<T>(8, 2).as("a");
-  const T b = *gen::scalar<T>(8, 2).as("b");
-  const VecX<T> x = *gen::point<T>(3).as("x");
-  check_bilinear(B, F1, F2, G, a, b, x);
+  check_bilinear_drawn(make(s), 3);
 }
 
 template <class T, class MakeBracket>

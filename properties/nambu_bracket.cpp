@@ -31,13 +31,7 @@ PointBracket<T> nambu(const Subject<T>& s, const Polynomial<T>& c) {
 template <class T>
 void nambu_3_13_bilinear(const Subject<T>& s) {
   const auto c = *gen::polynomial<T>(3).as("c");
-  const auto F1 = *gen::polynomial<T>(3).as("F1");
-  const auto F2 = *gen::polynomial<T>(3).as("F2");
-  const auto G = *gen::polynomial<T>(3).as("G");
-  const T a = *gen::scalar<T>(8, 2).as("a");
-  const T b = *gen::scalar<T>(8, 2).as("b");
-  const VecX<T> x = *gen::point<T>(3).as("x");
-  check_bilinear(nambu(s, c), F1, F2, G, a, b, x);
+  check_bilinear_drawn(nambu(s, c), 3);
 }
 
 template <class T>

@@ -70,6 +70,19 @@ void check_bilinear(const PointBracket<T>& B, const Polynomial<T>& F1, const Pol
                 T(a * B(G, F1, x) + b * B(G, F2, x)), scale, k);
 }
 
+// Bilinearity on drawn functions F1, F2, G of `dim` variables (degree <= 3), scalars a, b and a
+// point x, each drawn with its name.
+template <class T>
+void check_bilinear_drawn(const PointBracket<T>& B, int dim) {
+  const auto F1 = *gen::polynomial<T>(dim).as("F1");
+  const auto F2 = *gen::polynomial<T>(dim).as("F2");
+  const auto G = *gen::polynomial<T>(dim).as("G");
+  const T a = *gen::scalar<T>(8, 2).as("a");
+  const T b = *gen::scalar<T>(8, 2).as("b");
+  const VecX<T> x = *gen::point<T>(dim).as("x");
+  check_bilinear(B, F1, F2, G, a, b, x);
+}
+
 // Skew-symmetry: {F, G} = -{G, F}.
 template <class T>
 void check_skew(const PointBracket<T>& B, const Polynomial<T>& F, const Polynomial<T>& G, const VecX<T>& x) {
