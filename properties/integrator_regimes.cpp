@@ -208,8 +208,10 @@ std::string regime_evidence(const Integrator<T>& in, const RigidBodyRegime<T>& r
       out += fmt("    the same motion unscaled errs as much (%.3g at h = t/128): the scale is not the cause\n",
                  to_double(err));
   }
-  if (r.regime != 0 && stepfield::diagnose(stepfield::rigid_body_field(in, r.I, r.x0), r.I, r.x0).field_right &&
-      stepfield::diagnose(stepfield::rigid_body_field(in, r.I, flow_at_end(r)), r.I, flow_at_end(r)).field_right)
+  const auto field_right_at = [&](const RigidBodyState<T>& x) {
+    return stepfield::diagnose(stepfield::rigid_body_field(in, r.I, x), r.I, x).field_right;
+  };
+  if (r.regime != 0 && field_right_at(r.x0) && field_right_at(flow_at_end(r)))
     out += "    the step's field is right at this special state: what it does with it here (a 'fast path' for steady "
            "rotation about a principal axis, a branch for equal moments) is where to look\n";
   return out.empty() ? out : "  evidence:\n" + out;

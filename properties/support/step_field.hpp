@@ -73,23 +73,36 @@ T first_step(const T& rate) {
   return h;
 }
 
+// step(x, h) - x divided by h at six steps halving from first_step(rate) (above: small
+// against the motion's time scale 1 / rate), extrapolated to h = 0. `difference(h)` returns
+// step(x, h) - x as one matrix.
+template <class T, class Difference>
+MatX<T> rate_at_zero(Difference&& difference, T* spread, const T& rate = T(1)) {
+  std::vector<T> hs;
+  std::vector<MatX<T>> d;
+  T h = first_step<T>(rate);
+  for (int k = 0; k < 6; ++k, h /= T(2)) {
+    hs.push_back(h);
+    d.push_back(MatX<T>(difference(h) / h));
+  }
+  return extrapolate_to_zero(hs, d, spread);
+}
+
 template <class T>
 Field<T> rigid_body_field(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x) {
-  std::vector<T> hs;
-  std::vector<Vec3<T>> dPi, dOmega;
-  T h = first_step<T>(max_abs(Vec3<T>(x.Pi.cwiseQuotient(I))));  // the rate: |Omega| of (3.5)
-  for (int k = 0; k < 6; ++k, h /= T(2)) {
-    const RigidBodyState<T> y = in.rigid_body_step(I, x, h);
-    hs.push_back(h);
-    dPi.push_back(Vec3<T>((y.Pi - x.Pi) / h));
-    const Mat3<T> W = (x.O.transpose() * (y.O - x.O) / h).eval();  // O^T dO/dt: Omega_hat for (2.10)
-    dOmega.push_back(Vec3<T>((W(2, 1) - W(1, 2)) / T(2), (W(0, 2) - W(2, 0)) / T(2), (W(1, 0) - W(0, 1)) / T(2)));
-  }
   Field<T> f;
-  T s1(0), s2(0);
-  f.Pi_dot = extrapolate_to_zero(hs, dPi, &s1);
-  f.Omega = extrapolate_to_zero(hs, dOmega, &s2);
-  f.spread = s1 > s2 ? s1 : s2;
+  const MatX<T> D = rate_at_zero<T>(
+      [&](const T& h) {
+        const RigidBodyState<T> y = in.rigid_body_step(I, x, h);
+        const Mat3<T> W = (x.O.transpose() * (y.O - x.O)).eval();  // h O^T dO/dt: h Omega_hat for (2.10)
+        MatX<T> d(6, 1);
+        d.topRows(3) = y.Pi - x.Pi;
+        d.bottomRows(3) << (W(2, 1) - W(1, 2)) / T(2), (W(0, 2) - W(2, 0)) / T(2), (W(1, 0) - W(0, 1)) / T(2);
+        return d;
+      },
+      &f.spread, T(max_abs(Vec3<T>(x.Pi.cwiseQuotient(I)))));  // the rate: |Omega| of (3.5)
+  f.Pi_dot = D.topRows(3);
+  f.Omega = D.bottomRows(3);
   return f;
 }
 

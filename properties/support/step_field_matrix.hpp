@@ -21,21 +21,6 @@
 
 namespace gm::stepfield {
 
-// step(x, h) - x divided by h at six steps halving from first_step(rate) (step_field.hpp: small
-// against the motion's time scale 1 / rate), extrapolated to h = 0. `difference(h)` returns
-// step(x, h) - x as one matrix.
-template <class T, class Difference>
-MatX<T> rate_at_zero(Difference&& difference, T* spread, const T& rate = T(1)) {
-  std::vector<T> hs;
-  std::vector<MatX<T>> d;
-  T h = first_step<T>(rate);
-  for (int k = 0; k < 6; ++k, h /= T(2)) {
-    hs.push_back(h);
-    d.push_back(MatX<T>(difference(h) / h));
-  }
-  return extrapolate_to_zero(hs, d, spread);
-}
-
 template <class T>
 std::string m(const MatX<T>& x) {
   return show_value(MatX<double>(x.unaryExpr([](const T& e) { return to_double(e); })));
