@@ -2,7 +2,7 @@
 #   P/bin/geomech                              the tool (geomech check FILE.cpp works from there)
 #   P/lib/geomech-spec/                        the prebuilt property and harness libraries, the check program's main
 #   P/include/geomech-spec/                    geomech/student.hpp and the core headers it includes
-#   P/share/geomech-spec/                      toolchain.json (paths relative to itself), spec/catalogue.json and quick_profile.json,
+#   P/share/geomech-spec/                      toolchain.json (paths relative to itself), spec/catalogue.json, quick_profile.json and thorough_only.json,
 #                                              the Python and Octave protocol servers
 #   P/lib/cmake/GeomechSpec/                   find_package(GeomechSpec): GeomechSpec::student, geomech_add_check()
 # and `cpack -G DEB` (in the build tree) packs the same tree as a Debian package.
@@ -21,7 +21,7 @@ install(FILES $<TARGET_OBJECTS:geomech_server_driver> DESTINATION ${GM_INSTALL_L
 install(DIRECTORY core/ DESTINATION ${GM_INSTALL_INCLUDEDIR}/core FILES_MATCHING PATTERN "*.hpp")
 install(FILES student/geomech/student.hpp DESTINATION ${GM_INSTALL_INCLUDEDIR}/geomech)
 install(FILES student/geomech/detail/scalar_selection.hpp DESTINATION ${GM_INSTALL_INCLUDEDIR}/geomech/detail)
-install(FILES spec/catalogue.json spec/quick_profile.json DESTINATION ${GM_INSTALL_DATADIR}/spec)
+install(FILES spec/catalogue.json spec/quick_profile.json spec/thorough_only.json DESTINATION ${GM_INSTALL_DATADIR}/spec)
 # The protocol servers that run Python and Octave implementations (core/data_path.hpp finds them).
 install(FILES student/python/geomech_server.py DESTINATION ${GM_INSTALL_DATADIR}/student/python)
 install(FILES student/octave/geomech_server.m DESTINATION ${GM_INSTALL_DATADIR}/student/octave)

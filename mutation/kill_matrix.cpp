@@ -1,6 +1,7 @@
 #include "mutation/kill_matrix.hpp"
 
 #include "harness/quick_profile.hpp"
+#include "harness/thorough_only.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -134,6 +135,69 @@ json quick_profile_json(const QuickProfile& q, const MutantsRun& run) {
   return j;
 }
 
+ThoroughOnly choose_thorough_only(const MutantsRun& run, double min_seconds) {
+  const Cells c = cells_of(run);
+  ThoroughOnly t;
+  t.min_seconds = min_seconds;
+  auto is_50_digit = [](const std::string& check) {
+    static const std::string tail = "/mp50";
+    return check.size() > tail.size() && check.compare(check.size() - tail.size(), tail.size(), tail) == 0;
+  };
+  std::vector<std::string> candidates;
+  for (const auto& [check, cost] : c.cost) {
+    if (!is_50_digit(check)) continue;
+    t.seconds_50_digit += mean_cost(c, check);
+    if (mean_cost(c, check) >= min_seconds) candidates.push_back(check);
+  }
+  t.candidates = static_cast<int>(candidates.size());
+  // Most costly first, so that of two checks killing the same mutants the cheaper one is kept.
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [&](const std::string& a, const std::string& b) { return mean_cost(c, a) > mean_cost(c, b); });
+  std::map<std::size_t, int> killers;  // mutant -> checks kept that kill it
+  for (const auto& [check, ks] : c.kills)
+    for (std::size_t m : ks) ++killers[m];
+  t.killable = static_cast<int>(killers.size());
+  for (const auto& check : candidates) {
+    const auto it = c.kills.find(check);
+    const bool all_killed_elsewhere =
+        it == c.kills.end() || std::all_of(it->second.begin(), it->second.end(), [&](std::size_t m) { return killers[m] > 1; });
+    if (!all_killed_elsewhere) continue;
+    if (it != c.kills.end())
+      for (std::size_t m : it->second) --killers[m];
+    t.checks.push_back({check, mean_cost(c, check), it == c.kills.end() ? 0 : static_cast<int>(it->second.size())});
+    t.seconds_left_out += mean_cost(c, check);
+  }
+  for (const auto& [m, n] : killers) t.killed_by_kept += n > 0;
+  return t;
+}
+
+std::string thorough_only_summary(const ThoroughOnly& t) {
+  std::ostringstream os;
+  os << "left to --thorough for an implementation behind the protocol: " << t.checks.size() << " of the " << t.candidates
+     << " 50-digit checks costing " << secs(t.min_seconds) << " s or more per mutant (" << secs(t.seconds_left_out)
+     << " s of the " << secs(t.seconds_50_digit) << " s all 50-digit checks cost); the checks kept kill "
+     << t.killed_by_kept << " of the " << t.killable << " mutants the matrix kills\n";
+  return os.str();
+}
+
+json thorough_only_json(const ThoroughOnly& t, const MutantsRun& run) {
+  json j;
+  j["format"] = harness::kThoroughOnlyFormat;
+  j["made_by"] = "geomech mutants --matrix --case-factor " + secs(run.options.case_factor) + " --seed " +
+                 std::to_string(run.options.seed) + " --write-thorough-only FILE";
+  j["rule"] = "the 50-digit checks costing at least min_seconds per mutant in the matrix, most costly first, each left "
+              "out when every mutant it kills is still killed by a check that is kept";
+  j["min_seconds"] = t.min_seconds;
+  j["candidates"] = t.candidates;
+  j["killable"] = t.killable;
+  j["killed_by_kept"] = t.killed_by_kept;
+  j["seconds_left_out"] = t.seconds_left_out;
+  j["seconds_50_digit"] = t.seconds_50_digit;
+  j["checks"] = json::array();
+  for (const auto& c : t.checks) j["checks"].push_back({{"check", c.check}, {"seconds", c.seconds}, {"killed", c.killed}});
+  return j;
+}
+
 std::string matrix_markdown(const MutantsRun& run) {
   std::ostringstream os;
   const QuickProfile q = choose_quick_profile(run);
@@ -157,6 +221,12 @@ std::string matrix_markdown(const MutantsRun& run) {
         "(spec/quick_profile.json):\n\n| # | check | mutants killed so far |\n|---|---|---|\n";
   for (std::size_t i = 0; i < q.checks.size(); ++i)
     os << "| " << i + 1 << " | " << q.checks[i] << " | " << q.cumulative[i] << " |\n";
+  const ThoroughOnly t = choose_thorough_only(run);
+  os << "\n## 50-digit runs left to --thorough\n\n" << thorough_only_summary(t) << "\n"
+     << "An implementation behind the protocol (Python, untrusted C++) skips these unless checked with --thorough "
+        "(spec/thorough_only.json); every mutant each one kills is killed by a check that is kept:\n\n"
+     << "| check | killed | cost (s) |\n|---|---|---|\n";
+  for (const auto& c : t.checks) os << "| " << c.check << " | " << c.killed << " | " << secs(c.seconds) << " |\n";
   return os.str();
 }
 

@@ -44,4 +44,28 @@ std::string quick_profile_summary(const QuickProfile& q);
 nlohmann::json quick_profile_json(const QuickProfile& q, const MutantsRun& run);
 std::string matrix_markdown(const MutantsRun& run);
 
+// The 50-digit runs an implementation behind the protocol leaves to `geomech check --thorough`
+// (spec/thorough_only.json, harness/thorough_only.hpp). An interpreted implementation computes in
+// 50 digits a hundred times slower than compiled code, and a few 50-digit runs (long flows, the
+// variational principles) are nearly all of its check's time. Chosen here so that no mutant the
+// matrix kills is lost: the 50-digit checks costing at least `min_seconds` per mutant, most costly
+// first, each left out when every mutant it kills is still killed by a check that is kept.
+struct ThoroughOnly {
+  struct Check {
+    std::string check;  // "property/mp50"
+    double seconds = 0; // mean cost per mutant in the matrix
+    int killed = 0;     // mutants it kills, every one killed by a kept check too
+  };
+  std::vector<Check> checks;
+  double min_seconds = 0;
+  int candidates = 0;          // 50-digit checks costing at least min_seconds
+  int killable = 0;            // killed by some check of the matrix
+  int killed_by_kept = 0;      // killed by the checks kept (= killable, by construction)
+  double seconds_left_out = 0; // the checks left out: their mean costs, summed
+  double seconds_50_digit = 0; // every 50-digit check's mean cost, summed
+};
+ThoroughOnly choose_thorough_only(const MutantsRun& run, double min_seconds = 0.05);
+std::string thorough_only_summary(const ThoroughOnly& t);
+nlohmann::json thorough_only_json(const ThoroughOnly& t, const MutantsRun& run);
+
 }  // namespace gm::mutation

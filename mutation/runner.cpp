@@ -468,10 +468,45 @@ std::string json_report(const MutantsRun& run) {
   return j.dump(1);
 }
 
+MutantsRun load_mutants_report(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": cannot read a mutants report");
+  MutantsRun run;
+  try {
+    const json j = json::parse(in);
+    run.options.case_factor = j.at("case_factor").get<double>();
+    run.options.seed = j.at("seed").get<std::uint64_t>();
+    run.options.matrix = j.contains("quick_profile");
+    run.seconds = j.value("seconds", 0.0);
+    run.baseline_failures = j.value("baseline_failures", std::vector<std::string>{});
+    for (const auto& m : j.at("mutants")) {
+      MutantResult r;
+      r.name = m.at("name").get<std::string>();
+      r.slot = m.value("slot", "");
+      r.op = m.value("operator", "");
+      r.op_class = m.value("class", "");
+      r.integrator = m.value("integrator", "");
+      r.description = m.value("description", "");
+      r.equivalent = m.value("equivalent", false);
+      r.equivalent_alone_only = m.value("equivalent_alone_only", false);
+      r.equivalence_argument = m.value("equivalence_argument", "");
+      r.spec_entries = m.value("spec_entries", std::vector<std::string>{});
+      r.full = mode_from(m.at("full"));
+      r.alone = mode_from(m.at("alone"));
+      r.seconds = m.value("seconds", 0.0);
+      run.results.push_back(std::move(r));
+    }
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": not a mutants report (" + e.what() + ")");
+  }
+  if (!run.options.matrix) throw std::runtime_error(path + ": the report has no kill matrix (made without --matrix)");
+  return run;
+}
+
 int mutants_command(const MutantsOptions& o) {
   MutantsRun run;
   try {
-    run = run_mutants(o);
+    run = o.from_report.empty() ? run_mutants(o) : load_mutants_report(o.from_report);
   } catch (const std::exception& e) {
     std::cerr << "geomech mutants: " << e.what() << "\n";
     return 2;
@@ -499,12 +534,18 @@ int mutants_command(const MutantsOptions& o) {
       harness::write_file_atomically(o.report_dir + "/mutants.json", json_report(run));
       std::cout << "report: " << o.report_dir << "/mutants.md\n";
     }
-    if (o.matrix) {
+    if (o.matrix || !o.from_report.empty()) {
       const QuickProfile q = choose_quick_profile(run);
       std::cout << quick_profile_summary(q);
       if (!o.quick_profile_out.empty()) {
         harness::write_file_atomically(o.quick_profile_out, quick_profile_json(q, run).dump(1) + "\n");
         std::cout << "quick profile: " << o.quick_profile_out << "\n";
+      }
+      const ThoroughOnly t = choose_thorough_only(run);
+      std::cout << thorough_only_summary(t);
+      if (!o.thorough_only_out.empty()) {
+        harness::write_file_atomically(o.thorough_only_out, thorough_only_json(t, run).dump(1) + "\n");
+        std::cout << "50-digit runs left to --thorough: " << o.thorough_only_out << "\n";
       }
     }
   } catch (const std::exception& e) {

@@ -29,6 +29,12 @@ struct MutantsOptions {
   // profile chosen from it (mutation/kill_matrix.hpp), written to `quick_profile_out` if set.
   bool matrix = false;
   std::string quick_profile_out;
+  // The 50-digit runs an implementation behind the protocol leaves to `geomech check --thorough`
+  // (choose_thorough_only), written to this file if set.
+  std::string thorough_only_out;
+  // A mutants.json written by an earlier `--matrix --report` run: its matrix is read instead of
+  // running the mutants again (28 minutes on 2 cores), to choose the profiles from it anew.
+  std::string from_report;
 };
 
 struct ModeResult {
@@ -87,6 +93,8 @@ std::map<std::string, Equivalence> load_equivalent(const std::string& path);
 std::string default_equivalent_path();
 
 MutantsRun run_mutants(const MutantsOptions& o);
+// The run recorded in a mutants.json (json_report); throws std::runtime_error naming the file.
+MutantsRun load_mutants_report(const std::string& path);
 Tally tally(const MutantsRun& r, bool alone, const std::string& slot = "", const std::string& spec = "");
 std::string console_table(const MutantsRun& r);
 std::string markdown_report(const MutantsRun& r);

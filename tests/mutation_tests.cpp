@@ -2,6 +2,7 @@
 // killed, and a mutant listed as equivalent is left out of the score.
 #include "impl/reference_subject.hpp"
 #include "mutation/catalogue.hpp"
+#include "mutation/kill_matrix.hpp"
 #include "mutation/runner.hpp"
 
 #include <gtest/gtest.h>
@@ -73,3 +74,34 @@ TEST(Mutation, EquivalentMutantIsNotCounted) {
 }
 
 }  // namespace
+
+// Issue 32: the 50-digit runs left to --thorough never lose a kill. Of two costly 50-digit checks
+// killing the same mutant, the costlier waits and the cheaper is kept; one killing a mutant no
+// other check kills is kept; a cheap one is never a candidate.
+TEST(Mutation, RunsLeftToThoroughKeepEveryKill) {
+  using namespace gm::mutation;
+  MutantsRun run;
+  run.options.matrix = true;
+  auto mutant = [&](const std::string& name, std::map<std::string, std::pair<bool, double>> cells) {
+    MutantResult r;
+    r.name = name;
+    r.full.ran = true;
+    r.full.killed = true;
+    r.full.cells = std::move(cells);
+    run.results.push_back(r);
+  };
+  mutant("m1", {{"a/mp50", {true, 2.0}}, {"b/double", {true, 0.01}}, {"e/mp50", {false, 1.0}}});
+  mutant("m2", {{"c/mp50", {true, 1.0}}, {"b/double", {false, 0.01}}});
+  mutant("m3", {{"d/mp50", {true, 0.01}}});
+  mutant("m4", {{"x/mp50", {true, 3.0}}, {"y/mp50", {true, 0.5}}});
+  const ThoroughOnly t = choose_thorough_only(run, 0.05);
+  std::vector<std::string> left;
+  for (const auto& c : t.checks) left.push_back(c.check);
+  EXPECT_EQ(left, (std::vector<std::string>{"x/mp50", "a/mp50", "e/mp50"}));
+  EXPECT_EQ(t.candidates, 5);  // a, c, e, x, y
+  EXPECT_EQ(t.killable, 4);
+  EXPECT_EQ(t.killed_by_kept, 4);
+  const auto j = thorough_only_json(t, run);
+  EXPECT_EQ(j.at("checks").size(), 3u);
+  EXPECT_EQ(j.at("format"), "geomech-thorough-only 1");
+}

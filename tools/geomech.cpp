@@ -624,6 +624,13 @@ int main(int argc, char** argv) {
                 "profile chosen from it (in the report)");
   mut->add_option("--write-quick-profile", mo.quick_profile_out,
                   "with --matrix: write the quick profile (`geomech check --quick`) to this file (spec/quick_profile.json)");
+  mut->add_option("--write-thorough-only", mo.thorough_only_out,
+                  "with --matrix: write the 50-digit runs an implementation behind the protocol leaves to `geomech check "
+                  "--thorough` to this file (spec/thorough_only.json)");
+  mut->add_option("--from-report", mo.from_report,
+                  "read the kill matrix of an earlier `--matrix --report DIR` run (DIR/mutants.json) instead of running the "
+                  "mutants again, and choose the profiles from it")
+      ->check(CLI::ExistingFile);
   mut->add_option("--case-factor", mo.case_factor, "multiplies the properties' case counts (default 0.3)")
       ->check(CLI::PositiveNumber);
   mut->add_option("--seed", mo.seed, "base seed (default fixed)");
