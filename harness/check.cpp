@@ -46,6 +46,12 @@ bool subject_provides(const SubjectSet& s, ScalarKind k, const std::string& slot
   });
 }
 
+// Every slot p needs is provided in scalar k (otherwise its verdict is NOT PROVIDED, with why).
+bool provides_needs(const SubjectSet& s, ScalarKind k, const Property& p) {
+  return std::all_of(p.needs.begin(), p.needs.end(),
+                     [&](const std::string& need) { return !is_slot_name(need) || subject_provides(s, k, need); });
+}
+
 bool has_step(const Property& p, const auto& integrator) { return has_step_kind(integrator, p.step); }
 
 // The integrators of `s` in scalar k that property p drives.
@@ -403,6 +409,13 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     for (ScalarKind k : cfg.scalars) {
       if (!p.runs_in(k)) continue;
       if (!cfg.only_checks.empty() && !cfg.only_checks.count(p.id + "/" + scalar_name(k))) continue;
+      if (cfg.thorough_only.count(p.id + "/" + scalar_name(k))) {
+        // Listed, not run; one whose slots are missing stays NOT PROVIDED, which says more.
+        if (provides_needs(s, k, p) && (p.scope != Scope::Integrator || !integrators_for(p, s, k).empty())) {
+          result.left_to_thorough.push_back(p.id + " [" + scalar_name(k) + "]");
+          continue;
+        }
+      }
       if (p.scope == Scope::Integrator) {
         auto names = integrators_for(p, s, k);
         const bool has_any = !names.empty();
@@ -430,7 +443,10 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     }
     if (!cfg.integrator.empty()) sel << "; integrator " << cfg.integrator;
     if (!cfg.only_checks.empty()) sel.str(cfg.selection_note);
+    if (!result.left_to_thorough.empty())
+      sel << "; " << result.left_to_thorough.size() << " costly 50-digit runs left to --thorough";
     result.selection = sel.str();
+    result.thorough_only_note = result.left_to_thorough.empty() ? "" : cfg.thorough_only_note;
   }
 
   // The order that finds the likely mistake first (issue 32): what failed last time; then every

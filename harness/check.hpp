@@ -41,6 +41,9 @@ struct SubjectInfo {
   // function to fix in that language ("Python function `casimir` in mine.py") instead of the slot,
   // and its checks get longer by default (timeout_factor).
   std::string language;
+  // Behind the protocol (harness/remote_subject.hpp): every slot call is a round trip to another
+  // process, so the costly 50-digit runs of spec/thorough_only.json wait for --thorough.
+  bool out_of_process = false;
 };
 
 // An interpreted implementation computes 50-digit flows tens of times slower than compiled code:
@@ -59,6 +62,10 @@ struct CheckConfig {
   std::string integrator;               // only this integrator (empty: all)
   std::set<std::string> only_checks;    // only these "property/scalar" (empty: all): --quick
   std::string selection_note;           // said with the selection (the quick profile's provenance)
+  // Left out and listed as such ("property/scalar"): the costly 50-digit runs an implementation
+  // behind the protocol leaves to --thorough (harness/thorough_only.hpp), and why.
+  std::set<std::string> thorough_only;
+  std::string thorough_only_note;
   RunOptions run;                       // seed, case counts, reproduce string
   double timeout_seconds = 60;          // per (property, scalar, integrator)
   bool timeout_given = false;           // --timeout was given: timeout_factor() does not apply
@@ -101,6 +108,9 @@ struct CheckResult {
   std::vector<Verdict> portraits;  // integrator pictures: verdict-shaped carriers of figure series
   double seconds = 0;
   bool narrowed = false;  // a selection of properties, scalars or integrators, not the whole suite
+  // Checks this run left to --thorough ("property [mp50]"), and why (CheckConfig::thorough_only).
+  std::vector<std::string> left_to_thorough;
+  std::string thorough_only_note;
 
   // Which properties exercised each provided slot ("integrator NAME" for an integrator's step):
   // the properties that ran (not NOT PROVIDED) and need it.

@@ -1,5 +1,6 @@
 #include "harness/cli.hpp"
 #include "harness/quick_profile.hpp"
+#include "harness/thorough_only.hpp"
 
 #include "harness/console_stream.hpp"
 #include "harness/report.hpp"
@@ -50,6 +51,9 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_flag("--quick", o.quick,
                "only the checks of the quick profile: the few that kill every mutant the whole suite kills, chosen from "
                "the kill matrix (spec/quick_profile.json); the full check stays the default");
+  app.add_flag("--thorough", o.thorough,
+               "for a Python implementation or an untrusted one: also the costly 50-digit runs it otherwise leaves out "
+               "(spec/thorough_only.json: in the kill matrix every mutant they kill is killed by a check that is kept)");
   app.add_flag("--definitions", o.definitions_only,
                "only every slot's own definition check, in double (a first look; no report unless --report)");
 }
@@ -133,6 +137,7 @@ std::vector<std::string> to_args(const CheckCliOptions& o) {
   if (o.quiet) a.push_back("--quiet");
   if (o.definitions_only) a.push_back("--definitions");
   if (o.quick) a.push_back("--quick");
+  if (o.thorough) a.push_back("--thorough");
   return a;
 }
 
@@ -149,6 +154,18 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
   // the previous run of this report run first.
   CheckConfig streaming = cfg;
   streaming.failed_before = failed_checks_in_report(o.report_dir);
+  // Issue 32: behind the protocol, the whole check leaves its costliest 50-digit runs to --thorough
+  // (a selection by name, a replay or --quick runs what it names).
+  if (info.out_of_process && !o.thorough && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty() && !o.quick &&
+      !o.definitions_only) {
+    try {
+      const ThoroughOnlySelection t = load_thorough_only(default_thorough_only_path());
+      streaming.thorough_only = t.checks;
+      streaming.thorough_only_note = t.provenance;
+    } catch (const std::exception& e) {
+      std::cerr << "geomech: warning: " << e.what() << " (every 50-digit run is done)\n";
+    }
+  }
   ConsoleStream console(subject.name, info, cfg.run.seed, o.quiet, std::cout, std::cerr, ::isatty(STDERR_FILENO) != 0);
   streaming.listeners.push_back(&console);
   const CheckResult r = run_check(subject, info, streaming);
@@ -162,7 +179,10 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
     std::cout << r.subject << ": " << r.verdict_word() << " (" << r.count(Outcome::Pass) << " PASS, "
               << r.count(Outcome::Fail) << " FAIL, " << r.count(Outcome::NotProvided) << " NOT PROVIDED, "
               << r.count(Outcome::Crash) << " CRASH, " << r.count(Outcome::Timeout) << " TIMEOUT, "
-              << r.count(Outcome::Error) << " ERROR)\n";
+              << r.count(Outcome::Error) << " ERROR)"
+              << (r.left_to_thorough.empty() ? "" : "; " + std::to_string(r.left_to_thorough.size()) +
+                                                       " costly 50-digit runs left to --thorough")
+              << "\n";
     for (const auto& u : r.unchecked) std::cout << "UNCHECKED: " << u << "\n";  // why it is not a pass
   } else {
     std::cout << console_report(r, c);

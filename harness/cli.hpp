@@ -38,6 +38,9 @@ struct CheckCliOptions {
   bool definitions_only = false;
   // The quick profile (harness/quick_profile.hpp): only its checks.
   bool quick = false;
+  // Also the costly 50-digit runs that an implementation behind the protocol otherwise leaves out
+  // (harness/thorough_only.hpp); nothing changes for an implementation linked in.
+  bool thorough = false;
 };
 
 void add_check_options(CLI::App& app, CheckCliOptions& o);

@@ -559,6 +559,7 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   // one on its worker's server; without, each check's process starts its own copy.
   if (!conn->sessions()) conn->stop();
   info.prepare_worker = [conn](int w) { conn->prepare_worker(w); };
+  info.out_of_process = true;
   info.worker_done = [conn](int w, bool normally) { conn->worker_done(w, normally); };
   SubjectSet s;
   s.name = name;

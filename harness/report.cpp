@@ -614,6 +614,18 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     }
     md << "\n";
   }
+  if (!r.left_to_thorough.empty()) {
+    md << "## Left to --thorough\n\n"
+       << r.left_to_thorough.size() << " costly 50-digit runs were not done: an implementation behind the protocol leaves "
+          "them to `--thorough`, since " << md_cell(r.thorough_only_note) << ". Each of these properties ran in double "
+          "(and in rationals where it is exact), and every slot's own check ran in 50 digits: ";
+    bool first = true;
+    for (const auto& c : r.left_to_thorough) {
+      md << (first ? "" : ", ") << "`" << c << "`";
+      first = false;
+    }
+    md << ".\n\n";
+  }
   md << "Slots provided:\n\n";
   for (const char* s : {"double", "mp50", "exact"}) {
     auto it = r.provided.find(s);
@@ -711,13 +723,15 @@ std::string junit_report(const CheckResult& r) {
     if (v.outcome == Outcome::Crash || v.outcome == Outcome::Timeout || v.outcome == Outcome::Error) ++errors;
     if (v.outcome == Outcome::NotProvided) ++skipped;
   }
+  skipped += static_cast<int>(r.left_to_thorough.size());
+  const std::size_t tests = r.verdicts.size() + r.left_to_thorough.size();
   char time_buf[32];
   std::snprintf(time_buf, sizeof time_buf, "%.3f", r.seconds);
   std::ostringstream x;
   x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x << "<testsuites name=\"geomech\" tests=\"" << r.verdicts.size() << "\" failures=\"" << failures << "\" errors=\""
+  x << "<testsuites name=\"geomech\" tests=\"" << tests << "\" failures=\"" << failures << "\" errors=\""
     << errors << "\" skipped=\"" << skipped << "\" time=\"" << time_buf << "\">\n";
-  x << "  <testsuite name=\"geomech." << xml_escape(r.subject) << "\" tests=\"" << r.verdicts.size()
+  x << "  <testsuite name=\"geomech." << xml_escape(r.subject) << "\" tests=\"" << tests
     << "\" failures=\"" << failures << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\""
     << time_buf << "\">\n";
   x << "    <properties><property name=\"seed\" value=\"" << r.seed << "\"/></properties>\n";
@@ -749,6 +763,10 @@ std::string junit_report(const CheckResult& r) {
     }
     x << "    </testcase>\n";
   }
+  for (const auto& c : r.left_to_thorough)
+    x << "    <testcase classname=\"" << xml_escape(r.subject + ".mp50") << "\" name=\"" << xml_escape(c)
+      << "\" time=\"0.000\">\n      <skipped message=\"LEFT TO --thorough: " << xml_escape(r.thorough_only_note)
+      << "\"/>\n    </testcase>\n";
   x << "  </testsuite>\n</testsuites>\n";
   return x.str();
 }
@@ -775,6 +793,8 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error})
     counts[outcome_name(o)] = r.count(o);
   j["counts"] = counts;
+  j["left_to_thorough"] = r.left_to_thorough;
+  if (!r.left_to_thorough.empty()) j["left_to_thorough_why"] = r.thorough_only_note;
   json integrators = json::array();
   for (const auto& i : r.integrators) {
     json claims = json::array();

@@ -8,6 +8,7 @@
 #include "harness/reference_flow.hpp"
 #include "harness/report.hpp"
 #include "harness/svg.hpp"
+#include "harness/thorough_only.hpp"
 #include "harness/trajectory.hpp"
 #include "harness/verdict_io.hpp"
 #include "impl/reference_subject.hpp"
@@ -683,6 +684,49 @@ std::vector<std::string> labels(const std::string& suite, const std::string&) {
   if (suite == "TrajectoryFiles") return {"meta", "harness", "bad-input"};
   if (suite == "RemoteSubject" || suite == "ProtocolCodec") return {"meta", "harness", "protocol", "python"};
   return {"meta", "harness"};
+}
+
+// Issue 32: a check left to --thorough is not run, and every report says so (never a silent skip);
+// one whose slots are missing stays NOT PROVIDED, which says more.
+TEST(CheckEngine, ARunLeftToThoroughIsListedNotRun) {
+  CheckConfig cfg = quick({"hat_is_cross_product", "vee_inverts_hat"});
+  cfg.thorough_only = {"hat_is_cross_product/mp50"};
+  cfg.thorough_only_note = "a note on why";
+  const CheckResult r = run_check(reference_subject(), {}, cfg);
+  EXPECT_EQ(find(r, "hat_is_cross_product", "mp50"), nullptr);
+  ASSERT_NE(find(r, "hat_is_cross_product", "double"), nullptr);
+  EXPECT_EQ(find(r, "hat_is_cross_product", "double")->outcome, Outcome::Pass);
+  EXPECT_EQ(find(r, "vee_inverts_hat", "mp50")->outcome, Outcome::Pass);
+  ASSERT_EQ(r.left_to_thorough, std::vector<std::string>{"hat_is_cross_product [mp50]"});
+  EXPECT_TRUE(r.ok());
+  EXPECT_NE(r.selection.find("1 costly 50-digit runs left to --thorough"), std::string::npos) << r.selection;
+  const std::string md = markdown_report(r, nullptr), xml = junit_report(r);
+  EXPECT_NE(md.find("## Left to --thorough"), std::string::npos);
+  EXPECT_NE(md.find("`hat_is_cross_product [mp50]`"), std::string::npos);
+  EXPECT_NE(xml.find("<skipped message=\"LEFT TO --thorough: a note on why\"/>"), std::string::npos) << xml;
+  EXPECT_NE(json_report(r, nullptr).dump().find("\"left_to_thorough\":[\"hat_is_cross_product [mp50]\"]"), std::string::npos);
+
+  SubjectSet no_hat = mutate(reference_subject(), "no_hat", "hat missing", [](auto& sub) { sub.hat = nullptr; });
+  const CheckResult m = run_check(no_hat, {}, cfg);
+  EXPECT_TRUE(m.left_to_thorough.empty());
+  ASSERT_NE(find(m, "hat_is_cross_product", "mp50"), nullptr);
+  EXPECT_EQ(find(m, "hat_is_cross_product", "mp50")->outcome, Outcome::NotProvided);
+}
+
+// spec/thorough_only.json names 50-digit runs of properties that exist (a renamed property would
+// otherwise silently run again, or a typo leave nothing out).
+TEST(CheckEngine, TheRunsLeftToThoroughAreFiftyDigitRunsOfRealProperties) {
+  const ThoroughOnlySelection t = load_thorough_only(default_thorough_only_path());
+  ASSERT_FALSE(t.checks.empty());
+  for (const auto& c : t.checks) {
+    const auto slash = c.find('/');
+    ASSERT_NE(slash, std::string::npos) << c;
+    EXPECT_EQ(c.substr(slash + 1), "mp50") << c;
+    const Property* p = find_property(c.substr(0, slash));
+    ASSERT_NE(p, nullptr) << c;
+    EXPECT_TRUE(p->runs_in(ScalarKind::MP50)) << c;
+  }
+  EXPECT_NE(t.provenance.find("geomech mutants --matrix"), std::string::npos) << t.provenance;
 }
 
 }  // namespace
