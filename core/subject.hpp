@@ -153,6 +153,13 @@ struct Integrator {
   Slot<ManakovState<T>(const MatX<T>& A, const ManakovState<T>& x, const T& h)> manakov_step{"manakov_step"};
   Slot<Vec3Pair<T>(const Vec3<T>& I, const Vec3Pair<T>& QP, const T& h)> clebsch_step{"clebsch_step"};
   Slot<MatXPair<T>(const MatX<T>& A, const MatXPair<T>& QP, const T& h)> manakov_clebsch_step{"manakov_clebsch_step"};
+  // Optional: n consecutive steps from x, the state after each, as n calls of the step would give.
+  // An implementation behind the protocol fills them, so that a long run costs one round trip per
+  // chunk of steps instead of one per step (harness/remote_subject.cpp); properties reach them
+  // through properties/support/step_runs.hpp, which calls the step n times when they are empty.
+  std::function<std::vector<RigidBodyState<T>>(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h, int n)>
+      rigid_body_run;
+  std::function<std::vector<ManakovState<T>>(const MatX<T>& A, const ManakovState<T>& x, const T& h, int n)> manakov_run;
 };
 
 template <class T>

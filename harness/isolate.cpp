@@ -204,6 +204,17 @@ int current_worker() { return g_worker; }
 std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,
                                      const IsolationOptions& o) {
   std::vector<TaskResult> results(tasks.size());
+  std::vector<std::size_t> seq = o.start_order;
+  {
+    std::vector<bool> seen(tasks.size(), false);
+    bool permutation = seq.size() == tasks.size();
+    for (std::size_t i : seq) permutation = permutation && i < tasks.size() && !seen[i] && (seen[i] = true);
+    if (!permutation) {
+      if (!seq.empty()) throw std::invalid_argument("run_isolated: start_order is not a permutation of the tasks");
+      seq.resize(tasks.size());
+      for (std::size_t i = 0; i < seq.size(); ++i) seq[i] = i;
+    }
+  }
   // prepare_worker's failure is the task's: it did not run.
   auto prepare = [&](int w, std::size_t i) {
     if (!o.prepare_worker) return true;
@@ -218,7 +229,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
   };
   if (!o.isolate) {
     g_worker = 0;
-    for (std::size_t i = 0; i < tasks.size(); ++i) {
+    for (std::size_t i : seq) {
       const auto start = Clock::now();
       if (o.on_started) o.on_started(i);
       if (prepare(0, i)) {
@@ -280,7 +291,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
   };
 
   while (next < tasks.size() || !running.empty()) {
-    while (next < tasks.size() && static_cast<int>(running.size()) < jobs) start_one(next++);
+    while (next < tasks.size() && static_cast<int>(running.size()) < jobs) start_one(seq[next++]);
 
     std::vector<pollfd> fds;
     for (const auto& r : running) {

@@ -33,6 +33,9 @@ struct IsolationOptions {
   // means it returned or threw, not that it crashed or was stopped at the timeout.
   std::function<void(int)> prepare_worker;
   std::function<void(int, bool)> worker_done;
+  // The order in which the tasks start: a permutation of their indices (empty: as given). Results
+  // stay indexed as the tasks are.
+  std::vector<std::size_t> start_order;
 };
 
 // The worker slot of the task running in this process (0 outside run_isolated).

@@ -144,10 +144,14 @@ Verdict portrait_from_task(const PortraitTask& task, const TaskResult& result) {
   v.property = task.property;
   v.integrator = task.integrator;
   v.scalar = task.scalar;
+  v.seconds = result.seconds;  // where a check's time goes: the pictures are part of it
   if (result.status == TaskResult::Status::Ok) {
     try {
       auto vs = verdicts_from_string(result.payload);
-      if (!vs.empty()) return vs.front();
+      if (!vs.empty()) {
+        vs.front().seconds = result.seconds;
+        return vs.front();
+      }
     } catch (const std::exception& e) {
       v.message = std::string("the pictures could not be read back: ") + e.what();
     }

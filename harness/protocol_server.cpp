@@ -116,6 +116,7 @@ json hello_for(const SubjectSet& s, const harness::SubjectInfo& info, const std:
   describe(s.q.get(), "exact");
   h["slots"] = slots;
   h["integrators"] = integrators;
+  h["repeat"] = true;
   json notes = json::object();
   for (const auto& [scalar, m] : info.slot_notes)
     for (const auto& [slot, why] : m) notes[scalar][slot] = why;
@@ -133,15 +134,29 @@ json answer(const SubjectSet& s, const json& request) {
   for (const auto& c : request.at("calls")) {
     const std::string scalar = c.value("scalar", "");
     try {
-      json v;
-      if (scalar == "double")
-        v = call_in<double>(s.d.get(), c);
-      else if (scalar == "mp50")
-        v = call_in<Real50>(s.mp.get(), c);
-      else if (scalar == "exact")
-        v = call_in<Rational>(s.q.get(), c);
-      else
+      auto one = [&](const json& call) {
+        if (scalar == "double") return call_in<double>(s.d.get(), call);
+        if (scalar == "mp50") return call_in<Real50>(s.mp.get(), call);
+        if (scalar == "exact") return call_in<Rational>(s.q.get(), call);
         throw std::runtime_error("unknown scalar '" + scalar + "'");
+      };
+      json v;
+      if (c.contains("repeat")) {
+        // A run of steps (docs/PROTOCOL.md): each step's state, encoded as its reply, is the next
+        // step's argument, as if the harness had made the calls one by one.
+        const int n = c["repeat"].is_number_integer() ? c["repeat"].get<int>() : 0;
+        if (!c.contains("integrator") || n < 1 || !c.contains("args") || !c["args"].is_array() || c["args"].size() != 3)
+          throw std::runtime_error("\"repeat\" needs an integrator's step, its three arguments and a count of at least 1");
+        json call = c;
+        v = json::array();
+        for (int k = 0; k < n; ++k) {
+          json x = one(call);
+          call["args"][1] = x;
+          v.push_back(std::move(x));
+        }
+      } else {
+        v = one(c);
+      }
       results.push_back(json{{"ok", std::move(v)}});
     } catch (const std::exception& e) {
       results.push_back(json{{"error", e.what()}, {"traceback", ""}});

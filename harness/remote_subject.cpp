@@ -358,6 +358,7 @@ std::vector<Reply> Connection::call_batch(const std::vector<Call>& calls) {
   for (const auto& c : calls) {
     json j{{"slot", c.slot}, {"scalar", c.scalar}, {"args", c.args}};
     if (!c.integrator.empty()) j["integrator"] = c.integrator;
+    if (c.repeat > 0) j["repeat"] = c.repeat;
     cs.push_back(std::move(j));
   }
   req["calls"] = std::move(cs);
@@ -479,6 +480,7 @@ RemoteDescription parse_hello(const json& h) {
     for (const auto& w : h["warnings"]) d.warnings.push_back(w.is_string() ? w.get<std::string>() : w.dump());
   if (h.contains("unchecked"))
     for (const auto& w : h["unchecked"]) d.unchecked.push_back(w.is_string() ? w.get<std::string>() : w.dump());
+  d.repeat = h.value("repeat", false);
   if (h.contains("scalar_unavailable") && h["scalar_unavailable"].is_object())
     for (const auto& [scalar, why] : h["scalar_unavailable"].items())
       d.scalar_unavailable[scalar] = why.is_string() ? why.get<std::string>() : why.dump();
@@ -509,6 +511,26 @@ struct RemoteSlot<T, R(A...)> {
   }
 };
 
+// An integrator's run of n steps in one call ("repeat": n): the list of the n states.
+template <class T, class State, class Param>
+std::function<std::vector<State>(const Param&, const State&, const T&, int)> remote_run(std::shared_ptr<Connection> conn,
+                                                                                      const char* slot,
+                                                                                      std::string integrator) {
+  return [conn, slot, integrator](const Param& p, const State& x, const T& h, int n) {
+    Call c{slot, scalar_word<T>(), json::array({encode<T, Param>(p), encode<T, State>(x), encode<T, T>(h)}), integrator, n};
+    const json result = conn->call(c);
+    const std::string what = "the run of " + std::to_string(n) + " steps of " + conn->language() + " function '" +
+                             integrator + "." + slot + "' (" + scalar_word<T>() + ")";
+    if (!result.is_array() || static_cast<int>(result.size()) != n)
+      throw ProtocolValueError(what + ": expected a list of " + std::to_string(n) + " states; the reply was " +
+                               result.dump().substr(0, 300));
+    std::vector<State> out;
+    out.reserve(n);
+    for (const auto& r : result) out.push_back(decode<T, State>(r, what));
+    return out;
+  };
+}
+
 template <class T>
 std::shared_ptr<Subject<T>> make_part(const std::shared_ptr<Connection>& conn, const RemoteDescription& d) {
   const char* scalar = scalar_word<T>();
@@ -531,12 +553,15 @@ std::shared_ptr<Subject<T>> make_part(const std::shared_ptr<Connection>& conn, c
       Integrator<T> in;
       in.name = i.name;
       for (const auto& step : i.steps) {
-        if (step == "rigid_body_step")
+        if (step == "rigid_body_step") {
           in.rigid_body_step =
               RemoteSlot<T, RigidBodyState<T>(const Vec3<T>&, const RigidBodyState<T>&, const T&)>::make(conn, "rigid_body_step", i.name);
-        else if (step == "manakov_step")
+          if (d.repeat) in.rigid_body_run = remote_run<T, RigidBodyState<T>, Vec3<T>>(conn, "rigid_body_step", i.name);
+        } else if (step == "manakov_step") {
           in.manakov_step =
               RemoteSlot<T, ManakovState<T>(const MatX<T>&, const ManakovState<T>&, const T&)>::make(conn, "manakov_step", i.name);
+          if (d.repeat) in.manakov_run = remote_run<T, ManakovState<T>, MatX<T>>(conn, "manakov_step", i.name);
+        }
         else if (step == "clebsch_step")
           in.clebsch_step =
               RemoteSlot<T, Vec3Pair<T>(const Vec3<T>&, const Vec3Pair<T>&, const T&)>::make(conn, "clebsch_step", i.name);

@@ -47,6 +47,9 @@ struct Call {
   std::string scalar;  // "double", "mp50", "exact"
   json args;           // an array
   std::string integrator;
+  // An integrator's step taken this many times in a row, the state of each step the next one's
+  // (docs/PROTOCOL.md, "repeat"); the reply is the list of the states. 0: one plain call.
+  int repeat = 0;
 };
 
 // A reply to one call: the encoded result, or the implementation's error text.
@@ -156,6 +159,7 @@ struct RemoteDescription {
   std::vector<std::string> warnings;
   std::vector<std::string> unchecked;                      // written but not checkable (fails the check)
   std::map<std::string, std::string> scalar_unavailable;  // scalar -> why nothing is provided there
+  bool repeat = false;  // the server takes "repeat" on an integrator's step (a run of steps in one call)
 };
 
 // Throws RemoteError for a handshake that is not this protocol (wrong name or version, bad fields).

@@ -36,6 +36,9 @@ struct Method {
   std::string source;      // "subject" or "suite"
   Stepper step;
   int evals_per_step = 0;  // vector-field evaluations per step; 0 when not known (implicit, splitting, the subject's)
+  // n steps at once, the state after each (an implementation behind the protocol: one round trip
+  // for a chunk of the long run; core/subject.hpp's Integrator::rigid_body_run); may be empty.
+  std::function<std::vector<State>(const State&, double, int)> run;
 };
 
 // One system on which steps are compared: the packed start, the 50-digit state at t = 4 (from
@@ -216,13 +219,24 @@ void draw(const Problem& p, Verdict& v, std::vector<std::string>& cheapest, std:
     State x = p.x0;
     double next = 1;
     const auto start = std::chrono::steady_clock::now();
+    std::vector<State> chunk;  // the steps of a run not taken yet (Method::run), in order
+    std::size_t at = 0;
+    bool by_runs = static_cast<bool>(m.run);
     for (int i = 1; i <= kLongSteps; ++i) {
       if (i % 256 == 0 && seconds_since(start) > kLongBudget) {
         cut.push_back(p.label + ", " + m.source + ": " + m.name + " at t = " + sci(i * p.long_step));
         break;
       }
       try {
-        x = m.step(x, p.long_step);
+        if (by_runs && at == chunk.size()) {
+          try {
+            chunk = m.run(x, p.long_step, std::min(256, kLongSteps - i + 1));
+            at = 0;
+          } catch (const std::exception&) {
+            by_runs = false;  // one step at a time from here: an error is met at its own step
+          }
+        }
+        x = by_runs ? chunk[at++] : m.step(x, p.long_step);
       } catch (const std::exception& e) {
         failed.push_back(p.label + ", " + m.source + ": " + m.name + " in the long run at t = " + sci(i * p.long_step) + ": " +
                          e.what());
@@ -259,7 +273,16 @@ Problem rigid_body_problem(const Subjects& mine) {
   p.field = [I](const State& s) { return pack(ref::rigid_body_field<double>(I, unpack_rigid_body(s))); };
   p.energy = [I](const State& s) { return rigid_body_energy(I, Vec3<double>(s[0], s[1], s[2])); };
   auto wrap = [I](auto step) { return [I, step](const State& s, double h) { return pack(step(I, unpack_rigid_body(s), h)); }; };
-  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->rigid_body_step), 0});
+  auto wrap_run = [I](auto run) -> std::function<std::vector<State>(const State&, double, int)> {
+    if (!run) return {};
+    return [I, run](const State& s, double h, int n) {
+      std::vector<State> out;
+      for (const auto& x : run(I, unpack_rigid_body(s), h, n)) out.push_back(pack(x));
+      return out;
+    };
+  };
+  for (const auto* in : mine)
+    p.methods.push_back({in->name, "subject", wrap(in->rigid_body_step), 0, wrap_run(in->rigid_body_run)});
   p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::rk4_step<double>), 4},
                {"implicit_midpoint", "suite", wrap(ref::implicit_midpoint_step<double>), 0},
                {"lie_poisson_splitting", "suite", wrap(ref::lie_poisson_splitting_step<double>), 0}});
@@ -319,7 +342,16 @@ Problem manakov_problem(const Subjects& mine) {
       return pack(y.M, y.O);
     };
   };
-  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->manakov_step), 0});
+  auto wrap_run = [A, unpack](auto run) -> std::function<std::vector<State>(const State&, double, int)> {
+    if (!run) return {};
+    return [A, unpack, run](const State& s, double h, int n) {
+      std::vector<State> out;
+      for (const auto& y : run(A, unpack(s), h, n)) out.push_back(pack(y.M, y.O));
+      return out;
+    };
+  };
+  for (const auto* in : mine)
+    p.methods.push_back({in->name, "subject", wrap(in->manakov_step), 0, wrap_run(in->manakov_run)});
   p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_rk4_step<double>), 4},
                {"implicit_midpoint", "suite", wrap(ref::manakov_implicit_midpoint_step<double>), 0},
                {"isospectral_cayley", "suite", wrap(ref::manakov_isospectral_step<double>), 0}});

@@ -22,6 +22,7 @@
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
 #include "properties/support/long_time.hpp"
+#include "properties/support/step_runs.hpp"
 #include "properties/support/named_inputs.hpp"
 #include "properties/support/roundoff_claim.hpp"
 #include "properties/support/scalar_text.hpp"
@@ -218,10 +219,11 @@ void integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const
   const int steps = long_run_steps<T>(c.bounded_energy, 100000, 4000, 1000);
   const std::string inputs = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + "    h = 1/4\n";
   showing_inputs([&] { return inputs; }, [&] {
+    auto run = runs::rigid_body_steps(in, I, x, h, steps);
     long_time_energy<T>(
         in.name, c.bounded_energy, "the energy h (3.4) over a long run", steps, h,
         [&](int n) {
-          if (n > 0) x = in.rigid_body_step(I, x, h);
+          if (n > 0) x = run.next();
           return dyn::energy(I, x.Pi);
         });
   });
@@ -239,10 +241,11 @@ void manakov_integrator_bounded_energy(const Subject<T>&, const Integrator<T>& i
   const int steps = long_run_steps<T>(c.bounded_energy, 20000, 400, 100);
   const std::string inputs = named("A", A) + named("M", x.M) + named("O", x.O) + "    h = 1/8\n";
   showing_inputs([&] { return inputs; }, [&] {
+    auto run = runs::manakov_steps(in, A, x, h, steps);
     long_time_energy<T>(
         in.name, c.bounded_energy, "the energy -tr(Omega M)/4 over a long run, n = " + std::to_string(n), steps, h,
         [&](int s) {
-          if (s > 0) x = in.manakov_step(A, x, h);
+          if (s > 0) x = run.next();
           return dyn::manakov_energy(a, x.M);
         });
   });

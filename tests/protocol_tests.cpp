@@ -233,6 +233,34 @@ TEST(RemoteSubject, OctaveCorrectMatchesPython) {
   EXPECT_LT((y.O - z.O).norm(), 1e-14);
 }
 
+// A run of steps ("repeat", docs/PROTOCOL.md) gives exactly the states of the calls one by one, in
+// every server that offers it: Python (double and 50 digits) and Octave.
+TEST(RemoteSubject, ARunOfStepsIsTheStepsOneByOne) {
+  harness::SubjectInfo pi;
+  const SubjectSet p = remote_subject(python("correct.py"), "correct_py", pi);
+  auto check = [](const auto& in, const auto& I, auto x, const auto& h) {
+    ASSERT_TRUE(in.rigid_body_run) << in.name;
+    const auto run = in.rigid_body_run(I, x, h, 5);
+    ASSERT_EQ(run.size(), 5u);
+    for (int k = 0; k < 5; ++k) {
+      x = in.rigid_body_step(I, x, h);
+      EXPECT_EQ(run[k].Pi, x.Pi) << in.name << " step " << k + 1;
+      EXPECT_EQ(run[k].O, x.O) << in.name << " step " << k + 1;
+    }
+  };
+  const Vec3<double> I(2, 1, 0.5), P(0.25, -1.5, 3);
+  for (const auto& in : p.d->integrators) check(in, I, RigidBodyState<double>{P, Mat3<double>::Identity()}, 0.125);
+  for (const auto& in : p.mp->integrators)
+    check(in, I.cast<Real50>().eval(), RigidBodyState<Real50>{P.cast<Real50>(), Mat3<Real50>::Identity()}, Real50(1) / 8);
+  if (std::system("command -v octave-cli > /dev/null 2>&1") != 0) GTEST_SKIP() << "octave-cli is not installed";
+  harness::SubjectInfo oi;
+  std::string language, why;
+  auto oc = std::make_shared<Connection>(
+      server_command(std::string(GM_SOURCE_DIR) + "/examples/students/correct.m", &language, &why), language);
+  const SubjectSet o = remote_subject(oc, "correct_m", oi);
+  for (const auto& in : o.d->integrators) check(in, I, RigidBodyState<double>{P, Mat3<double>::Identity()}, 0.125);
+}
+
 TEST(RemoteSubject, RoundTripCost) {
   auto conn = python("correct.py");
   conn->hello();

@@ -3,6 +3,7 @@
 #include "properties/support/generators.hpp"
 #include "properties/support/long_time.hpp"
 #include "properties/support/order_claim.hpp"
+#include "properties/support/step_runs.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include "tests/support/rc_failure.hpp"
@@ -198,6 +199,45 @@ TEST(OrderClaim, AnExactStepHoldsAnyClaimedOrder) {
   EXPECT_FALSE(recorded_claims()[0].holds);
   recorded_claims().clear();
   recorded_notes().clear();
+}
+
+// A long run fetched in chunks gives the states of the steps one by one; a chunk whose run raises
+// is stepped again one step at a time, so the step that raises does so at its own place; without
+// a run every state is one call of the step; no chunk goes beyond the steps asked for.
+TEST(StepRuns, ChunksGiveTheStepsOneByOneAndAFailingRunFallsBackToSteps) {
+  using State = RigidBodyState<double>;
+  int calls = 0, longest = 0;
+  const Vec3<double> I(1, 2, 3);
+  auto step = [&](const Vec3<double>&, const State& x, const double& h) {
+    ++calls;
+    if (x.Pi(0) >= 100) throw std::runtime_error("step 100 raises");
+    return State{x.Pi + Vec3<double>(h, 0, 0), x.O};
+  };
+  auto run = [&](const Vec3<double>& p, const State& x, const double& h, int n) {
+    longest = std::max(longest, n);
+    std::vector<State> out;
+    State y = x;
+    for (int k = 0; k < n; ++k) out.push_back(y = step(p, y, h));
+    return out;
+  };
+  const State x0{Vec3<double>::Zero(), Mat3<double>::Identity()};
+  runs::StepStream<State, Vec3<double>, double> chunked(step, run, I, x0, 1.0, 1000, 64);
+  for (int k = 1; k <= 100; ++k) EXPECT_EQ(chunked.next().Pi(0), k);
+  try {
+    chunked.next();
+    FAIL() << "step 101 must raise";
+  } catch (const std::runtime_error& e) {
+    EXPECT_STREQ(e.what(), "step 100 raises");
+  }
+  EXPECT_EQ(longest, 64);
+  runs::StepStream<State, Vec3<double>, double> plain(step, {}, I, x0, 1.0, 10);
+  calls = 0;
+  for (int k = 1; k <= 10; ++k) EXPECT_EQ(plain.next().Pi(0), k);
+  EXPECT_EQ(calls, 10);
+  runs::StepStream<State, Vec3<double>, double> short_run(step, run, I, x0, 1.0, 5, 64);
+  longest = 0;
+  for (int k = 1; k <= 5; ++k) EXPECT_EQ(short_run.next().Pi(0), k);
+  EXPECT_EQ(longest, 5);
 }
 
 }  // namespace

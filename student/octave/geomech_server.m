@@ -169,6 +169,21 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
           if strcmp(integ{q}.name, call.integrator), f = integ{q}.(call.slot); end
         end
         if isempty(f), error('geomech:integrator', 'no integrator %s with a %s', call.integrator, call.slot); end
+        if isfield(call, 'repeat')
+          % A run of steps (docs/PROTOCOL.md): each step's state, encoded as its reply would be, is
+          % the next step's argument, as if the harness had made the calls one by one.
+          n = call.repeat;
+          if ~isnumeric(n) || n < 1 || numel(vals) ~= 3
+            error('geomech:repeat', '"repeat" needs an integrator''s step, its three arguments and a count of at least 1');
+          end
+          states = cell(1, n);
+          for s = 1:n
+            states{s} = gm_encode(kinds.result, f(vals{:}));
+            vals{2} = gm_decode_kind(kinds.args{2}, jsondecode(states{s}, 'makeValidName', false));
+          end
+          results{c} = ['{"ok":[' strjoin(states, ',') ']}'];
+          continue;
+        end
         r = f(vals{:});
       else
         r = feval(call.slot, vals{:});
@@ -316,6 +331,6 @@ end
 quoted = cellfun(@(s) ['"' s '"'], have, 'UniformOutput', false);
 gm_send(out, sprintf(['{"protocol":"geomech-slots","version":2,"language":"octave","language_version":%s,' ...
                       '"description":%s,"slots":{"double":[%s]},"integrators":[%s],"notes":{},"warnings":[],' ...
-                      '"sessions":true}'], ...
+                      '"sessions":true,"repeat":true}'], ...
                      jsonencode(version()), jsonencode(desc), strjoin(quoted, ','), strjoin(ijson, ',')));
 gm_serve(out, false, slot_kinds, integ, step_kinds, target, tmp);

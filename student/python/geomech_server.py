@@ -365,9 +365,22 @@ def answer(req, functions, steps):
                 fn, sig = functions.get(slot, (None, None))
                 if fn is None:
                     raise LookupError("no function named %r" % slot)
-            args = [decode(k, scalar, a) for k, a in zip(sig[1], call.get("args", []))]
-            value = fn(*args)
-            results.append({"ok": encode(sig[0], scalar, value)})
+            raw = list(call.get("args", []))
+            repeat = call.get("repeat")
+            if repeat is None:
+                args = [decode(k, scalar, a) for k, a in zip(sig[1], raw)]
+                results.append({"ok": encode(sig[0], scalar, fn(*args))})
+                continue
+            # A run of steps (docs/PROTOCOL.md): each step's state, encoded as its reply would be, is
+            # the next step's argument, as if the harness had made the calls one by one.
+            if not call.get("integrator") or not isinstance(repeat, int) or repeat < 1 or len(raw) != 3:
+                raise ValueError("\"repeat\" needs an integrator's step, its three arguments and a count of at least 1")
+            states = []
+            for _ in range(repeat):
+                args = [decode(k, scalar, a) for k, a in zip(sig[1], raw)]
+                raw[1] = encode(sig[0], scalar, fn(*args))
+                states.append(raw[1])
+            results.append({"ok": states})
         except Inexact as e:
             results.append({"error": inert("%s returned %s" % (slot, e))})
         except SystemExit as e:
@@ -510,7 +523,7 @@ def main():
     hello = {"protocol": PROTOCOL, "version": VERSION, "language": "python",
              "language_version": sys.version.split()[0], "description": description,
              "slots": slots, "integrators": integrators, "notes": notes, "warnings": warnings,
-             "mp50_bits": MP_BITS, "sessions": hasattr(os, "fork")}
+             "mp50_bits": MP_BITS, "sessions": hasattr(os, "fork"), "repeat": True}
     _out.write(json.dumps(hello) + "\n")
     _out.flush()
 
