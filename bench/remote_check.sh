@@ -3,6 +3,8 @@
 # property, every scalar they provide), beside the same check of the C++ one in the same run, with
 # the protocol's cost per call and the checks that took longest (where the time goes).
 #   bench/remote_check.sh [build-dir]        (default: build; after ./geomech build)
+#   THOROUGH=1 bench/remote_check.sh           also correct.py with --thorough: the costly 50-digit
+#                                              runs a Python check leaves out, the ratio's other side
 # Prints one line per implementation: wall time, checks, TIMEOUTs, checks cut short by the case
 # budget; then the 8 longest checks of each, then `geomech bench-protocol` for each language.
 set -euo pipefail
@@ -12,11 +14,15 @@ geomech=$build/bin/geomech
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
-for file in examples/students/correct.cpp examples/students/correct.py examples/students/correct.m; do
-  name=$(basename "$file")
+runs=(examples/students/correct.cpp examples/students/correct.py examples/students/correct.m)
+[ "${THOROUGH:-0}" = 1 ] && runs+=("examples/students/correct.py --thorough")
+for run in "${runs[@]}"; do
+  read -r file extra <<<"$run"
+  name=$(basename "$file")${extra:+$extra}
   start=$(date +%s.%N)
   status=0
-  (cd "$root" && "$geomech" check "$file" --quiet --report "$out/$name" >"$out/$name.log" 2>&1) || status=$?
+  # shellcheck disable=SC2086
+  (cd "$root" && "$geomech" check "$file" $extra --quiet --report "$out/$name" >"$out/$name.log" 2>&1) || status=$?
   end=$(date +%s.%N)
   python3 - "$out/$name/verdicts.json" "$name" "$start" "$end" "$status" <<'EOF'
 import json, sys
@@ -27,8 +33,8 @@ ran = [v for v in vs if v.get("outcome") != "NOT PROVIDED"]
 timeouts = sum(1 for v in vs if v.get("outcome") == "TIMEOUT")
 short = sum(1 for v in ran if v.get("cases_planned", 0) and v.get("cases", 0) < v.get("cases_planned", 0))
 cpu = sum(v.get("seconds", 0) for v in ran)
-print("%-12s wall %7.1f s  exit %s  %d checks (%.0f check-seconds)  %d TIMEOUT  %d ran fewer cases than planned"
-      % (name, float(end) - float(start), status, len(ran), cpu, timeouts, short))
+print("%-12s wall %7.1f s  exit %s  %d checks (%.0f check-seconds)  %d TIMEOUT  %d ran fewer cases than planned  %d left to --thorough"
+      % (name, float(end) - float(start), status, len(ran), cpu, timeouts, short, len(d.get("left_to_thorough", []))))
 for v in sorted(ran, key=lambda v: -v.get("seconds", 0))[:8]:
     print("    %7.1f s  %-45s %-6s %s/%s cases" % (v.get("seconds", 0), v["property"], v["scalar"],
                                                   v.get("cases", "?"), v.get("cases_planned", "?")))

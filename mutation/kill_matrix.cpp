@@ -50,6 +50,12 @@ std::string secs(double s) {
   return os.str();
 }
 
+// The command that makes a file from the matrix, with the run's case factor and seed (provenance).
+std::string made_by(const MutantsRun& run, const char* write_option) {
+  return "geomech mutants --matrix --case-factor " + secs(run.options.case_factor) + " --seed " +
+         std::to_string(run.options.seed) + " " + write_option + " FILE";
+}
+
 }  // namespace
 
 std::vector<MatrixRow> kill_matrix(const MutantsRun& run) {
@@ -121,8 +127,7 @@ std::string quick_profile_summary(const QuickProfile& q) {
 json quick_profile_json(const QuickProfile& q, const MutantsRun& run) {
   json j;
   j["format"] = harness::kQuickProfileFormat;
-  j["made_by"] = "geomech mutants --matrix --case-factor " + secs(run.options.case_factor) + " --seed " +
-                 std::to_string(run.options.seed) + " --write-quick-profile FILE";
+  j["made_by"] = made_by(run, "--write-quick-profile");
   j["mutants"] = q.mutants;
   j["killable"] = q.killable;
   j["killed"] = q.killed;
@@ -183,8 +188,7 @@ std::string thorough_only_summary(const ThoroughOnly& t) {
 json thorough_only_json(const ThoroughOnly& t, const MutantsRun& run) {
   json j;
   j["format"] = harness::kThoroughOnlyFormat;
-  j["made_by"] = "geomech mutants --matrix --case-factor " + secs(run.options.case_factor) + " --seed " +
-                 std::to_string(run.options.seed) + " --write-thorough-only FILE";
+  j["made_by"] = made_by(run, "--write-thorough-only");
   j["rule"] = "the 50-digit checks costing at least min_seconds per mutant in the matrix, most costly first, each left "
               "out when every mutant it kills is still killed by a check that is kept";
   j["min_seconds"] = t.min_seconds;
