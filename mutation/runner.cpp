@@ -1,5 +1,6 @@
 #include "mutation/runner.hpp"
 #include "mutation/kill_matrix.hpp"
+#include "mutation/served_mutant.hpp"
 
 #include "harness/isolate.hpp"
 #include "harness/report.hpp"
@@ -237,6 +238,18 @@ MutantsRun run_mutants(const MutantsOptions& o) {
       }
       j["full"] = mode_json(full);
       j["alone"] = mode_json(alone);
+      if (o.through_protocol) {
+        ModeResult served;
+        try {
+          MutantsOptions served_options = o;
+          served_options.matrix = false;
+          served = run_mode(served_mutant(o.program, m.name), props, served_options);
+        } catch (const std::exception& e) {
+          served.ran = true;
+          served.error = e.what();
+        }
+        j["protocol"] = mode_json(served);
+      }
       return j.dump();
     });
   std::size_t done = 0;
@@ -272,6 +285,7 @@ MutantsRun run_mutants(const MutantsOptions& o) {
       const json j = json::parse(tr.payload);
       r.full = mode_from(j.at("full"));
       r.alone = mode_from(j.at("alone"));
+      if (j.contains("protocol")) r.protocol = mode_from(j.at("protocol"));
     } else {
       // A crash or a hang of the whole mutant run is a detection (the suite would report it).
       r.full.ran = true;
@@ -280,6 +294,7 @@ MutantsRun run_mutants(const MutantsOptions& o) {
                          ": " + tr.detail;
       r.alone = r.full;
       if (!m.alone) r.alone = ModeResult{};
+      if (o.through_protocol) r.protocol = r.full;
     }
     run.results.push_back(std::move(r));
   }
@@ -305,7 +320,43 @@ Tally tally(const MutantsRun& run, bool alone, const std::string& slot, const st
   return t;
 }
 
+Tally tally_protocol(const MutantsRun& run) {
+  Tally t;
+  for (const auto& r : run.results) {
+    if (!r.protocol.ran) continue;
+    ++t.mutants;
+    if (r.equivalent_in(false))
+      ++t.equivalent;
+    else if (r.protocol.killed)
+      ++t.killed;
+    else
+      ++t.survived;
+  }
+  return t;
+}
+
+std::vector<std::string> protocol_differences(const MutantsRun& run) {
+  std::vector<std::string> out;
+  for (const auto& r : run.results)
+    if (r.protocol.ran && r.full.ran && r.protocol.killed != r.full.killed)
+      out.push_back(r.name + (r.full.killed ? ": killed in-process, not through the protocol"
+                                            : ": killed through the protocol, not in-process") +
+                    (r.protocol.killed ? " (" + r.protocol.killed_by + ")" : ""));
+  return out;
+}
+
 namespace {
+
+std::string protocol_score_line(const MutantsRun& run) {
+  const Tally p = tally_protocol(run);
+  if (p.mutants == 0) return "";
+  std::ostringstream os;
+  os << p.killed << "/" << (p.mutants - p.equivalent) << " = "
+     << std::fixed << std::setprecision(1) << 100 * p.score() << "% (each mutant served out of process by the C++ "
+     << "protocol server, as untrusted mode serves a submission); verdicts that differ from the in-process run: "
+     << protocol_differences(run).size();
+  return os.str();
+}
 
 std::string pct(double x) {
   std::ostringstream os;
@@ -359,6 +410,10 @@ std::string console_table(const MutantsRun& run) {
      << "\n";
   os << "score, slot alone:            " << a.killed << "/" << (a.mutants - a.equivalent) << " = " << pct(a.score())
      << " (" << a.mutants << " mutants; hand-written ones have no alone mode)\n";
+  if (const std::string p = protocol_score_line(run); !p.empty()) {
+    os << "score, through the protocol:  " << p << "\n";
+    for (const auto& d : protocol_differences(run)) os << "  differs: " << d << "\n";
+  }
   if (!run.baseline_failures.empty()) {
     os << "properties failing on the reference itself (left out):\n";
     for (const auto& b : run.baseline_failures) os << "  " << b << "\n";
@@ -404,6 +459,10 @@ std::string markdown_report(const MutantsRun& run) {
   os << "- score in the full reference: " << f.killed << "/" << (f.mutants - f.equivalent) << " = " << pct(f.score()) << "\n";
   os << "- score with the mutated slot alone: " << a.killed << "/" << (a.mutants - a.equivalent) << " = "
      << pct(a.score()) << "\n";
+  if (const std::string p = protocol_score_line(run); !p.empty()) {
+    os << "- score through the protocol: " << p << "\n";
+    for (const auto& d : protocol_differences(run)) os << "  - differs: `" << d << "`\n";
+  }
   os << "- time: " << std::fixed << std::setprecision(1) << run.seconds << " s\n\n";
   auto table = [&](const std::string& what, const std::vector<std::string>& keys, bool by_slot) {
     os << "| " << what << " | mutants | killed | equivalent | survived | score | alone: killed | alone: survived | alone: score |\n";
@@ -449,6 +508,11 @@ std::string json_report(const MutantsRun& run) {
   j["score_full"] = {{"killed", f.killed}, {"equivalent", f.equivalent}, {"survived", f.survived}, {"mutants", f.mutants}, {"score", f.score()}};
   j["score_alone"] = {{"killed", a.killed}, {"equivalent", a.equivalent}, {"survived", a.survived}, {"mutants", a.mutants}, {"score", a.score()}};
   j["baseline_failures"] = run.baseline_failures;
+  if (tally_protocol(run).mutants > 0) {
+    const Tally p = tally_protocol(run);
+    j["score_protocol"] = {{"killed", p.killed}, {"equivalent", p.equivalent}, {"survived", p.survived},
+                           {"mutants", p.mutants}, {"score", p.score()}, {"differences", protocol_differences(run)}};
+  }
   if (run.options.matrix) j["quick_profile"] = quick_profile_json(choose_quick_profile(run), run);
   j["mutants"] = json::array();
   for (const auto& r : run.results)
@@ -464,6 +528,7 @@ std::string json_report(const MutantsRun& run) {
                             {"spec_entries", r.spec_entries},
                             {"full", mode_json(r.full)},
                             {"alone", mode_json(r.alone)},
+                            {"protocol", mode_json(r.protocol)},
                             {"seconds", r.seconds}});
   return j.dump(1);
 }
@@ -493,6 +558,7 @@ MutantsRun load_mutants_report(const std::string& path) {
       r.spec_entries = m.value("spec_entries", std::vector<std::string>{});
       r.full = mode_from(m.at("full"));
       r.alone = mode_from(m.at("alone"));
+      if (m.contains("protocol")) r.protocol = mode_from(m.at("protocol"));
       r.seconds = m.value("seconds", 0.0);
       run.results.push_back(std::move(r));
     }
@@ -553,6 +619,7 @@ int mutants_command(const MutantsOptions& o) {
     return 2;
   }
   const Tally f = tally(run, false);
+  if (!protocol_differences(run).empty()) return 1;  // the protocol changes what the properties see
   return f.score() < o.min_score ? 1 : 0;
 }
 

@@ -35,6 +35,11 @@ struct MutantsOptions {
   // A mutants.json written by an earlier `--matrix --report` run: its matrix is read instead of
   // running the mutants again (28 minutes on 2 cores), to choose the profiles from it anew.
   std::string from_report;
+  // Issue 32, item 5: each mutant is also served out of process by the C++ protocol server
+  // (`program serve-mutant NAME`, mutation/served_mutant.hpp) and checked through the protocol,
+  // as an untrusted submission is; the score through the protocol is reported beside the other.
+  bool through_protocol = false;
+  std::string program;  // the geomech program that serves mutants (default: this one)
 };
 
 struct ModeResult {
@@ -65,6 +70,7 @@ struct MutantResult {
   }
   std::vector<std::string> spec_entries;  // spec entries of the properties that apply to it
   ModeResult full, alone;
+  ModeResult protocol;  // the full reference's mutant served through the protocol (through_protocol)
   double seconds = 0;
 };
 
@@ -96,6 +102,10 @@ MutantsRun run_mutants(const MutantsOptions& o);
 // The run recorded in a mutants.json (json_report); throws std::runtime_error naming the file.
 MutantsRun load_mutants_report(const std::string& path);
 Tally tally(const MutantsRun& r, bool alone, const std::string& slot = "", const std::string& spec = "");
+// The score through the protocol (MutantResult::protocol), and the mutants whose verdict there
+// differs from the in-process one (killed in one and not the other).
+Tally tally_protocol(const MutantsRun& r);
+std::vector<std::string> protocol_differences(const MutantsRun& r);
 std::string console_table(const MutantsRun& r);
 std::string markdown_report(const MutantsRun& r);
 std::string json_report(const MutantsRun& r);

@@ -105,3 +105,26 @@ TEST(Mutation, RunsLeftToThoroughKeepEveryKill) {
   EXPECT_EQ(j.at("checks").size(), 3u);
   EXPECT_EQ(j.at("format"), "geomech-thorough-only 1");
 }
+
+// Issue 32, item 5: a mutant killed in-process but not through the protocol (or the reverse) is
+// named as a difference, and the score through the protocol counts what the protocol run killed.
+TEST(Mutation, AVerdictThatDiffersThroughTheProtocolIsNamed) {
+  using namespace gm::mutation;
+  MutantsRun run;
+  auto mutant = [&](const std::string& name, bool in_process, bool through) {
+    MutantResult r;
+    r.name = name;
+    r.full.ran = r.protocol.ran = true;
+    r.full.killed = in_process;
+    r.protocol.killed = through;
+    run.results.push_back(r);
+  };
+  mutant("same", true, true);
+  mutant("lost", true, false);
+  const Tally t = tally_protocol(run);
+  EXPECT_EQ(t.mutants, 2);
+  EXPECT_EQ(t.killed, 1);
+  const auto d = protocol_differences(run);
+  ASSERT_EQ(d.size(), 1u);
+  EXPECT_EQ(d[0], "lost: killed in-process, not through the protocol");
+}

@@ -28,6 +28,7 @@
 #include "harness/trajectory.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/runner.hpp"
+#include "mutation/served_mutant.hpp"
 #include "properties/runner.hpp"
 #include "spec/catalogue.hpp"
 #include "tests/mutants/mutants.hpp"
@@ -642,6 +643,15 @@ int main(int argc, char** argv) {
   mut->add_option("--equivalent", mo.equivalent_file, "equivalent mutants (default: spec/equivalent_mutants.json)");
   bool no_alone = false;
   mut->add_flag("--no-alone", no_alone, "skip the run with the mutated slot alone");
+  mut->add_flag("--through-protocol", mo.through_protocol,
+                "also serve each mutant out of process by the C++ protocol server (as untrusted mode serves a "
+                "submission) and check it through the protocol: the score through the protocol, and any verdict that "
+                "differs from the in-process one (exit 1 if one does)");
+  std::string served_name;
+  auto* serve_mut = app.add_subcommand("serve-mutant", "serve one mutant of the reference over the slot protocol "
+                                                       "(used by `geomech mutants --through-protocol`)");
+  serve_mut->add_option("name", served_name, "the mutant's name (e.g. euler_3_8:negate_result)")->required();
+  serve_mut->group("");
 
   gm::golden::add_commands(app);  // runs from its own callbacks (golden/cli.hpp)
 
@@ -715,8 +725,10 @@ int main(int argc, char** argv) {
     if (*mut) {
       mo.alone = !no_alone;
       mo.front_door = gm::front_door();
+      if (mo.program.empty()) mo.program = std::filesystem::read_symlink("/proc/self/exe").string();
       return gm::mutation::mutants_command(mo);
     }
+    if (*serve_mut) return gm::mutation::serve_mutant_command(served_name);
     if (*list) return gm::run_list();
     if (*slots) return gm::run_slots(slots_python ? "python" : slots_octave ? "octave" : "");
     if (*bench) return gm::run_protocol_bench(bench_file, bench_calls);
