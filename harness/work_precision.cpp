@@ -283,9 +283,9 @@ Problem rigid_body_problem(const Subjects& mine) {
   };
   for (const auto* in : mine)
     p.methods.push_back({in->name, "subject", wrap(in->rigid_body_step), 0, wrap_run(in->rigid_body_run)});
-  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::rk4_step<double>), 4},
-               {"implicit_midpoint", "suite", wrap(ref::implicit_midpoint_step<double>), 0},
-               {"lie_poisson_splitting", "suite", wrap(ref::lie_poisson_splitting_step<double>), 0}});
+  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::rk4_step<double>), 4, {}},
+               {"implicit_midpoint", "suite", wrap(ref::implicit_midpoint_step<double>), 0, {}},
+               {"lie_poisson_splitting", "suite", wrap(ref::lie_poisson_splitting_step<double>), 0, {}}});
   return p;
 }
 
@@ -352,9 +352,9 @@ Problem manakov_problem(const Subjects& mine) {
   };
   for (const auto* in : mine)
     p.methods.push_back({in->name, "subject", wrap(in->manakov_step), 0, wrap_run(in->manakov_run)});
-  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_rk4_step<double>), 4},
-               {"implicit_midpoint", "suite", wrap(ref::manakov_implicit_midpoint_step<double>), 0},
-               {"isospectral_cayley", "suite", wrap(ref::manakov_isospectral_step<double>), 0}});
+  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_rk4_step<double>), 4, {}},
+               {"implicit_midpoint", "suite", wrap(ref::manakov_implicit_midpoint_step<double>), 0, {}},
+               {"isospectral_cayley", "suite", wrap(ref::manakov_isospectral_step<double>), 0, {}}});
   return p;
 }
 
@@ -387,10 +387,10 @@ Problem clebsch_problem(const Subjects& mine) {
   auto wrap = [I, to_pair, from_pair](auto step) {
     return [I, to_pair, from_pair, step](const State& s, double h) { return from_pair(step(I, to_pair(s), h)); };
   };
-  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->clebsch_step), 0});
-  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::clebsch_rk4_step<double>), 4},
-               {"clebsch_midpoint", "suite", wrap(ref::clebsch_midpoint_step<double>), 0},
-               {"clebsch_splitting", "suite", wrap(ref::clebsch_splitting_step<double>), 0}});
+  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->clebsch_step), 0, {}});
+  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::clebsch_rk4_step<double>), 4, {}},
+               {"clebsch_midpoint", "suite", wrap(ref::clebsch_midpoint_step<double>), 0, {}},
+               {"clebsch_splitting", "suite", wrap(ref::clebsch_splitting_step<double>), 0, {}}});
   return p;
 }
 
@@ -440,9 +440,9 @@ Problem manakov_clebsch_problem(const Subjects& mine) {
       return pack(y.first, y.second);
     };
   };
-  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->manakov_clebsch_step), 0});
-  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_clebsch_rk4_step<double>), 4},
-               {"clebsch_midpoint", "suite", wrap(ref::manakov_clebsch_midpoint_step<double>), 0}});
+  for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->manakov_clebsch_step), 0, {}});
+  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_clebsch_rk4_step<double>), 4, {}},
+               {"clebsch_midpoint", "suite", wrap(ref::manakov_clebsch_midpoint_step<double>), 0, {}}});
   return p;
 }
 
