@@ -258,6 +258,18 @@ void draw(const Problem& p, Verdict& v, std::vector<std::string>& cheapest, std:
 
 using Subjects = std::vector<const Integrator<double>*>;
 
+// A subject's run of steps (Integrator::rigid_body_run / manakov_run) on packed states; empty when
+// the subject has none.
+template <class Param, class Unpack, class Pack, class Run>
+std::function<std::vector<State>(const State&, double, int)> packed_run(Param p, Unpack unpack, Pack pack_state, Run run) {
+  if (!run) return {};
+  return [p, unpack, pack_state, run](const State& s, double h, int n) {
+    std::vector<State> out;
+    for (const auto& y : run(p, unpack(s), h, n)) out.push_back(pack_state(y));
+    return out;
+  };
+}
+
 double rigid_body_energy(const Vec3<double>& I, const Vec3<double>& Pi) { return Pi.cwiseProduct(Pi).cwiseQuotient(I).sum() / 2; }
 
 // The motion of the portraits (portrait.hpp).
@@ -273,16 +285,10 @@ Problem rigid_body_problem(const Subjects& mine) {
   p.field = [I](const State& s) { return pack(ref::rigid_body_field<double>(I, unpack_rigid_body(s))); };
   p.energy = [I](const State& s) { return rigid_body_energy(I, Vec3<double>(s[0], s[1], s[2])); };
   auto wrap = [I](auto step) { return [I, step](const State& s, double h) { return pack(step(I, unpack_rigid_body(s), h)); }; };
-  auto wrap_run = [I](auto run) -> std::function<std::vector<State>(const State&, double, int)> {
-    if (!run) return {};
-    return [I, run](const State& s, double h, int n) {
-      std::vector<State> out;
-      for (const auto& x : run(I, unpack_rigid_body(s), h, n)) out.push_back(pack(x));
-      return out;
-    };
-  };
   for (const auto* in : mine)
-    p.methods.push_back({in->name, "subject", wrap(in->rigid_body_step), 0, wrap_run(in->rigid_body_run)});
+    p.methods.push_back({in->name, "subject", wrap(in->rigid_body_step), 0,
+                         packed_run(I, unpack_rigid_body, [](const RigidBodyState<double>& x) { return pack(x); },
+                                    in->rigid_body_run)});
   p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::rk4_step<double>), 4, {}},
                {"implicit_midpoint", "suite", wrap(ref::implicit_midpoint_step<double>), 0, {}},
                {"lie_poisson_splitting", "suite", wrap(ref::lie_poisson_splitting_step<double>), 0, {}}});
@@ -342,16 +348,9 @@ Problem manakov_problem(const Subjects& mine) {
       return pack(y.M, y.O);
     };
   };
-  auto wrap_run = [A, unpack](auto run) -> std::function<std::vector<State>(const State&, double, int)> {
-    if (!run) return {};
-    return [A, unpack, run](const State& s, double h, int n) {
-      std::vector<State> out;
-      for (const auto& y : run(A, unpack(s), h, n)) out.push_back(pack(y.M, y.O));
-      return out;
-    };
-  };
   for (const auto* in : mine)
-    p.methods.push_back({in->name, "subject", wrap(in->manakov_step), 0, wrap_run(in->manakov_run)});
+    p.methods.push_back({in->name, "subject", wrap(in->manakov_step), 0,
+                         packed_run(A, unpack, [](const ManakovState<double>& y) { return pack(y.M, y.O); }, in->manakov_run)});
   p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_rk4_step<double>), 4, {}},
                {"implicit_midpoint", "suite", wrap(ref::manakov_implicit_midpoint_step<double>), 0, {}},
                {"isospectral_cayley", "suite", wrap(ref::manakov_isospectral_step<double>), 0, {}}});
