@@ -8,6 +8,7 @@
 // it (the harness's per-check timeout and process-group kill apply to it).
 #pragma once
 
+#include "harness/call_memo.hpp"
 #include "harness/check.hpp"
 
 #include <nlohmann/json.hpp>
@@ -138,6 +139,8 @@ class Connection {
   pid_t session_pid_ = 0;            // the process whose session is open on its slot's server
   pid_t abandoned_pid_ = 0;          // the process whose session failed (it uses a copy of its own since)
   json hello_;
+  CallMemo memo_;  // this process's replies, by call (under memo_mutex_)
+  std::mutex memo_mutex_;
   bool sessions_ = false;
   long next_id_ = 1;
 };

@@ -122,9 +122,10 @@ TEST(RemoteSubject, EachCheckStartsFromTheHandshakeStateOnItsWorkersServer) {
   auto conn = connect("tests/remote/stateful.py");
   const SubjectSet s = remote_subject(conn, "stateful", info);
   ASSERT_TRUE(conn->sessions());
-  const Vec3<double> I(1, 2, 3), P(1, 0, 0);
+  const Vec3<double> I(1, 2, 3), P(1, 0, 0), P2(0, 1, 0);
   auto task = [&] {
-    const double first = s.d->casimir(P), second = s.d->casimir(P);
+    // Two arguments: a repeated call would be answered from memory (call_memo.hpp).
+    const double first = s.d->casimir(P), second = s.d->casimir(P2);
     return std::to_string(static_cast<long long>(first)) + " " + std::to_string(static_cast<long long>(second)) + " " +
            std::to_string(static_cast<long long>(s.d->hamiltonian_3_4(I, P)));
   };
@@ -174,6 +175,50 @@ TEST(RemoteSubject, ACrashInACheckFailsThatCheckAloneAndSaysHowItDied) {
   EXPECT_NE(r[2].payload.find("exited with status 3"), std::string::npos) << r[2].payload;
   EXPECT_EQ(r[3].payload, "1");
   EXPECT_EQ(r[4].payload, "0");
+}
+
+// Issue 32: a call repeated with the same arguments is answered from memory, without a round trip
+// (the server's counter does not move), and one repeat in CallMemo::kRecheckEvery is asked again:
+// a slot that answers differently (here a counter, as a persistent variable would) is an error
+// naming the slot, the arguments and both answers. The control: a slot that is a function of its
+// arguments is asked again at the same cadence and passes.
+TEST(RemoteSubject, ARepeatedCallIsAnsweredFromMemoryAndAnAnswerThatChangesIsNamed) {
+  harness::SubjectInfo info;
+  const SubjectSet s = remote_subject(connect("tests/remote/stateful.py"), "stateful", info);
+  const Vec3<double> P(1, 0, 0), P2(0, 0, 1);
+  const double first = s.d->casimir(P);
+  for (long i = 1; i < CallMemo::kRecheckEvery; ++i) ASSERT_EQ(s.d->casimir(P), first) << "repeat " << i;
+  EXPECT_EQ(s.d->casimir(P2), first + 1) << "the repeats made no round trip";
+  try {
+    s.d->casimir(P);
+    ADD_FAILURE() << "the recheck did not notice the changed answer";
+  } catch (const RemoteCallError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("function 'casimir' (double) answered the same arguments twice, differently"), std::string::npos) << m;
+    EXPECT_NE(m.find("persistent or global variable"), std::string::npos) << m;
+    EXPECT_NE(m.find("the first time: \"" + std::to_string(static_cast<long long>(first))), std::string::npos) << m;
+  }
+  const SubjectSet c = remote_subject(python("correct.py"), "correct", info);
+  const Vec3<double> I(2, 1, 0.5);
+  const double h = c.d->hamiltonian_3_4(I, P);
+  for (long i = 0; i < 2 * CallMemo::kRecheckEvery; ++i) ASSERT_EQ(c.d->hamiltonian_3_4(I, P), h);
+}
+
+TEST(CallMemo, RemembersAndAsksAgainOnceInEveryCadence) {
+  CallMemo m;
+  bool recheck = true;
+  EXPECT_EQ(m.find("a", &recheck), nullptr);
+  m.remember("a", json("1"));
+  int asked = 0;
+  for (long i = 0; i < 3 * CallMemo::kRecheckEvery; ++i) {
+    const json* r = m.find("a", &recheck);
+    ASSERT_NE(r, nullptr);
+    EXPECT_EQ(*r, json("1"));
+    asked += recheck;
+  }
+  EXPECT_EQ(asked, 3);
+  EXPECT_EQ(CallMemo::compare(json("1"), json("1")), "");
+  EXPECT_NE(CallMemo::compare(json("1"), json("2")).find("the second time: \"2\""), std::string::npos);
 }
 
 // 200 kB printed to stdout and stderr during one call: the call answers (the harness reads what
@@ -267,7 +312,7 @@ TEST(RemoteSubject, RoundTripCost) {
   const Call c{"euler_3_8", "double", json::array({json::array({"2", "1", "0.5"}), json::array({"0.25", "-1.5", "3"})}), ""};
   const int n = 200;
   auto t0 = std::chrono::steady_clock::now();
-  for (int i = 0; i < n; ++i) conn->call(c);
+  for (int i = 0; i < n; ++i) conn->call_batch({c});  // call() would answer the repeats from memory
   const double one = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() / n;
   t0 = std::chrono::steady_clock::now();
   conn->call_batch(std::vector<Call>(n, c));

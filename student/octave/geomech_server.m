@@ -30,6 +30,13 @@ function kinds = gm_arg_kinds(sig)
   end
 end
 
+% A signature's result kind, argument kinds, and which arguments are not pairs (decoded inline).
+function k = gm_kinds(sig)
+  args = gm_arg_kinds(sig);
+  k = struct('result', gm_kind(sig), 'args', {args}, ...
+             'plain', ~(strcmp(args, 'Vec3Pair') | strcmp(args, 'MatXPair')));
+end
+
 % A JSON value (after jsondecode) as Octave numbers: strings are decimal numbers ('so3' stays a
 % string), arrays of rows become matrices, flat arrays column vectors. Vectorised: the interpreter's
 % per-element work is what a call costs.
@@ -93,22 +100,24 @@ function s = gm_num(x)
   s = sprintf('"%.17g"', double(x));
 end
 
+% The encoders run once per reply: built-in functions only (sprintf, indexing), as a call of an
+% m-file function such as repmat or strjoin costs more than the formatting itself.
 function s = gm_vec(x)
   gm_real(x);
-  x = double(x(:));
   if isempty(x), s = '[]'; return; end
-  s = sprintf('"%.17g",', x);
-  s = ['[' s(1:end - 1) ']'];
+  s = ['[' sprintf('"%.17g",', double(x(:)))];
+  s(end) = ']';
 end
 
 function s = gm_mat(x)
   gm_real(x);
   [r, c] = size(x);
   if r == 0 || c == 0, s = '[]'; return; end
-  row = ['[' repmat('"%.17g",', 1, c)];
-  row = [row(1:end - 1) '],'];
-  s = sprintf(row, double(x).');
-  s = ['[' s(1:end - 1) ']'];
+  one = '"%.17g",';
+  row = ['[' reshape(one(ones(1, c), :).', 1, []) ','];   % '["%.17g",...,"%.17g",,'
+  row(end - 1) = ']';
+  s = ['[' sprintf(row, double(x).')];
+  s(end) = ']';
 end
 
 function s = gm_encode(kind, x)
@@ -154,16 +163,29 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
     try
       a = call.args;
       if ~iscell(a), a = num2cell(a); end
-      if isfield(call, 'integrator') && ~isempty(call.integrator)
+      stepping = isfield(call, 'integrator') && ~isempty(call.integrator);
+      if stepping
         kinds = step_kinds.(call.slot);
       else
         kinds = slot_kinds.(call.slot);
       end
       vals = cell(1, numel(a));
       for k = 1:numel(a)
-        vals{k} = gm_decode_kind(kinds.args{k}, a{k});
+        j = a{k};
+        % The commonest arguments, a vector or a scalar (or 'so3'), are decoded here: a call of
+        % one of the functions above costs more than the decoding.
+        if ~kinds.plain(k)
+          vals{k} = gm_decode_kind(kinds.args{k}, j);
+        elseif iscell(j) && ~isempty(j) && ischar(j{1})
+          vals{k} = reshape(str2double(j), [], 1);
+        elseif ischar(j)
+          vals{k} = str2double(j);
+          if isnan(vals{k}) && ~strcmpi(j, 'nan'), vals{k} = j; end
+        else
+          vals{k} = gm_decode(j);
+        end
       end
-      if isfield(call, 'integrator') && ~isempty(call.integrator)
+      if stepping
         f = [];
         for q = 1:numel(integ)
           if strcmp(integ{q}.name, call.integrator), f = integ{q}.(call.slot); end
@@ -181,14 +203,16 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
             states{s} = gm_encode(kinds.result, f(vals{:}));
             vals{2} = gm_decode_kind(kinds.args{2}, jsondecode(states{s}, 'makeValidName', false));
           end
-          results{c} = ['{"ok":[' strjoin(states, ',') ']}'];
+          results{c} = [',{"ok":[' sprintf('%s,', states{:})];
+          results{c}(end) = ']';
+          results{c} = [results{c} '}'];
           continue;
         end
         r = f(vals{:});
       else
         r = feval(call.slot, vals{:});
       end
-      results{c} = ['{"ok":' gm_encode(kinds.result, r) '}'];
+      results{c} = [',{"ok":' gm_encode(kinds.result, r) '}'];
     catch err
       tb = err.message;
       for s = 1:numel(err.stack)
@@ -197,10 +221,25 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
         if ~isempty(strfind(fl, 'geomech_server.m')), continue; end
         tb = sprintf('%s\n    at %s, line %d (%s)', tb, err.stack(s).name, ln, fl);
       end
-      results{c} = sprintf('{"error":%s,"traceback":%s}', jsonencode(err.message), jsonencode(tb));
+      results{c} = sprintf(',{"error":%s,"traceback":%s}', jsonencode(err.message), jsonencode(tb));
     end
   end
-  reply = sprintf('{"id":%d,"results":[%s]}', req.id, strjoin(results, ','));
+  joined = [results{:}];   % each result begins with its comma
+  reply = sprintf('{"id":%d,"results":[%s]}', req.id, joined(2:end));
+end
+
+% $GEOMECH_PROFILE=dir: a session's time by function (Octave's profiler), written to
+% dir/session-PID.txt, most costly first: seconds (its callees' included) and calls.
+function gm_write_profile(where)
+  profile off;
+  t = profile('info').FunctionTable;
+  [~, order] = sort([t.TotalTime], 'descend');
+  fid = fopen(fullfile(where, sprintf('session-%d.txt', getpid())), 'w');
+  fprintf(fid, '%10s %9s  %s\n', 'seconds', 'calls', 'function');
+  for k = order
+    fprintf(fid, '%10.3f %9d  %s\n', t(k).TotalTime, t(k).NumCalls, t(k).FunctionName);
+  end
+  fclose(fid);
 end
 
 % Answers requests until the input ends (0) or, in a session, until {"session": "end"} (1).
@@ -209,7 +248,7 @@ function r = gm_serve(out, in_session, slot_kinds, integ, step_kinds, target, tm
   while true
     line = fgetl(stdin);
     if ~ischar(line), return; end
-    if isempty(strtrim(line)), continue; end   % the empty line after each request
+    if isempty(line) || all(isspace(line)), continue; end   % the empty line after each request
     req = jsondecode(line, 'makeValidName', false);
     if isfield(req, 'session')
       if strcmp(req.session, 'end') && in_session
@@ -221,7 +260,10 @@ function r = gm_serve(out, in_session, slot_kinds, integ, step_kinds, target, tm
         [pid, msg] = fork();
         if pid == 0
           gm_send(out, sprintf('{"id":%d,"session":"begun","pid":%d}', req.id, getpid()));
+          where = getenv('GEOMECH_PROFILE');
+          if ~isempty(where), profile on; end
           gm_serve(out, true, slot_kinds, integ, step_kinds, target, tmp);
+          if ~isempty(where), gm_write_profile(where); end
           exit(77);   % ended by request or at the end of input; 77, so that the student's exit(0) is not taken for it
         end
         [~, status] = waitpid(pid);
@@ -258,13 +300,13 @@ slotlist = table.slots;
 for k = 1:numel(slotlist)
   if iscell(slotlist), s = slotlist{k}; else, s = slotlist(k); end
   names{end + 1} = s.name;
-  slot_kinds.(s.name) = struct('result', gm_kind(s.signature), 'args', {gm_arg_kinds(s.signature)});
+  slot_kinds.(s.name) = gm_kinds(s.signature);
 end
 step_kinds = struct();
 step_names = fieldnames(table.steps);
 for k = 1:numel(step_names)
   sig = table.steps.(step_names{k});
-  step_kinds.(step_names{k}) = struct('result', gm_kind(sig), 'args', {gm_arg_kinds(sig)});
+  step_kinds.(step_names{k}) = gm_kinds(sig);
 end
 
 tmp = '';
