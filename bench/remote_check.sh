@@ -5,6 +5,10 @@
 #   bench/remote_check.sh [build-dir]        (default: build; after ./geomech build)
 #   THOROUGH=1 bench/remote_check.sh           also correct.py with --thorough: the costly 50-digit
 #                                              runs a Python check leaves out, the ratio's other side
+#   CLASS=1 bench/remote_check.sh              also a class of 20 (examples/students/*.cpp but bug_hang,
+#                                              whose timeouts cost the same either way, and bug_nan)
+#                                              untrusted against --trusted, empty caches, 2 at a time
+#                                              (with THOROUGH=1 untrusted --thorough too); 10-20 min
 # Prints one line per implementation: wall time, checks, TIMEOUTs, checks cut short by the case
 # budget; then the 8 longest checks of each, then `geomech bench-protocol` for each language.
 set -euo pipefail
@@ -44,3 +48,26 @@ for file in examples/students/correct.py examples/students/correct.m; do
   echo "protocol cost, $file:"
   (cd "$root" && "$geomech" bench-protocol "$file") | sed 's/^/    /'
 done
+
+if [ "${CLASS:-0}" = 1 ]; then
+  mkdir -p "$out/class"
+  for f in "$root"/examples/students/*.cpp "$root"/examples/students/correct.hpp; do
+    case $(basename "$f") in bug_hang.cpp|bug_nan.cpp) ;; *) cp "$f" "$out/class/" ;; esac
+  done
+  modes=("untrusted:" "trusted:--trusted")
+  [ "${THOROUGH:-0}" = 1 ] && modes+=("untrusted-thorough:--thorough")
+  for m in "${modes[@]}"; do
+    name=${m%%:*} flag=${m#*:}
+    rm -rf "$out/cache-$name"
+    start=$(date +%s.%N)
+    status=0
+    # shellcheck disable=SC2086
+    "$geomech" check-class "$out/class" $flag --parallel 2 --cache-dir "$out/cache-$name" \
+      --report "$out/class-$name" >"$out/class-$name.log" 2>&1 || status=$?
+    end=$(date +%s.%N)
+    wall=$(python3 -c "print('%.1f' % ($end - $start))")
+    echo "class of 20, $name: wall $wall s, exit $status"
+    eval "wall_${name//-/_}=$wall"
+  done
+  python3 -c "print('class of 20: untrusted / trusted = %.2fx' % ($wall_untrusted / $wall_trusted))"
+fi

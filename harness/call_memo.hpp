@@ -24,7 +24,8 @@ namespace gm::protocol {
 class CallMemo {
  public:
   static constexpr long kRecheckEvery = 64;
-  static constexpr std::size_t kMaxEntries = 200000;  // then it starts afresh (about 100 MB at most)
+  // Then it starts afresh: a reply of a 3x3 matrix and its key take about 1.3 kB, so some 40 MB at most.
+  static constexpr std::size_t kMaxEntries = 32768;
 
   // The reply remembered for `key`, or nothing; `recheck` is set when this repeat should be asked
   // again and compared (`compare`).
