@@ -404,9 +404,11 @@ std::vector<Reply> Connection::call_batch(const std::vector<Call>& calls) {
 }
 
 json Connection::call(const Call& c) {
-  const std::string who = c.integrator.empty() ? c.slot : c.integrator + "." + c.slot;
-  const std::string function = (language_.empty() ? std::string("the implementation") : language_) + " function '" +
-                               who + "' (" + c.scalar + ")";
+  auto function = [&] {  // named only in an error
+    const std::string who = c.integrator.empty() ? c.slot : c.integrator + "." + c.slot;
+    return (language_.empty() ? std::string("the implementation") : language_) + " function '" + who + "' (" +
+           c.scalar + ")";
+  };
   // A repeated call is answered from memory (harness/call_memo.hpp); a run of steps is not kept.
   std::string key;
   std::optional<json> known;  // remembered, and asked again to compare
@@ -420,11 +422,11 @@ json Connection::call(const Call& c) {
     }
   }
   auto r = call_batch({c});
-  if (!r[0].ok) throw RemoteCallError(function + " raised an error:\n" + r[0].error);
+  if (!r[0].ok) throw RemoteCallError(function() + " raised an error:\n" + r[0].error);
   if (known) {
     const std::string differs = CallMemo::compare(*known, r[0].result);
     if (!differs.empty())
-      throw RemoteCallError(function + " answered the same arguments twice, differently (is it a function of its "
+      throw RemoteCallError(function() + " answered the same arguments twice, differently (is it a function of its "
                             "arguments only? a persistent or global variable, or a random draw, makes it not):\n"
                             "  arguments: " + c.args.dump().substr(0, 400) + "\n  " + differs);
     return std::move(r[0].result);

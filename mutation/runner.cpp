@@ -302,12 +302,17 @@ MutantsRun run_mutants(const MutantsOptions& o) {
   return run;
 }
 
-Tally tally(const MutantsRun& run, bool alone, const std::string& slot, const std::string& spec) {
+namespace {
+
+// The tally of one mode of each mutant (full, alone or through the protocol), among those of `slot`
+// and `spec` (empty: all); `alone` says which equivalence applies.
+template <class Mode>
+Tally tally_of(const MutantsRun& run, Mode mode, bool alone, const std::string& slot = "", const std::string& spec = "") {
   Tally t;
   for (const auto& r : run.results) {
     if (!slot.empty() && r.slot != slot) continue;
     if (!spec.empty() && std::find(r.spec_entries.begin(), r.spec_entries.end(), spec) == r.spec_entries.end()) continue;
-    const ModeResult& m = alone ? r.alone : r.full;
+    const ModeResult& m = mode(r);
     if (!m.ran) continue;
     ++t.mutants;
     if (r.equivalent_in(alone))
@@ -320,19 +325,15 @@ Tally tally(const MutantsRun& run, bool alone, const std::string& slot, const st
   return t;
 }
 
+}  // namespace
+
+Tally tally(const MutantsRun& run, bool alone, const std::string& slot, const std::string& spec) {
+  return tally_of(run, [alone](const MutantResult& r) -> const ModeResult& { return alone ? r.alone : r.full; }, alone,
+                  slot, spec);
+}
+
 Tally tally_protocol(const MutantsRun& run) {
-  Tally t;
-  for (const auto& r : run.results) {
-    if (!r.protocol.ran) continue;
-    ++t.mutants;
-    if (r.equivalent_in(false))
-      ++t.equivalent;
-    else if (r.protocol.killed)
-      ++t.killed;
-    else
-      ++t.survived;
-  }
-  return t;
+  return tally_of(run, [](const MutantResult& r) -> const ModeResult& { return r.protocol; }, false);
 }
 
 std::vector<std::string> protocol_differences(const MutantsRun& run) {
@@ -505,13 +506,16 @@ std::string json_report(const MutantsRun& run) {
   j["case_factor"] = run.options.case_factor;
   j["seed"] = run.options.seed;
   j["seconds"] = run.seconds;
-  j["score_full"] = {{"killed", f.killed}, {"equivalent", f.equivalent}, {"survived", f.survived}, {"mutants", f.mutants}, {"score", f.score()}};
-  j["score_alone"] = {{"killed", a.killed}, {"equivalent", a.equivalent}, {"survived", a.survived}, {"mutants", a.mutants}, {"score", a.score()}};
+  auto score = [](const Tally& t) {
+    return json{{"killed", t.killed}, {"equivalent", t.equivalent}, {"survived", t.survived}, {"mutants", t.mutants},
+                {"score", t.score()}};
+  };
+  j["score_full"] = score(f);
+  j["score_alone"] = score(a);
   j["baseline_failures"] = run.baseline_failures;
-  if (tally_protocol(run).mutants > 0) {
-    const Tally p = tally_protocol(run);
-    j["score_protocol"] = {{"killed", p.killed}, {"equivalent", p.equivalent}, {"survived", p.survived},
-                           {"mutants", p.mutants}, {"score", p.score()}, {"differences", protocol_differences(run)}};
+  if (const Tally p = tally_protocol(run); p.mutants > 0) {
+    j["score_protocol"] = score(p);
+    j["score_protocol"]["differences"] = protocol_differences(run);
   }
   if (run.options.matrix) j["quick_profile"] = quick_profile_json(choose_quick_profile(run), run);
   j["mutants"] = json::array();
