@@ -1,7 +1,7 @@
 // The value encoding of the slot protocol (docs/PROTOCOL.md): every argument and result of a slot
 // to and from JSON, exactly.
 //
-//   scalar  double: a decimal string with 17 significant digits (round-trips exactly);
+//   scalar  double: the shortest decimal string that reads back as the same double (exact);
 //           mp50:   a decimal string with 60 significant digits (the 168-bit Real50 round-trips);
 //           exact:  "p/q" (or "p");
 //           replies may also use JSON numbers: integers in every scalar, floats in double only.
@@ -59,6 +59,22 @@ template <>
 Real50 decode_scalar<Real50>(const json& j, const std::string& what);
 template <>
 Rational decode_scalar<Rational>(const json& j, const std::string& what);
+
+// The common case of a double, decoded without building the text that names its place: a JSON
+// number, or a decimal string read whole and finite. False for anything else (a fraction, a
+// non-finite or malformed value), which decode_scalar then decodes or rejects with its message.
+bool decode_plain_double(const json& j, double& out);
+
+// An entry of a vector or matrix: `place()` (its name, e.g. "result[1][2]") is built only when
+// it is needed, for a message or for a scalar other than double.
+template <class T, class Place>
+T decode_entry(const json& j, Place&& place) {
+  if constexpr (std::is_same_v<T, double>) {
+    double x;
+    if (decode_plain_double(j, x)) return x;
+  }
+  return decode_scalar<T>(j, place());
+}
 
 const char* lie_algebra_word(LieAlgebraId g);
 
@@ -119,7 +135,7 @@ X decode(const json& j, const std::string& what) {
       X v(static_cast<Eigen::Index>(j.size()));
       for (std::size_t i = 0; i < j.size(); ++i) {
         if (j[i].is_array()) throw bad("expected a vector, got a nested array at entry " + std::to_string(i));
-        v(static_cast<Eigen::Index>(i)) = decode_scalar<T>(j[i], what + "[" + std::to_string(i) + "]");
+        v(static_cast<Eigen::Index>(i)) = decode_entry<T>(j[i], [&] { return what + "[" + std::to_string(i) + "]"; });
       }
       return v;
     } else {
@@ -136,8 +152,8 @@ X decode(const json& j, const std::string& what) {
         if (!j[r].is_array() || j[r].size() != cols)
           throw bad("row " + std::to_string(r) + " is not an array of " + std::to_string(cols) + " entries (rows differ)");
         for (std::size_t c = 0; c < cols; ++c)
-          m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) =
-              decode_scalar<T>(j[r][c], what + "[" + std::to_string(r) + "][" + std::to_string(c) + "]");
+          m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = decode_entry<T>(
+              j[r][c], [&] { return what + "[" + std::to_string(r) + "][" + std::to_string(c) + "]"; });
       }
       return m;
     }

@@ -251,9 +251,14 @@ std::string Connection::read_reply(ServerProcess& s, const std::string& what, do
 }
 
 json Connection::request(ServerProcess& s, const json& req, const std::string& what, double deadline_seconds) {
+  return request_text(s, req.dump(), req["id"].get<long>(), what, deadline_seconds);
+}
+
+json Connection::request_text(ServerProcess& s, const std::string& text, long id, const std::string& what,
+                              double deadline_seconds) {
   // The empty line after each request: Octave's fgetl returns a line only once it has seen the next
   // byte; every server skips empty lines.
-  if (!write_all(s.to, req.dump() + "\n\n")) {
+  if (!write_all(s.to, text + "\n\n")) {
     drain_output(s);
     const std::string how = died(s, "stopped reading its input");
     throw RemoteError("cannot send " + what + ": the implementation's process (" + program_name(argv_) + ") " + how +
@@ -274,10 +279,10 @@ json Connection::request(ServerProcess& s, const json& req, const std::string& w
   if (rep.contains("fatal"))
     throw RemoteError("the implementation's server failed on " + what + ": " +
                       (rep["fatal"].is_string() ? rep["fatal"].get<std::string>() : rep["fatal"].dump()) + with_output(s));
-  if (!rep.contains("id") || rep["id"] != req["id"])
+  if (!rep.contains("id") || rep["id"] != id)
     throw RemoteError("the implementation's reply to " + what + " answers another request (id " +
-                      (rep.contains("id") ? rep["id"].dump() : std::string("missing")) + ", expected " + req["id"].dump() +
-                      ")");
+                      (rep.contains("id") ? rep["id"].dump() : std::string("missing")) + ", expected " +
+                      std::to_string(id) + ")");
   return rep;
 }
 
@@ -351,18 +356,28 @@ void Connection::worker_done(int w, bool ended_normally) {
 }
 
 std::vector<Reply> Connection::call_batch(const std::vector<Call>& calls) {
+  std::vector<std::string> args_texts;
+  args_texts.reserve(calls.size());
+  for (const auto& c : calls) args_texts.push_back(c.args.dump());
+  return exchange(calls, args_texts);
+}
+
+std::vector<Reply> Connection::exchange(const std::vector<Call>& calls, const std::vector<std::string>& args_texts) {
   std::lock_guard lock(mutex_);
   const pid_t me = ::getpid();
-  json req;
-  req["id"] = next_id_++;
-  json cs = json::array();
-  for (const auto& c : calls) {
-    json j{{"slot", c.slot}, {"scalar", c.scalar}, {"args", c.args}};
-    if (!c.integrator.empty()) j["integrator"] = c.integrator;
-    if (c.repeat > 0) j["repeat"] = c.repeat;
-    cs.push_back(std::move(j));
+  // The request {"id", "calls": [{"slot", "scalar", "args", "integrator"?, "repeat"?}, ...]}, written
+  // out directly: the arguments are already text (the memory's key), and are not copied again.
+  const long id = next_id_++;
+  std::string req = "{\"id\":" + std::to_string(id) + ",\"calls\":[";
+  for (std::size_t i = 0; i < calls.size(); ++i) {
+    const Call& c = calls[i];
+    if (i > 0) req += ',';
+    req += "{\"slot\":" + json(c.slot).dump() + ",\"scalar\":" + json(c.scalar).dump() + ",\"args\":" + args_texts[i];
+    if (!c.integrator.empty()) req += ",\"integrator\":" + json(c.integrator).dump();
+    if (c.repeat > 0) req += ",\"repeat\":" + std::to_string(c.repeat);
+    req += '}';
   }
-  req["calls"] = std::move(cs);
+  req += "]}";
   const std::string what = calls.empty() ? std::string("an empty request")
                                          : "the call of '" + (calls[0].integrator.empty() ? "" : calls[0].integrator + ".") +
                                                calls[0].slot + "' (" + calls[0].scalar + ")";
@@ -372,7 +387,7 @@ std::vector<Reply> Connection::call_batch(const std::vector<Call>& calls) {
   json rep;
   try {
     if (session) slots_[w].in_flight = 1;
-    rep = request(s, req, what, 0);
+    rep = request_text(s, req, id, what, 0);
     if (!rep.contains("results") || !rep["results"].is_array() || rep["results"].size() != calls.size())
       throw RemoteError("the implementation's reply to " + what + " has no \"results\" array of " +
                         std::to_string(calls.size()) + " entries: " + rep.dump().substr(0, 300));
@@ -389,11 +404,12 @@ std::vector<Reply> Connection::call_batch(const std::vector<Call>& calls) {
     throw;
   }
   std::vector<Reply> out;
-  for (const auto& r : rep["results"]) {
+  out.reserve(calls.size());
+  for (auto& r : rep["results"]) {
     Reply x;
     if (r.is_object() && r.contains("ok")) {
       x.ok = true;
-      x.result = r["ok"];
+      x.result = std::move(r["ok"]);
     } else {
       x.error = r.is_object() && r.contains("error") && r["error"].is_string() ? r["error"].get<std::string>() : r.dump();
       if (r.is_object() && r.contains("traceback") && r["traceback"].is_string()) x.error += "\n" + r["traceback"].get<std::string>();
@@ -410,10 +426,11 @@ json Connection::call(const Call& c) {
            c.scalar + ")";
   };
   // A repeated call is answered from memory (harness/call_memo.hpp); a run of steps is not kept.
+  const std::string args_text = c.args.dump();  // the memory's key, and the request's arguments
   std::string key;
   std::optional<json> known;  // remembered, and asked again to compare
   if (c.repeat == 0) {
-    key = c.integrator + '\n' + c.slot + '\n' + c.scalar + '\n' + c.args.dump();
+    key = c.integrator + '\n' + c.slot + '\n' + c.scalar + '\n' + args_text;
     std::lock_guard lock(memo_mutex_);
     bool recheck = false;
     if (const json* m = memo_.find(key, &recheck)) {
@@ -421,14 +438,14 @@ json Connection::call(const Call& c) {
       known = *m;
     }
   }
-  auto r = call_batch({c});
+  auto r = exchange({c}, {args_text});
   if (!r[0].ok) throw RemoteCallError(function() + " raised an error:\n" + r[0].error);
   if (known) {
     const std::string differs = CallMemo::compare(*known, r[0].result);
     if (!differs.empty())
       throw RemoteCallError(function() + " answered the same arguments twice, differently (is it a function of its "
                             "arguments only? a persistent or global variable, or a random draw, makes it not):\n"
-                            "  arguments: " + c.args.dump().substr(0, 400) + "\n  " + differs);
+                            "  arguments: " + args_text.substr(0, 400) + "\n  " + differs);
     return std::move(r[0].result);
   }
   if (c.repeat == 0) {
@@ -526,6 +543,13 @@ struct RemoteSlot<T, R(A...)> {
     return [conn, slot, integrator](A... a) -> R {
       Call c{slot, scalar_word<T>(), json::array({encode<T, std::decay_t<A>>(a)...}), integrator};
       const json result = conn->call(c);
+      // Decoded first without the text that names the function (a reply that decodes needs none);
+      // a reply that does not is decoded again, to throw the same error with the function named.
+      static const std::string unnamed;
+      try {
+        return decode<T, R>(result, unnamed);
+      } catch (const ProtocolValueError&) {
+      }
       const std::string who = (integrator.empty() ? std::string() : integrator + ".") + slot;
       try {
         return decode<T, R>(result, "the result of " + conn->language() + " function '" + who + "' (" +

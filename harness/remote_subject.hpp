@@ -123,6 +123,10 @@ class Connection {
   void kill_server(ServerProcess& s);
   ServerProcess& server_for_this_process();
   json request(ServerProcess& s, const json& req, const std::string& what, double deadline_seconds);
+  json request_text(ServerProcess& s, const std::string& text, long id, const std::string& what,
+                    double deadline_seconds);
+  // call_batch with each call's arguments already written as JSON text (args_texts[i] for calls[i]).
+  std::vector<Reply> exchange(const std::vector<Call>& calls, const std::vector<std::string>& args_texts);
   std::string read_reply(ServerProcess& s, const std::string& what, double deadline_seconds);
   std::string died(ServerProcess& s, const std::string& otherwise);
 

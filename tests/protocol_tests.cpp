@@ -11,6 +11,9 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdint>
+#include <cstring>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <cstdio>
@@ -70,6 +73,45 @@ TEST(ProtocolCodec, ShapesAreValidatedWithTheirPlace) {
   EXPECT_THROW((decode<double, MatX<double>>(json::array({json::array({"1", "2"}), json::array({"1"})}), "r")),
                ProtocolValueError);
   EXPECT_THROW((decode<Real50, Real50>(json(0.1), "r")), ProtocolValueError);  // a JSON float cannot carry 50 digits
+  // An entry that does not decode is named by its place, although the place's text is built only
+  // then (decode_entry).
+  for (const json& bad : {json::array({json::array({"1", "2"}), json::array({"3", "x"})}),
+                          json::array({json::array({"1", "2"}), json::array({"3", "1e999"})})}) {
+    try {
+      decode<double, MatX<double>>(bad, "the result of f");
+      ADD_FAILURE() << bad.dump();
+    } catch (const ProtocolValueError& e) {
+      EXPECT_NE(std::string(e.what()).find("the result of f[1][1]"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// The harness writes a double as its shortest round-trip decimal (std::to_chars); every double,
+// the subnormal and the largest among them, reads back the same, whether written that way, as
+// "%.17g" (what the Octave server sends), or as a fraction.
+TEST(ProtocolCodec, EveryDoubleRoundTripsInTheShortestText) {
+  EXPECT_EQ(encode_scalar(0.1), "0.1");
+  EXPECT_EQ(encode_scalar(-2.0), "-2");
+  std::vector<double> xs = {0.0, -0.0, 0.1 + 0.2, 1.0 / 3.0, std::numeric_limits<double>::denorm_min(),
+                            std::numeric_limits<double>::min(), std::numeric_limits<double>::max(),
+                            -std::numeric_limits<double>::max()};
+  std::uint64_t bits = 0x9E3779B97F4A7C15ull;  // a fixed sequence of bit patterns (xorshift)
+  while (xs.size() < 20000) {
+    bits ^= bits << 13, bits ^= bits >> 7, bits ^= bits << 17;
+    double x;
+    std::memcpy(&x, &bits, sizeof x);
+    if (std::isfinite(x)) xs.push_back(x);
+  }
+  for (const double x : xs) {
+    const std::string text = encode_scalar(x);
+    const double back = decode_scalar<double>(json(text), "x");
+    ASSERT_EQ(std::memcmp(&back, &x, sizeof x), 0) << text;
+    ASSERT_LE(text.size(), 24u) << text;
+    char printed[40];
+    std::snprintf(printed, sizeof printed, "%.17g", x);
+    const double from_printf = decode<double, Vec3<double>>(json::array({printed, text, "1/4"}), "v")(0);
+    ASSERT_EQ(std::memcmp(&from_printf, &x, sizeof x), 0) << printed;
+  }
 }
 
 TEST(RemoteSubject, PythonCorrectAllScalars) {
