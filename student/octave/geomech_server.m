@@ -30,11 +30,16 @@ function kinds = gm_arg_kinds(sig)
   end
 end
 
-% A signature's result kind, argument kinds, and which arguments are not pairs (decoded inline).
+% A signature's result kind, argument kinds, and which arguments are not pairs (decoded inline);
+% `shape` says how gm_answer writes the result inline: 1 a vector, 2 a matrix, 0 by gm_encode.
 function k = gm_kinds(sig)
   args = gm_arg_kinds(sig);
-  k = struct('result', gm_kind(sig), 'args', {args}, ...
-             'plain', ~(strcmp(args, 'Vec3Pair') | strcmp(args, 'MatXPair')));
+  result = gm_kind(sig);
+  shape = 0;
+  if any(strcmp(result, {'Vec3', 'Vec6', 'VecX'})), shape = 1; end
+  if any(strcmp(result, {'Mat3', 'MatX'})), shape = 2; end
+  k = struct('result', result, 'args', {args}, ...
+             'plain', ~(strcmp(args, 'Vec3Pair') | strcmp(args, 'MatXPair')), 'shape', shape);
 end
 
 % A JSON value (after jsondecode) as Octave numbers: strings are decimal numbers ('so3' stays a
@@ -178,6 +183,9 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
           vals{k} = gm_decode_kind(kinds.args{k}, j);
         elseif iscell(j) && ~isempty(j) && ischar(j{1})
           vals{k} = reshape(str2double(j), [], 1);
+        elseif iscell(j) && ~isempty(j) && iscell(j{1})   % a matrix: rows of strings, as gm_decode reads them
+          cols = [j{:}];
+          vals{k} = str2double(cols).';
         elseif ischar(j)
           vals{k} = str2double(j);
           if isnan(vals{k}) && ~strcmpi(j, 'nan'), vals{k} = j; end
@@ -212,7 +220,26 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
       else
         r = feval(call.slot, vals{:});
       end
-      results{c} = [',{"ok":' gm_encode(kinds.result, r) '}'];
+      % The commonest results, a vector or a matrix, are written here as gm_vec and gm_mat write
+      % them: their calls (and gm_encode's, and gm_real's) cost twice the formatting itself.
+      if kinds.shape == 1 && isreal(r)
+        if isempty(r)
+          results{c} = ',{"ok":[]}';
+        else
+          enc = [',{"ok":[' sprintf('"%.17g",', double(r(:)))];
+          enc(end) = ']';
+          results{c} = [enc '}'];
+        end
+      elseif kinds.shape == 2 && isreal(r) && ndims(r) == 2 && ~isempty(r)
+        one = '"%.17g",';
+        row = ['[' reshape(one(ones(1, columns(r)), :).', 1, []) ','];   % '["%.17g",...,"%.17g",,'
+        row(end - 1) = ']';
+        enc = [',{"ok":[' sprintf(row, double(r).')];
+        enc(end) = ']';
+        results{c} = [enc '}'];
+      else
+        results{c} = [',{"ok":' gm_encode(kinds.result, r) '}'];
+      end
     catch err
       tb = err.message;
       for s = 1:numel(err.stack)
@@ -248,7 +275,9 @@ function r = gm_serve(out, in_session, slot_kinds, integ, step_kinds, target, tm
   while true
     line = fgetl(stdin);
     if ~ischar(line), return; end
-    if isempty(line) || all(isspace(line)), continue; end   % the empty line after each request
+    % The empty line after each request (a request's first character is '{': isspace is not
+    % run over the whole of it).
+    if isempty(line) || (line(1) ~= '{' && all(isspace(line))), continue; end
     req = jsondecode(line, 'makeValidName', false);
     if isfield(req, 'session')
       if strcmp(req.session, 'end') && in_session
