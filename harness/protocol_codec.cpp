@@ -82,14 +82,13 @@ bool decode_plain_double(const json& j, double& out) {
 
 template <>
 double decode_scalar<double>(const json& j, const std::string& what) {
-  if (j.is_number()) {
-    const double x = j.get<double>();
-    return x;
-  }
+  double x;
+  if (decode_plain_double(j, x)) return x;
+  // The rest: a fraction "p/q", text strtod reads but from_chars does not ("+1", " 1"), or an error.
   const std::string s = scalar_text(j, what, true);
   if (s.find('/') != std::string::npos) return to_double(parse_rational(s, what));
   char* end = nullptr;
-  const double x = std::strtod(s.c_str(), &end);
+  x = std::strtod(s.c_str(), &end);
   if (end == s.c_str() || *end != '\0') throw ProtocolValueError(what + ": not a number: '" + s + "'");
   if (!std::isfinite(x)) throw ProtocolValueError(what + ": not finite: '" + s + "'");
   return x;

@@ -333,7 +333,8 @@ void check_report(const Example& e, const json& report, int exit_code) {
 // What an example's report folder must say: its verdicts and claims (check_report), report.md's
 // lines and first fix, junit.xml, and the work-precision diagram of its integrators.
 void check_example_outputs(const Example& e, const fs::path& report_dir, int exit_code) {
-  check_report(e, read_json(report_dir / "verdicts.json"), exit_code);
+  const json report = read_json(report_dir / "verdicts.json");
+  check_report(e, report, exit_code);
   check(fs::exists(report_dir / "report.md"), "no report.md");
   std::ifstream md_in(report_dir / "report.md");
   std::ostringstream md_text;
@@ -351,7 +352,6 @@ void check_example_outputs(const Example& e, const fs::path& report_dir, int exi
   check(fs::exists(report_dir / "junit.xml"), "no junit.xml");
   // Issue 16: an implementation with integrators gets the work-precision diagram, with rows for
   // each of its integrators (in double) and for the suite's methods, Boost.Odeint's among them.
-  const json report = read_json(report_dir / "verdicts.json");
   std::vector<std::string> stepping;
   for (const auto& i : report.at("integrators"))
     for (const auto& sc : i.at("scalars"))
