@@ -675,6 +675,17 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   return s;
 }
 
+std::string octave_server_program() {
+  const char* which = std::getenv("GEOMECH_OCTAVE_SERVER");
+  const char* oc = std::getenv("GEOMECH_OCTAVE");
+  if ((which && std::string(which) == "script") || (oc && *oc)) return "";
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (ec) return "";
+  const fs::path server = exe.parent_path() / "geomech-octave-server";
+  return fs::exists(server, ec) ? server.string() : "";
+}
+
 std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why) {
   const fs::path p(file);
   std::error_code ec;
@@ -689,6 +700,7 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
   }
   if (p.extension() == ".m" || (fs::is_directory(p, ec) && !fs::is_empty(p, ec))) {
     if (language) *language = "octave";
+    if (const std::string embedded = octave_server_program(); !embedded.empty()) return {embedded, file};
     const char* oc = std::getenv("GEOMECH_OCTAVE");
     return {oc && *oc ? oc : "octave-cli", "--no-gui", "--quiet", "--no-init-file", "--no-history",
             suite_data_path("student/octave/geomech_server.m"), file};

@@ -181,6 +181,12 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
 // .m files); empty when the extension is not one of these. `why` says what is missing.
 std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why);
 
+// The Octave server with Octave's interpreter linked in (student/octave/octave_server.cpp), beside
+// this program when liboctave-dev was installed at build time; empty when it is not there, or when
+// $GEOMECH_OCTAVE_SERVER=script or $GEOMECH_OCTAVE (an octave-cli to run) asks for the script
+// server. Both answer alike; the linked one costs a half to a quarter of the time per call.
+std::string octave_server_program();
+
 // Writes all of `text` to `fd` (retrying short writes and EINTR); false if the descriptor is gone.
 // The client's requests and the C++ server's replies (harness/protocol_server.cpp) both use it.
 bool write_all(int fd, const std::string& text);

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 #include <cstdio>
@@ -294,14 +295,37 @@ TEST(RemoteSubject, AnImplementationThatHangsWhenLoadedFailsItsHandshakeInTime) 
   EXPECT_NO_THROW(prompt->hello());
 }
 
-// The Octave server through live pipes (the client sends an empty line after each request: Octave's
+// The two Octave servers: the script in octave-cli (student/octave/geomech_server.m) and, where
+// liboctave-dev was installed at build time, geomech-octave-server with the interpreter linked in,
+// which `geomech check mine.m` then uses. Each test that talks to Octave runs against both.
+struct OctaveServer {
+  std::string name;
+  std::vector<std::string> command;
+};
+
+std::vector<OctaveServer> octave_servers(const std::string& file) {
+  const std::string path = std::string(GM_SOURCE_DIR) + "/" + file;
+  std::string language, why;
+  std::vector<OctaveServer> out;
+  ::setenv("GEOMECH_OCTAVE_SERVER", "script", 1);
+  out.push_back({"the script server", server_command(path, &language, &why)});
+  ::unsetenv("GEOMECH_OCTAVE_SERVER");
+  if (octave_server_program().empty()) return out;  // built without liboctave-dev
+  const auto deflt = server_command(path, &language, &why);
+  EXPECT_NE(deflt.front().find("geomech-octave-server"), std::string::npos)
+      << "geomech-octave-server was built but is not what `geomech check " << file << "` runs";
+  out.push_back({"geomech-octave-server", deflt});
+  return out;
+}
+
+// The Octave servers through live pipes (the client sends an empty line after each request: Octave's
 // fgetl waits for the byte after a line's end), against the Python implementation.
 TEST(RemoteSubject, OctaveCorrectMatchesPython) {
   ASSERT_EQ(std::system("command -v octave-cli > /dev/null 2>&1"), 0) << "octave-cli is not installed: apt-get install -y octave (./geomech installs it; CI has it)";
+  for (const auto& server : octave_servers("examples/students/correct.m")) {
+  SCOPED_TRACE(server.name);
   harness::SubjectInfo oi, pi;
-  std::string language, why;
-  auto oc = std::make_shared<Connection>(
-      server_command(std::string(GM_SOURCE_DIR) + "/examples/students/correct.m", &language, &why), language);
+  auto oc = std::make_shared<Connection>(server.command, "octave");
   const SubjectSet o = remote_subject(oc, "correct_m", oi);
   const SubjectSet p = remote_subject(python("correct.py"), "correct_py", pi);
   ASSERT_TRUE(o.d);
@@ -318,6 +342,90 @@ TEST(RemoteSubject, OctaveCorrectMatchesPython) {
   const auto z = p.d->integrators[0].rigid_body_step(I, x, 0.01);
   EXPECT_LT((y.Pi - z.Pi).norm(), 1e-14);
   EXPECT_LT((y.O - z.O).norm(), 1e-14);
+  }
+}
+
+// A reply with its numbers as numbers: the script server writes "%.17g", geomech-octave-server the
+// shortest text that reads back exactly; both read back to the same doubles.
+json numbers_read(const json& j) {
+  if (j.is_string()) {
+    const std::string& t = j.get_ref<const std::string&>();
+    char* end = nullptr;
+    const double v = std::strtod(t.c_str(), &end);
+    return end && *end == '\0' && !t.empty() ? json(v) : j;
+  }
+  json out = j;
+  if (j.is_array() || j.is_object())
+    for (auto& [k, v] : out.items()) v = numbers_read(v);
+  return out;
+}
+
+// Both Octave servers answer alike: the same handshake, the same values, and the same error texts
+// and tracebacks for every way a reply can go wrong (tests/remote/octave_faults.m).
+TEST(RemoteSubject, OctaveServersAnswerAlike) {
+  ASSERT_EQ(std::system("command -v octave-cli > /dev/null 2>&1"), 0) << "octave-cli is not installed: apt-get install -y octave (./geomech installs it; CI has it)";
+  const json v3 = json::array({"0.25", "-1.5", "3"}), I = json::array({"2", "1", "0.5"});
+  const json m3 = json::array({json::array({"0", "-3", "-1.5"}), json::array({"3", "0", "-0.25"}),
+                               json::array({"1.5", "0.25", "0"})});
+  struct Case {
+    std::string file;
+    Call call;
+  };
+  const std::vector<Case> cases = {
+      {"tests/remote/octave_faults.m", {"hat", "double", json::array({v3}), ""}},
+      {"tests/remote/octave_faults.m", {"vee", "double", json::array({m3}), ""}},
+      {"tests/remote/octave_faults.m", {"pairing", "double", json::array({m3, m3}), ""}},
+      {"tests/remote/octave_faults.m", {"euler_3_8", "double", json::array({I, v3}), ""}},
+      {"tests/remote/octave_faults.m", {"lagrangian_2_5", "double", json::array({I, v3}), ""}},
+      {"tests/remote/octave_faults.m", {"lie_hat", "double", json::array({"so3", v3}), ""}},
+      {"tests/remote/octave_faults.m", {"lie_vee", "double", json::array({"so3", m3}), ""}},
+      {"tests/remote/octave_faults.m", {"hat_n", "double", json::array({v3, 3}), ""}},
+      {"tests/remote/octave_faults.m", {"vee_n", "double", json::array({m3}), ""}},
+      {"tests/remote/octave_faults.m", {"ad_star", "double", json::array({"so3", v3, v3}), ""}},
+      {"examples/students/correct.m", {"euler_3_8", "double", json::array({I, v3}), ""}},
+      {"examples/students/correct.m", {"hat_n", "double", json::array({json::array({"1", "2", "3", "4", "5", "6"}), 4}), ""}},
+      {"examples/students/correct.m", {"lie_hat", "double", json::array({"sl2", v3}), ""}},
+      {"examples/students/correct.m", {"clebsch_3_21", "double", json::array({I, v3, I}), ""}},
+      {"examples/students/correct.m",
+       {"rigid_body_step", "double", json::array({I, json{{"Pi", v3}, {"O", m3}}, "0.125"}), "midpoint"}},
+  };
+  std::map<std::string, std::vector<json>> seen;  // file -> [handshake, replies...] of the first server
+  for (const std::string file : {"tests/remote/octave_faults.m", "examples/students/correct.m"}) {
+    for (const auto& server : octave_servers(file)) {
+      SCOPED_TRACE(server.name + " on " + file);
+      Connection conn(server.command, "octave");
+      json hello = conn.hello();
+      std::vector<json> got{json{{"slots", hello["slots"]}, {"integrators", hello["integrators"]},
+                                 {"description", hello["description"]}, {"language", hello["language"]}}};
+      for (const auto& c : cases) {
+        if (c.file != file) continue;
+        const auto r = conn.call_batch({c.call});
+        ASSERT_EQ(r.size(), 1u);
+        got.push_back(json{{"slot", c.call.slot}, {"ok", r[0].ok}, {"result", numbers_read(r[0].result)}, {"error", r[0].error}});
+      }
+      auto [it, first] = seen.emplace(file, got);
+      if (first) continue;
+      ASSERT_EQ(it->second.size(), got.size());
+      for (std::size_t k = 0; k < got.size(); ++k) EXPECT_EQ(it->second[k].dump(1), got[k].dump(1));
+    }
+  }
+  // What the faults say, in either server (the first one's replies).
+  const auto& f = seen["tests/remote/octave_faults.m"];
+  auto error_of = [&](const std::string& slot) {
+    for (const auto& r : f)
+      if (r.value("slot", "") == slot) return r.at("error").get<std::string>();
+    return std::string("(no reply)");
+  };
+  EXPECT_NE(error_of("hat").find("a complex number where a real was expected"), std::string::npos) << error_of("hat");
+  EXPECT_NE(error_of("vee").find("vee_helper: refused a 3x3 matrix"), std::string::npos) << error_of("vee");
+  EXPECT_NE(error_of("vee").find("at vee_helper, line 15 ("), std::string::npos) << error_of("vee");
+  EXPECT_NE(error_of("vee").find("octave_faults.m)"), std::string::npos) << error_of("vee");
+  EXPECT_NE(error_of("pairing").find("expected a scalar, got a 3x3 array"), std::string::npos) << error_of("pairing");
+  EXPECT_NE(error_of("lagrangian_2_5").find("expected numbers, got a value of class char"), std::string::npos)
+      << error_of("lagrangian_2_5");
+  EXPECT_NE(error_of("lie_hat").find("expected numbers, got a value of class cell"), std::string::npos) << error_of("lie_hat");
+  EXPECT_NE(error_of("hat_n").find("expected a matrix, got an array of 3 dimensions"), std::string::npos) << error_of("hat_n");
+  EXPECT_FALSE(error_of("euler_3_8").empty());
 }
 
 // A run of steps ("repeat", docs/PROTOCOL.md) gives exactly the states of the calls one by one, in
@@ -340,12 +448,14 @@ TEST(RemoteSubject, ARunOfStepsIsTheStepsOneByOne) {
   for (const auto& in : p.mp->integrators)
     check(in, I.cast<Real50>().eval(), RigidBodyState<Real50>{P.cast<Real50>(), Mat3<Real50>::Identity()}, Real50(1) / 8);
   ASSERT_EQ(std::system("command -v octave-cli > /dev/null 2>&1"), 0) << "octave-cli is not installed: apt-get install -y octave (./geomech installs it; CI has it)";
-  harness::SubjectInfo oi;
-  std::string language, why;
-  auto oc = std::make_shared<Connection>(
-      server_command(std::string(GM_SOURCE_DIR) + "/examples/students/correct.m", &language, &why), language);
-  const SubjectSet o = remote_subject(oc, "correct_m", oi);
-  for (const auto& in : o.d->integrators) check(in, I, RigidBodyState<double>{P, Mat3<double>::Identity()}, 0.125);
+  for (const auto& server : octave_servers("examples/students/correct.m")) {
+    SCOPED_TRACE(server.name);
+    harness::SubjectInfo oi;
+    auto oc = std::make_shared<Connection>(server.command, "octave");
+    const SubjectSet o = remote_subject(oc, "correct_m", oi);
+    ASSERT_FALSE(o.d->integrators.empty());
+    for (const auto& in : o.d->integrators) check(in, I, RigidBodyState<double>{P, Mat3<double>::Identity()}, 0.125);
+  }
 }
 
 TEST(RemoteSubject, RoundTripCost) {

@@ -280,7 +280,8 @@ int run_protocol_bench(const std::string& file, int calls) {
   protocol::Connection conn(cmd, language);
   const auto d = protocol::parse_hello(conn.hello());
   const double start = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::cout << language << " server: start and handshake " << std::fixed << std::setprecision(3) << start << " s\n";
+  std::cout << language << " server (" << std::filesystem::path(cmd.front()).filename().string()
+            << "): start and handshake " << std::fixed << std::setprecision(3) << start << " s\n";
   for (const char* scalar : {"double", "mp50", "exact"}) {
     auto it = d.slots.find(scalar);
     const bool has = it != d.slots.end();

@@ -95,6 +95,9 @@ function v = gm_decode_kind(kind, j)
 end
 
 function gm_real(x)
+  if ~(isnumeric(x) || islogical(x))
+    error('geomech:class', 'expected numbers, got a value of class %s', class(x));
+  end
   if ~isreal(x)
     error('geomech:complex', 'a complex number where a real was expected');
   end
@@ -116,6 +119,9 @@ end
 
 function s = gm_mat(x)
   gm_real(x);
+  if ndims(x) > 2
+    error('geomech:shape', 'expected a matrix, got an array of %d dimensions', ndims(x));
+  end
   [r, c] = size(x);
   if r == 0 || c == 0, s = '[]'; return; end
   one = '"%.17g",';
@@ -222,7 +228,7 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
       end
       % The commonest results, a vector or a matrix, are written here as gm_vec and gm_mat write
       % them: their calls (and gm_encode's, and gm_real's) cost twice the formatting itself.
-      if kinds.shape == 1 && isreal(r)
+      if kinds.shape == 1 && isnumeric(r) && isreal(r)
         if isempty(r)
           results{c} = ',{"ok":[]}';
         else
@@ -230,7 +236,7 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
           enc(end) = ']';
           results{c} = [enc '}'];
         end
-      elseif kinds.shape == 2 && isreal(r) && ndims(r) == 2 && ~isempty(r)
+      elseif kinds.shape == 2 && isnumeric(r) && isreal(r) && ndims(r) == 2 && ~isempty(r)
         one = '"%.17g",';
         row = ['[' reshape(one(ones(1, columns(r)), :).', 1, []) ','];   % '["%.17g",...,"%.17g",,'
         row(end - 1) = ']';
