@@ -1,5 +1,6 @@
 # Installing the suite (issue 17): `cmake --install build --prefix P` puts in place
 #   P/bin/geomech                              the tool (geomech check FILE.cpp works from there)
+#   P/bin/geomech-octave-server                Octave's protocol server, where liboctave-dev was installed
 #   P/lib/geomech-spec/                        the prebuilt property and harness libraries, the check program's main
 #   P/include/geomech-spec/                    geomech/student.hpp and the core headers it includes
 #   P/share/geomech-spec/                      toolchain.json (paths relative to itself), spec/catalogue.json, quick_profile.json and thorough_only.json,
