@@ -452,7 +452,8 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   // The order that finds the likely mistake first (issue 32): what failed last time; then every
   // slot's own definition check, in every scalar; then the other properties, algebraic identities
   // before flows; then the integrators' claims after the slots their steps call; the long runs
-  // (bounded energy, then the pictures and the work-precision diagram) last. Within a group the
+  // (bounded energy, the pictures and the work-precision diagram) start as the flows begin, so
+  // that the rest runs beside them (below), and their verdicts come last. Within a group the
   // exact rationals and double before 50 digits, which cost most. The verdicts are sorted afterwards:
   // the order changes when a result is known, never what it is.
   std::vector<bool> replayed(items.size(), false);
@@ -492,16 +493,22 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   // The pictures and the work-precision diagram are the longest single tasks (11 s for an untrusted
   // C++ implementation, most of it alone at the end when started last): they start once the slots'
   // own checks and the exact identities have started, so that the other checks run beside them.
+  // So do the bounded-energy runs, for the same reason: started last, `correct.m`'s (10 s) ran alone
+  // at the end of its check (2026-11-27). Their verdicts still come after every slot's own check.
   {
-    std::size_t split = 0;
-    while (split < n_items) {
-      const auto key = schedule_key(items[order[split]], replayed[order[split]]);
-      if (std::get<0>(key) == 1 && std::get<1>(key) >= 2) break;
-      ++split;
-    }
+    auto group_from = [&](std::size_t from, int group) {
+      while (from < n_items) {
+        const auto key = schedule_key(items[order[from]], replayed[order[from]]);
+        if (std::get<0>(key) == 1 && std::get<1>(key) >= group) break;
+        ++from;
+      }
+      return from;
+    };
+    const std::size_t split = group_from(0, 2), long_runs = group_from(split, 4);
     for (std::size_t t = 0; t < split; ++t) io.start_order.push_back(t);
     for (std::size_t t = n_items; t < tasks.size(); ++t) io.start_order.push_back(t);
-    for (std::size_t t = split; t < n_items; ++t) io.start_order.push_back(t);
+    for (std::size_t t = long_runs; t < n_items; ++t) io.start_order.push_back(t);
+    for (std::size_t t = split; t < long_runs; ++t) io.start_order.push_back(t);
   }
 
   // Each check's verdicts the moment it ends, told to the listeners (check_events.hpp).
@@ -516,8 +523,8 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   };
   auto tell_progress = [&]() {
     progress.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // What is left, at the pace so far (the long runs come last and make this an underestimate
-    // until they start; it says "about").
+    // What is left, at the pace so far (the long runs make this an underestimate until they have
+    // run; it says "about").
     progress.left = progress.done == 0 ? -1.0
                                        : progress.elapsed / static_cast<double>(progress.done) *
                                              static_cast<double>(progress.total - progress.done);
