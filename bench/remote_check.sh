@@ -9,6 +9,7 @@
 #                                              whose timeouts cost the same either way, and bug_nan)
 #                                              untrusted against --trusted, empty caches, 2 at a time
 #                                              (with THOROUGH=1 untrusted --thorough too); 10-20 min
+# correct.m-script-server is correct.m through the script server in octave-cli.
 # Prints one line per implementation: wall time, checks, TIMEOUTs, checks cut short by the case
 # budget; then the 8 longest checks of each, then `geomech bench-protocol` for each language.
 set -euo pipefail
@@ -18,15 +19,21 @@ geomech=$build/bin/geomech
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
-runs=(examples/students/correct.cpp examples/students/correct.py examples/students/correct.m)
+# correct.m twice: with geomech-octave-server (Octave's interpreter linked in, where it is built) and
+# with the script server in octave-cli, the alternative it is measured against.
+runs=(examples/students/correct.cpp examples/students/correct.py examples/students/correct.m
+      "examples/students/correct.m script")
 [ "${THOROUGH:-0}" = 1 ] && runs+=("examples/students/correct.py --thorough")
 for run in "${runs[@]}"; do
   read -r file extra <<<"$run"
   name=$(basename "$file")${extra:+$extra}
   start=$(date +%s.%N)
   status=0
+  envs=()
+  if [ "$extra" = script ]; then envs=(GEOMECH_OCTAVE_SERVER=script); extra=; name=$(basename "$file")-script-server; fi
   # shellcheck disable=SC2086
-  (cd "$root" && "$geomech" check "$file" $extra --quiet --report "$out/$name" >"$out/$name.log" 2>&1) || status=$?
+  (cd "$root" && env "${envs[@]}" "$geomech" check "$file" $extra --quiet --report "$out/$name" \
+     >"$out/$name.log" 2>&1) || status=$?
   end=$(date +%s.%N)
   python3 - "$out/$name/verdicts.json" "$name" "$start" "$end" "$status" <<'EOF'
 import json, sys
@@ -48,6 +55,8 @@ for file in examples/students/correct.py examples/students/correct.m; do
   echo "protocol cost, $file:"
   (cd "$root" && "$geomech" bench-protocol "$file") | sed 's/^/    /'
 done
+echo "protocol cost, examples/students/correct.m, the script server:"
+(cd "$root" && GEOMECH_OCTAVE_SERVER=script "$geomech" bench-protocol examples/students/correct.m) | sed 's/^/    /'
 
 if [ "${CLASS:-0}" = 1 ]; then
   mkdir -p "$out/class"
