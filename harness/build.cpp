@@ -4,6 +4,7 @@
 #include "harness/process.hpp"
 #include "harness/report.hpp"
 #include "harness/sandbox.hpp"
+#include "harness/submission_intake.hpp"
 
 #include <chrono>
 #include <filesystem>
@@ -30,7 +31,8 @@ SandboxSpec compiler_sandbox(const Toolchain& tc, const fs::path& dir) {
   auto add = [&](const fs::path& p) {
     if (p.empty() || !fs::exists(p, ec)) return;
     const std::string s = fs::weakly_canonical(p, ec).string();
-    if (s.rfind("/usr/", 0) == 0) return;  // the system is visible already
+    // The system is visible already, but for /usr/local (an installed suite's headers and libraries).
+    if (s.rfind("/usr/", 0) == 0 && s.rfind("/usr/local/", 0) != 0) return;
     spec.read_only.push_back(s);
   };
   for (const auto& inc : tc.includes) {
@@ -366,24 +368,45 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       r.message = "the toolchain " + tc.path + " has no server_object: rebuild the suite (`./geomech build`)";
       return r;
     }
-    // The file and the headers beside it (a submission's own, or a header shared by a class
-    // folder): not the other sources of its folder, which may be other students' submissions.
+    // The file and the headers beside it: in a class, the submission's snapshot holds only the
+    // student's own files and the headers the lecturer shares (harness/class_mode.hpp); for one file,
+    // the headers of its folder. Read as a stranger's (issue 46): a link, FIFO or device among them
+    // is refused by name, never followed or opened; not the other sources of the folder.
     fs::create_directories(dir / "src", ec);
     compiled_source = dir / "src" / source.filename();
-    std::vector<fs::path> copies{source};
-    for (const auto& e : fs::directory_iterator(source.parent_path(), ec))
-      if (e.is_regular_file() && (e.path().extension() == ".hpp" || e.path().extension() == ".h"))
-        copies.push_back(e.path());
-    for (const auto& from : copies) {
-      const fs::path to = dir / "src" / from.filename();
-      std::error_code copy_ec;
-      if (read_text(to) != read_text(from)) {
-        fs::remove(to, copy_ec);
-        fs::copy_file(from, to, copy_ec);
+    std::vector<std::pair<std::string, std::string>> copies;
+    try {
+      const StrangerFolder beside(source.parent_path().string());
+      copies.emplace_back(source.filename().string(), beside.read(source.filename().string(), IntakeLimits{}.file_bytes));
+      std::uint64_t bytes = copies.back().second.size();
+      for (const auto& e : beside.list()) {
+        const std::string ext = fs::path(e.name).extension().string();
+        if (ext != ".hpp" && ext != ".h") continue;
+        if (e.kind != EntryKind::File) throw RefusedEntry(e.name, describe(e.kind));
+        copies.emplace_back(e.name, beside.read(e.name, IntakeLimits{}.file_bytes));
+        if ((bytes += copies.back().second.size()) > IntakeLimits{}.total_bytes)
+          throw RefusedEntry(e.name, "beyond the size of a submission: " + std::to_string(IntakeLimits{}.total_bytes >> 20) + " MiB in all");
       }
-      if (copy_ec) {
-        r.message = "cannot copy " + from.string() + " into " + (dir / "src").string() + ": " + copy_ec.message();
-        return r;
+    } catch (const RefusedEntry& e) {
+      r.message = "the file is not compiled: " + std::string(e.what()) + " (beside " + source.filename().string() + ")";
+      return r;
+    }
+    std::vector<fs::path> stale;
+    for (const auto& e : fs::directory_iterator(dir / "src", ec))
+      if (std::none_of(copies.begin(), copies.end(), [&](const auto& c) { return c.first == e.path().filename().string(); }))
+        stale.push_back(e.path());
+    for (const auto& p : stale) fs::remove(p, ec);  // a header no longer beside it is no longer there
+    for (const auto& [name, text] : copies) {
+      const fs::path to = dir / "src" / name;
+      std::error_code copy_ec;
+      if (read_text(to) != text) {
+        fs::remove(to, copy_ec);
+        std::ofstream out(to, std::ios::binary | std::ios::trunc);
+        out.write(text.data(), static_cast<std::streamsize>(text.size()));
+        if (!out) {
+          r.message = "cannot copy " + name + " into " + (dir / "src").string();
+          return r;
+        }
       }
     }
     sandbox = compiler_sandbox(tc, dir);
@@ -489,12 +512,16 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       r.log.push_back(label + (o.verbose ? ": " + shell_join(p.argv) : ""));
     }
     compiled_anything = true;
-    const auto results = run_processes(specs, o.jobs);
+    const auto results = run_processes(specs, o.jobs, o.compile_timeout_seconds);
     for (std::size_t i = 0; i < todo.size(); ++i) {
       const int k = todo[i];
       const std::string scalar = kScalars[k];
       const ProcessResult& pr = results[i];
       st[k].output = pr.output;
+      if (pr.timed_out)  // said as an error of the file, so that the summary below shows it
+        st[k].output += "\n" + source.filename().string() + ": error: the compiler was stopped after " +
+                        std::to_string(static_cast<long>(o.compile_timeout_seconds)) +
+                        " s (an #include of a device such as /dev/zero, or a template recursion without end?)\n";
       std::ofstream(dir / (scalar + ".log"), std::ios::trunc) << shell_join(specs[i].argv) << "\n\n" << pr.output;
       if (pr.started && pr.exit_code == 0) {
         st[k].done = st[k].ok = true;
@@ -596,7 +623,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   if (!link_current) {
     r.log.push_back(std::string("linking") + (o.verbose ? ": " + link_cmd : ""));
     fs::remove(link_file, ec);
-    const ProcessResult pr = run_process(ProcessSpec{run_argv(link), {}, false});
+    const ProcessResult pr = run_process(ProcessSpec{run_argv(link), {}, false}, o.compile_timeout_seconds);
     if (!pr.started || pr.exit_code != 0) {
       std::string hint;
       if (pr.output.find("multiple definition of `main'") != std::string::npos)

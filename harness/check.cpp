@@ -98,6 +98,51 @@ Verdict base_verdict(const SubjectSet& s, const Item& item) {
   return v;
 }
 
+// A verdict's texts, each of a bounded size (issue 46): a message of a property may quote a
+// submission's message (bounded already where a remote one is read, not an in-process exception's),
+// and its counterexample, notes and evidence values the submission returned.
+void bound_texts(Verdict& v) {
+  v.message = bounded_text(v.message, 2 * kMessageCap);
+  for (auto& [type, value] : v.counterexample) value = bounded_text(value);
+  for (auto& n : v.notes) n = bounded_text(n);
+  for (auto& c : v.claims) c.evidence = bounded_text(c.evidence);
+  v.discard_reason = bounded_text(v.discard_reason);
+}
+
+// All of a report's texts together stay under kReportTextBudget (issue 46: every slot of a
+// submission may raise a message as long as it is allowed): the longest messages are cut to 1 KiB
+// until they fit, and the report says how many were.
+void keep_within_budget(CheckResult& r) {
+  auto size_of = [](const Verdict& v) {
+    std::size_t n = v.message.size() + v.discard_reason.size();
+    for (const auto& [type, value] : v.counterexample) n += value.size();
+    for (const auto& note : v.notes) n += note.size();
+    for (const auto& c : v.claims) n += c.evidence.size();
+    return n;
+  };
+  std::size_t total = 0;
+  for (const auto& v : r.verdicts) total += size_of(v);
+  if (total <= kReportTextBudget) return;
+  std::vector<Verdict*> longest;
+  for (auto& v : r.verdicts) longest.push_back(&v);
+  std::sort(longest.begin(), longest.end(), [&](const Verdict* a, const Verdict* b) { return size_of(*a) > size_of(*b); });
+  std::size_t cut = 0;
+  for (Verdict* v : longest) {
+    if (total <= kReportTextBudget) break;
+    const std::size_t before = size_of(*v);
+    v->message = bounded_text(v->message, 1024);
+    for (auto& [type, value] : v->counterexample) value = bounded_text(value, 1024);
+    for (auto& note : v->notes) note = bounded_text(note, 1024);
+    for (auto& c : v->claims) c.evidence = bounded_text(c.evidence, 1024);
+    total -= before - size_of(*v);
+    ++cut;
+  }
+  r.info.warnings.push_back("the messages of " + std::to_string(cut) + " checks are cut to 1 KiB each: together the "
+                            "messages of a report are kept under " + std::to_string(kReportTextBudget >> 20) +
+                            " MiB, and each is shown up to " + std::to_string(kMessageCap) +
+                            " bytes (its beginning and its end) whatever the code under test raises");
+}
+
 // Turns the end of a child that did not report verdicts into one verdict.
 Verdict abnormal_verdict(const SubjectSet& s, const Item& item, const TaskResult& t, const RunOptions& run) {
   Verdict v = base_verdict(s, item);
@@ -287,7 +332,9 @@ std::vector<Verdict> verdicts_of(const SubjectSet& s, const SubjectInfo& info, c
   }
   for (auto& v : vs) {
     explain_not_provided(v, *item.property, s, info);
-    // What the code under test wrote or raised reaches the reports as inert text (issue 34).
+    // What the code under test wrote or raised reaches the reports as inert text (issue 34), each
+    // text of a bounded size (issue 46).
+    bound_texts(v);
     v.message = inert_text(v.message);
     for (auto& [type, value] : v.counterexample) value = inert_text(value);
     for (auto& n : v.notes) n = inert_text(n);
@@ -472,9 +519,11 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   for (std::size_t i : order) {
     const Item item = items[i];
     tasks.push_back([&s, item, &cfg]() {
-      if (item.integrator.empty()) return verdicts_to_string(run_property(*item.property, s, item.kind, cfg.run));
-      const SubjectSet one = only_integrator(s, item.kind, item.integrator);
-      return verdicts_to_string(run_property(*item.property, one, item.kind, cfg.run));
+      std::vector<Verdict> vs = item.integrator.empty()
+                                    ? run_property(*item.property, s, item.kind, cfg.run)
+                                    : run_property(*item.property, only_integrator(s, item.kind, item.integrator), item.kind, cfg.run);
+      for (auto& v : vs) bound_texts(v);  // before they cross to the harness (issue 46)
+      return verdicts_to_string(vs);
     });
   }
   const std::size_t n_items = tasks.size();
@@ -561,6 +610,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     if (a.scalar != b.scalar) return scalar_rank(a.scalar) < scalar_rank(b.scalar);
     return a.integrator < b.integrator;
   });
+  keep_within_budget(result);
   account_for_slots(result, s, cfg);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (CheckListener* l : cfg.listeners) l->ended(result);

@@ -1,6 +1,8 @@
 #include "harness/class_mode.hpp"
 #include "harness/gradebook.hpp"
 #include "harness/sandbox.hpp"
+#include "harness/inert_text.hpp"
+#include "harness/submission_intake.hpp"
 
 #include "harness/isolate.hpp"
 #include "harness/process.hpp"
@@ -28,12 +30,8 @@ using nlohmann::json;
 
 namespace {
 
-bool registers_student(const fs::path& p) {
-  std::ifstream f(p);
-  std::ostringstream os;
-  os << f.rdbuf();
-  return os.str().find("GEOMECH_STUDENT(") != std::string::npos;
-}
+// The problem of a submission refused before anything of it was checked (issue 46).
+const std::string kNotRead = "the submission was not read: ";
 
 struct Row {
   Implementation impl;
@@ -65,7 +63,9 @@ json row_json(const Row& row) {
 // The row back, with the report of a checked implementation read from `reports`/<name>.
 Row row_from_json(const json& r, const fs::path& reports) {
   Row row;
-  row.impl = {r.at("name"), r.at("source")};
+  row.impl.name = r.at("name");
+  row.impl.source = r.at("source");
+
   row.built = r.at("built");
   row.build_message = r.at("build_message");
   row.build_seconds = r.at("build_seconds");
@@ -73,6 +73,9 @@ Row row_from_json(const json& r, const fs::path& reports) {
   row.check_seconds = r.at("check_seconds");
   row.problem = r.at("problem");
   if (row.built && row.problem.empty()) {
+    // A name from a file (a shard, a kept row) names a folder here only when it could name one.
+    if (const std::string why = bad_implementation_name(row.impl.name); !why.empty())
+      throw std::runtime_error("a class result names an implementation '" + inert_text(row.impl.name) + "': " + why);
     std::ifstream f(reports / row.impl.name / "verdicts.json");
     try {
       row.report = json::parse(f);
@@ -98,18 +101,11 @@ struct Fingerprint {
     os << f.rdbuf();
     add(os.str());
   }
-  void add_tree(const fs::path& p) {
-    std::error_code ec;
-    if (fs::is_directory(p, ec)) {
-      std::vector<fs::path> entries;
-      for (const auto& e : fs::directory_iterator(p, ec)) entries.push_back(e.path());
-      std::sort(entries.begin(), entries.end());
-      for (const auto& e : entries) {
-        add(e.filename().string());
-        add_tree(e);
-      }
-    } else {
-      add_file(p);
+  // A submission's snapshot: every path and its bytes (harness/submission_intake.hpp).
+  void add_tree(const SubmissionTree& t) {
+    for (const auto& [path, text] : t.files) {
+      add(path);
+      add(text);
     }
   }
   std::string hex() const {
@@ -149,7 +145,8 @@ StudentResult student_result(const Row& row) {
   }
   if (!row.problem.empty()) {
     s.status = "not checked";
-    s.first_fix = row.problem.substr(0, row.problem.find('\n'));
+    if (row.problem.rfind(kNotRead, 0) == 0) s.report.clear();  // refused: there is no report
+    s.first_fix = inert_text(bounded_text(row.problem.substr(0, row.problem.find('\n'))));
     return s;
   }
   s.status = "checked";
@@ -183,10 +180,10 @@ StudentResult student_result(const Row& row) {
 std::string in_words(const Row& row) {
   const StudentResult s = student_result(row);
   std::ostringstream os;
-  os << "- **" << row.impl.name << "**";
+  os << "- **" << md_inline(row.impl.name) << "**";
   if (s.status != "checked") {
     os << ": " << (s.status == "does not compile" ? "does not compile (the compiler's message is below)"
-                                                   : "not checked: " + s.first_fix)
+                                                   : "not checked: " + md_inline(s.first_fix))
        << ".\n";
     return os.str();
   }
@@ -205,7 +202,7 @@ std::string in_words(const Row& row) {
   } else {
     os << s.wrong.size() << " wrong (";
     for (std::size_t i = 0; i < s.wrong.size(); ++i) os << (i ? ", " : "") << s.wrong[i];
-    os << "); first fix: " << s.first_fix;
+    os << "); first fix: " << md_inline(s.first_fix);
   }
   std::vector<std::string> failed, verified;
   for (const auto& c : s.claims)
@@ -251,39 +248,84 @@ Row row_of(const Implementation& impl, const TaskResult& t, const std::string& r
 std::vector<Implementation> find_implementations(const std::string& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) throw std::runtime_error(dir + " is not a folder");
+  const StrangerFolder folder(dir);
   std::vector<Implementation> out;
-  for (const auto& e : fs::directory_iterator(dir, ec)) {
-    if (e.is_regular_file() && (e.path().extension() == ".cpp" || e.path().extension() == ".py" ||
-                                e.path().extension() == ".m")) {
-      out.push_back({e.path().stem().string(), e.path().string()});
-    } else if (e.is_directory()) {
+  auto is_source = [](const std::string& ext) { return ext == ".cpp" || ext == ".py" || ext == ".m"; };
+  for (const auto& e : folder.list()) {
+    const fs::path p(e.name);
+    const std::string ext = p.extension().string();
+    // Hidden: a .git folder, an editor's file, our own snapshots; but "..py" or "...py" would be
+    // implementations named "." or "..", refused below by name.
+    if (e.name[0] == '.' && p.stem() != "." && p.stem() != "..") continue;
+    Implementation impl;
+    impl.origin = e.name;
+    impl.source = (fs::path(dir) / e.name).string();
+    if (e.kind == EntryKind::File) {
+      if (!is_source(ext)) continue;
+      impl.name = p.stem().string();
+    } else if (e.kind == EntryKind::Folder) {
       // A student's folder: one .cpp that registers a student, else one .py, else .m files (an
-      // Octave implementation may be a folder of function files).
-      std::vector<fs::path> sources, python;
+      // Octave implementation may be a folder of function files). Looked at without following
+      // anything: a link, FIFO, socket or device in it refuses the submission, naming the entry.
+      impl.name = e.name;
+      std::vector<std::string> sources, python;
       bool octave = false;
-      for (const auto& f : fs::directory_iterator(e.path(), ec)) {
-        if (!f.is_regular_file()) continue;
-        const auto ext = f.path().extension();
-        if (ext == ".cpp" && registers_student(f.path())) sources.push_back(f.path());
-        if (ext == ".py") python.push_back(f.path());
-        if (ext == ".m") octave = true;
+      try {
+        for (const auto& f : folder.list(e.name)) {
+          if (f.name[0] == '.' || f.name == "__pycache__") continue;
+          const std::string rel = e.name + "/" + f.name;
+          if (f.kind != EntryKind::File && f.kind != EntryKind::Folder) throw RefusedEntry(rel, describe(f.kind));
+          if (f.kind != EntryKind::File) continue;
+          const std::string fext = fs::path(f.name).extension().string();
+          if (fext == ".cpp" && folder.read(rel, IntakeLimits{}.file_bytes).find("GEOMECH_STUDENT(") != std::string::npos)
+            sources.push_back(rel);
+          if (fext == ".py") python.push_back(rel);
+          if (fext == ".m") octave = true;
+        }
+        if (sources.size() == 1) impl.origin = sources.front();
+        else if (sources.empty() && python.size() == 1) impl.origin = python.front();
+        else if (sources.empty() && python.empty() && octave) impl.origin = e.name;
+        else continue;  // not a submission (a folder of shared material, an empty folder)
+        impl.source = (fs::path(dir) / impl.origin).string();
+      } catch (const RefusedEntry& r) {
+        impl.refused = r.what();
       }
-      const std::string name = e.path().filename().string();
-      if (sources.size() == 1) out.push_back({name, sources.front().string()});
-      else if (sources.empty() && python.size() == 1) out.push_back({name, python.front().string()});
-      else if (sources.empty() && python.empty() && octave) out.push_back({name, e.path().string()});
+    } else {
+      // A link, FIFO, socket or device: never followed or opened. Named like a submission (or like
+      // a folder, which a link may stand for), it is one that cannot be checked; otherwise it is
+      // not a submission and is left alone.
+      if (!ext.empty() && !is_source(ext)) continue;
+      impl.name = is_source(ext) ? p.stem().string() : e.name;
+      impl.refused = e.name + ": " + describe(e.kind);
     }
+    if (const std::string why = bad_implementation_name(impl.name); !why.empty()) {
+      impl.refused = "'" + inert_text(e.name) + "' cannot be checked under the name '" + inert_text(impl.name) +
+                     "': " + why + " (rename it)";
+      impl.name = inert_text(impl.name);  // shown, never a folder: nothing of it is written
+      impl.source.clear();
+    }
+    out.push_back(std::move(impl));
   }
-  if (ec) throw std::runtime_error("cannot read " + dir + ": " + ec.message());
   std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  // Two entries of one name (bob.py and a folder bob): neither is checked, and both rows say why.
   for (std::size_t i = 1; i < out.size(); ++i)
-    if (out[i].name == out[i - 1].name)
-      throw std::runtime_error("two implementations in " + dir + " are both named '" + out[i].name +
-                               "' (a file and a folder); rename one");
+    if (out[i].name == out[i - 1].name) {
+      const std::string why = "two entries of the class folder are both named '" + out[i].name + "' (" +
+                              out[i - 1].origin + " and " + out[i].origin + "); rename one";
+      out[i].refused = out[i - 1].refused = why;
+    }
   if (out.empty())
     throw std::runtime_error(dir + " holds no implementation (*.cpp, *.py or *.m files, or folders with one .cpp using "
                              "GEOMECH_STUDENT, one .py, or .m files)");
   return out;
+}
+
+std::string default_class_report_dir(const std::string& class_dir) {
+  std::error_code ec;
+  fs::path p = fs::absolute(class_dir, ec).lexically_normal();
+  if (!p.has_filename()) p = p.parent_path();  // "week3/" is "week3"
+  const std::string name = p.filename().string();
+  return "geomech-reports/" + (name.empty() ? std::string("class") : name);
 }
 
 
@@ -329,11 +371,11 @@ static int summarise_class(const std::string& class_dir, const std::vector<Row>&
   // The summary table.
   const auto& areas = area_names();
   std::ostringstream md, console;
-  md << "# geomech class report: " << class_dir << "\n\n";
+  md << "# geomech class report: " << md_inline(class_dir) << "\n\n";
   if (!pending.empty()) {
     md << "**In progress: " << rows.size() << " of " << rows.size() + pending.size()
        << " implementations checked.** Not yet checked (a run stopped now resumes with them): ";
-    for (std::size_t i = 0; i < pending.size(); ++i) md << (i ? ", " : "") << pending[i];
+    for (std::size_t i = 0; i < pending.size(); ++i) md << (i ? ", " : "") << md_inline(pending[i]);
     md << ".\n\n";
   }
   md << rows.size() << " implementations. Each cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or "
@@ -371,8 +413,8 @@ static int summarise_class(const std::string& class_dir, const std::vector<Row>&
       result = row.exit_code == 0 ? "PASS" : row.report.value("verdict", std::string("FAIL"));
     }
     if (result != "PASS") ++bad;
-    md << "| " << row.impl.name << " | " << (result == "PASS" ? result : "**" + result + "**") << " |";
-    console << std::setw(26) << row.impl.name + " " << std::setw(18) << result + " ";
+    md << "| " << md_inline(row.impl.name) << " | " << (result == "PASS" ? result : "**" + result + "**") << " |";
+    console << std::setw(26) << inert_text(row.impl.name) + " " << std::setw(18) << result + " ";
     for (const auto& a : areas) {
       auto it = by_area.find(a);
       const std::string c = it == by_area.end() ? "-" : cell(it->second[0], it->second[1], it->second[2], it->second[3]);
@@ -380,7 +422,7 @@ static int summarise_class(const std::string& class_dir, const std::vector<Row>&
       console << std::setw(24) << c + " ";  // a cell wider than its column still ends with a space
     }
     const std::string link = row.impl.name + "/report.md";
-    md << " " << (row.built && row.problem.empty() ? "[" + link + "](" + link + ")" : "-") << " |\n";
+    md << " " << (row.built && row.problem.empty() ? "[" + md_inline(link) + "](" + md_link_target(link) + ")" : "-") << " |\n";
     console << "\n";
   }
   md << "\n## Each student in words\n\n";
@@ -388,11 +430,11 @@ static int summarise_class(const std::string& class_dir, const std::vector<Row>&
   md << "\n";
   for (const auto& row : rows) {
     if (!row.built && row.problem.empty()) {
-      md << "## " << row.impl.name << ": does not compile\n\n```\n" << row.build_message << "\n```\n\n";
-      console << "\n" << row.impl.name << " does not compile:\n" << row.build_message << "\n";
+      md << "## " << md_inline(row.impl.name) << ": does not compile\n\n" << md_fenced(bounded_text(row.build_message)) << "\n";
+      console << "\n" << inert_text(row.impl.name) << " does not compile:\n" << inert_text(bounded_text(row.build_message)) << "\n";
     } else if (!row.problem.empty()) {
-      md << "## " << row.impl.name << ": not checked\n\n```\n" << row.problem << "\n```\n\n";
-      console << "\n" << row.impl.name << ": " << row.problem << "\n";
+      md << "## " << md_inline(row.impl.name) << ": not checked\n\n" << md_fenced(bounded_text(row.problem)) << "\n";
+      console << "\n" << inert_text(row.impl.name) << ": " << inert_text(bounded_text(row.problem)) << "\n";
     }
   }
   write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
@@ -427,9 +469,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   if (o.shard_n < 1 || o.shard_k < 1 || o.shard_k > o.shard_n)
     throw std::runtime_error("--shard K/N needs 1 <= K <= N (got " + std::to_string(o.shard_k) + "/" +
                              std::to_string(o.shard_n) + ")");
-  const auto impls = shard_of(all_impls, o.shard_k, o.shard_n);
-  const std::string report_dir =
-      o.report_dir.empty() ? "geomech-reports/" + fs::path(o.dir).lexically_normal().filename().string() : o.report_dir;
+  auto impls = shard_of(all_impls, o.shard_k, o.shard_n);
+  const std::string report_dir = o.report_dir.empty() ? default_class_report_dir(o.dir) : o.report_dir;
   std::error_code ec;
   fs::create_directories(report_dir, ec);
   if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
@@ -463,22 +504,63 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   std::vector<std::optional<Row>> finished(impls.size());
   std::vector<std::size_t> to_check;
   std::size_t resumed = 0;
+  // The files the lecturer shares with every C++ submission (--shared), read once.
+  SubmissionTree shared;
+  for (const auto& file : o.shared) {
+    try {
+      shared.files.emplace_back(fs::path(file).filename().string(), read_stranger_file(file));
+    } catch (const RefusedEntry& e) {
+      throw std::runtime_error("--shared " + file + ": " + e.why());
+    }
+  }
+  // Each submission's snapshot (harness/submission_intake.hpp): read without following anything,
+  // within limits, into a folder of ours; what is fingerprinted, compiled and checked is that copy.
+  const StrangerFolder class_folder(o.dir);
+  // In the compilers' cache, under a name of the class folder: a whole run, its shards and a resumed
+  // run check the same copies (and a C++ one compiled once is not compiled again).
+  const fs::path snapshots = fs::absolute(o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir) /
+                             ("class-" + [&] {
+                               Fingerprint f;
+                               f.add(fs::absolute(o.dir).lexically_normal().string());
+                               return f.hex();
+                             }()) / "submissions";
   for (std::size_t i = 0; i < impls.size(); ++i) {
+    Implementation& impl = impls[i];
+    if (!impl.refused.empty()) {
+      Row row;
+      row.impl = impl;
+      row.problem = kNotRead + impl.refused;
+      finished[i] = std::move(row);
+      continue;
+    }
+    const bool folder = impl.origin.find('/') != std::string::npos ||
+                        class_folder.look(impl.origin).kind == EntryKind::Folder;
+    const std::string root = folder ? impl.origin.substr(0, impl.origin.find('/')) : impl.origin;
+    SubmissionTree tree;
+    try {
+      tree = read_submission(class_folder, root);
+    } catch (const RefusedEntry& e) {
+      impl.refused = e.what();
+      Row row;
+      row.impl = impl;
+      row.problem = kNotRead + impl.refused;
+      finished[i] = std::move(row);
+      continue;
+    }
+    const std::string ext = fs::path(impl.origin).extension().string();
+    if (ext == ".cpp")  // headers shared on purpose; a file of the student's own name stays theirs
+      for (const auto& [name, text] : shared.files)
+        if (std::none_of(tree.files.begin(), tree.files.end(), [&](const auto& f) { return f.first == name; }))
+          tree.files.emplace_back(name, text);
+    const fs::path dest = snapshots / impl.name;
+    write_tree(tree, dest);
+    impl.source = (folder && impl.origin.find('/') == std::string::npos)
+                      ? dest.string()  // an Octave folder
+                      : (dest / fs::path(impl.origin).filename()).string();
     Fingerprint f;
     f.add(suite_identity());
     f.add(options_text);
-    const fs::path source(impls[i].source);
-    if (fs::equivalent(source.parent_path(), o.dir, ec) || fs::is_directory(source, ec)) {
-      f.add_tree(source);
-      // What a file directly in the class folder may include: the folder's other files.
-      if (!fs::is_directory(source, ec))
-        for (const auto& e : fs::directory_iterator(o.dir, ec)) {
-          const auto ext = e.path().extension();
-          if (e.is_regular_file() && ext != ".cpp" && ext != ".py" && ext != ".m") f.add(e.path().filename().string()), f.add_file(e.path());
-        }
-    } else {
-      f.add_tree(source.parent_path());  // a student's own folder, with its headers
-    }
+    f.add_tree(tree);
     prints[i] = f.hex();
     const fs::path row_file = fs::path(report_dir) / impls[i].name / "class-row.json";
     if (!o.fresh && fs::exists(row_file, ec)) {

@@ -8,6 +8,13 @@
 // one .cpp that uses GEOMECH_STUDENT (a student's own folder, with headers beside it). Each is
 // built and checked in its own process, `jobs` at a time; a student whose code does not compile,
 // crashes or hangs gets a row saying so, and the others are unaffected.
+//
+// The class folder is a stranger's (issue 46; harness/submission_intake.hpp): it is read without
+// following a link or opening a FIFO or device, each submission is copied (a snapshot, within
+// limits) into the compilers' cache (<cache>/class-<id>/submissions/<name>/) and what is checked,
+// fingerprinted and compiled is that copy. A C++ file in a flat class folder sees only itself and the headers the lecturer shares on
+// purpose (--shared), never a classmate's. A submission holding a link, a FIFO, a socket, a device
+// or a hard link, or whose name cannot name a report, is NOT CHECKED with a row saying which file.
 #pragma once
 
 #include "harness/build.hpp"
@@ -46,16 +53,26 @@ struct ClassOptions {
   // checked again; --fresh checks everyone.
   bool fresh = false;
   GradeOptions grades;
+  // --shared FILE: headers (or other files) given to every C++ submission of the class, on
+  // purpose; nothing else of the class folder is shared (issue 46).
+  std::vector<std::string> shared;
 };
 
 struct Implementation {
-  std::string name;    // unique within the class (file stem, or folder name)
-  std::string source;  // the .cpp to compile
+  std::string name;     // unique within the class (file stem, or folder name)
+  std::string source;   // what is checked: the file (or Octave folder); in the snapshot once taken
+  std::string origin;   // where it is in the class folder, relative to it: "bob.py", "bob/rigid.cpp", "bob"
+  std::string refused;  // not empty: NOT CHECKED, and why (a link, a FIFO, a device, a bad name, a limit)
 };
 
-// The implementations of a class folder, sorted by name; throws std::runtime_error when the
-// folder cannot be read or holds none.
+// The implementations of a class folder, sorted by name, read without following anything
+// (harness/submission_intake.hpp); one that cannot be checked comes back with `refused` set.
+// Throws std::runtime_error when the folder cannot be read or holds none.
 std::vector<Implementation> find_implementations(const std::string& dir);
+
+// The report folder of a class when none is given: geomech-reports/<the class folder's name>,
+// the same however the folder is written ("week3", "week3/", "./week3", an absolute path).
+std::string default_class_report_dir(const std::string& class_dir);
 
 int run_class(const ClassOptions& o, const Toolchain& tc);
 

@@ -2,6 +2,10 @@
 // The LMS facts behind the column choices are documented in GRADEBOOK.md.
 #include "harness/gradebook.hpp"
 
+#include "harness/inert_text.hpp"
+
+#include <cctype>
+
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -92,7 +96,7 @@ std::string clip_feedback(std::string text, std::size_t max_bytes = 400) {
 
 std::string csv_row(const std::vector<std::string>& fields) {
   std::string line;
-  for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + csv_field(fields[i]);
+  for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + csv_field(spreadsheet_safe(inert_text(fields[i])));
   return line + "\r\n";  // RFC 4180 line break; both importers also accept it (GRADEBOOK.md)
 }
 
@@ -333,6 +337,20 @@ std::vector<std::string> roster_warnings(const std::vector<StudentResult>& cls, 
     if (!names.count(name)) out.push_back("roster row \"" + name + "\" matches no implementation in the class");
   std::sort(out.begin(), out.end());
   return out;
+}
+
+std::string spreadsheet_safe(const std::string& cell) {
+  if (cell.empty() || std::string_view("=+-@\t\r").find(cell[0]) == std::string_view::npos) return cell;
+  // A number ("-1.5") is data, not a formula; anything else that starts so is made text.
+  std::size_t i = cell[0] == '-' || cell[0] == '+' ? 1 : 0;
+  bool digits = false, dot = false;
+  for (; i < cell.size(); ++i) {
+    if (std::isdigit(static_cast<unsigned char>(cell[i])) != 0) digits = true;
+    else if (cell[i] == '.' && !dot) dot = true;
+    else break;
+  }
+  if (digits && i == cell.size()) return cell;
+  return "'" + cell;
 }
 
 std::string csv_field(std::string_view v) {

@@ -109,6 +109,11 @@ std::string write_gradebook_csv(const std::vector<StudentResult>& cls, const Rub
 
 // CSV helpers (RFC 4180), public so tests and callers can check the shape.
 std::string csv_field(std::string_view value);  // quotes only when needed
+// A cell that a spreadsheet would read as a formula (it starts with =, +, -, @, a tab or a carriage
+// return: OWASP's "CSV injection" guidance) made text by a leading apostrophe; a number such as
+// "-1.5" stays a number. Every cell of the gradebook goes through it (issue 46: a file named
+// "=1+1.py" is a student named "=1+1").
+std::string spreadsheet_safe(const std::string& cell);
 // Strict parser: accepts CRLF or LF; throws std::runtime_error (with a line
 // number) on an unbalanced quote, a quote inside an unquoted field, text after
 // a closing quote or a bare CR.

@@ -1,5 +1,7 @@
 #include "harness/inert_text.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 namespace gm::harness {
@@ -51,6 +53,66 @@ std::string inert_text(const std::string& s) {
     i += n;
   }
   return out;
+}
+
+std::string bounded_text(const std::string& text, std::size_t cap) {
+  if (text.size() <= cap) return text;
+  // Back to the start of a UTF-8 sequence (a continuation byte is 10xxxxxx).
+  auto boundary = [&](std::size_t at) {
+    while (at > 0 && at < text.size() && (static_cast<unsigned char>(text[at]) >> 6) == 0x2) --at;
+    return at;
+  };
+  const std::size_t head = boundary(cap * 3 / 4);
+  const std::size_t tail = boundary(text.size() - cap / 4);
+  return text.substr(0, head) + "\n[... " + std::to_string(tail - head) + " bytes cut: a message from the code under test is shown up to " +
+         std::to_string(cap) + " bytes, its beginning and its end ...]\n" + text.substr(tail);
+}
+
+std::string md_inline(const std::string& text) {
+  const std::string s = inert_text(text);
+  std::string out;
+  out.reserve(s.size() + 16);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const char c = s[i];
+    switch (c) {
+      case '<': out += "&lt;"; break;  // no raw HTML, no autolink
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;  // no entity spelled by the text
+      case '\n': out += "<br>"; break;
+      case '\t': out += ' '; break;
+      case '|': out += "\\|"; break;  // no table cell closed early
+      case ']':  // no link or image: "[text](url)" needs "]("
+        out += i + 1 < s.size() && s[i + 1] == '(' ? "\\]" : "]";
+        break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string md_link_target(const std::string& path) {
+  std::string out;
+  for (unsigned char c : path) {
+    if (std::isalnum(c) != 0 || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
+      out += static_cast<char>(c);
+    } else {
+      char buf[4];
+      std::snprintf(buf, sizeof buf, "%%%02X", c);
+      out += buf;
+    }
+  }
+  return out;
+}
+
+std::string md_fenced(const std::string& text) {
+  const std::string s = inert_text(text);
+  std::size_t longest = 0, run = 0;
+  for (char c : s) {
+    run = c == '`' ? run + 1 : 0;
+    longest = std::max(longest, run);
+  }
+  const std::string f(std::max<std::size_t>(3, longest + 1), '`');
+  return f + "\n" + s + (s.empty() || s.back() == '\n' ? "" : "\n") + f + "\n";
 }
 
 }  // namespace gm::harness

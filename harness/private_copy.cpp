@@ -1,9 +1,13 @@
 #include "harness/private_copy.hpp"
 
+#include "harness/submission_intake.hpp"
+
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
+
 
 namespace gm::harness {
 
@@ -66,9 +70,38 @@ std::string PrivateCopy::add(const std::string& path, const std::string& area) {
     if (ec) throw std::runtime_error("cannot create " + folder.string() + ": " + ec.message());
     areas_.push_back(area);
   }
+  if (area == "submission") {
+    // A stranger's file or folder (issue 46): read without following a link at any depth, never a
+    // FIFO or device opened, within limits (harness/submission_intake.hpp); a refusal names the entry.
+    const std::string parent = from.has_parent_path() ? from.parent_path().string() : ".";
+    const StrangerFolder folder(parent);
+    const std::string leaf = name.string();
+    const bool is_folder = folder.look(leaf).kind == EntryKind::Folder;
+    const fs::path to = folder_path(area) / name;
+    if (is_folder) {
+      write_tree(read_submission(folder, leaf), to);
+    } else {
+      const std::string text = folder.read(leaf, IntakeLimits{}.file_bytes);
+      std::ofstream out(to, std::ios::binary | std::ios::trunc);
+      out.write(text.data(), static_cast<std::streamsize>(text.size()));
+      if (!out) throw std::runtime_error("cannot write " + to.string());
+    }
+    // Readable by the sandbox's user, a program (a C++ submission's server) still executable.
+    const bool program = !is_folder && (fs::symlink_status(from, ec).permissions() & fs::perms::owner_exec) != fs::perms::none;
+    if (is_folder) {
+      fs::permissions(to, kSubFolder, ec);
+      for (auto it = fs::recursive_directory_iterator(to, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+        fs::permissions(it->path(), it->is_directory() ? kSubFolder : kFile, ec);
+    } else {
+      fs::permissions(to, program ? kFile | fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec : kFile, ec);
+    }
+    return "/" + area + "/" + name.string();
+  }
   copy_into(fs::canonical(from, ec).empty() ? from : fs::canonical(from, ec), folder / name);
   return "/" + area + "/" + name.string();
 }
+
+fs::path PrivateCopy::folder_path(const std::string& area) const { return fs::path(root_) / area; }
 
 std::vector<std::pair<std::string, std::string>> PrivateCopy::mounts() const {
   std::vector<std::pair<std::string, std::string>> out;

@@ -11,6 +11,7 @@
 // The copy is removed when the object goes.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,15 +26,18 @@ class PrivateCopy {
   PrivateCopy(const PrivateCopy&) = delete;
   PrivateCopy& operator=(const PrivateCopy&) = delete;
 
-  // Copies a file, or a folder's regular files and sub-folders (symbolic links are left out: they
-  // would point outside), under `area` ("submission" or "geomech"); returns the path inside the
-  // sandbox, /<area>/<file name>.
+  // Copies a file, or a folder's regular files and sub-folders, under `area` ("submission" or
+  // "geomech"); returns the path inside the sandbox, /<area>/<file name>. The "submission" area is
+  // a stranger's: read without following any link, never opening a FIFO or device, within limits
+  // (harness/submission_intake.hpp; a refusal throws RefusedEntry naming the entry). The suite's
+  // own files ("geomech") are copied as they are (a link among them is left out).
   std::string add(const std::string& path, const std::string& area);
 
   // The --ro-bind pairs for SandboxSpec::mounts: each area's folder here and its path inside.
   std::vector<std::pair<std::string, std::string>> mounts() const;
 
  private:
+  std::filesystem::path folder_path(const std::string& area) const;
   std::string root_;  // the fresh folder here (mode 0711)
   std::vector<std::string> areas_;
 };

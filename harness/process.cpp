@@ -28,6 +28,28 @@ struct Child {
   std::string capture;  // temporary file holding the output
 };
 
+// A child's output, as much of it as a caller can use (issue 46: a compiler, or a program under
+// test, may write gigabytes): its first kOutputHead bytes and its last kOutputTail, with the cut said.
+constexpr std::size_t kOutputHead = 1u << 20, kOutputTail = 64u << 10;
+std::string read_bounded(const std::string& path) {
+  std::ifstream f(path, std::ios::binary | std::ios::ate);
+  if (!f) return {};
+  const std::streamoff size = f.tellg();
+  f.seekg(0);
+  if (size <= static_cast<std::streamoff>(kOutputHead + kOutputTail)) {
+    std::string out(static_cast<std::size_t>(size), '\0');
+    f.read(out.data(), size);
+    out.resize(static_cast<std::size_t>(f.gcount()));
+    return out;
+  }
+  std::string head(kOutputHead, '\0'), tail(kOutputTail, '\0');
+  f.read(head.data(), static_cast<std::streamsize>(kOutputHead));
+  f.seekg(size - static_cast<std::streamoff>(kOutputTail));
+  f.read(tail.data(), static_cast<std::streamsize>(kOutputTail));
+  return head + "\n[... " + std::to_string(size - static_cast<std::streamoff>(kOutputHead + kOutputTail)) +
+         " bytes of output cut ...]\n" + tail;
+}
+
 }  // namespace
 
 std::string shell_quote(const std::string& s) {
@@ -66,6 +88,10 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
       posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, capture.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
       posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
     }
+    // Nothing a child runs (a compiler told to #include "/dev/stdin", a submission's program)
+    // reads this process's input, which may be the lecturer's terminal (issue 46). A child whose
+    // output passes through (the user's own check) keeps the terminal.
+    if (!spec.pass_through) posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawnattr_t attr;
     posix_spawnattr_init(&attr);
     std::vector<char*> argv;
@@ -93,10 +119,7 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
     if (WIFEXITED(status)) r.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) r.signal = WTERMSIG(status);
     if (!c.capture.empty()) {
-      std::ifstream f(c.capture, std::ios::binary);
-      std::ostringstream os;
-      os << f.rdbuf();
-      r.output = os.str();
+      r.output = read_bounded(c.capture);
       if (specs[c.index].output_file.empty()) ::unlink(c.capture.c_str());
     }
   };

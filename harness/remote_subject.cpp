@@ -1,6 +1,7 @@
 #include "harness/remote_subject.hpp"
 
 #include "harness/inert_text.hpp"
+#include "harness/submission_intake.hpp"
 #include "harness/slot_names.hpp"
 
 #include "core/data_path.hpp"
@@ -61,6 +62,8 @@ std::string slot_table_json() {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+constexpr std::size_t kMaxReplyBytes = 32u << 20;  // one reply line (issue 46)
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -247,6 +250,15 @@ std::string Connection::read_reply(ServerProcess& s, const std::string& what, do
                         what + with_output(s));
     }
     s.buffer.append(buf, static_cast<std::size_t>(n));
+    // A reply is one line; one longer than any the protocol needs (the longest, a run of 512 steps of
+    // Manakov's n = 6 in 50 digits, is about 2 MiB) is a flood, not a reply (issue 46): the
+    // implementation's process is not read further.
+    if (s.buffer.size() > kMaxReplyBytes && s.buffer.find('\n') == std::string::npos) {
+      s.buffer.clear();
+      throw RemoteError("the implementation's process (" + program_name(argv_) + ") answered " + what +
+                        " with more than " + std::to_string(kMaxReplyBytes >> 20) +
+                        " MiB on one line: a flood, not a reply (nothing more of it is read)");
+    }
   }
 }
 
@@ -274,11 +286,11 @@ json Connection::request_text(ServerProcess& s, const std::string& text, long id
   }
   if (!rep.is_object()) throw RemoteError("the implementation's reply to " + what + " is not a JSON object: " + line.substr(0, 300));
   if (rep.contains("died"))
-    throw RemoteError("the implementation's process " + (rep["died"].is_string() ? rep["died"].get<std::string>() : rep["died"].dump()) +
+    throw RemoteError("the implementation's process " + harness::bounded_text(rep["died"].is_string() ? rep["died"].get<std::string>() : rep["died"].dump()) +
                       " while answering " + what + with_output(s));
   if (rep.contains("fatal"))
     throw RemoteError("the implementation's server failed on " + what + ": " +
-                      (rep["fatal"].is_string() ? rep["fatal"].get<std::string>() : rep["fatal"].dump()) + with_output(s));
+                      harness::bounded_text(rep["fatal"].is_string() ? rep["fatal"].get<std::string>() : rep["fatal"].dump()) + with_output(s));
   if (!rep.contains("id") || rep["id"] != id)
     throw RemoteError("the implementation's reply to " + what + " answers another request (id " +
                       (rep.contains("id") ? rep["id"].dump() : std::string("missing")) + ", expected " +
@@ -411,8 +423,12 @@ std::vector<Reply> Connection::exchange(const std::vector<Call>& calls, const st
       x.ok = true;
       x.result = std::move(r["ok"]);
     } else {
-      x.error = r.is_object() && r.contains("error") && r["error"].is_string() ? r["error"].get<std::string>() : r.dump();
-      if (r.is_object() && r.contains("traceback") && r["traceback"].is_string()) x.error += "\n" + r["traceback"].get<std::string>();
+      // A message and a traceback of any size are shown up to kMessageCap bytes each (issue 46).
+      x.error = harness::bounded_text(r.is_object() && r.contains("error") && r["error"].is_string()
+                                          ? r["error"].get<std::string>()
+                                          : r.dump(-1, ' ', false, json::error_handler_t::replace));
+      if (r.is_object() && r.contains("traceback") && r["traceback"].is_string())
+        x.error += "\n" + harness::bounded_text(r["traceback"].get<std::string>());
     }
     out.push_back(std::move(x));
   }
@@ -457,12 +473,16 @@ json Connection::call(const Call& c) {
 
 // ---- the handshake ------------------------------------------------------------------------------
 
+namespace {
+bool is_scalar_word(const std::string& s) { return s == "double" || s == "mp50" || s == "exact"; }
+}  // namespace
+
 RemoteDescription parse_hello(const json& h) {
   auto bad = [](const std::string& why) { return RemoteError("handshake: " + why); };
   if (!h.is_object()) throw bad("not a JSON object");
   if (h.contains("fatal"))
     throw RemoteError("the implementation could not start: " +
-                      (h["fatal"].is_string() ? h["fatal"].get<std::string>() : h["fatal"].dump()));
+                      harness::bounded_text(h["fatal"].is_string() ? h["fatal"].get<std::string>() : h["fatal"].dump()));
   if (h.value("protocol", "") != kProtocolName)
     throw bad(std::string("\"protocol\" must be \"") + kProtocolName + "\"");
   if (!h.contains("version") || !h["version"].is_number_integer() || h["version"].get<int>() != kProtocolVersion)
@@ -489,6 +509,12 @@ RemoteDescription parse_hello(const json& h) {
     for (const auto& i : h["integrators"]) {
       RemoteDescription::Integrator x;
       x.name = i.at("name").get<std::string>();
+      // An integrator's name names figures and report sections and is typed in --integrator:
+      // letters, digits and "_.-", at most 64 (issue 46: it is the submission's text).
+      if (x.name.empty() || x.name.size() > 64 ||
+          x.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") != std::string::npos)
+        throw bad("an integrator's name must be 1 to 64 letters, digits, '_', '.' or '-'; got '" +
+                  harness::inert_text(harness::bounded_text(x.name, 200)) + "'");
       for (const auto& s : i.value("steps", json::array())) x.steps.push_back(s.get<std::string>());
       for (const auto& s : i.value("scalars", json::array({"double"}))) x.scalars.push_back(s.get<std::string>());
       if (i.contains("claims") && i["claims"].is_object()) {
@@ -516,17 +542,28 @@ RemoteDescription parse_hello(const json& h) {
       }
       d.integrators.push_back(std::move(x));
     }
-  if (h.contains("notes"))
+  // What the implementation says of itself is its own text (issue 46): each bounded, notes only on
+  // slots and scalars there are, at most kMaxRemarks warnings and unchecked items (the rest counted).
+  auto text = [](const json& j) { return harness::bounded_text(j.is_string() ? j.get<std::string>() : j.dump()); };
+  constexpr std::size_t kMaxRemarks = 64;
+  auto listed = [&](const json& list, std::vector<std::string>& into, const char* what) {
+    if (!list.is_array()) return;
+    for (const auto& w : list)
+      if (into.size() < kMaxRemarks) into.push_back(text(w));
+    if (list.size() > kMaxRemarks)
+      into.push_back(std::to_string(list.size() - kMaxRemarks) + " more " + what + " of the implementation's are not shown");
+  };
+  if (h.contains("notes") && h["notes"].is_object())
     for (const auto& [scalar, slots] : h["notes"].items())
-      for (const auto& [slot, why] : slots.items()) d.notes[scalar][slot] = why.is_string() ? why.get<std::string>() : why.dump();
-  if (h.contains("warnings"))
-    for (const auto& w : h["warnings"]) d.warnings.push_back(w.is_string() ? w.get<std::string>() : w.dump());
-  if (h.contains("unchecked"))
-    for (const auto& w : h["unchecked"]) d.unchecked.push_back(w.is_string() ? w.get<std::string>() : w.dump());
+      if (is_scalar_word(scalar) && slots.is_object())
+        for (const auto& [slot, why] : slots.items())
+          if (is_slot_name(slot)) d.notes[scalar][slot] = text(why);
+  if (h.contains("warnings")) listed(h["warnings"], d.warnings, "warnings");
+  if (h.contains("unchecked")) listed(h["unchecked"], d.unchecked, "items it could not check");
   d.repeat = h.value("repeat", false);
   if (h.contains("scalar_unavailable") && h["scalar_unavailable"].is_object())
     for (const auto& [scalar, why] : h["scalar_unavailable"].items())
-      d.scalar_unavailable[scalar] = why.is_string() ? why.get<std::string>() : why.dump();
+      if (is_scalar_word(scalar)) d.scalar_unavailable[scalar] = text(why);
   return d;
 }
 
@@ -638,7 +675,8 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   info.worker_done = [conn](int w, bool normally) { conn->worker_done(w, normally); };
   SubjectSet s;
   s.name = name;
-  s.description = d.description.empty() ? "a " + d.language + " implementation" : harness::inert_text(d.description);
+  s.description = d.description.empty() ? "a " + d.language + " implementation"
+                                        : harness::inert_text(harness::bounded_text(d.description, 400));
   s.d = make_part<double>(conn, d);
   s.mp = make_part<Real50>(conn, d);
   s.q = make_part<Rational>(conn, d);
@@ -655,15 +693,18 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
     if (std::filesystem::is_directory(info.source, ec)) {
       for (const auto& e : std::filesystem::directory_iterator(info.source, ec))
         if (e.path().extension() == ".m") names.push_back(e.path().stem().string());
-    } else if (std::ifstream in{info.source}) {
-      std::ostringstream text;
-      text << in.rdbuf();
-      names = info.language == "python" ? harness::python_function_names(text.str()) : harness::octave_function_names(text.str());
+    } else {
+      try {  // a stranger's file: read without following a link (harness/submission_intake.hpp)
+        const std::string text = harness::read_stranger_file(info.source);
+        names = info.language == "python" ? harness::python_function_names(text) : harness::octave_function_names(text);
+      } catch (const harness::RefusedEntry&) {
+        // not read: no advice
+      }
     }
     for (const auto& advice : harness::slot_name_advice(names)) info.warnings.push_back(advice);
   }
   for (const auto& u : d.unchecked) info.unchecked.push_back(harness::inert_text(u));
-  for (const auto& [scalar, why] : d.scalar_unavailable) info.scalar_unavailable[scalar] = why;
+  for (const auto& [scalar, why] : d.scalar_unavailable) info.scalar_unavailable[scalar] = harness::inert_text(why);
   for (const char* scalar : {"double", "mp50", "exact"}) {
     const bool have = (std::string(scalar) == "double" ? s.d != nullptr
                        : std::string(scalar) == "mp50" ? s.mp != nullptr

@@ -1,5 +1,7 @@
 #include "harness/report.hpp"
 
+#include "harness/inert_text.hpp"
+
 #include "harness/svg.hpp"
 #include "harness/verdict_io.hpp"
 #include "harness/work_precision.hpp"
@@ -145,26 +147,11 @@ const std::vector<std::string>& claim_names() {
   return names;
 }
 
-std::string md_cell(const std::string& s) {
-  std::string out;
-  for (char c : s) {
-    if (c == '|') out += "\\|";
-    else if (c == '\n') out += "<br>";
-    else out += c;
-  }
-  return out;
-}
+// A table cell or a list item: inert, on one line, nothing Markdown or HTML would act on (issue 46).
+std::string md_cell(const std::string& s) { return md_inline(s); }
 
-std::string fence(const std::string& s) {
-  // A code fence longer than any run of backticks inside.
-  std::size_t longest = 0, run = 0;
-  for (char c : s) {
-    run = c == '`' ? run + 1 : 0;
-    longest = std::max(longest, run);
-  }
-  const std::string f(std::max<std::size_t>(3, longest + 1), '`');
-  return f + "\n" + s + (s.empty() || s.back() == '\n' ? "" : "\n") + f + "\n";
-}
+// A code block that no text inside can close (issue 46).
+std::string fence(const std::string& s) { return md_fenced(s); }
 
 std::string anchor_of(const Verdict& v) {
   return file_safe(v.property + "-" + v.scalar + (v.integrator.empty() ? "" : "-" + v.integrator));
@@ -449,8 +436,8 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
 
 std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   std::ostringstream md;
-  md << "# geomech report: " << r.subject << "\n\n";
-  if (!r.description.empty()) md << r.description << "\n\n";
+  md << "# geomech report: " << md_inline(r.subject) << "\n\n";
+  if (!r.description.empty()) md << md_inline(r.description) << "\n\n";
   if (!r.info.source.empty()) md << "Source: `" << r.info.source << "`\n\n";
   md << "**Result: " << r.verdict_word() << "** - " << summary_counts(r) << ". Exit status "
      << r.exit_code() << ".\n\n";

@@ -2,7 +2,9 @@
 
 #include "harness/process.hpp"
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <mutex>
 #include <string>
 #include <sys/stat.h>
@@ -38,6 +40,59 @@ long processes_of(unsigned uid) {
   return n;
 }
 
+// What of /etc a sandboxed program needs: the dynamic linker's cache and configuration, the
+// alternatives (c++ is /etc/alternatives/c++), the time zone, the name-service switch (getpwuid),
+// Octave's site startup file (/usr/share/octave/site/m/startup/octaverc links to /etc/octaverc) and
+// Python's sitecustomize (a link into /etc/python3.N). Nothing else: not the accounts, the host's
+// name, its network, its services' configurations.
+const std::vector<std::string>& visible_etc() {
+  static const std::vector<std::string> entries = [] {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (const char* name : {"ld.so.cache", "ld.so.conf", "ld.so.conf.d", "alternatives", "localtime", "nsswitch.conf", "octaverc"})
+      if (fs::exists(fs::path("/etc") / name, ec)) out.push_back((fs::path("/etc") / name).string());
+    for (const auto& e : fs::directory_iterator("/etc", ec))
+      if (e.path().filename().string().rfind("python3", 0) == 0) out.push_back(e.path().string());
+    std::sort(out.begin(), out.end());
+    return out;
+  }();
+  return entries;
+}
+
+// A folder holding the sandbox's /etc/passwd and /etc/group: root, nobody and, when the harness
+// does not run as root, its own user under a neutral name (programs look their user up), nothing
+// of this machine's accounts. Made once per process, removed by the process that made it.
+struct AccountsFolder {
+  std::string path;
+  pid_t owner = ::getpid();
+  AccountsFolder() {
+    std::error_code ec;
+    std::string pattern = (fs::temp_directory_path(ec) / "geomech-sandbox-etc-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) return;
+    path = pattern;
+    fs::permissions(path, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                              fs::perms::others_exec, ec);
+    const unsigned uid = ::geteuid(), gid = ::getegid();
+    std::string passwd = "root:x:0:0:root:/tmp:/usr/sbin/nologin\nnobody:x:65534:65534:nobody:/tmp:/usr/sbin/nologin\n";
+    std::string group = "root:x:0:\nnogroup:x:65534:\n";
+    if (uid != 0 && uid != 65534) passwd += "geomech:x:" + std::to_string(uid) + ":" + std::to_string(gid) + "::/tmp:/usr/sbin/nologin\n";
+    if (gid != 0 && gid != 65534) group += "geomech:x:" + std::to_string(gid) + ":\n";
+    std::ofstream(path + "/passwd") << passwd;
+    std::ofstream(path + "/group") << group;
+    for (const char* f : {"passwd", "group"})
+      fs::permissions(path + "/" + f, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read, ec);
+  }
+  ~AccountsFolder() {
+    std::error_code ec;
+    if (!path.empty() && ::getpid() == owner) fs::remove_all(path, ec);
+  }
+};
+
+const std::string& sandbox_accounts_folder() {
+  static const AccountsFolder folder;
+  return folder.path;
+}
+
 }  // namespace
 
 unsigned sandbox_uid() { return ::geteuid() == 0 ? kNobody : ::geteuid(); }
@@ -55,8 +110,16 @@ std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const S
   // temporary name (harness/private_copy.hpp), not the lecturer's folders (issue 34). bubblewrap
   // stays PID 1 (--as-pid-1 was tried: a server that is PID 1 ignores the signals the kernel sends
   // it, SIGXFSZ at the file-size limit among them, and reaps no orphan).
-  cmd.insert(cmd.end(), {which("bwrap"), "--unshare-all", "--die-with-parent", "--new-session", "--clearenv"});
-  for (const char* sys : {"/usr", "/etc"}) cmd.insert(cmd.end(), {"--ro-bind", sys, sys});
+  cmd.insert(cmd.end(), {which("bwrap"), "--unshare-all", "--die-with-parent", "--new-session", "--clearenv",
+                         "--hostname", "geomech-sandbox"});
+  // The visible system, minimised (issue 46): /usr without /usr/local (what was installed on this
+  // machine by hand: tools, tokens in scripts), and of /etc only what the dynamic linker, the
+  // compiler's alternatives, Python and Octave read, with an account file naming root and nobody.
+  cmd.insert(cmd.end(), {"--ro-bind", "/usr", "/usr", "--tmpfs", "/usr/local"});
+  for (const auto& e : visible_etc()) cmd.insert(cmd.end(), {"--ro-bind", e, e});
+  const std::string& accounts = sandbox_accounts_folder();
+  if (!accounts.empty())
+    for (const char* f : {"passwd", "group"}) cmd.insert(cmd.end(), {"--ro-bind", accounts + "/" + f, std::string("/etc/") + f});
   for (const char* link : {"/bin", "/sbin", "/lib", "/lib64", "/lib32", "/libx32"}) {
     std::error_code ec;
     if (fs::is_symlink(link, ec))

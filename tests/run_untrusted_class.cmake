@@ -10,7 +10,9 @@ configure_file(${SOURCE}/examples/students/correct.hpp ${OUT}/class/correct.hpp 
 configure_file(${SOURCE}/examples/hostile/forged_verdict.cpp ${OUT}/class/mallory.cpp COPYONLY)
 file(WRITE ${OUT}/class/carol.cpp "#include <geomech/student.hpp>\nstruct Carol { int hat( };\n")
 # Run from OUT with relative folders, as a lecturer would type them.
-execute_process(COMMAND ${GEOMECH} check-class class --report reports --cache-dir cache
+# alice.cpp includes correct.hpp, beside it in the flat folder: a header shared with every C++
+# submission only when the lecturer says so (issue 46).
+execute_process(COMMAND ${GEOMECH} check-class class --report reports --cache-dir cache --shared class/correct.hpp
                         --parallel 2 --scalar double --property hat_is_cross_product
                 WORKING_DIRECTORY ${OUT}
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

@@ -15,6 +15,7 @@
 #include "harness/build.hpp"
 #include "harness/class_mode.hpp"
 #include "harness/cli.hpp"
+#include "harness/inert_text.hpp"
 #include "harness/isolate.hpp"
 #include "harness/process.hpp"
 #include "harness/protocol_codec.hpp"
@@ -25,6 +26,7 @@
 #include "harness/slot_conventions.hpp"
 #include "harness/slot_names.hpp"
 #include "harness/student_registry.hpp"
+#include "harness/submission_intake.hpp"
 #include "harness/trajectory.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/runner.hpp"
@@ -163,15 +165,17 @@ int run_protocol_check(const std::string& file, const std::vector<std::string>& 
   try {
     s = protocol::remote_subject(conn, name, info);
   } catch (const std::exception& e) {
-    std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+    // What the implementation said when it could not start is a stranger's text (issue 46).
+    std::cerr << "geomech check: " << file << ": " << harness::inert_text(harness::bounded_text(e.what())) << "\n";
     return 2;
   }
   if (language == "c++") {  // functions named like a slot but not one (issue 13)
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    for (const auto& advice : harness::slot_name_advice(harness::cpp_function_names(text.str())))
-      info.warnings.push_back(advice);
+    try {
+      for (const auto& advice : harness::slot_name_advice(harness::cpp_function_names(harness::read_stranger_file(file))))
+        info.warnings.push_back(advice);
+    } catch (const harness::RefusedEntry&) {
+      // not read: no advice
+    }
   }
   std::cerr << "geomech: " << language << " implementation " << file << " started and described itself in " << std::fixed
             << std::setprecision(2) << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
@@ -210,6 +214,24 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
   }
   if (const std::string why = harness::sandbox_unavailable(); !why.empty()) {
     std::cerr << "geomech check: " << why << "\n";
+    return 2;
+  }
+  // A submission is a stranger's: never followed through a link, never a FIFO or device opened
+  // (harness/submission_intake.hpp). A folder (Octave) is looked at whole, within the limits.
+  try {
+    const fs::path p = fs::path(file).lexically_normal();
+    const std::string parent = p.has_parent_path() ? p.parent_path().string() : ".";
+    const harness::StrangerFolder folder(parent);
+    const auto entry = folder.look(p.filename().string());
+    if (entry.kind == harness::EntryKind::Folder)
+      (void)harness::read_submission(folder, p.filename().string());
+    else
+      (void)harness::read_stranger_file(file);
+  } catch (const harness::RefusedEntry& e) {
+    std::cerr << "geomech check: " << harness::inert_text(e.what()) << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
     return 2;
   }
   harness::SandboxSpec spec;
@@ -555,6 +577,9 @@ int main(int argc, char** argv) {
   gm::harness::add_check_options(*klass, class_opts.check);
   std::string shard;
   klass->add_option("--shard", shard, "K/N: check only the K-th of N deterministic shares of the folder (CI matrix, Slurm array)");
+  klass->add_option("--shared", class_opts.shared,
+                    "FILE: a header every C++ submission may include (repeatable); nothing else of the class folder is "
+                    "shared between students");
   klass->add_flag("--fresh", class_opts.fresh,
                   "check every implementation again (by default a re-run resumes: one unchanged since its last complete "
                   "check, in source, options and suite, is not checked again)");
