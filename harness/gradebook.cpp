@@ -3,6 +3,7 @@
 #include "harness/gradebook.hpp"
 
 #include "harness/inert_text.hpp"
+#include "harness/slot_names.hpp"
 
 #include <cctype>
 
@@ -27,6 +28,28 @@ double read_weight(const Rubric& r, const json& v, const std::string& key) {
   if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < 0)
     rubric_error(r, key, "expected a number >= 0, got " + v.dump());
   return v.get<double>();
+}
+
+// A slot name written by hand: a misspelt one would be a slot nobody provides, and every student
+// would lose its share without a word (issue 49: "casimr" cost every correct student 7.7 points).
+void check_slot_name(const Rubric& r, const std::string& key, const std::string& name) {
+  static const std::vector<std::string> slots = slot_name_list();
+  if (std::find(slots.begin(), slots.end(), name) != slots.end()) return;
+  static const std::vector<std::string> steps = {"rigid_body_step", "manakov_step", "clebsch_step",
+                                                 "manakov_clebsch_step"};
+  if (std::find(steps.begin(), steps.end(), name) != steps.end())
+    rubric_error(r, key, "\"" + name + "\" is an integrator's step, not a slot: an integrator earns credit by its "
+                         "claims (claims_weight, claims) and in the area \"integrators\"");
+  rubric_error(r, key, "unknown slot \"" + name + "\"" + did_you_mean(name, slots) +
+                           "; `geomech slots` lists the slot names");
+}
+
+void check_claim_name(const Rubric& r, const std::string& key, const std::string& name) {
+  static const std::vector<std::string> claims = claim_name_list();
+  if (std::find(claims.begin(), claims.end(), name) != claims.end()) return;
+  std::string list;
+  for (const auto& c : claims) list += (list.empty() ? "" : ", ") + c;
+  rubric_error(r, key, "unknown claim \"" + name + "\"" + did_you_mean(name, claims) + "; the claims are " + list);
 }
 
 const json& read_object(const Rubric& r, const json& v, const std::string& key) {
@@ -86,12 +109,44 @@ std::string short_list(const std::vector<std::string>& items, std::size_t keep =
   return out;
 }
 
-// Cuts at a UTF-8 character boundary so the LMS never sees half a character.
-std::string clip_feedback(std::string text, std::size_t max_bytes = 400) {
-  if (text.size() <= max_bytes) return text;
-  std::size_t cut = max_bytes - 3;
-  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
-  return text.substr(0, cut) + "...";
+// The first `n` bytes of `text`, or fewer, ending at a UTF-8 character boundary.
+std::string utf8_prefix(const std::string& text, std::size_t n) {
+  if (text.size() <= n) return text;
+  while (n > 0 && (static_cast<unsigned char>(text[n]) & 0xC0) == 0x80) --n;
+  return text.substr(0, n);
+}
+
+// The last `n` bytes of `text`, or fewer, starting at a UTF-8 character boundary.
+std::string utf8_suffix(const std::string& text, std::size_t n) {
+  if (text.size() <= n) return text;
+  std::size_t at = text.size() - n;
+  while (at < text.size() && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) ++at;
+  return text.substr(at);
+}
+
+// "head; middle; tail" in at most `max_bytes`: the head (the grade and its counts) and the tail (the
+// pointer to the report) are kept whole, and the middle loses its own middle ("... "), so that the
+// first fix keeps its beginning and its end (issue 49: a cut at 400 bytes lost the report's path).
+std::string feedback_line(const std::string& head, const std::string& middle, const std::string& tail,
+                          std::size_t max_bytes = 400) {
+  auto join = [](const std::string& a, const std::string& b) { return a.empty() ? b : b.empty() ? a : a + "; " + b; };
+  const std::string whole = join(join(head, middle), tail);
+  if (whole.size() <= max_bytes) return whole;
+  const std::string ends = join(join(head, "x"), tail);  // the room the middle's separators take
+  const std::string mark = " ... ";
+  if (ends.size() + mark.size() + 8 > max_bytes)  // no room for a middle: the head is cut instead
+    return join(utf8_prefix(head, max_bytes - std::min(max_bytes, tail.size() + 2 + mark.size())) + mark, tail);
+  const std::size_t room = max_bytes - (ends.size() - 1) - mark.size();
+  const std::string cut = utf8_prefix(middle, room - room / 3) + mark + utf8_suffix(middle, room / 3);
+  return join(join(head, cut), tail);
+}
+
+// 100 -> "100", 12.5 -> "12.5", 66.666 -> "66.67": a weight or a maximum as a person writes it.
+std::string trimmed_number(double value) {
+  std::string s = format_points(value);
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
 }
 
 std::string csv_row(const std::vector<std::string>& fields) {
@@ -131,6 +186,7 @@ Rubric parse_rubric(std::string_view json_text, const std::string& source) {
       const bool slots = key == "slots";
       for (const auto& [name, w] : read_object(r, v, key).items()) {
         const double weight = read_weight(r, w, key + "." + name);
+        if (name != "default") (slots ? check_slot_name : check_claim_name)(r, key + "." + name, name);
         if (name == "default") (slots ? r.slot_default : r.claim_default) = weight;
         else (slots ? r.slot_weights : r.claim_weights)[name] = weight;
       }
@@ -151,6 +207,7 @@ Rubric parse_rubric(std::string_view json_text, const std::string& source) {
           rubric_error(r, key, "expected slot names as non-empty strings, got " + s.dump());
         if (std::find(slots.begin(), slots.end(), s.get<std::string>()) != slots.end())
           rubric_error(r, key, "slot " + s.dump() + " is listed twice");
+        check_slot_name(r, key, s.get<std::string>());
         slots.push_back(s.get<std::string>());
       }
       r.assignment = slots;
@@ -193,58 +250,130 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
     rubric_error(r, "assignment", "the maximum grade is 0 for this class (" + std::to_string(assignment.size()) +
                                       " assignment slots); list the slots under \"assignment\"");
   Score out;
-  std::vector<std::string> notes;
-  if (st.status != "checked") {
-    out.breakdown.push_back("not graded: " + st.status);
-    notes.push_back("0 points, " + st.status);
-  } else {
-    const std::set<std::string> provided(st.provided.begin(), st.provided.end());
-    const std::set<std::string> wrong(st.wrong.begin(), st.wrong.end());
-    double earned = 0;
-    int correct = 0;
-    std::vector<std::string> missing;
-    for (const auto& s : assignment) {
-      if (!provided.count(s)) missing.push_back(s);
-      else if (!wrong.count(s)) ++correct, earned += weight_of(r.slot_weights, r.slot_default, s);
+  out.max_points = r.points;
+  const double scale = r.points / max;  // rubric weight -> points
+  auto item = [&](ScoreItem::Kind kind, std::string name, double weight, double earned, std::string state,
+                  std::string detail) {
+    out.items.push_back(ScoreItem{kind, std::move(name), weight, earned, weight * scale, earned * scale,
+                                  std::move(state), std::move(detail)});
+  };
+  const bool graded = st.status == "checked";
+  // Every assignment slot, every weighted area and the claims are items, graded or not: a student
+  // who was not checked sees what the assignment asked for, each at 0.
+  const std::set<std::string> provided(st.provided.begin(), st.provided.end());
+  const std::set<std::string> wrong(st.wrong.begin(), st.wrong.end());
+  const std::set<std::string> unexercised(st.unexercised.begin(), st.unexercised.end());
+  int correct = 0;
+  double slot_earned = 0;
+  std::vector<std::string> wrong_list, missing, not_exercised;
+  for (const auto& s : assignment) {
+    const double w = weight_of(r.slot_weights, r.slot_default, s);
+    if (w <= 0) continue;
+    const auto why = st.why_wrong.find(s);
+    const std::string detail = why == st.why_wrong.end() ? "" : why->second;
+    if (!graded) {
+      item(ScoreItem::Kind::Slot, s, w, 0, st.status, "");
+    } else if (wrong.count(s)) {
+      item(ScoreItem::Kind::Slot, s, w, 0, "wrong", detail);
+    } else if (provided.count(s)) {
+      ++correct, slot_earned += w;
+      item(ScoreItem::Kind::Slot, s, w, w, "correct", "");
+    } else if (unexercised.count(s)) {
+      not_exercised.push_back(s);
+      item(ScoreItem::Kind::Slot, s, w, 0, "not exercised", "provided, but no check that ran calls it");
+    } else {
+      missing.push_back(s);
+      item(ScoreItem::Kind::Slot, s, w, 0, "missing", "not provided");
     }
-    if (slot_max > 0)
-      out.breakdown.push_back("slots " + std::to_string(correct) + "/" + std::to_string(assignment.size()));
-    for (const auto& [area, w] : r.area_weights) {
-      if (w <= 0) continue;
-      auto it = st.areas.find(area);
-      const int run = it == st.areas.end() ? 0 : it->second.second;
-      const int passed = run <= 0 ? 0 : std::clamp(it->second.first, 0, run);
-      if (run > 0) earned += (w * passed) / run;  // no checks run: no evidence, no credit
-      out.breakdown.push_back(area + " " + std::to_string(passed) + "/" + std::to_string(run));
+  }
+  for (const auto& s : st.wrong)  // in the order of the first fixes
+    if (std::find(assignment.begin(), assignment.end(), s) != assignment.end() &&
+        weight_of(r.slot_weights, r.slot_default, s) > 0)
+      wrong_list.push_back(s);
+  double earned = slot_earned;
+  std::vector<std::string> area_words;
+  for (const auto& [area, w] : r.area_weights) {
+    if (w <= 0) continue;
+    auto it = st.areas.find(area);
+    const int run = !graded || it == st.areas.end() ? 0 : it->second.second;
+    const int passed = run <= 0 ? 0 : std::clamp(it->second.first, 0, run);
+    const double e = run > 0 ? (w * passed) / run : 0;  // no checks run: no evidence, no credit
+    earned += e;
+    const std::string counts = std::to_string(passed) + "/" + std::to_string(run);
+    item(ScoreItem::Kind::Area, area, w, e, counts + " checks passed", run > 0 ? "" : "no check of this area ran");
+    if (graded) out.breakdown.push_back(area + " " + counts), area_words.push_back(area + " " + counts + " checks");
+  }
+  int n_made = 0, n_verified = 0;
+  std::vector<std::string> false_claims;
+  if (r.claims_weight > 0) {
+    double made = 0;
+    for (const auto& c : st.claims) {
+      const double w = weight_of(r.claim_weights, r.claim_default, c.claim);
+      if (c.status == "not claimed" || w <= 0) continue;
+      made += w;
     }
-    if (r.claims_weight > 0) {
-      double made = 0, verified = 0;
-      int n_made = 0, n_verified = 0;
-      for (const auto& c : st.claims) {
-        const double w = weight_of(r.claim_weights, r.claim_default, c.claim);
-        if (c.status == "not claimed" || w <= 0) continue;
-        made += w, ++n_made;
-        if (c.status == "verified") verified += w, ++n_verified;
-      }
-      if (made > 0) earned += (r.claims_weight * verified) / made;  // no claims made: no claim credit
-      out.breakdown.push_back("claims " + std::to_string(n_verified) + "/" + std::to_string(n_made) + " verified");
-    }
-    out.points = static_cast<double>(cents((earned * r.points) / max)) / 100.0;
-    std::string summary;
-    for (const auto& b : out.breakdown) summary += (summary.empty() ? "" : ", ") + b;
-    notes.push_back(summary);
-    std::vector<std::string> wrong_list(wrong.begin(), wrong.end()), false_claims;
-    for (const auto& c : st.claims)
+    for (const auto& c : st.claims) {
+      const double w = weight_of(r.claim_weights, r.claim_default, c.claim);
+      if (c.status == "not claimed" || w <= 0 || !graded) continue;
+      ++n_made;
+      const double share = r.claims_weight * w / made, e = c.status == "verified" ? share : 0;
+      n_verified += c.status == "verified";
       if (c.status == "FALSE CLAIM") false_claims.push_back(c.integrator + " " + c.claim);
-    if (!wrong_list.empty()) notes.push_back("wrong: " + short_list(wrong_list));
-    if (!missing.empty()) notes.push_back("missing: " + short_list(missing));
+      earned += e;
+      item(ScoreItem::Kind::Claim, c.integrator + " " + c.claim, share, e, c.status, "");
+    }
+    // No claims made: no claim credit (making none would otherwise be the safest way to score).
+    if (n_made == 0) item(ScoreItem::Kind::Claim, "claims", r.claims_weight, 0, graded ? "none made" : st.status, "");
+    if (graded)
+      out.breakdown.push_back("claims " + std::to_string(n_verified) + "/" + std::to_string(n_made) + " verified");
+  }
+  if (graded && slot_max > 0)
+    out.breakdown.insert(out.breakdown.begin(),
+                         "slots " + std::to_string(correct) + "/" + std::to_string(assignment.size()));
+  out.points = graded ? static_cast<double>(cents(earned * scale)) / 100.0 : 0.0;
+
+  // The feedback in words (issue 49): the grade first, then what it rests on, counts and weights
+  // together ("11 of 12 slots correct (weight 12 of 13)", "casimir (weight 1)"), the first fix, and
+  // the report; clipped in the middle, never at its ends.
+  bool uniform = true;
+  for (const auto& s : assignment) uniform = uniform && weight_of(r.slot_weights, r.slot_default, s) == r.slot_default;
+  const auto weighted = [&](const std::vector<std::string>& slots) {
+    std::vector<std::string> out_list;
+    for (const auto& s : slots) {
+      out_list.push_back(uniform ? s : s + " (weight " + trimmed_number(weight_of(r.slot_weights, r.slot_default, s)) + ")");
+    }
+    return short_list(out_list);
+  };
+  std::vector<std::string> notes;
+  std::string head = format_points(out.points) + " of " + trimmed_number(r.points);
+  if (!graded) {
+    head += ": " + st.status;
+  } else {
+    std::vector<std::string> parts;
+    if (slot_max > 0) {
+      std::string slots = std::to_string(correct) + " of " + std::to_string(assignment.size()) +
+                          (assignment.size() == 1 ? " slot" : " slots") + " correct";
+      if (!uniform) slots += " (weight " + trimmed_number(slot_earned) + " of " + trimmed_number(slot_max) + ")";
+      parts.push_back(slots);
+    }
+    parts.insert(parts.end(), area_words.begin(), area_words.end());
+    if (r.claims_weight > 0)
+      parts.push_back(n_made == 0 ? std::string("no integrator claims made")
+                                  : std::to_string(n_verified) + " of " + std::to_string(n_made) +
+                                        (n_made == 1 ? " claim verified" : " claims verified"));
+    for (std::size_t i = 0; i < parts.size(); ++i) head += (i ? ", " : ": ") + parts[i];
+    if (!wrong_list.empty()) notes.push_back("wrong: " + weighted(wrong_list));
+    if (!missing.empty()) notes.push_back("missing: " + weighted(missing));
+    if (!not_exercised.empty()) notes.push_back("not exercised by the checks run: " + weighted(not_exercised));
     if (!false_claims.empty()) notes.push_back("false claims: " + short_list(false_claims));
   }
+  out.headline = one_line(head);
+  out.notes = notes;
   if (!one_line(st.first_fix).empty()) notes.push_back("fix first: " + one_line(st.first_fix));
-  if (!st.report.empty()) notes.push_back("report: " + one_line(st.report));
-  std::string text;
-  for (const auto& n : notes) text += (text.empty() ? "" : "; ") + n;
-  out.feedback = clip_feedback(one_line(text));
+  std::string middle;
+  for (const auto& n : notes) middle += (middle.empty() ? "" : "; ") + n;
+  const std::string tail = st.report.empty() ? "" : "report: " + one_line(st.report);
+  out.feedback = feedback_line(one_line(head), one_line(middle), tail);
   return out;
 }
 

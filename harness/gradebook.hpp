@@ -23,9 +23,11 @@ struct ClaimResult {
 
 struct StudentResult {
   std::string name;                   // the implementation's name in the class (file stem or folder name); unique
-  std::string status;                 // "checked", "does not compile", "not checked"
+  std::string status;                 // "checked", "does not compile", "not checked", "no submission"
   std::vector<std::string> provided;  // slot names the submission provides (any scalar) and a check exercised
-  std::vector<std::string> wrong;     // provided slots the check found wrong
+  std::vector<std::string> unexercised;  // slots it provides that no check that ran called
+  std::vector<std::string> wrong;     // provided slots the check found wrong, first fix first
+  std::map<std::string, std::string> why_wrong;  // slot -> the line its first fix says
   std::map<std::string, std::pair<int, int>> areas;  // area name -> (checks passed, checks run)
   std::vector<ClaimResult> claims;    // every claim an integrator made, with its verdict
   std::string first_fix;              // one line, may be empty: what to fix first
@@ -88,10 +90,29 @@ std::vector<std::string> roster_warnings(const std::vector<StudentResult>& cls, 
 // least one student of the class provides (sorted).
 std::vector<std::string> resolve_assignment(const Rubric& rubric, const std::vector<StudentResult>& cls);
 
+// One part of a grade: an assignment slot, a weighted area, or a claim's share. Every view of a
+// grade (the gradebook's feedback, the summaries, Gradescope's tests, PrairieLearn's) lists these.
+struct ScoreItem {
+  enum class Kind { Slot, Area, Claim };
+  Kind kind = Kind::Slot;
+  std::string name;         // the slot, the area, or "<integrator> <claim>" ("claims" when none was made)
+  double weight = 0;        // its maximum in the rubric's weights (a claim: its share of claims_weight)
+  double earned = 0;        // of that weight
+  double max_points = 0;    // weight scaled to the rubric's points (not rounded)
+  double points = 0;        // earned scaled to the rubric's points (not rounded)
+  std::string state;        // slot: correct, wrong, missing, not exercised; area: "k/n checks passed";
+                            // claim: its status; or the student's status when not graded
+  std::string detail;       // why, in words (a wrong slot: its first fix); may be empty
+};
+
 struct Score {
   double points = 0;                   // 0 .. rubric.points, rounded to 2 decimals
+  double max_points = 0;               // rubric.points
+  std::vector<ScoreItem> items;        // what the grade is made of; their points add up to `points` before rounding
   std::vector<std::string> breakdown;  // e.g. "slots 3/4", "sec. 1 5/6", "claims 2/3 verified"
-  std::string feedback;                // one short line for the LMS feedback column
+  std::string headline;                // "80.00 of 100: 3 of 4 slots correct (weight 4 of 5)"
+  std::vector<std::string> notes;      // "wrong: casimir (weight 1)", "missing: ...", "false claims: ..."
+  std::string feedback;                // one line of at most 400 bytes: the grade, what it rests on, the first fix, the report
 };
 
 // Scores one student against an already resolved assignment. Throws

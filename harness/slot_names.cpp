@@ -128,6 +128,35 @@ std::string closest_claim(const std::string& key, const std::vector<std::string>
   return best;
 }
 
+std::vector<std::string> slot_name_list() {
+  std::vector<std::string> out;
+  for (const auto& s : subject_slots()) out.push_back(s.name);
+  return out;
+}
+
+std::vector<std::string> claim_name_list() {
+  std::vector<std::string> out{"order"};
+  for (const auto& c : kBooleanClaims) out.push_back(c.name);
+  return out;
+}
+
+std::string did_you_mean(const std::string& name, const std::vector<std::string>& known) {
+  const std::string low = lower(name);
+  std::size_t best = std::max<std::size_t>(1, (low.size() + 2) / 3);  // at most a third of the name wrong
+  std::vector<std::string> closest;
+  for (const auto& k : known) {
+    const std::size_t d = distance(low, lower(k));
+    if (d > best) continue;
+    if (d < best) best = d, closest.clear();
+    closest.push_back(k);
+  }
+  if (closest.empty()) return "";
+  std::string out = " (did you mean ";
+  for (std::size_t i = 0; i < closest.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == closest.size() ? " or " : ", ") + ("\"" + closest[i] + "\"");
+  return out + "?)";
+}
+
 std::vector<std::string> slot_name_advice(const std::vector<std::string>& names) {
   std::vector<std::string> out;
   static const std::set<std::string> not_slots = {"rigid_body_step", "manakov_step", "clebsch_step", "manakov_clebsch_step", "main", "name", "claims",

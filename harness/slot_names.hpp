@@ -26,6 +26,15 @@ std::string closest_claim(const std::string& key, const std::vector<std::string>
 // name, so nothing checks it; did you mean `hamiltonian_3_4` ((3.4): h = Pi . I^-1 Pi / 2)?".
 std::vector<std::string> slot_name_advice(const std::vector<std::string>& names);
 
+// The slot names, in the slot table's order, and the integrators' claim names ("order", then the
+// yes/no claims of core/subject.hpp), for readers of names written by hand (a rubric).
+std::vector<std::string> slot_name_list();
+std::vector<std::string> claim_name_list();
+
+// " (did you mean \"casimir\"?)" for the names of `known` closest to `name` (edit distance at most a
+// third of the name, or the same name in another case), or "" when none is close.
+std::string did_you_mean(const std::string& name, const std::vector<std::string>& known);
+
 // The students' index: concepts of the notes and the slot that implements each.
 struct SlotConcept {
   const char* concept_name;

@@ -63,37 +63,37 @@ void ExpectWellFormedGradebook(const std::string& csv, const std::vector<std::st
 }  // namespace
 
 TEST(Gradebook, DefaultRubricGivesPartialCreditPerCorrectSlot) {
-  const std::vector<StudentResult> cls = {checked("alice", {"H", "omega", "Pi", "q_dot"}, {"q_dot"}),
-                                          checked("bob", {"H", "omega"})};
+  const std::vector<StudentResult> cls = {checked("alice", {"hamiltonian_3_4", "omega_3_5", "legendre_3_1", "reconstruction_2_10"}, {"reconstruction_2_10"}),
+                                          checked("bob", {"hamiltonian_3_4", "omega_3_5"})};
   const Rubric r;  // the default rubric
   const auto assignment = resolve_assignment(r, cls);
-  EXPECT_EQ(assignment, (std::vector<std::string>{"H", "Pi", "omega", "q_dot"}));
+  EXPECT_EQ(assignment, (std::vector<std::string>{"hamiltonian_3_4", "legendre_3_1", "omega_3_5", "reconstruction_2_10"}));
   EXPECT_EQ(format_points(score_student(cls[0], r, assignment).points), "75.00");
   EXPECT_EQ(format_points(score_student(cls[1], r, assignment).points), "50.00");
   EXPECT_EQ(score_student(cls[0], r, assignment).breakdown, (std::vector<std::string>{"slots 3/4"}));
 }
 
 TEST(Gradebook, SlotsOutsideTheAssignmentEarnNothing) {
-  const Rubric r = parse_rubric(R"({"assignment": ["H", "omega", "Pi"]})", "week2.json");
-  const auto s = checked("alice", {"H", "omega", "extra_slot"});
+  const Rubric r = parse_rubric(R"({"assignment": ["hamiltonian_3_4", "omega_3_5", "legendre_3_1"]})", "week2.json");
+  const auto s = checked("alice", {"hamiltonian_3_4", "omega_3_5", "casimir"});
   const auto score = score_student(s, r, resolve_assignment(r, {s}));
   EXPECT_EQ(format_points(score.points), "66.67");  // 2 of 3, rounded to 2 decimals
-  EXPECT_NE(score.feedback.find("missing: Pi"), std::string::npos) << score.feedback;
+  EXPECT_NE(score.feedback.find("missing: legendre_3_1"), std::string::npos) << score.feedback;
 }
 
 TEST(Gradebook, SlotWeightsChangeEachSlotsShare) {
-  const Rubric r = parse_rubric(R"({"points": 10, "assignment": ["H", "omega", "Pi"],
-                                    "slots": {"default": 1, "H": 2}})", "w.json");
+  const Rubric r = parse_rubric(R"({"points": 10, "assignment": ["hamiltonian_3_4", "omega_3_5", "legendre_3_1"],
+                                    "slots": {"default": 1, "hamiltonian_3_4": 2}})", "w.json");
   // Max weight 4: H (2) correct and omega (1) correct -> 3/4 of 10 points.
-  EXPECT_EQ(format_points(score_student(checked("a", {"H", "omega"}), r, *r.assignment).points), "7.50");
+  EXPECT_EQ(format_points(score_student(checked("a", {"hamiltonian_3_4", "omega_3_5"}), r, *r.assignment).points), "7.50");
   // A wrong slot earns nothing even when provided.
-  EXPECT_EQ(format_points(score_student(checked("b", {"H", "Pi"}, {"H"}), r, *r.assignment).points), "2.50");
+  EXPECT_EQ(format_points(score_student(checked("b", {"hamiltonian_3_4", "legendre_3_1"}, {"hamiltonian_3_4"}), r, *r.assignment).points), "2.50");
 }
 
 TEST(Gradebook, AreaWeightsPayTheFractionOfChecksPassed) {
-  const Rubric r = parse_rubric(R"({"assignment": ["H"], "slots": {"default": 0},
+  const Rubric r = parse_rubric(R"({"assignment": ["hamiltonian_3_4"], "slots": {"default": 0},
                                     "areas": {"sec. 1": 3, "momentum maps": 1}})", "areas.json");
-  auto s = checked("a", {"H"});
+  auto s = checked("a", {"hamiltonian_3_4"});
   s.areas["sec. 1"] = {5, 10};          // 3 * 0.5
   s.areas["momentum maps"] = {4, 4};    // 1 * 1
   s.areas["sec. 2"] = {0, 9};           // weight 0: ignored
@@ -101,13 +101,13 @@ TEST(Gradebook, AreaWeightsPayTheFractionOfChecksPassed) {
   EXPECT_EQ(format_points(score.points), "62.50");  // 2.5 of 4
   EXPECT_EQ(score.breakdown, (std::vector<std::string>{"momentum maps 4/4", "sec. 1 5/10"}));
   // An area with no checks run gives no credit rather than dividing by zero.
-  EXPECT_EQ(format_points(score_student(checked("b", {"H"}), r, *r.assignment).points), "0.00");
+  EXPECT_EQ(format_points(score_student(checked("b", {"hamiltonian_3_4"}), r, *r.assignment).points), "0.00");
 }
 
 TEST(Gradebook, ClaimCreditIsVerifiedWeightOverClaimsMade) {
-  const Rubric r = parse_rubric(R"({"assignment": ["H"], "claims_weight": 1,
+  const Rubric r = parse_rubric(R"({"assignment": ["hamiltonian_3_4"], "claims_weight": 1,
                                     "claims": {"default": 1, "order": 2}})", "claims.json");
-  auto s = checked("a", {"H"});
+  auto s = checked("a", {"hamiltonian_3_4"});
   s.claims = {{"midpoint", "order", "verified"},      // 2 of 2
               {"midpoint", "energy", "FALSE CLAIM"},  // 0 of 1
               {"euler", "symmetric", "UNCHECKED"},    // 0 of 1
@@ -120,19 +120,19 @@ TEST(Gradebook, ClaimCreditIsVerifiedWeightOverClaimsMade) {
 }
 
 TEST(Gradebook, StudentWhoMakesNoClaimsEarnsNoClaimCredit) {
-  const Rubric r = parse_rubric(R"({"assignment": ["H"], "claims_weight": 1})", "c.json");
-  EXPECT_EQ(format_points(score_student(checked("a", {"H"}), r, *r.assignment).points), "50.00");
+  const Rubric r = parse_rubric(R"({"assignment": ["hamiltonian_3_4"], "claims_weight": 1})", "c.json");
+  EXPECT_EQ(format_points(score_student(checked("a", {"hamiltonian_3_4"}), r, *r.assignment).points), "50.00");
 }
 
 TEST(Gradebook, StudentThatDoesNotCompileScoresZeroWithTheReason) {
-  StudentResult s = checked("carol", {"H", "omega"});
+  StudentResult s = checked("carol", {"hamiltonian_3_4", "omega_3_5"});
   s.status = "does not compile";
   s.first_fix = "rigid_body.cpp:12: missing ';'\nand more";
-  const std::vector<StudentResult> cls = {s, checked("dave", {"H", "omega"})};
+  const std::vector<StudentResult> cls = {s, checked("dave", {"hamiltonian_3_4", "omega_3_5"})};
   const auto score = score_student(s, Rubric{}, resolve_assignment(Rubric{}, cls));
   EXPECT_EQ(format_points(score.points), "0.00");
   EXPECT_EQ(score.feedback,
-            "0 points, does not compile; fix first: rigid_body.cpp:12: missing ';' and more; report: carol/report.md");
+            "0.00 of 100: does not compile; fix first: rigid_body.cpp:12: missing ';' and more; report: carol/report.md");
   const auto rows = parse_csv(write_gradebook_csv(cls, Rubric{}));
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[1][4], "0.00");
@@ -141,7 +141,7 @@ TEST(Gradebook, StudentThatDoesNotCompileScoresZeroWithTheReason) {
 
 TEST(Gradebook, CsvQuotesANameWithACommaAndAQuote) {
   const std::string name = "O'Neil, \"Ace\"";
-  const std::string csv = write_gradebook_csv({checked(name, {"H"})}, Rubric{});
+  const std::string csv = write_gradebook_csv({checked(name, {"hamiltonian_3_4"})}, Rubric{});
   EXPECT_NE(csv.find("\r\n\"O'Neil, \"\"Ace\"\"\",\"O'Neil, \"\"Ace\"\"\",,,100.00,"), std::string::npos) << csv;
   ExpectWellFormedGradebook(csv, gradebook_header(Rubric{}));
   EXPECT_EQ(parse_csv(csv)[1][0], name);
@@ -151,7 +151,7 @@ TEST(Gradebook, CsvQuotesANameWithACommaAndAQuote) {
 
 TEST(Gradebook, MoodleHeaderIsExact) {
   const Rubric r = parse_rubric(R"({"item": "Week 2: Euler, Poinsot"})", "m.json");
-  const std::string csv = write_gradebook_csv({checked("alice", {"H"})}, r);
+  const std::string csv = write_gradebook_csv({checked("alice", {"hamiltonian_3_4"})}, r);
   EXPECT_EQ(csv.substr(0, csv.find("\r\n")),
             "Implementation,Username,Email address,ID number,\"Week 2: Euler, Poinsot\",Feedback");
   const Rubric quiet = parse_rubric(R"({"feedback": false})", "q.json");
@@ -161,7 +161,7 @@ TEST(Gradebook, MoodleHeaderIsExact) {
 
 TEST(Gradebook, CanvasHeaderAndPointsPossibleRowAreExact) {
   const Rubric r = parse_rubric(R"j({"format": "canvas", "item": "Rigid body (4521)", "points": 20})j", "c.json");
-  const std::string csv = write_gradebook_csv({checked("bob", {"H", "Pi"}, {"Pi"}), checked("alice", {"H"})}, r);
+  const std::string csv = write_gradebook_csv({checked("bob", {"hamiltonian_3_4", "legendre_3_1"}, {"legendre_3_1"}), checked("alice", {"hamiltonian_3_4"})}, r);
   EXPECT_EQ(csv,
             "Student,ID,SIS User ID,SIS Login ID,Section,Rigid body (4521)\r\n"
             "Points Possible,,,,,20.00\r\n"
@@ -200,6 +200,39 @@ TEST(Gradebook, FeedbackIsOneShortLine) {
   EXPECT_LE(score.feedback.size(), 400u);
   EXPECT_EQ(score.feedback.find_first_of("\r\n\t"), std::string::npos);
   EXPECT_NE(score.feedback.find("+35 more"), std::string::npos) << score.feedback;
+  // Cut in the middle (issue 49): the grade at the start, the first fix's beginning and end, the
+  // report's path at the end.
+  EXPECT_EQ(score.feedback.rfind("0.00 of 100: 0 of 40 slots correct; wrong: ", 0), 0u) << score.feedback;
+  EXPECT_NE(score.feedback.find("fix first: xxx"), std::string::npos) << score.feedback;
+  EXPECT_NE(score.feedback.find("x ... x"), std::string::npos) << score.feedback;
+  const std::string end = "xxx end; report: a/report.md";
+  EXPECT_EQ(score.feedback.substr(score.feedback.size() - end.size()), end) << score.feedback;
+}
+
+// Issue 49: "slots 11/12" beside a weighted 92.31 read as a mistake. The feedback says the grade, the
+// count and the weight together, and the weight of what is wrong.
+TEST(Gradebook, FeedbackSaysCountsAndWeightsTogether) {
+  const Rubric r = parse_rubric(R"({"assignment": ["hat", "vee", "casimir", "euler_3_8"], "slots": {"euler_3_8": 2}})",
+                                "w.json");
+  auto s = checked("bob", {"hat", "vee", "casimir", "euler_3_8"}, {"casimir"});
+  s.first_fix = "Python function 'casimir' in bob.py is wrong: its own check definition_casimir fails";
+  const auto score = score_student(s, r, *r.assignment);
+  EXPECT_EQ(format_points(score.points), "80.00");
+  EXPECT_EQ(score.feedback, "80.00 of 100: 3 of 4 slots correct (weight 4 of 5); wrong: casimir (weight 1); fix first: "
+                            "Python function 'casimir' in bob.py is wrong: its own check definition_casimir fails; "
+                            "report: bob/report.md");
+  // Its items are the grade, part by part: each slot with its weight in points.
+  ASSERT_EQ(score.items.size(), 4u);
+  double sum = 0;
+  for (const auto& i : score.items) sum += i.points;
+  EXPECT_NEAR(sum, 80.0, 1e-9);
+  EXPECT_EQ(score.items[2].name, "casimir");
+  EXPECT_EQ(score.items[2].state, "wrong");
+  EXPECT_NEAR(score.items[3].max_points, 40.0, 1e-9);  // euler_3_8, weight 2 of 5
+  // With equal weights the counts alone say it.
+  const Rubric plain = parse_rubric(R"({"assignment": ["hat", "vee", "casimir", "euler_3_8"]})", "p.json");
+  EXPECT_EQ(score_student(s, plain, *plain.assignment).feedback.substr(0, 58),
+            "75.00 of 100: 3 of 4 slots correct; wrong: casimir; fix fi");
 }
 
 TEST(Gradebook, RosterMapsImplementationNamesToLmsIdentifiers) {
@@ -208,12 +241,13 @@ TEST(Gradebook, RosterMapsImplementationNamesToLmsIdentifiers) {
       "alice,asmith,alice@uni.example,S001,1042,SIS-1,asmith,Mon lab,\"Smith, Alice\"\n"
       "ghost,g,g@uni.example,S999,,,,,\n",
       "roster.csv");
-  const std::vector<StudentResult> cls = {checked("alice", {"H"}), checked("bob", {"H"})};
+  const std::vector<StudentResult> cls = {checked("alice", {"hamiltonian_3_4"}), checked("bob", {"hamiltonian_3_4"})};
   EXPECT_EQ(parse_csv(write_gradebook_csv(cls, Rubric{}, roster)),
             (std::vector<std::vector<std::string>>{
                 gradebook_header(Rubric{}),
-                {"alice", "asmith", "alice@uni.example", "S001", "100.00", "slots 1/1; report: alice/report.md"},
-                {"bob", "bob", "", "", "100.00", "slots 1/1; report: bob/report.md"}}));
+                {"alice", "asmith", "alice@uni.example", "S001", "100.00",
+                 "100.00 of 100: 1 of 1 slot correct; report: alice/report.md"},
+                {"bob", "bob", "", "", "100.00", "100.00 of 100: 1 of 1 slot correct; report: bob/report.md"}}));
   Rubric canvas;
   canvas.format = LmsFormat::canvas;
   const auto rows = parse_csv(write_gradebook_csv(cls, canvas, roster));
@@ -241,15 +275,15 @@ TEST(Gradebook, RubricErrorsNameTheFileAndTheKey) {
   EXPECT_EQ(err(R"({"pionts": 10})"),
             "rubric \"rubric.json\": key \"pionts\": unknown key; expected item, points, format, feedback, slots, "
             "assignment, areas, claims_weight or claims");
-  EXPECT_EQ(err(R"({"slots": {"H": -1}})"), "rubric \"rubric.json\": key \"slots.H\": expected a number >= 0, got -1");
+  EXPECT_EQ(err(R"({"slots": {"hamiltonian_3_4": -1}})"), "rubric \"rubric.json\": key \"slots.hamiltonian_3_4\": expected a number >= 0, got -1");
   EXPECT_EQ(err(R"({"claims": {"order": "two"}})"),
             "rubric \"rubric.json\": key \"claims.order\": expected a number >= 0, got \"two\"");
   EXPECT_EQ(err(R"({"points": true})"), "rubric \"rubric.json\": key \"points\": expected a number > 0, got true");
   EXPECT_EQ(err(R"({"points": 0})"), "rubric \"rubric.json\": key \"points\": expected a number > 0, got 0");
   EXPECT_EQ(err(R"({"assignment": []})"),
             "rubric \"rubric.json\": key \"assignment\": expected a non-empty list of slot names");
-  EXPECT_EQ(err(R"({"assignment": ["H", "H"]})"),
-            "rubric \"rubric.json\": key \"assignment\": slot \"H\" is listed twice");
+  EXPECT_EQ(err(R"({"assignment": ["hamiltonian_3_4", "hamiltonian_3_4"]})"),
+            "rubric \"rubric.json\": key \"assignment\": slot \"hamiltonian_3_4\" is listed twice");
   EXPECT_EQ(err(R"({"format": "blackboard"})"),
             "rubric \"rubric.json\": key \"format\": expected \"moodle\" or \"canvas\", got \"blackboard\"");
   EXPECT_EQ(err(R"({"areas": {"sec 1": 2}})"),
@@ -258,7 +292,7 @@ TEST(Gradebook, RubricErrorsNameTheFileAndTheKey) {
   EXPECT_EQ(err(R"({"slots": {"default": 0}})"),
             "rubric \"rubric.json\": key \"slots\": the weights make the maximum grade 0; give a slot, an area or "
             "claims_weight a positive weight");
-  EXPECT_EQ(err(R"({"assignment": ["H"], "slots": {"H": 0}})"),
+  EXPECT_EQ(err(R"({"assignment": ["hamiltonian_3_4"], "slots": {"hamiltonian_3_4": 0}})"),
             "rubric \"rubric.json\": key \"assignment\": the weights make the maximum grade 0; give a slot, an area "
             "or claims_weight a positive weight");
   EXPECT_EQ(err(R"({"format": "canvas", "item": "Final Score"})"),
@@ -272,17 +306,46 @@ TEST(Gradebook, RubricErrorsNameTheFileAndTheKey) {
   EXPECT_EQ(err("[1]"), "rubric \"rubric.json\": key \"(top level)\": expected a JSON object");
   EXPECT_EQ(err("{\"item\": ").rfind("rubric \"rubric.json\": not valid JSON: ", 0), 0u);
   // A valid rubric parses to what it says.
-  const Rubric ok = parse_rubric(R"({"item": "W3", "points": 20, "slots": {"default": 2, "H": 1},
+  const Rubric ok = parse_rubric(R"({"item": "W3", "points": 20, "slots": {"default": 2, "hamiltonian_3_4": 1},
                                      "areas": {"integrators": 4}, "claims_weight": 5, "claims": {"order": 3}})",
                                  "rubric.json");
   EXPECT_EQ(ok.item, "W3");
   EXPECT_EQ(ok.points, 20);
   EXPECT_EQ(ok.slot_default, 2);
-  EXPECT_EQ(ok.slot_weights.at("H"), 1);
+  EXPECT_EQ(ok.slot_weights.at("hamiltonian_3_4"), 1);
   EXPECT_EQ(ok.area_weights.at("integrators"), 4);
   EXPECT_EQ(ok.claims_weight, 5);
   EXPECT_EQ(ok.claim_weights.at("order"), 3);
   EXPECT_FALSE(ok.assignment.has_value());
+}
+
+// Issue 49: a misspelt slot in the assignment was accepted, and every correct student lost its share
+// (92.31 for 12 of 13). Every name written by hand is checked against the slot table and the claim
+// names, with the closest names offered.
+TEST(Gradebook, UnknownSlotOrClaimInARubricIsRefusedWithDidYouMean) {
+  const auto err = [](const char* json) { return error_of([&] { parse_rubric(json, "week3.json"); }); };
+  EXPECT_EQ(err(R"({"assignment": ["hat", "casimr"]})"),
+            "rubric \"week3.json\": key \"assignment\": unknown slot \"casimr\" (did you mean \"casimir\"?); "
+            "`geomech slots` lists the slot names");
+  EXPECT_EQ(err(R"({"slots": {"default": 1, "Euler_3_8": 2}})"),
+            "rubric \"week3.json\": key \"slots.Euler_3_8\": unknown slot \"Euler_3_8\" (did you mean \"euler_3_8\"?); "
+            "`geomech slots` lists the slot names");
+  EXPECT_EQ(err(R"({"assignment": ["euler_3_9"]})"),
+            "rubric \"week3.json\": key \"assignment\": unknown slot \"euler_3_9\" (did you mean \"euler_3_7\" or "
+            "\"euler_3_8\"?); `geomech slots` lists the slot names");
+  EXPECT_EQ(err(R"({"assignment": ["H"]})"),
+            "rubric \"week3.json\": key \"assignment\": unknown slot \"H\"; `geomech slots` lists the slot names");
+  EXPECT_EQ(err(R"({"assignment": ["hat", "rigid_body_step"]})"),
+            "rubric \"week3.json\": key \"assignment\": \"rigid_body_step\" is an integrator's step, not a slot: an "
+            "integrator earns credit by its claims (claims_weight, claims) and in the area \"integrators\"");
+  EXPECT_EQ(err(R"({"claims_weight": 1, "claims": {"symetric": 2}})"),
+            "rubric \"week3.json\": key \"claims.symetric\": unknown claim \"symetric\" (did you mean \"symmetric\"?); "
+            "the claims are order, symmetric, casimir, energy, orthogonality, spectrum, poisson, noether, equivariant, "
+            "bounded_energy, symplectic");
+  // The control: the same rubrics with the names spelt right are read.
+  EXPECT_EQ(err(R"({"assignment": ["hat", "casimir"], "slots": {"default": 1, "euler_3_8": 2},
+                    "claims_weight": 1, "claims": {"symmetric": 2, "default": 1}})"),
+            "");
 }
 
 TEST(Gradebook, ZeroMaximumForTheClassIsAnError) {
@@ -291,12 +354,12 @@ TEST(Gradebook, ZeroMaximumForTheClassIsAnError) {
   s.status = "does not compile";
   EXPECT_NE(error_of([&] { write_gradebook_csv({s}, Rubric{}); }).find("maximum grade is 0 for this class"),
             std::string::npos);
-  EXPECT_EQ(error_of([] { write_gradebook_csv({checked("a", {"H"}), checked("a", {})}, Rubric{}); }),
+  EXPECT_EQ(error_of([] { write_gradebook_csv({checked("a", {"hamiltonian_3_4"}), checked("a", {})}, Rubric{}); }),
             "gradebook: implementation name \"a\" appears twice");
 }
 
 TEST(Gradebook, OutputIsUtf8WithoutBomAndCrlfLineEnds) {
-  const std::string csv = write_gradebook_csv({checked("Åsa", {"H"}), checked("bo", {"H"})}, Rubric{});
+  const std::string csv = write_gradebook_csv({checked("Åsa", {"hamiltonian_3_4"}), checked("bo", {"hamiltonian_3_4"})}, Rubric{});
   ExpectWellFormedGradebook(csv, gradebook_header(Rubric{}));
   EXPECT_EQ(csv.rfind("\r\n"), csv.size() - 2);  // the last record ends with a line break too
   EXPECT_EQ(csv.find(",\r\n"), std::string::npos);  // no trailing separators
