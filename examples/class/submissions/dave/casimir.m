@@ -1,0 +1,3 @@
+function c = casimir(P)
+  c = dot(P, P) / 2;
+end

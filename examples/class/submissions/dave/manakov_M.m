@@ -1,0 +1,3 @@
+function M = manakov_M(A, W)
+  M = A * W + W * A;
+end

@@ -1,0 +1,3 @@
+function s = spatial_momentum(O, P)
+  s = O * P;
+end
