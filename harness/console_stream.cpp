@@ -1,5 +1,7 @@
 #include "harness/console_stream.hpp"
 
+#include "harness/source_calls.hpp"
+
 #include "harness/report.hpp"
 
 #include <cstdio>
@@ -104,9 +106,19 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
     // names the claim and what was measured.
     std::string lead;
     const std::string slot = slot_of_direct_check(v);
-    if (!slot.empty() && first_fixes_.insert(slot).second)
-      lead = "FIRST FIX: " + slot_named(stub_.info, slot, "'") + " is wrong: its own check " + v.property +
-             " fails in " + v.scalar + ": " + first_line(v.message);
+    if (!slot.empty() && first_fixes_.insert(slot).second) {
+      // A slot that calls one already named wrong most likely fails through it (issue 49).
+      if (!calls_) calls_ = stub_.info.source.empty() ? std::map<std::string, std::set<std::string>>{}
+                                                      : slot_calls(stub_.info.source, stub_.info.language);
+      std::string callee;
+      if (auto it = calls_->find(slot); it != calls_->end())
+        for (const auto& c : it->second)
+          if (first_fixes_.count(c) && c != slot) callee = c;
+      lead = callee.empty() ? "FIRST FIX: " + slot_named(stub_.info, slot, "'") + " is wrong: its own check " + v.property +
+                                  " fails in " + v.scalar + ": " + first_line(v.message)
+                            : "THEN:      " + slot_named(stub_.info, slot, "'") + " fails its own check " + v.property +
+                                  " in " + v.scalar + ", and it calls '" + callee + "', which is wrong: fix that first";
+    }
     for (const auto& c : v.claims)
       if (c.claimed && !c.holds)
         lead += std::string(lead.empty() ? "" : "\n") + "FALSE CLAIM: integrator '" + v.integrator + "' claims " + c.claim +

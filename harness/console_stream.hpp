@@ -10,6 +10,8 @@
 
 #include <chrono>
 #include <iosfwd>
+#include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -41,6 +43,8 @@ class ConsoleStream : public CheckListener {
   bool line_shown_ = false;
   std::chrono::steady_clock::time_point last_line_;
   std::set<std::string> first_fixes_;  // slots already named in a FIRST FIX line
+  // Which slots each slot of the source calls (harness/source_calls.hpp), read at the first failure.
+  std::optional<std::map<std::string, std::set<std::string>>> calls_;
   int failures_ = 0;
 };
 

@@ -1,6 +1,7 @@
 #include "harness/report.hpp"
 
 #include "harness/inert_text.hpp"
+#include "harness/source_calls.hpp"
 
 #include "harness/svg.hpp"
 #include "harness/verdict_io.hpp"
@@ -130,6 +131,38 @@ Missing missing_of(const CheckResult& r) {
   return m;
 }
 
+// Why a NOT PROVIDED check did not run (issue 49): "not written" when a slot or integrator it needs
+// is not in the implementation at all, "double only" when it is there but not in this scalar
+// (Octave computes in double, numpy code does, a C++ slot written for double). A summary counts the
+// two apart: the second is the language's or the code's precision, not missing work.
+std::string not_provided_kind(const CheckResult& r, const Verdict& v) {
+  auto in = [&](const std::string& scalar, const std::string& slot) {
+    auto it = r.provided.find(scalar);
+    return it != r.provided.end() && std::find(it->second.begin(), it->second.end(), slot) != it->second.end();
+  };
+  auto anywhere = [&](const std::string& slot) {
+    for (const auto& [scalar, slots] : r.provided)
+      if (std::find(slots.begin(), slots.end(), slot) != slots.end()) return true;
+    return false;
+  };
+  const Property* p = property_of(v);
+  if (!p) return r.info.scalar_unavailable.count(v.scalar) ? "double only" : "not written";
+  bool other_scalar = false;
+  for (const auto& need : p->needs) {
+    if (!is_slot_name(need) || in(v.scalar, need)) continue;
+    if (!anywhere(need)) return "not written";
+    other_scalar = true;
+  }
+  if (p->scope == Scope::Integrator) {
+    if (r.integrators.empty()) return "not written";
+    bool here = false;
+    for (const auto& i : r.integrators)
+      here = here || std::find(i.scalars.begin(), i.scalars.end(), v.scalar) != i.scalars.end();
+    other_scalar = other_scalar || !here;
+  }
+  return other_scalar || r.info.scalar_unavailable.count(v.scalar) ? "double only" : "not written";
+}
+
 std::string claimed_text(const IntegratorClaims& c, const std::string& claim) {
   if (claim == "order") return c.order > 0 ? std::to_string(c.order) : "no";
   for (const auto& b : kBooleanClaims)
@@ -256,10 +289,15 @@ std::string slot_named(const SubjectInfo& info, const std::string& slot, const c
 
 std::string first_line(const std::string& s) {
   std::size_t at = 0;
+  std::string lead;  // "python function 'x' (mp50) raised an error:" says what follows, not what it is
   for (;;) {
     const auto n = s.find('\n', at);
     const std::string line = n == std::string::npos ? s.substr(at) : s.substr(at, n - at);
-    if (n == std::string::npos || (line != "Exception thrown with message:" && !line.empty())) return line;
+    if (n == std::string::npos) return lead.empty() ? line : lead + " " + line;
+    if (line != "Exception thrown with message:" && !line.empty()) {
+      if (line.back() != ':' || !lead.empty()) return lead.empty() ? line : lead + " " + line;
+      lead = line;
+    }
     at = n + 1;
   }
 }
@@ -299,9 +337,28 @@ RootCauses root_causes(const CheckResult& r) {
       }
   }
   rc.explained.insert(rc.caused.begin(), rc.caused.end());
+  // Issue 49: a wrong slot that calls another wrong slot (read from the student's source, across the
+  // files of a folder too) most likely fails through it: the callee is the first fix.
+  if (rc.broken.size() > 1 && !r.info.source.empty()) {
+    const auto calls = slot_calls(r.info.source, r.info.language);
+    for (const auto& [slot, direct] : rc.broken)
+      if (auto it = calls.find(slot); it != calls.end())
+        for (const auto& callee : it->second)
+          if (rc.broken.count(callee)) {
+            rc.calls_broken[slot] = callee;
+            break;
+          }
+  }
+  auto depth = [&](std::string s) {  // how many wrong callees stand before it (a cycle stops)
+    int d = 0;
+    for (auto it = rc.calls_broken.find(s); it != rc.calls_broken.end() && d < 64; it = rc.calls_broken.find(s))
+      s = it->second, ++d;
+    return d;
+  };
   for (const auto& [slot, direct] : rc.broken) rc.order.push_back(slot);
   std::stable_sort(rc.order.begin(), rc.order.end(), [&](const std::string& a, const std::string& b) {
     auto n = [&](const std::string& s) { auto it = rc.downstream.find(s); return it == rc.downstream.end() ? 0 : it->second.size(); };
+    if (depth(a) != depth(b)) return depth(a) < depth(b);
     return n(a) > n(b);
   });
   return rc;
@@ -366,6 +423,11 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     const RootCauses rc = root_causes(r);
     for (const auto& slot : rc.order) {
       const Verdict* direct = rc.broken.at(slot);
+      if (auto c = rc.calls_broken.find(slot); c != rc.calls_broken.end()) {
+        os << "THEN:      " << slot_named(r, slot, "'") << " fails its own check " << direct->property << " in "
+           << direct->scalar << ", and it calls '" << c->second << "', which is wrong: fix that first\n";
+        continue;
+      }
       os << "FIRST FIX: " << slot_named(r, slot, "'") << " is wrong: its own check " << direct->property << " fails in "
          << direct->scalar << ": " << first_line(direct->message) << "\n";
       auto it = rc.downstream.find(slot);
@@ -470,8 +532,13 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     const RootCauses rc = root_causes(r);
     for (const auto& slot : rc.order) {
       const Verdict* direct = rc.broken.at(slot);
-      md << "- **" << slot_named(r, slot, "`") << " is wrong**: its own check `" << direct->property << "` fails in [" << direct->scalar
-         << "](#" << anchor_of(*direct) << "): " << md_cell(first_line(direct->message)) << "\n";
+      if (auto c = rc.calls_broken.find(slot); c != rc.calls_broken.end())
+        md << "- **" << slot_named(r, slot, "`") << " fails too**, and it calls `" << c->second
+           << "`, which is wrong (above): fix that first. Its own check `" << direct->property << "` fails in ["
+           << direct->scalar << "](#" << anchor_of(*direct) << "): " << md_cell(first_line(direct->message)) << "\n";
+      else
+        md << "- **" << slot_named(r, slot, "`") << " is wrong**: its own check `" << direct->property << "` fails in [" << direct->scalar
+           << "](#" << anchor_of(*direct) << "): " << md_cell(first_line(direct->message)) << "\n";
       auto it = rc.downstream.find(slot);
       if (it != rc.downstream.end() && !it->second.empty()) {
         md << "  - these fail too, and call `" << slot << "` (fix it first): ";
@@ -798,11 +865,16 @@ json json_report(const CheckResult& r, const Catalogue* c) {
     const RootCauses rc = root_causes(r);
     for (const auto& slot : rc.order) {
       const Verdict* direct = rc.broken.at(slot);
-      first_fix.push_back({{"slot", slot},
-                           {"property", direct->property},
-                           {"scalar", direct->scalar},
-                           {"line", slot_named(r, slot, "'") + " is wrong: its own check " + direct->property +
-                                        " fails in " + direct->scalar + ": " + first_line(direct->message)}});
+      json entry = {{"slot", slot}, {"property", direct->property}, {"scalar", direct->scalar}};
+      if (auto c = rc.calls_broken.find(slot); c != rc.calls_broken.end()) {
+        entry["calls"] = c->second;
+        entry["line"] = slot_named(r, slot, "'") + " fails its own check " + direct->property + " in " + direct->scalar +
+                        ", and it calls '" + c->second + "', which is wrong: fix that first";
+      } else {
+        entry["line"] = slot_named(r, slot, "'") + " is wrong: its own check " + direct->property + " fails in " +
+                        direct->scalar + ": " + first_line(direct->message);
+      }
+      first_fix.push_back(std::move(entry));
     }
   }
   j["first_fix"] = first_fix;
@@ -811,6 +883,7 @@ json json_report(const CheckResult& r, const Catalogue* c) {
     json jv = to_json(v);
     jv["area"] = area_of(v, c);
     if (is_problem(v.outcome)) jv["reproduce_command"] = reproduce_command(r, v);
+    if (v.outcome == Outcome::NotProvided) jv["not_provided"] = not_provided_kind(r, v);
     verdicts.push_back(std::move(jv));
   }
   j["verdicts"] = verdicts;

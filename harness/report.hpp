@@ -37,7 +37,10 @@ struct RootCauses {
   std::map<std::string, std::vector<std::string>> downstream;     // slot -> failing properties that need it
   std::set<std::string> caused;                                    // those properties
   std::set<std::string> explained;                                 // direct + caused
-  std::vector<std::string> order;  // broken slots, the one most other failures call first
+  std::vector<std::string> order;  // broken slots: callees before their callers, then the one most other failures call
+  // A broken slot whose source calls another broken slot (harness/source_calls.hpp) -> that slot: it
+  // most likely fails through it, and the callee is the fix (issue 49).
+  std::map<std::string, std::string> calls_broken;
 };
 RootCauses root_causes(const CheckResult& r);
 

@@ -299,7 +299,11 @@ STEP_SIGS = {
 
 
 def probe(fn, sig, scalar):
-    """None when fn works in this scalar, else the reason."""
+    """None when fn works in this scalar; ("inexact", why) when its result is not of this scalar (a
+    float where an mpf or a Fraction is asked: the code computes in double only); ("raised", why)
+    when it raises. Only the first leaves the slot out of the scalar: an exception is the slot's own
+    failure there, and its checks show it with the traceback (issue 49: a TypeError in 50-digit code
+    read as "not provided")."""
     result, args = sig
     try:
         vals = [sample(a, scalar, i) for i, a in enumerate(args)]
@@ -308,11 +312,11 @@ def probe(fn, sig, scalar):
         encode(result, scalar, fn(*vals))
         return None
     except Inexact as e:
-        return str(e)
+        return ("inexact", str(e))
     except Exception as e:
         tb = student_traceback(e).splitlines()
-        return "fails in %s: %s" % ({"double": "float", "mp50": "mpmath.mpf", "exact": "Fraction"}[scalar],
-                                   tb[-1] if tb else inert(repr(e)))
+        return ("raised", "raises in %s: %s" % ({"double": "float", "mp50": "mpmath.mpf", "exact": "Fraction"}[scalar],
+                                               tb[-1] if tb else inert(repr(e))))
 
 
 class Lines:
@@ -489,14 +493,14 @@ def main():
         # mpf or Fraction is checked only where it works, and the report says why.
         base = probe(fn, sig, "double") if table.get("probe", True) else None
         if base is not None:
-            warnings.append("slot '%s' %s (with the harness's probe arguments)" % (name, base))
+            warnings.append("slot '%s' %s (with the harness's probe arguments)" % (name, base[1]))
         for scalar in scalars:
             why = None if (base is not None or scalar == "double" or not table.get("probe", True)) \
                 else probe(fn, sig, scalar)
-            if why is None:
+            if why is None or why[0] == "raised":
                 slots[scalar].append(name)
             else:
-                notes.setdefault(scalar, {})[name] = why
+                notes.setdefault(scalar, {})[name] = why[1]
     integrators = []
     steps = {}
     for iname, obj, isteps in find_integrators(mod):
@@ -507,9 +511,9 @@ def main():
             ok = True
             for s in (isteps if table.get("probe", True) and scalar != "double" else []):
                 why = probe(get(obj, s), STEP_SIGS[s], scalar)
-                if why is not None and probe(get(obj, s), STEP_SIGS[s], "double") is None:
+                if why is not None and why[0] == "inexact" and probe(get(obj, s), STEP_SIGS[s], "double") is None:
                     ok = False
-                    notes.setdefault(scalar, {})["%s.%s" % (iname, s)] = why
+                    notes.setdefault(scalar, {})["%s.%s" % (iname, s)] = why[1]
             if ok:
                 iscalars.append(scalar)
         claims = get(obj, "claims", None)

@@ -1,0 +1,90 @@
+// Who calls whom in a submission, read from its source (issue 49): the first fix is the function
+// whose own check fails, not one that calls it.
+#include "harness/report.hpp"
+#include "harness/source_calls.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+using namespace gm::harness;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() / ("geomech-calls-" + std::to_string(::getpid()) + "-" + name);
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << text;
+}
+
+}  // namespace
+
+TEST(SourceCalls, ACallerIsReadFromPythonOctaveAndCpp) {
+  const std::string py =
+      "def manakov_Omega(A, M):\n    \"\"\"not manakov_M(A, W) in a docstring\"\"\"\n    return solve(A, M)  # manakov_M( here\n\n"
+      "def manakov_2_34(A, M):\n    W = manakov_Omega(A, M)\n    return madd(matmul(M, W), matmul(W, M), -1)\n";
+  const auto p = slot_calls_in_text(py, "python");
+  EXPECT_EQ(p.count("manakov_Omega"), 0u);  // neither the docstring nor the comment is a call
+  ASSERT_EQ(p.count("manakov_2_34"), 1u);
+  EXPECT_EQ(p.at("manakov_2_34"), (std::set<std::string>{"manakov_Omega"}));
+  const std::string m = "function W = manakov_Omega(A, M)\n  W = A';  % manakov_M(A, W)\nend\n"
+                        "function d = euler_3_8(I, P)\n  d = cross(P, omega_3_5(I, P));\nend\n";
+  EXPECT_EQ(slot_calls_in_text(m, "octave"), (std::map<std::string, std::set<std::string>>{{"euler_3_8", {"omega_3_5"}}}));
+  const std::string cpp = "struct S {\n  template <class T>\n  static Vec3<T> omega_3_5(const Vec3<T>& I, const Vec3<T>& P) {\n"
+                          "    return P.cwiseQuotient(I);\n  }\n  template <class T>\n"
+                          "  static Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& P) {\n    return P.cross(omega_3_5<T>(I, P));\n  }\n};\n";
+  EXPECT_EQ(slot_calls_in_text(cpp, "c++"), (std::map<std::string, std::set<std::string>>{{"euler_3_8", {"omega_3_5"}}}));
+  // A folder of Octave function files: calls across files; a link is not read (the control: the
+  // same file as a regular file is).
+  const fs::path dir = scratch("calls");
+  write(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
+  write(dir / "elsewhere" / "euler.m", "function d = euler_3_8(I, P)\n  d = cross(P, omega_3_5(I, P));\nend\n");
+  fs::create_symlink(dir / "elsewhere" / "euler.m", dir / "euler_3_8.m");
+  const auto f = slot_calls(dir.string(), "octave");
+  EXPECT_EQ(f, (std::map<std::string, std::set<std::string>>{{"manakov_2_34", {"manakov_Omega"}}}));
+  fs::remove(dir / "euler_3_8.m");
+  fs::copy_file(dir / "elsewhere" / "euler.m", dir / "euler_3_8.m");
+  EXPECT_EQ(slot_calls(dir.string(), "octave").count("euler_3_8"), 1u);
+  fs::remove_all(dir);
+}
+
+// Issue 49: "first fix: manakov_2_34", which is right and calls the wrong manakov_Omega (a folder
+// submission). Both own checks fail; the callee comes first, and the caller says why it fails.
+TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
+  const fs::path dir = scratch("first-fix");
+  write(dir / "manakov_Omega.m", "function W = manakov_Omega(A, M)\n  W = -M;\nend\n");
+  write(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
+  CheckResult r;
+  r.info.source = dir.string();
+  r.info.language = "octave";
+  for (const char* p : {"definition_manakov_2_34", "definition_manakov_Omega"}) {
+    gm::Verdict v;
+    v.property = p;
+    v.scalar = "double";
+    v.outcome = gm::Outcome::Fail;
+    v.message = "does not hold";
+    r.verdicts.push_back(v);
+  }
+  const RootCauses rc = root_causes(r);
+  EXPECT_EQ(rc.order, (std::vector<std::string>{"manakov_Omega", "manakov_2_34"}));
+  EXPECT_EQ(rc.calls_broken, (std::map<std::string, std::string>{{"manakov_2_34", "manakov_Omega"}}));
+  const std::string md = markdown_report(r, nullptr);
+  EXPECT_NE(md.find("- **Octave function `manakov_Omega` in " + dir.filename().string() + " is wrong**"), std::string::npos) << md;
+  EXPECT_NE(md.find("fails too**, and it calls `manakov_Omega`, which is wrong (above): fix that first"), std::string::npos) << md;
+  // The control: a manakov_2_34 that does not call it is wrong on its own, and sorts as before.
+  write(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  d = M;\nend\n");
+  const RootCauses alone = root_causes(r);
+  EXPECT_TRUE(alone.calls_broken.empty());
+  EXPECT_EQ(alone.order, (std::vector<std::string>{"manakov_2_34", "manakov_Omega"}));
+  fs::remove_all(dir);
+}
