@@ -1,5 +1,6 @@
 #include "harness/report.hpp"
 
+#include "harness/html_page.hpp"
 #include "harness/inert_text.hpp"
 #include "harness/source_calls.hpp"
 
@@ -944,10 +945,20 @@ void write_report_dir(const CheckResult& r, const std::string& dir, const Catalo
     if (!f) throw std::runtime_error("cannot write " + (tmp / name).string());
   };
   try {
-    put("report.md", markdown_report(r, c));
+    const std::string md = markdown_report(r, c);
+    const auto figures = report_figures(r);
+    put("report.md", md);
+    // The same report as a page (issue 49): report.md in HTML, its figures inline.
+    MarkdownHtml to_html;
+    to_html.image = [&](const std::string& path) {
+      for (const auto& f : figures)
+        if (f.file == path) return "data:image/svg+xml;base64," + base64(f.svg);
+      return std::string();
+    };
+    put("report.html", html_page("geomech report: " + r.subject, markdown_to_html(md, to_html)));
     put("junit.xml", junit_report(r));
     put("verdicts.json", json_report(r, c).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
-    for (const auto& f : report_figures(r)) put(f.file, f.svg);
+    for (const auto& f : figures) put(f.file, f.svg);
     if (const std::string csv = work_precision_csv(r); !csv.empty()) put("figures/work-precision.csv", csv);
   } catch (...) {
     fs::remove_all(tmp, ec);

@@ -683,7 +683,7 @@ TEST(TrajectoryFiles, ConvergenceSlopeLeavesOutTheRoundoffPlateau) {
 std::vector<std::string> labels(const std::string& suite, const std::string&) {
   if (suite == "TrajectoryFiles") return {"meta", "harness", "bad-input"};
   if (suite == "RemoteSubject" || suite == "ProtocolCodec") return {"meta", "harness", "protocol", "python"};
-  if (suite == "Gradebook" || suite == "SourceCalls")
+  if (suite == "Gradebook" || suite == "SourceCalls" || suite == "HtmlPage")
     return {"meta", "harness", "lecturer"};
   return {"meta", "harness"};
 }
