@@ -683,7 +683,8 @@ TEST(TrajectoryFiles, ConvergenceSlopeLeavesOutTheRoundoffPlateau) {
 std::vector<std::string> labels(const std::string& suite, const std::string&) {
   if (suite == "TrajectoryFiles") return {"meta", "harness", "bad-input"};
   if (suite == "RemoteSubject" || suite == "ProtocolCodec") return {"meta", "harness", "protocol", "python"};
-  if (suite == "Gradebook" || suite == "SourceCalls" || suite == "HtmlPage")
+  if (suite == "Gradebook" || suite == "SourceCalls" || suite == "HtmlPage" || suite == "ClassRecord" ||
+      suite == "Autograder")
     return {"meta", "harness", "lecturer"};
   return {"meta", "harness"};
 }

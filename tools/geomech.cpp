@@ -17,6 +17,7 @@
 #include "harness/cli.hpp"
 #include "harness/inert_text.hpp"
 #include "harness/isolate.hpp"
+#include "harness/lecturer_cli.hpp"
 #include "harness/process.hpp"
 #include "harness/protocol_codec.hpp"
 #include "harness/remote_subject.hpp"
@@ -681,6 +682,7 @@ int main(int argc, char** argv) {
   serve_mut->group("");
 
   gm::golden::add_commands(app);  // runs from its own callbacks (golden/cli.hpp)
+  gm::harness::add_lecturer_commands(app);  // autograder, grade-submission, class-html (harness/lecturer_cli.hpp)
 
   // Bad arguments exit with 2, like every other input error of the tool (CLI11's own codes are
   // 100 and up); --help exits with 0.

@@ -1,0 +1,154 @@
+// Tests of what a lecturer reads and uploads (issue 49): the class decided once (PASS by the
+// assignment, "not written" apart from "double only", a roster student without a submission), and
+// the Gradescope and PrairieLearn results rendered from that decision.
+#include "harness/autograder.hpp"
+#include "harness/class_html.hpp"
+#include "harness/class_record.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
+
+using namespace gm::harness;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path scratch(const std::string& name) {
+  const fs::path p = fs::temp_directory_path() / ("geomech-lecturer-" + std::to_string(::getpid()) + "-" + name);
+  fs::remove_all(p);
+  fs::create_directories(p);
+  return p;
+}
+
+void write(const fs::path& p, const std::string& text) {
+  fs::create_directories(p.parent_path());
+  std::ofstream(p) << text;
+}
+
+// A checked row of a Python implementation whose report says `provided` (all exercised, all passing).
+ClassRow checked_row(const std::string& name, const std::vector<std::string>& provided, int exit_code = 0) {
+  ClassRow row;
+  row.name = name;
+  row.source = name + ".py";
+  row.built = true;
+  row.exit_code = exit_code;
+  json report;
+  report["language"] = "python";
+  report["verdict"] = exit_code == 0 ? "PASS" : "FAIL";
+  report["provided"] = {{"double", provided}, {"mp50", provided}};
+  report["exercised"] = json::object();
+  report["verdicts"] = json::array();
+  for (const auto& s : provided) {
+    report["exercised"][s] = {"definition_" + s};
+    report["verdicts"].push_back({{"property", "definition_" + s}, {"scalar", "double"}, {"outcome", "PASS"}, {"area", "sec. 2"}});
+  }
+  report["first_fix"] = json::array();
+  report["counts"] = {{"FAIL", exit_code == 0 ? 0 : 1}};
+  report["reproduce_prefix"] = "geomech check " + name + ".py";
+  row.report = report;
+  return row;
+}
+
+}  // namespace
+
+// Issue 49: one slot of eleven, right, read as PASS; "n/p" mixed what was not written with what the
+// language cannot compute. The assignment decides PASS, and the cells count the two apart.
+TEST(ClassRecord, TheAssignmentDecidesPassAndNotProvidedIsSplit) {
+  std::vector<ClassRow> rows{checked_row("frank", {"hat", "vee", "casimir"}), checked_row("alice", {"hat", "vee", "casimir", "euler_3_8"})};
+  rows[0].report["verdicts"].push_back({{"property", "definition_euler_3_8"}, {"scalar", "double"}, {"outcome", "NOT PROVIDED"},
+                                        {"area", "sec. 2"}, {"not_provided", "not written"}});
+  rows[0].report["verdicts"].push_back({{"property", "definition_casimir"}, {"scalar", "exact"}, {"outcome", "NOT PROVIDED"},
+                                        {"area", "sec. 2"}, {"not_provided", "double only"}});
+  const Rubric week = parse_rubric(R"({"assignment": ["hat", "vee", "casimir", "euler_3_8"]})", "week.json");
+  const ClassView v = decide_class(rows, week);
+  EXPECT_EQ(v.students[0].result, "INCOMPLETE");
+  EXPECT_EQ(v.students[1].result, "PASS");
+  EXPECT_EQ(cell_text(v.students[0].areas.at("sec. 2")), "3/3 +1 n/w +1 d/o");
+  EXPECT_EQ(format_points(v.students[0].score.points), "75.00");
+  // The control: with frank's three slots as the assignment, frank passes.
+  const Rubric small = parse_rubric(R"({"assignment": ["hat", "vee", "casimir"]})", "small.json");
+  EXPECT_EQ(decide_class(rows, small).students[0].result, "PASS");
+  // A roster student without a submission is a row: 0 and "no submission".
+  rows.push_back(no_submission_row("henry"));
+  const ClassView w = decide_class(rows, week);
+  EXPECT_EQ(w.students[2].result, "NO SUBMISSION");
+  EXPECT_EQ(format_points(w.students[2].score.points), "0.00");
+  EXPECT_EQ(w.students[2].score.feedback, "0.00 of 100: no submission");
+  const std::string html = class_summary_html(w, ClassPage{"week3", "week.json", {}, false});
+  EXPECT_NE(html.find("<td data-sort=\"0\" class=\"FAIL\">NO SUBMISSION</td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("id=\"class-table\""), std::string::npos);
+}
+
+TEST(Autograder, ResultsRenderTheDecidedStudentInEachFormat) {
+  std::vector<ClassRow> rows{checked_row("bob", {"hat", "vee", "casimir"}, 1)};
+  rows[0].report["first_fix"] = json::array({{{"slot", "casimir"}, {"property", "definition_casimir"}, {"scalar", "mp50"},
+                                              {"line", "Python function 'casimir' in bob.py is wrong: ..."}}});
+  const Rubric r = parse_rubric(R"({"points": 20, "assignment": ["hat", "vee", "casimir", "euler_3_8"],
+                                    "slots": {"casimir": 2}})", "week.json");
+  const ClassView v = decide_class(rows, r);
+  const json gs = gradescope_results(v.students[0], "# report\n");
+  EXPECT_EQ(gs.at("score"), 8.0);  // hat and vee, 2 of 5 weights of 20 points
+  double sum = 0;
+  int scored = 0;
+  for (const auto& t : gs.at("tests"))
+    if (t.contains("score")) sum += t["score"].get<double>(), ++scored;
+  EXPECT_EQ(scored, 4);
+  EXPECT_NEAR(sum, 8.0, 1e-9);
+  EXPECT_EQ(gs["tests"][2]["name"].get<std::string>().rfind("slot casimir: ", 0), 0u);
+  EXPECT_EQ(gs["tests"][2]["status"], "failed");
+  EXPECT_EQ(gs["tests"][2]["max_score"], 8.0);
+  EXPECT_EQ(gs["tests"][3]["output"].get<std::string>().rfind("not provided", 0), 0u);
+  EXPECT_EQ(gs["output"].get<std::string>().rfind("FAIL, 8.00 of 20: 2 of 4 slots correct (weight 2 of 5)", 0), 0u) << gs["output"];
+  const json pl = prairielearn_results(v.students[0], "# report\n");
+  EXPECT_EQ(pl.at("gradable"), true);
+  EXPECT_NEAR(pl.at("score").get<double>(), 0.4, 1e-12);
+  EXPECT_EQ(pl["tests"][2]["name"], "casimir");
+  EXPECT_EQ(pl["tests"][2]["points"], 0.0);
+  // A file that does not compile: no grade counted against the student on PrairieLearn (not
+  // gradable, with the compiler's message), 0 on Gradescope with the message as a test.
+  ClassRow bad;
+  bad.name = "gina";
+  bad.built = false;
+  bad.build_message = "gina.cpp:11:5: error: expected ';' before 'return'";
+  const ClassView w = decide_class({bad}, r);
+  const json pl2 = prairielearn_results(w.students[0], "");
+  EXPECT_EQ(pl2.at("gradable"), false);
+  EXPECT_FALSE(pl2.contains("score"));
+  EXPECT_EQ(pl2["format_errors"][0], "does not compile: gina.cpp:11:5: error: expected ';' before 'return'");
+  const json gs2 = gradescope_results(w.students[0], "");
+  EXPECT_EQ(gs2.at("score"), 0.0);
+  EXPECT_EQ(gs2["tests"].back()["name"], "it compiles");
+}
+
+TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
+  const fs::path root = scratch("layout");
+  write(root / "py" / "mine.py", "def hat(v): pass\n");
+  write(root / "py" / "notes.txt", "x");
+  EXPECT_EQ(lay_out_submission((root / "py").string(), (root / "c1").string()), "mine");
+  EXPECT_TRUE(fs::is_regular_file(root / "c1" / "mine.py"));
+  for (const char* f : {"hat.m", "vee.m"}) write(root / "m" / "dave" / f, "function m = f()\nend\n");  // a zipped folder
+  EXPECT_EQ(lay_out_submission((root / "m").string(), (root / "c2").string()), "submission");
+  EXPECT_TRUE(fs::is_regular_file(root / "c2" / "submission" / "vee.m"));
+  write(root / "cpp" / "erin.cpp", "#include \"so3.hpp\"\nGEOMECH_STUDENT(E);\n");
+  write(root / "cpp" / "so3.hpp", "");
+  fs::create_symlink("/etc/passwd", root / "cpp" / "secret.hpp");
+  EXPECT_EQ(lay_out_submission((root / "cpp").string(), (root / "c3").string()), "erin");
+  EXPECT_TRUE(fs::is_regular_file(root / "c3" / "erin" / "so3.hpp"));
+  EXPECT_TRUE(fs::is_symlink(root / "c3" / "erin" / "secret.hpp"));  // copied as a link, never read through
+  write(root / "two" / "a.py", "");
+  write(root / "two" / "b.py", "");
+  try {
+    lay_out_submission((root / "two").string(), (root / "c4").string());
+    ADD_FAILURE() << "two Python files were taken as one implementation";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("the submission holds 2 .py, 0 .cpp and 0 .m files; expected one .py file"),
+              std::string::npos)
+        << e.what();
+  }
+  fs::remove_all(root);
+}
