@@ -501,7 +501,13 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   std::ostringstream md;
   md << "# geomech report: " << md_inline(r.subject) << "\n\n";
   if (!r.description.empty()) md << md_inline(r.description) << "\n\n";
-  if (!r.info.source.empty()) md << "Source: `" << r.info.source << "`\n\n";
+  if (!r.info.source.empty()) {
+    // The file's own name (issue 49): a report handed back to a student names their file, not the
+    // folders of the machine that checked it.
+    fs::path src = fs::path(r.info.source).lexically_normal();
+    if (!src.has_filename()) src = src.parent_path();
+    md << "Source: " << md_inline(src.filename().string()) << "\n\n";
+  }
   md << "**Result: " << r.verdict_word() << "** - " << summary_counts(r) << ". Exit status "
      << r.exit_code() << ".\n\n";
   if (r.ran() == 0)
@@ -652,18 +658,53 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     for (const auto& f : other_figures) md << "![" << f << "](" << f << ")\n\n";
   }
 
-  const Missing m = missing_of(r);
+  // Issue 49: what did not run, short for a short submission. The checks of what is not written at
+  // all are one count per missing slot (a three-slot file's report was 223 lines, mostly these);
+  // the checks that what is written cannot run in a scalar (double only) keep their reason, as
+  // they say something about the code.
   md << "## Not provided\n\n";
-  if (m.by_reason.empty()) {
+  if (r.count(Outcome::NotProvided) == 0) {
     md << "Nothing: every property ran.\n\n";
   } else {
-    md << r.count(Outcome::NotProvided) << " checks could not run. They are listed here, never skipped silently:\n\n";
-    for (const auto& [reason, rows] : m.by_reason) {
-      md << "- " << md_cell(reason) << " (" << rows.size() << "): ";
+    std::map<std::string, int> missing_slots;  // a slot or integrator step not written -> its checks
+    std::map<std::string, std::set<std::string>> other;  // double only: reason -> rows
+    int not_written = 0;
+    for (const auto& v : r.verdicts) {
+      if (v.outcome != Outcome::NotProvided) continue;
+      if (not_provided_kind(r, v) == "double only") {
+        other[v.message].insert(v.property + " [" + v.scalar + "]");
+        continue;
+      }
+      ++not_written;
+      std::string what;
+      if (const Property* p = property_of(v))
+        for (const auto& need : p->needs)
+          if (is_slot_name(need) && std::none_of(r.provided.begin(), r.provided.end(), [&](const auto& kv) {
+                return std::find(kv.second.begin(), kv.second.end(), need) != kv.second.end();
+              })) {
+            what = "`" + need + "`";
+            break;
+          }
+      if (what.empty()) what = md_cell(v.message);
+      ++missing_slots[what];
+    }
+    md << r.count(Outcome::NotProvided) << " checks could not run; none is skipped silently (each, by name and "
+          "scalar, is in verdicts.json).\n\n";
+    if (not_written > 0) {
+      md << "- " << not_written << " need what this implementation does not have, by what they need: ";
       bool first = true;
+      for (const auto& [what, n] : missing_slots) md << (first ? "" : ", ") << what << " (" << n << ")", first = false;
+      md << ".\n";
+    }
+    for (const auto& [reason, rows] : other) {
+      md << "- " << md_cell(reason) << " (" << rows.size() << "): ";
+      std::size_t k = 0;
       for (const auto& row : rows) {
-        md << (first ? "" : ", ") << "`" << row << "`";
-        first = false;
+        if (k == 6) {
+          md << " and " << rows.size() - 6 << " more";
+          break;
+        }
+        md << (k++ ? ", " : "") << "`" << row << "`";
       }
       md << "\n";
     }
