@@ -1,4 +1,7 @@
 #include "harness/class_mode.hpp"
+#include "harness/class_console.hpp"
+#include "harness/class_html.hpp"
+#include "harness/class_record.hpp"
 #include "harness/gradebook.hpp"
 #include "harness/sandbox.hpp"
 #include "harness/inert_text.hpp"
@@ -43,15 +46,6 @@ struct Row {
   std::string problem;  // the check program itself failed to run properly
   json report;          // verdicts.json
 };
-
-std::string cell(int pass, int run, int np, int problems) {
-  if (run == 0 && np == 0) return "-";
-  std::ostringstream os;
-  os << pass << "/" << run;
-  if (problems > 0) os << " (" << problems << " bad)";
-  if (np > 0) os << " +" << np << " n/p";
-  return os.str();
-}
 
 // A row as class-shard.json and class-row.json keep it (its report is read from its folder).
 json row_json(const Row& row) {
@@ -124,104 +118,19 @@ const std::string& suite_identity() {
   return id;
 }
 
-// The slots a report says were provided, in any scalar.
-std::set<std::string> provided_slots(const json& report) {
-  std::set<std::string> out;
-  const json by_scalar = report.value("provided", json::object());
-  for (const auto& [scalar, slots] : by_scalar.items())
-    for (const auto& slot : slots) out.insert(slot.get<std::string>());
-  return out;
-}
-
-// One student's results as the gradebook reads them.
-StudentResult student_result(const Row& row) {
-  StudentResult s;
-  s.name = row.impl.name;
-  s.report = row.impl.name + "/report.md";
-  if (!row.built && row.problem.empty()) {
-    s.status = "does not compile";
-    s.first_fix = "does not compile";
-    return s;
-  }
-  if (!row.problem.empty()) {
-    s.status = "not checked";
-    if (row.problem.rfind(kNotRead, 0) == 0) s.report.clear();  // refused: there is no report
-    s.first_fix = inert_text(bounded_text(row.problem.substr(0, row.problem.find('\n'))));
-    return s;
-  }
-  s.status = "checked";
-  const std::set<std::string> provided = provided_slots(row.report);
-  // Credit only for what a check exercised: a slot no selected property calls is not known correct.
-  const json exercised = row.report.value("exercised", json::object());
-  for (const auto& slot : provided)
-    if (exercised.contains(slot) && !exercised.at(slot).empty()) s.provided.push_back(slot);
-  for (const auto& f : row.report.value("first_fix", json::array())) {
-    s.wrong.push_back(f.at("slot"));
-    if (s.first_fix.empty()) s.first_fix = f.at("line");
-  }
-  for (const auto& v : row.report.at("verdicts")) {
-    const std::string out = v.at("outcome").get<std::string>();
-    if (out == "NOT PROVIDED") continue;
-    auto& a = s.areas[v.value("area", "?")];
-    ++a.second;
-    if (out == "PASS") ++a.first;
-  }
-  for (const auto& integ : row.report.value("integrators", json::array()))
-    for (const auto& c : integ.at("claims")) {
-      const std::string claimed = c.value("claimed", "");
-      if (claimed.empty() || claimed == "no" || claimed == "-") continue;  // a claim nobody made
-      s.claims.push_back({integ.at("name"), c.at("claim"), c.at("status")});
-    }
-  return s;
-}
-
-// One student in words (issue 34): what was provided, what is wrong (the first fix), the claims
-// that failed, and where the report is.
-std::string in_words(const Row& row) {
-  const StudentResult s = student_result(row);
-  std::ostringstream os;
-  os << "- **" << md_inline(row.impl.name) << "**";
-  if (s.status != "checked") {
-    os << ": " << (s.status == "does not compile" ? "does not compile (the compiler's message is below)"
-                                                   : "not checked: " + md_inline(s.first_fix))
-       << ".\n";
-    return os.str();
-  }
-  const std::string language = row.report.value("language", "c++");
-  os << " (" << (language == "python" ? "Python" : language == "octave" ? "Octave" : "C++") << "): "
-     << row.report.value("verdict", std::string("?")) << ". ";
-  std::size_t integrators = row.report.value("integrators", json::array()).size();
-  const std::set<std::string> provided = provided_slots(row.report);
-  os << provided.size() << (provided.size() == 1 ? " slot" : " slots");
-  if (integrators > 0) os << " and " << integrators << (integrators == 1 ? " integrator" : " integrators");
-  os << " provided; ";
-  if (s.wrong.empty()) {
-    os << "no slot wrong by its own check";
-    if (s.provided.size() < provided.size())
-      os << " (" << provided.size() - s.provided.size() << " not exercised by the checks run)";
-  } else {
-    os << s.wrong.size() << " wrong (";
-    for (std::size_t i = 0; i < s.wrong.size(); ++i) os << (i ? ", " : "") << s.wrong[i];
-    os << "); first fix: " << md_inline(s.first_fix);
-  }
-  std::vector<std::string> failed, verified;
-  for (const auto& c : s.claims)
-    (c.status == "verified" ? verified : failed).push_back(c.integrator + " " + c.claim + (c.status == "verified" ? "" : " (" + c.status + ")"));
-  if (!verified.empty() || !failed.empty()) {
-    os << "; claims: " << verified.size() << " of " << (verified.size() + failed.size()) << " verified";
-    if (!failed.empty()) {
-      os << ", failed: ";
-      for (std::size_t i = 0; i < failed.size(); ++i) os << (i ? "; " : "") << failed[i];
-    }
-  }
-  const json counts = row.report.value("counts", json::object());
-  int problems = 0;
-  for (const char* k : {"FAIL", "CRASH", "TIMEOUT", "ERROR"}) problems += counts.value(k, 0);
-  if (problems > 0) os << "; " << problems << (problems == 1 ? " check fails" : " checks fail") << " in all";
-  const auto unchecked = row.report.value("unchecked", json::array());
-  if (!unchecked.empty()) os << "; " << unchecked.size() << " could not be checked";
-  os << ". [report](" << s.report << ")\n";
-  return os.str();
+// A row as the class record reads it (harness/class_record.hpp): every view renders that.
+ClassRow class_row(const Row& row) {
+  ClassRow c;
+  c.name = row.impl.name;
+  c.source = row.impl.source;
+  c.built = row.built;
+  c.build_message = row.build_message;
+  c.build_seconds = row.build_seconds;
+  c.exit_code = row.exit_code;
+  c.check_seconds = row.check_seconds;
+  c.problem = row.problem;
+  c.report = row.report;
+  return c;
 }
 
 // A finished task's row (the payload of the task in run_class), with its report read.
@@ -332,9 +241,10 @@ std::string default_class_report_dir(const std::string& class_dir) {
 namespace {
 
 // The gradebook's inputs, read and checked before anything is checked (a misspelt rubric key is
-// found in a second, not after the class).
+// found in a second, not after the class). The rubric grades the summary too, and the roster names
+// the students who handed nothing in, with or without --grades.
 struct Grades {
-  std::string csv;
+  std::string csv;  // empty: no gradebook file
   Rubric rubric;
   std::optional<Roster> roster;
 };
@@ -347,12 +257,7 @@ std::string read_text(const std::string& path, const char* what) {
   return os.str();
 }
 
-std::optional<Grades> load_grades(const GradeOptions& g) {
-  if (g.csv.empty()) {
-    if (!g.rubric.empty() || !g.roster.empty())
-      throw std::runtime_error("--rubric and --roster shape the gradebook: give --grades FILE.csv too");
-    return std::nullopt;
-  }
+Grades load_grades(const GradeOptions& g) {
   Grades out;
   out.csv = g.csv;
   if (!g.rubric.empty()) out.rubric = parse_rubric(read_text(g.rubric, "rubric"), g.rubric);
@@ -360,99 +265,140 @@ std::optional<Grades> load_grades(const GradeOptions& g) {
   return out;
 }
 
+// What a class's views are made from: the rows checked (in name order), the implementations not
+// checked yet (a run going on, or stopped), and the roster's students with nothing in the folder.
+struct ClassState {
+  std::string class_dir;
+  std::vector<Row> rows;
+  std::vector<std::string> pending;
+  std::vector<std::string> no_submission;
+};
+
+std::string md_cell_of(const std::string& text) { return md_inline(text); }
+
 }  // namespace
 
-// The summary (summary.md and, when final, the console) of a class's rows, sharded or not: the
-// table, each student in words, the compiler's and the harness's messages; the gradebook when
-// asked. `pending`: implementations not checked yet (a summary written while the class runs).
-static int summarise_class(const std::string& class_dir, const std::vector<Row>& rows, const std::string& report_dir,
-                           const std::optional<Grades>& grades = std::nullopt,
-                           const std::vector<std::string>& pending = {}, bool final = true) {
-  // The summary table.
+// Every view of a class, from one decision (harness/class_record.hpp, issue 49): summary.md,
+// summary.html and the gradebook, rewritten together (each atomically) as each implementation
+// finishes, so that they always agree, an interrupted run included: the students not checked yet
+// are listed in the summaries and have no grade in the gradebook, which says why. When `final`,
+// the console gets the table. Returns the exit status (0: every row PASS).
+static int summarise_class(const ClassState& st, const std::string& report_dir, const Grades& grades, bool final) {
+  std::error_code ec;
+  std::vector<ClassRow> class_rows;
+  for (const auto& row : st.rows) class_rows.push_back(class_row(row));
+  for (const auto& name : st.no_submission) class_rows.push_back(no_submission_row(name));
+  std::sort(class_rows.begin(), class_rows.end(), [](const ClassRow& a, const ClassRow& b) { return a.name < b.name; });
+  const ClassView view = decide_class(class_rows, grades.rubric);
   const auto& areas = area_names();
+  const std::size_t total = view.students.size() + st.pending.size();
   std::ostringstream md, console;
-  md << "# geomech class report: " << md_inline(class_dir) << "\n\n";
-  if (!pending.empty()) {
-    md << "**In progress: " << rows.size() << " of " << rows.size() + pending.size()
-       << " implementations checked.** Not yet checked (a run stopped now resumes with them): ";
-    for (std::size_t i = 0; i < pending.size(); ++i) md << (i ? ", " : "") << md_inline(pending[i]);
-    md << ".\n\n";
+  md << "# geomech class report: " << md_inline(st.class_dir) << "\n\n";
+  if (!st.pending.empty()) {
+    md << "**In progress: " << view.students.size() << " of " << total
+       << " implementations checked.** Not yet checked (the same command again resumes with them): ";
+    for (std::size_t i = 0; i < st.pending.size(); ++i) md << (i ? ", " : "") << md_inline(st.pending[i]);
+    md << "." << (grades.csv.empty() ? "" : " The gradebook leaves their grades empty and says why in their row"
+                                              " (or is not written yet, while nothing checked can be graded).")
+       << "\n\n";
   }
-  md << rows.size() << " implementations. Each cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or "
-        "ERROR), then the checks not provided (n/p). Details in each implementation's report.\n\n"
-     << "| implementation | result |";
+  md << view.students.size() << " implementations";
+  if (!st.no_submission.empty()) md << " (" << st.no_submission.size() << " on the roster with no submission)";
+  md << ". Grades: " << md_inline(grades.rubric.source) << ", " << view.assignment.size() << " slots in the assignment"
+     << (view.assignment_from_rubric ? "" : " (every slot a student of the class provides; a rubric's \"assignment\" "
+                                            "makes a PASS need all of them)")
+     << ". Each area cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or ERROR), then the checks that did "
+        "not run: n/w, of slots not written; d/o, in 50 digits or rationals, which the code or its language does not "
+        "compute in (double only). Details in each implementation's report; summary.html is this page to read, "
+        "sortable.\n\n";
+  if (!view.no_grades.empty()) md << "**No grades**: " << md_inline(view.no_grades) << "\n\n";
+  md << "| implementation | result | grade |";
   for (const auto& a : areas) md << " " << a << " |";
-  md << " report |\n|---|---|";
+  md << " report |\n|---|---|---|";
   for (std::size_t i = 0; i < areas.size(); ++i) md << "---|";
   md << "---|\n";
-  console << "\n" << std::left << std::setw(26) << "implementation" << std::setw(18) << "result";
-  for (const auto& a : areas) console << std::setw(24) << a;
-  console << "\n" << std::string(26 + 18 + 24 * areas.size(), '-') << "\n";
+  console << "\n" << std::left << std::setw(22) << "implementation" << std::setw(18) << "result" << std::setw(10) << "grade";
+  for (const auto& a : areas) console << std::setw(22) << a;
+  console << "\n" << std::string(22 + 18 + 10 + 22 * areas.size(), '-') << "\n";
   int bad = 0;
-  for (const auto& row : rows) {
-    std::string result;
-    std::map<std::string, std::array<int, 4>> by_area;  // pass, run, np, problems
-    if (!row.built && row.problem.empty()) {
-      result = "DOES NOT COMPILE";
-    } else if (!row.problem.empty()) {
-      result = "NOT CHECKED";
-    } else {
-      for (const auto& v : row.report.at("verdicts")) {
-        auto& c = by_area[v.value("area", "?")];
-        const std::string out = v.at("outcome").get<std::string>();
-        if (out == "NOT PROVIDED") {
-          ++c[2];
-          continue;
-        }
-        ++c[1];
-        if (out == "PASS")
-          ++c[0];
-        else
-          ++c[3];
-      }
-      result = row.exit_code == 0 ? "PASS" : row.report.value("verdict", std::string("FAIL"));
-    }
-    if (result != "PASS") ++bad;
-    md << "| " << md_inline(row.impl.name) << " | " << (result == "PASS" ? result : "**" + result + "**") << " |";
-    console << std::setw(26) << inert_text(row.impl.name) + " " << std::setw(18) << result + " ";
+  for (const auto& s : view.students) {
+    if (s.result != "PASS") ++bad;
+    const std::string grade = view.no_grades.empty() ? format_points(s.score.points) : "-";
+    md << "| " << md_inline(s.row->name) << " | " << (s.result == "PASS" ? s.result : "**" + s.result + "**") << " | "
+       << grade << " |";
+    console << std::setw(22) << inert_text(s.row->name) + " " << std::setw(18) << s.result + " " << std::setw(10)
+            << grade + " ";
     for (const auto& a : areas) {
-      auto it = by_area.find(a);
-      const std::string c = it == by_area.end() ? "-" : cell(it->second[0], it->second[1], it->second[2], it->second[3]);
+      auto it = s.areas.find(a);
+      const std::string c = it == s.areas.end() ? "-" : cell_text(it->second);
       md << " " << c << " |";
-      console << std::setw(24) << c + " ";  // a cell wider than its column still ends with a space
+      console << std::setw(22) << c + " ";  // a cell wider than its column still ends with a space
     }
-    const std::string link = row.impl.name + "/report.md";
-    md << " " << (row.built && row.problem.empty() ? "[" + md_inline(link) + "](" + md_link_target(link) + ")" : "-") << " |\n";
+    const std::string link = s.row->name + "/report.md";
+    md << " " << (s.report_link.empty() ? "-" : "[" + md_inline(link) + "](" + md_link_target(link) + ")") << " |\n";
     console << "\n";
   }
   md << "\n## Each student in words\n\n";
-  for (const auto& row : rows) md << in_words(row);
+  for (const auto& s : view.students) {
+    md << "- **" << md_inline(s.row->name) << "**" << (s.language.empty() ? "" : " (" + s.language + ")") << ": ";
+    const auto words = words_of(s);
+    for (std::size_t i = 0; i < words.size(); ++i) md << (i ? "; " : "") << md_cell_of(words[i]);
+    md << ".";
+    if (!s.report_link.empty()) md << " [report](" << md_link_target(s.report_link) << ")";
+    md << "\n";
+  }
   md << "\n";
-  for (const auto& row : rows) {
-    if (!row.built && row.problem.empty()) {
-      md << "## " << md_inline(row.impl.name) << ": does not compile\n\n" << md_fenced(bounded_text(row.build_message)) << "\n";
-      console << "\n" << inert_text(row.impl.name) << " does not compile:\n" << inert_text(bounded_text(row.build_message)) << "\n";
-    } else if (!row.problem.empty()) {
-      md << "## " << md_inline(row.impl.name) << ": not checked\n\n" << md_fenced(bounded_text(row.problem)) << "\n";
-      console << "\n" << inert_text(row.impl.name) << ": " << inert_text(bounded_text(row.problem)) << "\n";
+  for (const auto& s : view.students) {
+    if (s.status == "does not compile") {
+      md << "## " << md_inline(s.row->name) << ": does not compile\n\n" << md_fenced(bounded_text(s.row->build_message)) << "\n";
+      console << "\n" << inert_text(s.row->name) << " does not compile:\n" << inert_text(bounded_text(s.row->build_message)) << "\n";
+    } else if (s.status == "not checked") {
+      md << "## " << md_inline(s.row->name) << ": not checked\n\n" << md_fenced(bounded_text(s.row->problem)) << "\n";
+      console << "\n" << inert_text(s.row->name) << ": " << inert_text(bounded_text(s.row->problem)) << "\n";
     }
   }
   write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
-  if (!final) return bad == 0 ? 0 : 1;
-  std::cout << console.str() << "\nsummary: " << report_dir << "/summary.md; one report per implementation in "
-            << report_dir << "/<name>/report.md\n";
-  if (grades) {
-    std::vector<StudentResult> students;
-    for (const auto& row : rows) students.push_back(student_result(row));
-    write_file_atomically(grades->csv, write_gradebook_csv(students, grades->rubric, grades->roster));
-    const auto assignment = resolve_assignment(grades->rubric, students);
-    std::cout << "grades: " << grades->csv << " (" << grades->rubric.source << "; " << assignment.size()
-              << " slots in the assignment";
-    if (!grades->rubric.assignment) std::cout << ": every slot a student of the class provides";
-    std::cout << "; docs/GRADEBOOK.md)\n";
-    if (grades->roster)
-      for (const auto& w : roster_warnings(students, *grades->roster)) std::cout << "warning: " << w << "\n";
+  ClassPage page;
+  page.class_name = st.class_dir;
+  page.rubric_source = grades.rubric.source;
+  page.pending = st.pending;
+  write_file_atomically((fs::path(report_dir) / "summary.html").string(), class_summary_html(view, page));
+  // The gradebook, with the summary: the same students, the same grades; one not checked yet has
+  // no grade and says so (an empty cell is "no grade" to Moodle and Canvas).
+  std::vector<StudentResult> students;
+  for (const auto& s : view.students) students.push_back(s.graded);
+  for (const auto& name : st.pending) {
+    StudentResult p;
+    p.name = name;
+    p.status = kNotCheckedYet;
+    students.push_back(p);
   }
+  if (!grades.csv.empty() && view.no_grades.empty()) {
+    std::string csv;
+    try {
+      csv = write_gradebook_csv(students, grades.rubric, grades.roster);
+    } catch (const std::runtime_error&) {
+      if (final) throw;
+    }
+    // Nothing gradable yet (a run that has checked nobody, under a rubric that learns its
+    // assignment from the class): no gradebook at all rather than an earlier run's.
+    if (csv.empty()) fs::remove(grades.csv, ec);
+    else write_file_atomically(grades.csv, csv);
+  }
+  if (!final) return bad == 0 ? 0 : 1;
+  if (!grades.csv.empty() && !view.no_grades.empty())
+    throw std::runtime_error("no gradebook written: " + view.no_grades + " (the summaries are written)");
+  std::cout << console.str() << "\nsummary: " << report_dir << "/summary.md and summary.html; one report per implementation in "
+            << report_dir << "/<name>/report.md (and .html)\n";
+  if (!grades.csv.empty()) {
+    std::cout << "grades: " << grades.csv << " (" << grades.rubric.source << "; " << view.assignment.size()
+              << " slots in the assignment";
+    if (!grades.rubric.assignment) std::cout << ": every slot a student of the class provides";
+    std::cout << "; docs/GRADEBOOK.md)\n";
+  }
+  if (grades.roster)
+    for (const auto& w : roster_warnings(students, *grades.roster))
+      if (w.find("matches no implementation") == std::string::npos) std::cout << "warning: " << w << "\n";
   return bad == 0 ? 0 : 1;
 }
 
@@ -474,9 +420,15 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   std::error_code ec;
   fs::create_directories(report_dir, ec);
   if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
-  const std::string front = o.front_door.empty() ? "geomech" : o.front_door;
 
   const auto grades = load_grades(o.grades);  // a bad rubric is said before anything runs
+  // The roster's students with nothing in the class folder get a row each (0, "no submission"), in
+  // a run of the whole class (a shard does not know the other shards' names; merge-class adds them).
+  std::vector<std::string> no_submission;
+  if (grades.roster && o.shard_n == 1)
+    for (const auto& [name, entry] : *grades.roster)
+      if (std::none_of(all_impls.begin(), all_impls.end(), [&](const Implementation& i) { return i.name == name; }))
+        no_submission.push_back(name);
   if (o.untrusted)
     if (const std::string why = sandbox_unavailable(); !why.empty()) throw std::runtime_error(why);
   std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir
@@ -587,6 +539,15 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
               << " implementations are unchanged since their last complete check (source, options and suite) and are "
                  "not checked again (--fresh checks everyone)\n";
 
+  // The command a student runs on their own file, as the reports print it (issue 49): their file's
+  // name, no folder of the lecturer's, no lecturer's option ("geomech check bob.py", "geomech check
+  // dave/" for a folder of Octave files).
+  auto student_command = [](const Implementation& impl) {
+    const fs::path origin(impl.origin);
+    const bool octave_folder = impl.origin.find('/') == std::string::npos && origin.extension().empty();
+    return std::string("geomech check ") +
+           shell_quote(octave_folder ? impl.origin + "/" : origin.filename().string());
+  };
   std::vector<std::function<std::string()>> tasks;
   for (std::size_t i : to_check) {
     const Implementation& impl = impls[i];
@@ -621,7 +582,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
         co.jobs = 1;
         co.quiet = true;
         co.report_dir = (fs::path(report_dir) / impl.name).string();
-        std::vector<std::string> argv{fs::read_symlink("/proc/self/exe").string(), "check", impl.source};
+        std::vector<std::string> argv{fs::read_symlink("/proc/self/exe").string(), "check", impl.source,
+                                      "--reproduce-prefix", student_command(impl)};
         if (o.untrusted) argv.insert(argv.end(), {"--untrusted", "--name", impl.name});
         if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
         const auto args = to_args(co);
@@ -646,7 +608,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
       const auto args = to_args(co);
       argv.insert(argv.end(), args.begin(), args.end());
       argv.insert(argv.end(), {"--name", impl.name, "--source", impl.source, "--build-notes", b.notes_file,
-                               "--reproduce-prefix", front + " check " + shell_quote(impl.source)});
+                               "--reproduce-prefix", student_command(impl)});
       return record_check(j, run_process(ProcessSpec{argv, {}, false}), "the check program");
     });
   }
@@ -654,7 +616,6 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   io.jobs = o.jobs;
   io.timeout_seconds = o.timeout_per_implementation;
   io.memory_limit_mb = 0;  // the compilers need what they need
-  std::size_t done = 0;
   // For the test of an interrupted run (tests/run_class_resume.cmake): after N implementations,
   // this process stops itself with the signal named (INT, as Ctrl-C; KILL, as a killed job).
   long stop_after = -1;
@@ -664,6 +625,38 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     stop_after = std::atol(spec.c_str());
     stop_signal = spec.find("KILL") != std::string::npos ? SIGKILL : SIGINT;
   }
+  // The views of the class as it stands (summary.md, summary.html, the gradebook), rewritten
+  // together, now (so that an earlier run's complete summary and gradebook never stand beside this
+  // run's deleted results) and as each implementation finishes.
+  const std::string resume = o.command.empty() ? (o.front_door.empty() ? "geomech" : o.front_door) + " check-class " +
+                                                     shell_quote(o.dir)
+                                               : o.command;
+  ClassConsole console(impls.size(), impls.size() - to_check.size());
+  auto state_now = [&] {
+    ClassState st;
+    st.class_dir = o.dir;
+    for (std::size_t k = 0; k < impls.size(); ++k)
+      if (finished[k]) st.rows.push_back(*finished[k]);
+      else st.pending.push_back(impls[k].name);
+    st.no_submission = no_submission;
+    return st;
+  };
+  auto rewrite_views = [&] {
+    const ClassState st = state_now();
+    summarise_class(st, report_dir, grades, false);
+    std::ostringstream say;
+    say << "\n\ngeomech check-class: interrupted. " << st.rows.size() << " of " << impls.size()
+        << " results are kept in " << report_dir << "/ (a report and class-row.json each); summary.md and "
+           "summary.html"
+        << (grades.csv.empty() ? "" : " and the gradebook " + grades.csv) << " list the " << st.pending.size()
+        << " not checked yet" << (grades.csv.empty() ? "" : " (no grade in the gradebook)")
+        << ". The same command resumes, checking only those:\n  " << resume << "\n";
+    console.on_interrupt_say(say.str());
+  };
+  rewrite_views();
+  io.on_started = [&](std::size_t t) { console.started(impls[to_check[t]].name); };
+  io.on_idle = [&] { console.tick(); };
+  std::size_t done = 0;
   io.on_finished = [&](std::size_t t, const TaskResult& result) {
     const std::size_t i = to_check[t];
     Row row = row_of(impls[i], result, report_dir);
@@ -673,14 +666,19 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     fs::create_directories(fs::path(report_dir) / impls[i].name, dir_ec);
     json keep{{"format", "geomech-class-row 1"}, {"fingerprint", prints[i]}, {"row", row_json(row)}};
     write_file_atomically((fs::path(report_dir) / impls[i].name / "class-row.json").string(), keep.dump(1));
+    const double seconds = result.seconds;
     finished[i] = std::move(row);
-    std::vector<Row> so_far;
-    std::vector<std::string> pending;
-    for (std::size_t k = 0; k < impls.size(); ++k)
-      if (finished[k]) so_far.push_back(*finished[k]);
-      else pending.push_back(impls[k].name);
-    summarise_class(o.dir, so_far, report_dir, std::nullopt, pending, false);
-    std::cerr << "  [" << ++done + resumed << "/" << impls.size() << "] " << impls[i].name << "\n";
+    rewrite_views();
+    // Its line: the verdict and grade the summary now shows for it.
+    std::vector<ClassRow> rows_now;
+    for (const auto& f : finished)
+      if (f) rows_now.push_back(class_row(*f));
+    const ClassView view = decide_class(rows_now, grades.rubric);
+    for (const auto& sv : view.students)
+      if (sv.row->name == impls[i].name)
+        console.finished(impls[i].name, sv.result, view.no_grades.empty() ? sv.score.headline.substr(0, sv.score.headline.find(':')) : "",
+                         seconds);
+    ++done;
     if (stop_after >= 0 && static_cast<long>(done) >= stop_after) ::raise(stop_signal);
   };
   run_isolated(tasks, io);
@@ -696,13 +694,18 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   shard["shard"] = {o.shard_k, o.shard_n};
   shard["rows"] = json::array();
   for (const auto& row : rows) shard["rows"].push_back(row_json(row));
+  for (const auto& name : no_submission) shard["rows"].push_back(class_row_to_json(no_submission_row(name)));
   write_file_atomically((fs::path(report_dir) / "class-shard.json").string(), shard.dump(1));
   if (o.shard_n > 1)
     std::cerr << "geomech check-class: shard " << o.shard_k << "/" << o.shard_n << " written to " << report_dir
               << "; combine the shards with `geomech merge-class OUT SHARD_DIR...`\n";
   if (resumed > 0)
     std::cout << "(" << resumed << " of " << impls.size() << " implementations resumed from the previous run, unchanged)\n";
-  return summarise_class(o.dir, rows, report_dir, grades);
+  ClassState st;
+  st.class_dir = o.dir;
+  st.rows = rows;
+  st.no_submission = no_submission;
+  return summarise_class(st, report_dir, grades, true);
 }
 
 int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir, const GradeOptions& grade_options) {
@@ -739,6 +742,7 @@ int merge_class(const std::vector<std::string>& shard_dirs, const std::string& o
     }
     if (!seen.insert(k).second) throw std::runtime_error(file.string() + ": shard " + std::to_string(k) + " given twice");
     for (const auto& r : j.at("rows")) {
+      if (!r.value("submitted", true)) continue;  // a roster name with no submission: added below
       Row row = row_from_json(r, dir);
       const fs::path report = fs::path(dir) / row.impl.name;
       if (fs::exists(report) && fs::absolute(report) != fs::absolute(fs::path(out_dir) / row.impl.name)) {
@@ -759,7 +763,14 @@ int merge_class(const std::vector<std::string>& shard_dirs, const std::string& o
     throw std::runtime_error("merge-class: the shards hold " + std::to_string(rows.size()) + " implementations, the class " +
                              std::to_string(total));
   std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.impl.name < b.impl.name; });
-  return summarise_class(klass, rows, out_dir, grades);
+  ClassState st;
+  st.class_dir = klass;
+  st.rows = rows;
+  if (grades.roster)
+    for (const auto& [name, entry] : *grades.roster)
+      if (std::none_of(rows.begin(), rows.end(), [&](const Row& r) { return r.impl.name == name; }))
+        st.no_submission.push_back(name);
+  return summarise_class(st, out_dir, grades, true);
 }
 
 }  // namespace gm::harness

@@ -39,6 +39,7 @@ struct ClassOptions {
   int jobs = 2;                    // implementations at once
   double timeout_per_implementation = 1800;
   std::string front_door;          // how to call geomech in printed commands (e.g. "./geomech")
+  std::string command;             // this run's command line without --fresh: what resumes it (said on Ctrl-C)
   CheckCliOptions check;           // forwarded to every implementation's check
   BuildOptions build;              // how each implementation is compiled (jobs is set to 1)
   // Untrusted mode (the default, issue 14): every implementation is compiled and run in the

@@ -1,5 +1,6 @@
 #include "harness/class_record.hpp"
 
+#include "harness/inert_text.hpp"
 #include "harness/report.hpp"
 
 #include <algorithm>
@@ -116,11 +117,11 @@ StudentResult student_result(const ClassRow& row) {
   s.report = row.submitted && (row.built || !row.problem.empty()) ? row.name + "/report.md" : "";
   if (s.status == "no submission") return s;
   if (s.status == "does not compile") {
-    s.first_fix = first_error_line(row.build_message);
+    s.first_fix = inert_text(bounded_text(first_error_line(row.build_message)));
     return s;
   }
   if (s.status == "not checked") {
-    s.first_fix = row.problem.substr(0, row.problem.find('\n'));
+    s.first_fix = inert_text(bounded_text(row.problem.substr(0, row.problem.find('\n'))));
     s.report.clear();
     return s;
   }
@@ -168,7 +169,16 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
     s.row = &row;
     s.status = status_of(row);
     s.graded = results[i];
-    s.score = score_student(s.graded, rubric, view.assignment);
+    try {
+      s.score = score_student(s.graded, rubric, view.assignment);
+    } catch (const std::runtime_error& e) {
+      // The rubric leaves this class nothing to grade (nobody provides a weighted slot): every view
+      // says so; the gradebook's export refuses with the same message.
+      view.no_grades = e.what();
+      s.score = Score{};
+      s.score.max_points = rubric.points;
+      s.score.headline = "no grade";
+    }
     s.report_link = s.graded.report;
     if (s.status == "no submission") s.result = "NO SUBMISSION";
     else if (s.status == "does not compile") s.result = "DOES NOT COMPILE";
@@ -191,9 +201,13 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
       else ++c.bad;
     }
     // The assignment decides a PASS (issue 49: one slot of twelve, right, read as PASS): every
-    // check that ran passed, and every slot the assignment weights is provided, exercised and right.
+    // check that ran passed, and every slot the rubric's assignment weights is provided, exercised
+    // and right. Without an assignment in the rubric, the class's own union of slots is a guess at
+    // one (docs/GRADEBOOK.md), and a PASS is every check passing; the grade still counts the slots.
     if (row.exit_code != 0) {
       s.result = row.report.value("verdict", std::string("FAIL"));
+    } else if (!view.assignment_from_rubric) {
+      s.result = "PASS";
     } else {
       bool complete = true;
       for (const auto& item : s.score.items) {

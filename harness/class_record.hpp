@@ -70,10 +70,11 @@ struct ClassView {
   std::vector<std::string> assignment;  // the slots the grades count (resolve_assignment)
   bool assignment_from_rubric = false;  // false: every slot a student of the class provides
   std::vector<StudentView> students;    // in the rows' order
+  std::string no_grades;                // not empty: the rubric leaves this class nothing to grade (why)
 };
 
-// `rows` must outlive the view. Throws std::runtime_error when the rubric leaves the class nothing
-// to grade (score_student).
+// `rows` must outlive the view. When the rubric leaves the class nothing to grade, every student
+// gets no grade and `no_grades` says why.
 ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric);
 
 // One student in words, as plain text parts each renderer escapes and joins (summary.md, summary.html,

@@ -374,6 +374,12 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
   for (const auto& n : notes) middle += (middle.empty() ? "" : "; ") + n;
   const std::string tail = st.report.empty() ? "" : "report: " + one_line(st.report);
   out.feedback = feedback_line(one_line(head), one_line(middle), tail);
+  if (st.status == kNotCheckedYet) {
+    // A class run stopped before this submission (issue 49): no grade, and the row says why, as
+    // the summary does; an empty grade cell is "no grade" to both importers.
+    out.headline = "no grade yet: " + kNotCheckedYet;
+    out.feedback = "no grade yet: the class run stopped before checking this submission; the same command again resumes it";
+  }
   return out;
 }
 
@@ -402,11 +408,12 @@ std::string write_gradebook_csv(const std::vector<StudentResult>& cls, const Rub
     const bool listed = roster && roster->count(s->name);
     if (listed) id = roster->at(s->name);
     else id.username = id.full_name = s->name;  // no roster row: the implementation name identifies
+    const std::string grade = s->status == kNotCheckedYet ? "" : format_points(score.points);
     if (r.format == LmsFormat::canvas) {
       out += csv_row({id.full_name.empty() ? s->name : id.full_name, id.canvas_id, id.sis_user_id,
-                      id.sis_login_id, id.section, format_points(score.points)});
+                      id.sis_login_id, id.section, grade});
     } else {
-      std::vector<std::string> f = {s->name, id.username, id.email, id.id_number, format_points(score.points)};
+      std::vector<std::string> f = {s->name, id.username, id.email, id.id_number, grade};
       if (r.feedback) f.push_back(score.feedback);
       out += csv_row(f);
     }

@@ -21,9 +21,13 @@ struct ClaimResult {
   std::string status;      // "verified", "FALSE CLAIM", "UNCHECKED", "not claimed"... (only "verified" earns credit)
 };
 
+// The status of a submission a class run has not checked yet (stopped before it): its gradebook
+// row has no grade, and says so.
+inline const std::string kNotCheckedYet = "not checked yet";
+
 struct StudentResult {
   std::string name;                   // the implementation's name in the class (file stem or folder name); unique
-  std::string status;                 // "checked", "does not compile", "not checked", "no submission"
+  std::string status;                 // "checked", "does not compile", "not checked", "no submission", kNotCheckedYet
   std::vector<std::string> provided;  // slot names the submission provides (any scalar) and a check exercised
   std::vector<std::string> unexercised;  // slots it provides that no check that ran called
   std::vector<std::string> wrong;     // provided slots the check found wrong, first fix first

@@ -299,6 +299,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
       if (r.output_fd >= 0) fds.push_back(pollfd{r.output_fd, POLLIN, 0});
     }
     ::poll(fds.data(), fds.size(), 20);
+    if (o.on_idle) o.on_idle();
 
     for (auto it = running.begin(); it != running.end();) {
       Running& r = *it;

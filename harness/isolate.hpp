@@ -25,6 +25,9 @@ struct IsolationOptions {
   // check reports each result the moment it is known (issue 32, harness/check_events.hpp).
   std::function<void(std::size_t)> on_started;
   std::function<void(std::size_t, const TaskResult&)> on_finished;
+  // Called in the parent while tasks run, between looks at them (about 50 times a second): a
+  // progress line that names what is running and for how long (issue 49, class mode).
+  std::function<void()> on_idle;
   // Worker slots (issue 15): a running task occupies one of `jobs` slots, numbered from 0; in the
   // task, current_worker() is its slot. prepare_worker(w) runs in this process before a task is
   // started in slot w (an implementation running out of process keeps one server per slot, started

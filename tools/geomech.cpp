@@ -57,6 +57,10 @@
 namespace gm {
 namespace {
 
+// The command a report prints for replaying a check, when the caller names it (--reproduce-prefix:
+// a class run gives the student's own command, "geomech check bob.py", issue 49).
+std::string g_reproduce_prefix;
+
 // How the user called us, for the commands we print: the front-door script sets GEOMECH_FRONT_DOOR.
 std::string front_door() {
   if (const char* f = std::getenv("GEOMECH_FRONT_DOOR"); f && *f) return f;
@@ -156,7 +160,8 @@ int run_protocol_check(const std::string& file, const std::vector<std::string>& 
   auto conn = std::make_shared<protocol::Connection>(cmd, language);
   harness::SubjectInfo info;
   info.source = file;
-  info.reproduce_prefix = front_door() + " check " + harness::shell_quote(file) + how;
+  info.reproduce_prefix =
+      g_reproduce_prefix.empty() ? front_door() + " check " + harness::shell_quote(file) + how : g_reproduce_prefix;
   const std::string name = !name_in.empty() ? name_in
                            : std::filesystem::path(file).lexically_normal().stem().string().empty()
                                ? std::filesystem::path(file).lexically_normal().parent_path().filename().string()
@@ -556,6 +561,9 @@ int main(int argc, char** argv) {
   check->add_flag("--rebuild", bo.force, "compile again even if nothing changed");
   check->add_option("--cache-dir", bo.cache_dir, "where compiled implementations are kept (default: in the build tree)");
   check->add_option("--name", bo.name, "the implementation's name in the report (default: the file's name)");
+  check->add_option("--reproduce-prefix", gm::g_reproduce_prefix,
+                    "the command the report prints to replay a check (default: this one; check-class gives the "
+                    "student's own, e.g. \"geomech check bob.py\")");
   bool untrusted = false;
   check->add_flag("--untrusted", untrusted,
                   "run the implementation as its own sandboxed process behind the slot protocol (docs/UNTRUSTED.md): "
@@ -736,6 +744,12 @@ int main(int argc, char** argv) {
       if (class_opts.check.report_dir.size()) class_opts.report_dir = class_opts.check.report_dir;
       class_opts.check.report_dir.clear();
       class_opts.front_door = gm::front_door();
+      {  // the command that resumes this run (said on Ctrl-C): this one, without --fresh
+        std::vector<std::string> again{gm::front_door()};
+        for (int a = 1; a < argc; ++a)
+          if (std::string(argv[a]) != "--fresh") again.push_back(argv[a]);
+        class_opts.command = gm::harness::shell_join(again);
+      }
       class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
       class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
       class_opts.untrusted = !trusted;
