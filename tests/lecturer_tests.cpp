@@ -2,6 +2,7 @@
 // assignment, "not written" apart from "double only", a roster student without a submission), and
 // the Gradescope and PrairieLearn results rendered from that decision.
 #include "harness/autograder.hpp"
+#include "harness/class_mode.hpp"
 #include "harness/class_html.hpp"
 #include "harness/class_record.hpp"
 
@@ -151,4 +152,16 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
         << e.what();
   }
   fs::remove_all(root);
+}
+
+// Issue 49: `check-class week3` and `check-class week3/` wrote to different folders (without the
+// slash nothing resumed; with it, classes overwrote each other's summary). One class folder, one
+// report folder, however it is written; the control: another class, another folder.
+TEST(ClassRecord, OneClassFolderIsOneReportFolder) {
+  const std::string a = default_class_report_dir("week3");
+  EXPECT_EQ(a, "geomech-reports/week3");
+  for (const std::string& same : std::vector<std::string>{"week3/", "./week3", "./week3//", (fs::current_path() / "week3").string() + "/"})
+    EXPECT_EQ(default_class_report_dir(same), a) << same;
+  EXPECT_EQ(default_class_report_dir("other/week3"), a);  // the folder's name, as before
+  EXPECT_NE(default_class_report_dir("week4/"), a);
 }
