@@ -30,6 +30,7 @@ std::string first_error_line(const std::string& message) {
   std::istringstream lines(message);
   std::string line, first;
   while (std::getline(lines, line)) {
+    line.erase(0, line.find_first_not_of(" \t"));
     if (first.empty() && !line.empty()) first = line;
     if (line.find("error") != std::string::npos) return line;
   }

@@ -235,9 +235,11 @@ def main():
         return
     base_summary = open(os.path.join(base, "reports", "summary.md"), encoding="utf-8").read()
     base_rows, base_grades = summary_rows(base_summary), grade_rows(os.path.join(base, "book", "grades.csv"))
-    for name in ("honest", "alice"):
-        if base_rows.get(name, [None, None])[1] != "PASS":
-            fail("the honest class: %s does not PASS" % name, base_summary)
+    # alice writes hat only, of the rubric's two slots: INCOMPLETE, every check of hers passing
+    # (issue 49: the assignment decides a PASS).
+    for name, result in (("honest", "PASS"), ("alice", "**INCOMPLETE**")):
+        if base_rows.get(name, [None, None])[1] != result:
+            fail("the honest class: %s is not %s" % (name, result), base_summary)
 
     klass = os.path.join(OUT, "class")
     make_class(klass, secret, False)
@@ -304,7 +306,7 @@ def main():
         "sock": r"NOT CHECKED",
         "forge": r"NOT CHECKED",
         "mallory": r"DOES NOT COMPILE",
-        "stdin": r"PASS",
+        "stdin": r"INCOMPLETE",  # it compiles (reading nothing) and its hat passes; hat is one slot of two
         "flood": r"FAIL",
     }
     if ROOT and not AS_USER:
