@@ -55,6 +55,10 @@ string(FIND "${full}" "NOT CHECKED" not_checked)
 if(NOT not_checked EQUAL -1)
   message(FATAL_ERROR "a submission in the private folder was not checked:\n${full}")
 endif()
+# Issue 49: the console gives each student a line as their check ends: result, grade, time.
+if(NOT out MATCHES "\\[[1-4]/4\\] wrong_vee: FAIL, [0-9]+\\.[0-9][0-9] of 100, [0-9]+ s\n")
+  message(FATAL_ERROR "no console line with wrong_vee's result, grade and time:\n${out}")
+endif()
 # Each student in words, with the first fix of the wrong one.
 string(FIND "${full}" "- **wrong_vee** (Python): FAIL, " words)
 string(FIND "${full}" "first fix: Python function 'vee' in wrong_vee.py is wrong" fix)
