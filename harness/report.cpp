@@ -313,7 +313,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
   os << "geomech check: subject '" << r.subject << "'";
   if (!r.description.empty()) os << " (" << r.description << ")";
   os << "\nseed " << r.seed << "; " << r.selection << "; residuals in units of eps * scale\n";
-  if (!r.info.interpreter.empty()) os << "interpreter: " << r.info.interpreter << "\n";
+  if (!r.info.interpreter.empty()) os << "interpreter: " << inert_text(r.info.interpreter) << "\n";
   for (const auto& w : r.info.warnings) os << "warning: " << w << "\n";
   os << "\n" << std::left << std::setw(44) << "property" << std::setw(30) << "spec entry (place)";
   const char* scalars[] = {"double", "mp50", "exact"};
@@ -411,9 +411,9 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     os << "\nintegrator '" << integ.name << "'";
     if (!integ.form.is_notes()) os << " (state: " << state_form_words(integ.form) << ")";
     if (!integ.claims.precision.empty())
-      os << " (computes in " << inert_text(integ.claims.precision)
+      os << " (computes in " << bounded_text(inert_text(integ.claims.precision), 40)
          << (integ.claims.precision_reason.empty() ? std::string("")
-                                                    : ": " + inert_text(integ.claims.precision_reason.substr(0, 200)))
+                                                    : ": " + bounded_text(inert_text(integ.claims.precision_reason), 300))
          << ")";
     os << " claims:" << rows.str() << "\n";
   }
@@ -449,7 +449,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   md << "# geomech report: " << md_inline(r.subject) << "\n\n";
   if (!r.description.empty()) md << md_inline(r.description) << "\n\n";
   if (!r.info.source.empty()) md << "Source: `" << r.info.source << "`\n\n";
-  if (!r.info.interpreter.empty()) md << "Interpreter: " << inert_text(r.info.interpreter) << "\n\n";
+  if (!r.info.interpreter.empty()) md << "Interpreter: " << md_inline(r.info.interpreter) << "\n\n";
   md << "**Result: " << r.verdict_word() << "** - " << summary_counts(r) << ". Exit status "
      << r.exit_code() << ".\n\n";
   if (r.ran() == 0)
@@ -557,9 +557,9 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
            << "`); the suite reads it as the notes' (Pi, O) by " << state_form_conversion(integ.form)
            << ", and steps your own state along each run.\n\n";
       if (!integ.claims.precision.empty())
-        md << "Precision: computes in " << inert_text(integ.claims.precision.substr(0, 40)) << ", "
+        md << "Precision: computes in " << md_inline(bounded_text(integ.claims.precision, 40)) << ", "
            << (integ.claims.precision_reason.empty() ? std::string("stated without a reason")
-                                                      : "stated: " + inert_text(integ.claims.precision_reason.substr(0, 200)))
+                                                      : "stated: " + md_inline(bounded_text(integ.claims.precision_reason, 300)))
            << ".\n\n";
       bool any_row = false;
       for (const auto& row : claim_rows(r, integ)) any_row = any_row || row.status != "-";

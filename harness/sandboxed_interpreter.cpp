@@ -13,7 +13,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool in_system(const std::string& p) { return p == "/usr" || p.rfind("/usr/", 0) == 0; }
+// The sandbox shows /usr but for /usr/local (harness/sandbox.cpp).
+bool in_system(const std::string& p) {
+  return (p == "/usr" || p.rfind("/usr/", 0) == 0) && p != "/usr/local" && p.rfind("/usr/local/", 0) != 0;
+}
 
 // Whether the sandbox's user (nobody, when the harness runs as root) can reach `p`: every folder on
 // the way must let it pass (bubblewrap binds as that user).
