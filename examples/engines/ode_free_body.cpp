@@ -41,7 +41,8 @@ namespace ode_free_body {
 using gm::EngineState;
 using V3 = gm::Vec3<double>;
 
-// One world with one body, made once per process (each check runs in a process of its own).
+// One world with one body, made once per process (each check runs in a process of its own). The file
+// is compiled once per scalar and linked together: its functions are inline.
 struct World {
   dWorldID world;
   dBodyID body;
@@ -53,7 +54,7 @@ struct World {
   }
 };
 
-World& the_world() {
+inline World& the_world() {
   static World w;
   return w;
 }
@@ -61,7 +62,7 @@ World& the_world() {
 enum class Stepper { Step, QuickStep };
 
 // One step of ODE from (q, omega) for the principal moments I (unit mass at the origin, no force).
-EngineState<double> ode_step(const V3& I, const EngineState<double>& x, double h, Stepper how, bool gyroscopic) {
+inline EngineState<double> ode_step(const V3& I, const EngineState<double>& x, double h, Stepper how, bool gyroscopic) {
   if (!(h > 0))
     throw std::domain_error("ODE steps forward only: dWorldStep and dWorldQuickStep stop the program for a "
                             "stepsize that is not > 0 (\"stepsize must be > 0\")");
