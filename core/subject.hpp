@@ -11,6 +11,7 @@
 
 #include "core/lie_algebra_id.hpp"
 #include "core/linalg.hpp"
+#include "core/state_form.hpp"
 
 #include <functional>
 #include <memory>
@@ -160,6 +161,13 @@ struct Integrator {
   std::function<std::vector<RigidBodyState<T>>(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h, int n)>
       rigid_body_run;
   std::function<std::vector<ManakovState<T>>(const MatX<T>& A, const ManakovState<T>& x, const T& h, int n)> manakov_run;
+  // The form the integrator keeps the rigid body's state in (core/state_form.hpp): the notes' (Pi, O)
+  // unless it declares another (a quaternion, omega, ...). Then its own step is `declared_step` (and
+  // `declared_run`), and core/declared_step.hpp makes rigid_body_step of it: the properties see
+  // (Pi, O), the suite owns the conversions.
+  StateForm form;
+  Slot<EngineState<T>(const Vec3<T>& I, const EngineState<T>& x, const T& h)> declared_step{"rigid_body_step"};
+  std::function<std::vector<EngineState<T>>(const Vec3<T>& I, const EngineState<T>& x, const T& h, int n)> declared_run;
 };
 
 template <class T>
@@ -208,6 +216,12 @@ struct IntegratorClaims {
   bool equivariant = false;      // step(Pi, R O) = (Pi', R O') for every rotation R (left invariance)
   bool bounded_energy = false;   // long runs: energy error bounded, no secular drift
   bool symplectic = false;       // canonical steps (clebsch_step, manakov_clebsch_step): dPhi^T J dPhi = J
+  bool unit_quaternion = false;  // an attitude kept as a quaternion: |q| = 1 is kept to round-off
+  // Not a claim: the precision the author states for the step ("double": it computes in double
+  // whatever it is given, so it is run in double only) and why ("the engine is built in double"),
+  // shown in the report beside the claims.
+  std::string precision = {};
+  std::string precision_reason = {};
 };
 
 // The yes/no claims by name, in the order reports list them (`order`, a number, comes before them):
@@ -221,7 +235,8 @@ inline constexpr BooleanClaim kBooleanClaims[] = {
     {"energy", &IntegratorClaims::energy},         {"orthogonality", &IntegratorClaims::orthogonality},
     {"spectrum", &IntegratorClaims::spectrum},     {"poisson", &IntegratorClaims::poisson},
     {"noether", &IntegratorClaims::noether},       {"equivariant", &IntegratorClaims::equivariant},
-    {"bounded_energy", &IntegratorClaims::bounded_energy}, {"symplectic", &IntegratorClaims::symplectic}};
+    {"bounded_energy", &IntegratorClaims::bounded_energy}, {"symplectic", &IntegratorClaims::symplectic},
+    {"unit_quaternion", &IntegratorClaims::unit_quaternion}};
 
 // A subject in every scalar it supports. A subject written only for double has mp and q empty
 // and is told which checks it therefore misses.

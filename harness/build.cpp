@@ -413,6 +413,18 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   }
   auto run_argv = [&](const std::vector<std::string>& argv) { return o.sandbox ? sandboxed(argv, sandbox) : argv; };
 
+  // The libraries it uses (issue 48, harness/library_flags.hpp): the command line's and the file's
+  // own `// geomech:` lines; a stranger's (sandboxed) are vetted before the compiler sees them.
+  LibraryFlags libs;
+  try {
+    LibraryRequest wanted = o.libraries;
+    wanted.add(declared_in_source(read_text(compiled_source), source.filename().string()));
+    libs = resolve_library_flags(wanted, o.sandbox);
+  } catch (const std::exception& e) {
+    r.message = e.what();
+    return r;
+  }
+
   std::vector<std::string> pch_inputs;
   if (!tc.precompiled_header.empty()) pch_inputs.push_back(tc.precompiled_header + ".gch");
   auto compile_cmd = [&](int k, const std::set<std::string>& skip, bool skip_integrators) {
@@ -436,6 +448,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     cmd.push_back(tc.scalar_selection);
     cmd.push_back("-I" + compiled_source.parent_path().string());
     for (const auto& inc : tc.includes) cmd.push_back("-I" + inc);
+    cmd.insert(cmd.end(), libs.compile.begin(), libs.compile.end());
     cmd.push_back("-MMD");
     cmd.push_back("-MF");
     cmd.push_back((dir / (scalar + ".d")).string());
@@ -561,8 +574,9 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   }
 
   if (!st[0].ok) {
+    const std::string hint = missing_header_hint(st[0].output);
     r.message = "the file does not compile:\n" + error_summary(st[0].output, r.source) +
-                "the compiler's full output: " + (dir / "double.log").string();
+                (hint.empty() ? "" : "hint: " + hint + "\n") + "the compiler's full output: " + (dir / "double.log").string();
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   }
@@ -606,6 +620,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   link.push_back(tc.property_library);
   if (!o.server) link.push_back("-Wl,--no-whole-archive");
   for (const auto& l : tc.other_libraries) link.push_back(l);
+  link.insert(link.end(), libs.link.begin(), libs.link.end());
   const std::string program_name = !o.program_name.empty() ? o.program_name : o.server ? "server" : "check";
   const fs::path program = dir / program_name;
   const fs::path link_file = dir / ("link-" + program_name + ".cmd");

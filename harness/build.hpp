@@ -13,6 +13,8 @@
 // when the source, a header it includes, the toolchain or the prebuilt libraries change.
 #pragma once
 
+#include "harness/library_flags.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <map>
@@ -63,6 +65,9 @@ struct BuildOptions {
   // Every compile and link stops after this long (issue 46: a file may include /dev/zero, or a
   // template recursion may not end); the message says so.
   double compile_timeout_seconds = 900;
+  // Libraries from the command line (--pkg, --cxxflags, --ldflags, -I, -L, -l); the file's own
+  // `// geomech:` lines are added to them (harness/library_flags.hpp). Vetted when sandboxed.
+  LibraryRequest libraries;
 };
 
 struct BuildResult {

@@ -248,6 +248,7 @@ std::vector<IntegratorInfo> integrator_info(const SubjectSet& s) {
       if (it == out.end()) {
         IntegratorInfo info;
         info.name = i.name;
+        info.form = i.form;
         if (const IntegratorClaims* c = s.claims_for(i.name)) {
           info.has_claims = true;
           info.claims = *c;
@@ -301,8 +302,14 @@ void account_for_slots(CheckResult& result, const SubjectSet& s, const CheckConf
         if (v.integrator == i.name)
           for (const auto& f : v.claims)
             if (f.claim == claim) return;
-      result.unchecked.push_back("integrator '" + i.name + "' claims " + claim +
-                                 ", and no property could check that claim (is its step provided in double?)");
+      if (claim == "orthogonality" && i.form.has_quaternion())
+        result.unchecked.push_back("integrator '" + i.name + "' claims orthogonality, but keeps its attitude as a "
+                                   "quaternion: the matrix the suite reads it as, R(q / |q|), is orthogonal by "
+                                   "construction, so nothing of yours is checked by it; claim unit_quaternion (|q| = 1 "
+                                   "kept to round-off) instead");
+      else
+        result.unchecked.push_back("integrator '" + i.name + "' claims " + claim +
+                                   ", and no property could check that claim (is its step provided in double?)");
     };
     check_claim("order", i.claims.order > 0);
     for (const auto& b : kBooleanClaims) check_claim(b.name, i.claims.*b.member);

@@ -44,6 +44,9 @@ struct SubjectInfo {
   // Behind the protocol (harness/remote_subject.hpp): every slot call is a round trip to another
   // process, so the costly 50-digit runs of spec/thorough_only.json wait for --thorough.
   bool out_of_process = false;
+  // The interpreter that ran a Python or Octave implementation, and its version ("/usr/bin/python3,
+  // Python 3.11.2"), for the report.
+  std::string interpreter;
 };
 
 // An interpreted implementation computes 50-digit flows tens of times slower than compiled code:
@@ -94,6 +97,7 @@ struct IntegratorInfo {
   IntegratorClaims claims;
   std::vector<std::string> steps;    // "rigid_body_step", "manakov_step"
   std::vector<std::string> scalars;  // the scalars it is instantiated in
+  StateForm form;                    // the form it keeps the rigid body's state in (core/state_form.hpp)
 };
 
 struct CheckResult {

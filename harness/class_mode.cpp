@@ -588,6 +588,10 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
         if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
         const auto args = to_args(co);
         argv.insert(argv.end(), args.begin(), args.end());
+        if (fs::path(impl.source).extension() == ".cpp" || fs::path(impl.source).extension() == ".cc") {
+          const auto libs = library_args(o.build.libraries);  // --pkg, --cxxflags, --ldflags (issue 48)
+          argv.insert(argv.end(), libs.begin(), libs.end());
+        }
         j["built"] = true;
         if (!j.contains("build_seconds")) j["build_seconds"] = 0.0;  // the sandboxed build above, if any
         return record_check(j, run_process(ProcessSpec{argv, {}, false}), "the check");

@@ -3,6 +3,7 @@
 #include "harness/thorough_only.hpp"
 
 #include "harness/console_stream.hpp"
+#include "harness/process.hpp"
 #include "harness/report.hpp"
 
 #include <iostream>
@@ -56,6 +57,38 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
                "(spec/thorough_only.json: in the kill matrix every mutant they kill is killed by a check that is kept)");
   app.add_flag("--definitions", o.definitions_only,
                "only every slot's own definition check, in double (a first look; no report unless --report)");
+}
+
+void add_library_options(CLI::App& app, LibraryCli& o) {
+  app.add_option("--pkg", o.pkg,
+                 "a library the C++ file uses, by its pkg-config name (repeatable; or the line `// geomech: pkg NAME` "
+                 "in the file)");
+  app.add_option("--cxxflags", o.cxxflags, "compile flags for the C++ file (repeatable; or `// geomech: cxxflags ...`)");
+  app.add_option("--ldflags", o.ldflags, "link flags for the C++ file (repeatable; or `// geomech: ldflags ...`)");
+  app.add_option("-I", o.include, "an include folder for the C++ file (repeatable)");
+  app.add_option("-L", o.libdir, "a library folder for the C++ file (repeatable)");
+  app.add_option("-l", o.lib, "a library the C++ file links, by name (repeatable: -l ode)");
+}
+
+LibraryRequest LibraryCli::request() const {
+  LibraryRequest r;
+  r.pkgs = pkg;
+  for (const auto& f : cxxflags)
+    for (auto& w : split_flags(f)) r.cxxflags.push_back(std::move(w));
+  for (const auto& d : include) r.cxxflags.push_back("-I" + d);
+  for (const auto& f : ldflags)
+    for (auto& w : split_flags(f)) r.ldflags.push_back(std::move(w));
+  for (const auto& d : libdir) r.ldflags.push_back("-L" + d);
+  for (const auto& l : lib) r.ldflags.push_back("-l" + l);
+  return r;
+}
+
+std::vector<std::string> library_args(const LibraryRequest& r) {
+  std::vector<std::string> a;
+  for (const auto& p : r.pkgs) a.insert(a.end(), {"--pkg", p});
+  for (const auto& f : r.cxxflags) a.push_back("--cxxflags=" + shell_quote(f));
+  for (const auto& f : r.ldflags) a.push_back("--ldflags=" + shell_quote(f));
+  return a;
 }
 
 CheckConfig config_from(const CheckCliOptions& o) {

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "harness/check.hpp"
+#include "harness/library_flags.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -51,6 +52,16 @@ CheckConfig config_from(const CheckCliOptions& o);
 
 // The options again as command-line arguments (to hand them to a student's check program).
 std::vector<std::string> to_args(const CheckCliOptions& o);
+
+// The libraries a C++ file uses, as given on the command line of `geomech check` and `check-class`
+// (harness/library_flags.hpp): --pkg NAME, --cxxflags FLAGS, --ldflags FLAGS, -I DIR, -L DIR, -l NAME.
+struct LibraryCli {
+  std::vector<std::string> pkg, cxxflags, ldflags, include, libdir, lib;
+  LibraryRequest request() const;  // throws std::invalid_argument for flags that do not split
+};
+void add_library_options(CLI::App& app, LibraryCli& o);
+// The request again as arguments of `geomech check` (class mode hands them to each check).
+std::vector<std::string> library_args(const LibraryRequest& r);
 
 // Runs the check, prints the console report, writes the report files; returns the exit status
 // (0 all good, 1 something failed, 2 the report could not be written).

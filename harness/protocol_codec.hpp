@@ -12,6 +12,8 @@
 //   pair                  a 2-array
 //   RigidBodyState        {"Pi": vector, "O": matrix}
 //   ManakovState          {"M": matrix, "O": matrix}
+//   EngineState           a state in its declared form (core/state_form.hpp): {"q": [4 scalars], "omega":
+//                         vector}, {"O": matrix, "Pi": vector}, ... (encode/decode_engine_state)
 //
 // Decoding validates shapes (a Vec3 has 3 entries, a Mat3 3 rows of 3, matrices are rectangular)
 // and values (numeric, finite); a bad value throws ProtocolValueError naming what was wrong.
@@ -116,6 +118,14 @@ json encode(const X& x) {
     return json{{"Pi", encode<T>(x.Pi)}, {"O", encode<T>(x.O)}};
   } else if constexpr (std::is_same_v<X, ManakovState<T>>) {
     return json{{"M", encode<T>(x.M)}, {"O", encode<T>(x.O)}};
+  } else if constexpr (std::is_same_v<X, EngineState<T>>) {
+    json j = json::object();
+    if (x.form.has_quaternion())
+      j["q"] = encode<T>(x.q);
+    else
+      j["O"] = encode<T>(x.O);
+    j[angular_key(x.form.angular)] = encode<T>(x.angular());
+    return j;
   } else {
     static_assert(sizeof(X) == 0, "no protocol encoding for this type");
   }
@@ -179,6 +189,23 @@ X decode(const json& j, const std::string& what) {
   } else {
     static_assert(sizeof(X) == 0, "no protocol decoding for this type");
   }
+}
+
+// A state in the declared form `f`: the object must hold the form's two keys ("q" and "omega", ...).
+template <class T>
+EngineState<T> decode_engine_state(const json& j, const StateForm& f, const std::string& what) {
+  const char* a = attitude_key(f.attitude);
+  const char* w = angular_key(f.angular);
+  if (!j.is_object() || !j.contains(a) || !j.contains(w))
+    throw ProtocolValueError(what + ": expected {\"" + a + "\": ..., \"" + w + "\": ...}, the declared state '" +
+                             state_form_words(f) + "'; got " + j.dump().substr(0, 120));
+  EngineState<T> u = to_declared<T>(f, Vec3<T>::Ones(), Mat3<T>::Identity(), Vec3<T>::Zero());
+  if (f.has_quaternion())
+    u.q = decode<T, Vec4<T>>(j[a], what + ".q");
+  else
+    u.O = decode<T, Mat3<T>>(j[a], what + ".O");
+  u.angular() = decode<T, Vec3<T>>(j[w], what + "." + w);
+  return u;
 }
 
 }  // namespace gm::protocol

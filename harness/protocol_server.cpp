@@ -46,6 +46,12 @@ json call_in(const Subject<T>* s, const json& c) {
       for (const auto& in : s->integrators) {
         if (in.name != name) continue;
         const std::string who = name + "." + slot;
+        if (slot == "rigid_body_step" && in.declared_step) {  // kept in a declared form: served in it
+          if (!args.is_array() || args.size() != 3) throw ProtocolValueError(who + ": expected 3 arguments");
+          return encode<T>(in.declared_step(decode<T, Vec3<T>>(args[0], who + " argument 1"),
+                                            decode_engine_state<T>(args[1], in.form, who + " argument 2"),
+                                            decode<T, T>(args[2], who + " argument 3")));
+        }
         if (slot == "rigid_body_step" && in.rigid_body_step)
           return ServedSlot<T, RigidBodyState<T>(const Vec3<T>&, const RigidBodyState<T>&, const T&)>::call(
               in.rigid_body_step, args, who);
@@ -103,8 +109,13 @@ json hello_for(const SubjectSet& s, const harness::SubjectInfo& info, const std:
           if (in.clebsch_step) steps.push_back("clebsch_step");
           if (in.manakov_clebsch_step) steps.push_back("manakov_clebsch_step");
           json j{{"name", in.name}, {"steps", steps}, {"scalars", json::array()}};
+          if (!in.form.is_notes()) j["state"] = state_form_words(in.form);
           for (const auto& c : s.claims)
-            if (c.integrator == in.name) j["claims"] = claims_json(c);
+            if (c.integrator == in.name) {
+              j["claims"] = claims_json(c);
+              if (!c.precision.empty()) j["precision"] = c.precision;
+              if (!c.precision_reason.empty()) j["precision_reason"] = c.precision_reason;
+            }
           integrators.push_back(j);
           it = integrators.end() - 1;
         }

@@ -5,6 +5,7 @@
 #include "harness/slot_names.hpp"
 
 #include "core/data_path.hpp"
+#include "core/declared_step.hpp"
 
 #include "harness/isolate.hpp"
 #include "harness/protocol_codec.hpp"
@@ -490,6 +491,8 @@ RemoteDescription parse_hello(const json& h) {
               (h.contains("version") ? h["version"].dump() : std::string("none")));
   RemoteDescription d;
   d.language = h.value("language", "unknown");
+  d.language_version = h.contains("language_version") && h["language_version"].is_string() ? h["language_version"].get<std::string>() : "";
+  d.interpreter = h.contains("interpreter") && h["interpreter"].is_string() ? h["interpreter"].get<std::string>() : "";
   d.description = h.value("description", "");
   if (h.contains("slots")) {
     if (!h["slots"].is_object()) throw bad("\"slots\" must map each scalar to a list of slot names");
@@ -540,6 +543,23 @@ RemoteDescription parse_hello(const json& h) {
                                   " The claims are: " + list);
           }
       }
+      // Issue 48: the form its rigid-body step keeps the state in, and the precision it states.
+      if (i.contains("state")) {
+        try {
+          x.form = parse_state_form(i["state"].is_string() ? i["state"].get<std::string>() : i["state"].dump());
+        } catch (const std::exception& e) {
+          d.unchecked.push_back("integrator '" + x.name + "' declares its state as " + i["state"].dump().substr(0, 80) +
+                                ": " + e.what());
+          x.steps.erase(std::remove(x.steps.begin(), x.steps.end(), "rigid_body_step"), x.steps.end());
+        }
+      }
+      x.claims.integrator = x.name;
+      if (i.contains("precision") && i["precision"].is_string()) {
+        x.claims.precision = i["precision"].get<std::string>();
+        x.has_claims = true;
+      }
+      if (i.contains("precision_reason") && i["precision_reason"].is_string())
+        x.claims.precision_reason = i["precision_reason"].get<std::string>();
       d.integrators.push_back(std::move(x));
     }
   // What the implementation says of itself is its own text (issue 46): each bounded, notes only on
@@ -640,7 +660,33 @@ std::shared_ptr<Subject<T>> make_part(const std::shared_ptr<Connection>& conn, c
       Integrator<T> in;
       in.name = i.name;
       for (const auto& step : i.steps) {
-        if (step == "rigid_body_step") {
+        if (step == "rigid_body_step" && !i.form.is_notes()) {
+          // Kept in a declared form: the step is called with, and answers, that form; the suite
+          // converts (core/declared_step.hpp).
+          const StateForm form = i.form;
+          const std::string name = i.name;
+          in.form = form;
+          in.declared_step = [conn, form, name](const Vec3<T>& I, const EngineState<T>& x, const T& h) {
+            Call c{"rigid_body_step", scalar_word<T>(), json::array({encode<T>(I), encode<T>(x), encode<T>(h)}), name};
+            return decode_engine_state<T>(conn->call(c), form,
+                                          "the result of " + conn->language() + " function '" + name +
+                                              ".rigid_body_step' (" + scalar_word<T>() + ")");
+          };
+          if (d.repeat)
+            in.declared_run = [conn, form, name](const Vec3<T>& I, const EngineState<T>& x, const T& h, int n) {
+              Call c{"rigid_body_step", scalar_word<T>(), json::array({encode<T>(I), encode<T>(x), encode<T>(h)}), name, n};
+              const json result = conn->call(c);
+              const std::string what = "the run of " + std::to_string(n) + " steps of " + conn->language() +
+                                       " function '" + name + ".rigid_body_step' (" + scalar_word<T>() + ")";
+              if (!result.is_array() || static_cast<int>(result.size()) != n)
+                throw ProtocolValueError(what + ": expected a list of " + std::to_string(n) + " states; the reply was " +
+                                         result.dump().substr(0, 300));
+              std::vector<EngineState<T>> out;
+              for (const auto& r : result) out.push_back(decode_engine_state<T>(r, form, what));
+              return out;
+            };
+          adapt_declared_step(in);
+        } else if (step == "rigid_body_step") {
           in.rigid_body_step =
               RemoteSlot<T, RigidBodyState<T>(const Vec3<T>&, const RigidBodyState<T>&, const T&)>::make(conn, "rigid_body_step", i.name);
           if (d.repeat) in.rigid_body_run = remote_run<T, RigidBodyState<T>, Vec3<T>>(conn, "rigid_body_step", i.name);
@@ -682,10 +728,24 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   s.q = make_part<Rational>(conn, d);
   for (const auto& i : d.integrators)
     if (i.has_claims) s.claims.push_back(i.claims);
+  for (const auto& i : d.integrators)
+    if (!i.claims.precision.empty()) {  // the author's own words: shown as inert text (the lead's md helpers after issue 46)
+      auto& c = s.claims[static_cast<std::size_t>(
+          std::find_if(s.claims.begin(), s.claims.end(), [&](const IntegratorClaims& x) { return x.integrator == i.name; }) -
+          s.claims.begin())];
+      c.precision = harness::inert_text(c.precision);
+      c.precision_reason = harness::inert_text(c.precision_reason);
+    }
   for (const auto& [scalar, slots] : d.notes)
     for (const auto& [slot, why] : slots) info.slot_notes[scalar][slot] = harness::inert_text(why);
   for (const auto& w : d.warnings) info.warnings.push_back(harness::inert_text(w));
   if (d.language == "python" || d.language == "octave") info.language = d.language;
+  // Which interpreter ran it, and its version (issue 48), as the server says.
+  if (!d.interpreter.empty())
+    info.interpreter = harness::inert_text(d.interpreter) +
+                       (d.language_version.empty() ? std::string()
+                                                   : " (" + std::string(d.language == "python" ? "Python " : d.language == "octave" ? "Octave " : "") +
+                                                         harness::inert_text(d.language_version) + ")");
   // "did you mean" for a function named like a slot but not as one (`energy`, `euler`), as for C++.
   if (!info.source.empty() && !info.language.empty()) {
     std::vector<std::string> names;
@@ -716,11 +776,53 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   return s;
 }
 
+std::string on_path(const std::string& program) {
+  if (program.find('/') != std::string::npos) return program;
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t colon = dirs.find(':', from);
+    const std::string dir = dirs.substr(from, colon == std::string::npos ? std::string::npos : colon - from);
+    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / program;
+    if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return fs::absolute(candidate).string();
+    if (colon == std::string::npos) break;
+    from = colon + 1;
+  }
+  return "";
+}
+
+std::string python_interpreter() {
+  // The user's interpreter (issue 48): $GEOMECH_PYTHON, else the python3 that comes first on PATH (a
+  // venv's or pyenv's), else Debian's.
+  if (const char* py = std::getenv("GEOMECH_PYTHON"); py && *py) {
+    const std::string found = on_path(py);
+    return found.empty() ? py : found;
+  }
+  if (const std::string found = on_path("python3"); !found.empty()) return found;
+  return "/usr/bin/python3";
+}
+
+std::string octave_interpreter() {
+  if (const char* oc = std::getenv("GEOMECH_OCTAVE"); oc && *oc) {
+    const std::string found = on_path(oc);
+    return found.empty() ? oc : found;
+  }
+  const std::string found = on_path("octave-cli");
+  return found.empty() ? "octave-cli" : found;
+}
+
 std::string octave_server_program() {
   const char* which = std::getenv("GEOMECH_OCTAVE_SERVER");
   const char* oc = std::getenv("GEOMECH_OCTAVE");
   if ((which && std::string(which) == "script") || (oc && *oc)) return "";
   std::error_code ec;
+  // The linked server links the system's Octave (/usr): a user whose octave-cli on PATH is another
+  // Octave (their own build, /opt/octave) gets that one, through the script server.
+  if (const std::string cli = on_path("octave-cli"); !cli.empty()) {
+    const std::string real = fs::weakly_canonical(cli, ec).string();
+    if (!ec && real.rfind("/usr/", 0) != 0) return "";
+  }
   const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
   if (ec) return "";
   const fs::path server = exe.parent_path() / "geomech-octave-server";
@@ -732,18 +834,13 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
   std::error_code ec;
   if (p.extension() == ".py") {
     if (language) *language = "python";
-    const char* py = std::getenv("GEOMECH_PYTHON");
-    // Debian's interpreter, where python3-mpmath and python3-numpy are installed (not whatever
-    // python3 comes first on PATH); $GEOMECH_PYTHON overrides.
-    const std::string deflt = fs::exists("/usr/bin/python3", ec) ? "/usr/bin/python3" : "python3";
     // -B: no __pycache__ written beside the student's file or in the source tree.
-    return {py && *py ? py : deflt, "-u", "-B", suite_data_path("student/python/geomech_server.py"), file};
+    return {python_interpreter(), "-u", "-B", suite_data_path("student/python/geomech_server.py"), file};
   }
   if (p.extension() == ".m" || (fs::is_directory(p, ec) && !fs::is_empty(p, ec))) {
     if (language) *language = "octave";
     if (const std::string embedded = octave_server_program(); !embedded.empty()) return {embedded, file};
-    const char* oc = std::getenv("GEOMECH_OCTAVE");
-    return {oc && *oc ? oc : "octave-cli", "--no-gui", "--quiet", "--no-init-file", "--no-history",
+    return {octave_interpreter(), "--no-gui", "--quiet", "--no-init-file", "--no-history",
             suite_data_path("student/octave/geomech_server.m"), file};
   }
   if (why) *why = "not a .py or .m file (nor a folder of .m files)";

@@ -152,6 +152,8 @@ class Connection {
 // What the handshake said, checked and turned into the harness's terms.
 struct RemoteDescription {
   std::string language;
+  std::string language_version;  // the interpreter's version ("3.11.7")
+  std::string interpreter;       // the interpreter's program, as the server says ("/usr/bin/python3")
   std::string description;
   std::map<std::string, std::set<std::string>> slots;  // scalar -> slots
   struct Integrator {
@@ -159,7 +161,8 @@ struct RemoteDescription {
     std::vector<std::string> steps;
     std::vector<std::string> scalars;
     bool has_claims = false;
-    IntegratorClaims claims;
+    IntegratorClaims claims;  // with the stated precision and its reason, if any
+    StateForm form;           // "state": the form its rigid_body_step keeps the state in (core/state_form.hpp)
   };
   std::vector<Integrator> integrators;
   std::map<std::string, std::map<std::string, std::string>> notes;  // scalar -> slot -> reason
@@ -186,6 +189,14 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
 // $GEOMECH_OCTAVE_SERVER=script or $GEOMECH_OCTAVE (an octave-cli to run) asks for the script
 // server. Both answer alike; the linked one costs a half to a quarter of the time per call.
 std::string octave_server_program();
+
+// The interpreters a .py or .m file runs in (issue 48): $GEOMECH_PYTHON, else the python3 first on
+// PATH (a venv or pyenv works), else /usr/bin/python3; $GEOMECH_OCTAVE, else octave-cli from PATH.
+// Absolute paths where found.
+std::string python_interpreter();
+std::string octave_interpreter();
+// `program` found on PATH (absolute), itself if it names a path, "" if not found.
+std::string on_path(const std::string& program);
 
 // Writes all of `text` to `fd` (retrying short writes and EINTR); false if the descriptor is gone.
 // The client's requests and the C++ server's replies (harness/protocol_server.cpp) both use it.

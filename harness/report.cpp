@@ -6,6 +6,7 @@
 
 #include "harness/svg.hpp"
 #include "harness/verdict_io.hpp"
+#include "harness/inert_text.hpp"
 #include "harness/work_precision.hpp"
 
 #include <algorithm>
@@ -370,6 +371,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
   os << "geomech check: subject '" << r.subject << "'";
   if (!r.description.empty()) os << " (" << r.description << ")";
   os << "\nseed " << r.seed << "; " << r.selection << "; residuals in units of eps * scale\n";
+  if (!r.info.interpreter.empty()) os << "interpreter: " << inert_text(r.info.interpreter) << "\n";
   for (const auto& w : r.info.warnings) os << "warning: " << w << "\n";
   os << "\n" << std::left << std::setw(44) << "property" << std::setw(30) << "spec entry (place)";
   const char* scalars[] = {"double", "mp50", "exact"};
@@ -468,7 +470,15 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     for (const auto& row : claim_rows(r, integ))
       if (row.status != "-" && row.status.find("not selected") == std::string::npos)
         rows << "\n  " << std::setw(18) << row.claim << std::setw(6) << row.claimed << row.status;
-    if (!rows.str().empty()) os << "\nintegrator '" << integ.name << "' claims:" << rows.str() << "\n";
+    if (rows.str().empty()) continue;
+    os << "\nintegrator '" << integ.name << "'";
+    if (!integ.form.is_notes()) os << " (state: " << state_form_words(integ.form) << ")";
+    if (!integ.claims.precision.empty())
+      os << " (computes in " << bounded_text(inert_text(integ.claims.precision), 40)
+         << (integ.claims.precision_reason.empty() ? std::string("")
+                                                    : ": " + bounded_text(inert_text(integ.claims.precision_reason), 300))
+         << ")";
+    os << " claims:" << rows.str() << "\n";
   }
   if (details) {
     bool header = false;
@@ -508,6 +518,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     if (!src.has_filename()) src = src.parent_path();
     md << "Source: " << md_inline(src.filename().string()) << "\n\n";
   }
+  if (!r.info.interpreter.empty()) md << "Interpreter: " << md_inline(r.info.interpreter) << "\n\n";
   md << "**Result: " << r.verdict_word() << "** - " << summary_counts(r) << ". Exit status "
      << r.exit_code() << ".\n\n";
   if (r.ran() == 0)
@@ -615,6 +626,15 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       md << "; scalars: ";
       for (std::size_t i = 0; i < integ.scalars.size(); ++i) md << (i ? ", " : "") << integ.scalars[i];
       md << (integ.has_claims ? "" : "; no claims declared") << ".\n\n";
+      if (!integ.form.is_notes())
+        md << "State: " << describe_state_form(integ.form) << " (declared `" << state_form_words(integ.form)
+           << "`); the suite reads it as the notes' (Pi, O) by " << state_form_conversion(integ.form)
+           << ", and steps your own state along each run.\n\n";
+      if (!integ.claims.precision.empty())
+        md << "Precision: computes in " << md_inline(bounded_text(integ.claims.precision, 40)) << ", "
+           << (integ.claims.precision_reason.empty() ? std::string("stated without a reason")
+                                                      : "stated: " + md_inline(bounded_text(integ.claims.precision_reason, 300)))
+           << ".\n\n";
       bool any_row = false;
       for (const auto& row : claim_rows(r, integ)) any_row = any_row || row.status != "-";
       if (!any_row) md << "Nothing claimed, and no property reported on any claim.\n\n";
@@ -896,12 +916,16 @@ json json_report(const CheckResult& r, const Catalogue* c) {
     json claims = json::array();
     for (const auto& row : claim_rows(r, i))
       claims.push_back({{"claim", row.claim}, {"claimed", row.claimed}, {"status", row.status}, {"evidence", row.evidence}});
-    integrators.push_back({{"name", i.name}, {"steps", i.steps}, {"scalars", i.scalars}, {"claims", claims}});
+    json one{{"name", i.name}, {"steps", i.steps}, {"scalars", i.scalars}, {"claims", claims}};
+    if (!i.form.is_notes()) one["state"] = state_form_words(i.form);
+    if (!i.claims.precision.empty()) one["precision"] = {{"stated", i.claims.precision}, {"reason", i.claims.precision_reason}};
+    integrators.push_back(std::move(one));
   }
   j["integrators"] = integrators;
   // The slots wrong by their own check, the one most other failures call first, each with the line
   // the console's FIRST FIX prints (a class summary says them in words, issue 34).
   j["language"] = r.info.language.empty() ? "c++" : r.info.language;
+  if (!r.info.interpreter.empty()) j["interpreter"] = r.info.interpreter;
   json first_fix = json::array();
   {
     const RootCauses rc = root_causes(r);

@@ -59,7 +59,9 @@ std::vector<const Property*> candidates(const MutantDef& m, const std::set<std::
     if (m.op_class == "handwritten") {
       use = true;
     } else if (!m.integrator.empty()) {
-      use = p.scope == Scope::Integrator && (p.step == m.step || p.step == StepKind::None);
+      use = p.scope == Scope::Integrator &&
+            (p.step == m.step || p.step == StepKind::None ||
+             (m.step == StepKind::RigidBody && p.step == StepKind::RigidBodyMatrix));
     } else {
       use = std::find(p.needs.begin(), p.needs.end(), m.slot) != p.needs.end();
     }

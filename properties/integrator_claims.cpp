@@ -594,7 +594,9 @@ GM_PROPERTY(integrator_orthogonality, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"rk4_claims_everything"},
-             GM_RB});
+             // Its own matrix only: a quaternion's matrix is the suite's R(q / |q|), orthogonal by
+             // construction (its norm is integrator_unit_quaternion's).
+             .cases = {.d = 10, .mp = 2, .q = 0}, .step = StepKind::RigidBodyMatrix});
 
 GM_PROPERTY(integrator_poisson, integrator_scalars,
             {.id = "integrator_poisson",

@@ -48,6 +48,8 @@ const Property* find_property(std::string_view id) {
 const char* step_name(StepKind k) {
   switch (k) {
     case StepKind::RigidBody: return "rigid_body_step";
+    case StepKind::RigidBodyMatrix: return "rigid_body_step keeping its attitude as a matrix";
+    case StepKind::RigidBodyQuaternion: return "rigid_body_step keeping its attitude as a quaternion";
     case StepKind::Manakov: return "manakov_step";
     case StepKind::Clebsch: return "clebsch_step";
     case StepKind::ManakovClebsch: return "manakov_clebsch_step";

@@ -27,12 +27,17 @@ enum class ToleranceClass {
 const char* tolerance_name(ToleranceClass t);
 
 // The integrator step a property drives (core/subject.hpp, Integrator).
-enum class StepKind { None, RigidBody, Manakov, Clebsch, ManakovClebsch };
+// RigidBodyMatrix: a rigid-body step whose attitude is its own matrix (not one the suite made of a
+// quaternion: its orthogonality is the user's merit only then); RigidBodyQuaternion: a rigid-body
+// step kept with a quaternion (core/state_form.hpp), driven in its own form.
+enum class StepKind { None, RigidBody, Manakov, Clebsch, ManakovClebsch, RigidBodyMatrix, RigidBodyQuaternion };
 // Whether `i` has the step of kind k (None: any integrator), and the step's name.
 template <class I>
 bool has_step_kind(const I& i, StepKind k) {
   switch (k) {
     case StepKind::RigidBody: return static_cast<bool>(i.rigid_body_step);
+    case StepKind::RigidBodyMatrix: return i.rigid_body_step && !i.form.has_quaternion();
+    case StepKind::RigidBodyQuaternion: return i.declared_step && i.form.has_quaternion();
     case StepKind::Manakov: return static_cast<bool>(i.manakov_step);
     case StepKind::Clebsch: return static_cast<bool>(i.clebsch_step);
     case StepKind::ManakovClebsch: return static_cast<bool>(i.manakov_clebsch_step);

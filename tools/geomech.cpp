@@ -24,6 +24,7 @@
 #include "harness/report.hpp"
 #include "harness/private_copy.hpp"
 #include "harness/sandbox.hpp"
+#include "harness/sandboxed_interpreter.hpp"
 #include "harness/slot_conventions.hpp"
 #include "harness/slot_names.hpp"
 #include "harness/student_registry.hpp"
@@ -257,8 +258,18 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
     return 2;
   }
   if (!cmd.empty()) {
-    // Python or Octave: the interpreter and its libraries are in /usr; the server script and the
-    // student's file (or folder) are the last two arguments.
+    // Python or Octave: the interpreter and its libraries are in /usr, or shown read-only where they
+    // are (a venv, pyenv: harness/sandboxed_interpreter.hpp); the server script and the student's
+    // file (or folder) are the last two arguments.
+    if (cmd.size() > 2) {
+      const harness::SandboxedInterpreter si = harness::interpreter_for_sandbox(language, cmd[0]);
+      if (!si.error.empty()) {
+        std::cerr << "geomech check: " << file << ": " << si.error << "\n";
+        return 2;
+      }
+      cmd[0] = si.program;
+      spec.read_only.insert(spec.read_only.end(), si.read_only.begin(), si.read_only.end());
+    }
     try {
       cmd[cmd.size() - 2] = copy->add(cmd[cmd.size() - 2], "geomech");
       cmd.back() = copy->add(cmd.back(), "submission");
@@ -569,6 +580,13 @@ int main(int argc, char** argv) {
                   "run the implementation as its own sandboxed process behind the slot protocol (docs/UNTRUSTED.md): "
                   "it cannot touch the verdicts, the machine or other files");
   gm::harness::add_check_options(*check, co);
+  gm::harness::LibraryCli check_libs, class_libs;
+  gm::harness::add_library_options(*check, check_libs);
+  check->footer(
+      "Interpreters: a .py file runs in $GEOMECH_PYTHON, else the python3 first on PATH (a venv or pyenv works), else "
+      "/usr/bin/python3; it needs mpmath for the 50-digit checks. A .m file runs in geomech-octave-server (Octave's "
+      "interpreter linked in) when the octave-cli on PATH is the system's, else in $GEOMECH_OCTAVE or the octave-cli "
+      "on PATH. The report names the interpreter and its version.");
 
   gm::harness::ClassOptions class_opts;
   class_opts.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -584,6 +602,7 @@ int main(int argc, char** argv) {
                   "check the implementations in-process, without the sandbox (faster; only for code you trust: "
                   "a submission can then forge its verdicts)");
   gm::harness::add_check_options(*klass, class_opts.check);
+  gm::harness::add_library_options(*klass, class_libs);
   std::string shard;
   klass->add_option("--shard", shard, "K/N: check only the K-th of N deterministic shares of the folder (CI matrix, Slurm array)");
   klass->add_option("--shared", class_opts.shared,
@@ -721,6 +740,7 @@ int main(int argc, char** argv) {
         if (check->count("--subject")) throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
         bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
         bo.exact = co.scalar == "all" || co.scalar == "exact";
+        bo.libraries = check_libs.request();
         if (untrusted) return gm::run_untrusted_check(student_file, co, bo);
         if (gm::is_remote_file(student_file)) return gm::run_remote_check(student_file, co);
         return gm::run_student_check(student_file, co, bo);
@@ -753,6 +773,7 @@ int main(int argc, char** argv) {
       class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
       class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
       class_opts.untrusted = !trusted;
+      class_opts.build.libraries = class_libs.request();
       return gm::harness::run_class(class_opts, gm::harness::load_toolchain(gm::harness::default_toolchain_path()));
     }
     if (*traj) {

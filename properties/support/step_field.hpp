@@ -215,11 +215,22 @@ void explaining_at(States&& states, Diagnose&& diagnose_at, Judge&& judge) {
       judge);
 }
 
+// The same reading in the integrator's own variables, leading this one, for a step kept in a declared
+// form (a quaternion, omega, ...: step_field_form.hpp).
+template <class T>
+Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x, const Diagnosis& notes);
+
 template <class T, class States, class Judge>
 void explaining_step(const Integrator<T>& in, const Vec3<T>& I, States&& states, Judge&& judge) {
   explaining_at<T>(
-      states, [&](const RigidBodyState<T>& x) { return diagnose(rigid_body_field(in, I, x), I, x); },
+      states,
+      [&](const RigidBodyState<T>& x) {
+        const Diagnosis d = diagnose(rigid_body_field(in, I, x), I, x);
+        return in.form.is_notes() ? d : in_declared_form(in, I, x, d);
+      },
       judge);
 }
 
 }  // namespace gm::stepfield
+
+#include "properties/support/step_field_form.hpp"

@@ -38,9 +38,18 @@
 // - Integrators need `name`; `claims` is optional (nothing claimed); `rigid_body_step`,
 //   `manakov_step`, `clebsch_step` and `manakov_clebsch_step` are detected like slots. Integrators are
 //   never run in rationals.
+// - A rigid-body step may keep the state as an engine does (core/state_form.hpp): declare
+//   `static constexpr const char* state = "quaternion_wxyz omega";` (attitude: matrix,
+//   quaternion_wxyz, quaternion_xyzw; angular: Pi, Omega, omega, pi) and write
+//   `EngineState<T> rigid_body_step(const Vec3<T>& I, const EngineState<T>& x, const T& h)`, reading
+//   and returning the declared members (x.q, x.omega); the suite converts, with I.
+// - A step that computes in one precision whatever it is given says so, with its reason:
+//   `static constexpr const char* precision = "double";` and `precision_reason = "...";` (shown in
+//   the report; the step is then run in double only).
 // - Write no main(), or guard yours with `#ifndef GEOMECH_STUDENT_CHECK`.
 #pragma once
 
+#include "core/declared_step.hpp"
 #include "core/subject.hpp"
 
 #include <concepts>
@@ -67,6 +76,7 @@ struct Claims {
   bool equivariant = false;    // step(Pi, R O) = (Pi', R O'): commutes with rotating the attitude
   bool bounded_energy = false; // over long runs the energy error stays bounded (no secular drift)
   bool symplectic = false;     // canonical steps (clebsch_step, manakov_clebsch_step) preserve dQ ^ dP
+  bool unit_quaternion = false; // an attitude kept as a quaternion (`state`): |q| = 1 is kept to round-off
 };
 
 // What one translation unit registered for one scalar (filled by GEOMECH_STUDENT).
@@ -214,6 +224,15 @@ constexpr bool has_name = requires {
   { std::string_view(Int::name) };
 };
 
+// "computes in double (stated: the engine is built in double)".
+template <class Int>
+std::string stated_precision_note() {
+  std::string why;
+  if constexpr (requires { std::string_view(Int::precision_reason); }) why = Int::precision_reason;
+  return "computes in " + std::string(Int::precision) + (why.empty() ? std::string(" (stated, without a reason)")
+                                                                      : " (stated: " + why + ")");
+}
+
 // An integrator's steps in scalar T (errors inside them name gm_integrator_of).
 template <class Int, class T>
 void gm_integrator_of(Subject<T>& s, PartInfo& info) {
@@ -235,10 +254,59 @@ void gm_integrator_of(Subject<T>& s, PartInfo& info) {
                      })                                                                                    \
     in.step = [](const ArgT& a, const StateT& x, const T& h) -> StateT { return Int::step(a, x, h); };
   GM_INTEGRATOR_STEP(rigid_body_step, Vec3<T>, RS)
+  // A step kept in a declared form (`state`): the suite converts (core/declared_step.hpp).
+  if constexpr (requires { std::string_view(Int::state); }) {
+    using ES = EngineState<T>;
+    StateForm form;
+    std::string bad;
+    try {
+      form = parse_state_form(Int::state);
+    } catch (const std::exception& e) {
+      bad = e.what();
+    }
+    if (!bad.empty()) {
+      if constexpr (std::is_same_v<T, double>)
+        info.unchecked.push_back("integrator '" + std::string(Int::name) + "' declares state = \"" +
+                                 std::string(Int::state) + "\": " + bad);
+    } else if (in.rigid_body_step && !form.is_notes()) {
+      if constexpr (std::is_same_v<T, double>)
+        info.unchecked.push_back("integrator '" + std::string(Int::name) + "' declares state = \"" + std::string(Int::state) +
+                                 "\" but its rigid_body_step takes the notes' RigidBodyState; take and return "
+                                 "EngineState<T> (its members " + attitude_key(form.attitude) + " and " +
+                                 angular_key(form.angular) + ")");
+      in.rigid_body_step = {};
+    } else if (!in.rigid_body_step) {
+      if constexpr (requires(const Vec3<T>& a, const ES& x, const T& h) {
+                      { Int::template rigid_body_step<T>(a, x, h) } -> std::convertible_to<ES>;
+                    })
+        in.declared_step = [](const Vec3<T>& a, const ES& x, const T& h) -> ES { return Int::template rigid_body_step<T>(a, x, h); };
+      else if constexpr (std::is_same_v<T, double> && requires(const Vec3<T>& a, const ES& x, const T& h) {
+                           { Int::rigid_body_step(a, x, h) } -> std::convertible_to<ES>;
+                         })
+        in.declared_step = [](const Vec3<T>& a, const ES& x, const T& h) -> ES { return Int::rigid_body_step(a, x, h); };
+      if (in.declared_step) {
+        in.form = form;
+        adapt_declared_step(in);
+      }
+    }
+  }
   GM_INTEGRATOR_STEP(manakov_step, MatX<T>, MS)
   GM_INTEGRATOR_STEP(clebsch_step, Vec3<T>, Vec3Pair<T>)
   GM_INTEGRATOR_STEP(manakov_clebsch_step, MatX<T>, MatXPair<T>)
 #undef GM_INTEGRATOR_STEP
+  if constexpr (requires { std::string_view(Int::precision); }) {
+    // A stated precision: "double" runs the steps in double only, and the report says why.
+    if constexpr (!std::is_same_v<T, double>)
+      if (std::string_view(Int::precision) == "double") {
+        const std::pair<bool, const char*> steps[] = {{static_cast<bool>(in.rigid_body_step), "rigid_body_step"},
+                                                      {static_cast<bool>(in.manakov_step), "manakov_step"},
+                                                      {static_cast<bool>(in.clebsch_step), "clebsch_step"},
+                                                      {static_cast<bool>(in.manakov_clebsch_step), "manakov_clebsch_step"}};
+        for (const auto& [has, step] : steps)
+          if (has) info.slot_notes[std::string(Int::name) + "." + step] = stated_precision_note<Int>();
+        return;
+      }
+  }
   if (in.rigid_body_step || in.manakov_step || in.clebsch_step || in.manakov_clebsch_step)
     s.integrators.push_back(std::move(in));
   else if constexpr (std::is_same_v<T, double>)
@@ -247,7 +315,8 @@ void gm_integrator_of(Subject<T>& s, PartInfo& info) {
                              "manakov_step(const MatX<T>& A, const ManakovState<T>& x, const T& h), "
                              "clebsch_step(const Vec3<T>& I, const Vec3Pair<T>& QP, const T& h) or "
                              "manakov_clebsch_step(const MatX<T>& A, const MatXPair<T>& QP, const T& h) with the "
-                             "expected signature (see `geomech slots`), so none of its claims can be checked");
+                             "expected signature (see `geomech slots`; a step taking EngineState<T> declares its "
+                             "`state`), so none of its claims can be checked");
 }
 
 template <class Int>
@@ -268,7 +337,10 @@ IntegratorClaims claims_of() {
     c.equivariant = k.equivariant;
     c.bounded_energy = k.bounded_energy;
     c.symplectic = k.symplectic;
+    c.unit_quaternion = k.unit_quaternion;
   }
+  if constexpr (requires { std::string_view(Int::precision); }) c.precision = Int::precision;
+  if constexpr (requires { std::string_view(Int::precision_reason); }) c.precision_reason = Int::precision_reason;
   return c;
 }
 

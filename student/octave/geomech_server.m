@@ -160,6 +160,24 @@ function s = gm_encode(kind, x)
   end
 end
 
+% A rigid-body state in its declared form (docs/PROTOCOL.md, "State forms"): keys{1} is O or q,
+% keys{2} one of Pi, Omega, omega, pi; from a struct with those fields or a cell {attitude, angular}.
+function s = gm_encode_declared(keys, x)
+  if iscell(x) && numel(x) == 2
+    a = x{1}; w = x{2};
+  elseif isstruct(x) && numel(x) == 1
+    if ~isfield(x, keys{1}) || ~isfield(x, keys{2})
+      error('geomech:state', 'a state without the field %s or %s', keys{1}, keys{2});
+    end
+    a = x.(keys{1}); w = x.(keys{2});
+  else
+    error('geomech:state', 'expected a state as a struct with fields %s and %s, or a cell {%s, %s}', ...
+          keys{1}, keys{2}, keys{1}, keys{2});
+  end
+  if strcmp(keys{1}, 'O'), as = gm_mat(a); else, as = gm_vec(a); end
+  s = ['{"' keys{1} '":' as ',"' keys{2} '":' gm_vec(w) '}'];
+end
+
 function gm_send(out, s)
   fprintf(out, '%s\n', s);
   fflush(out);
@@ -199,10 +217,14 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
           vals{k} = gm_decode(j);
         end
       end
+      declared = {};
       if stepping
         f = [];
         for q = 1:numel(integ)
-          if strcmp(integ{q}.name, call.integrator), f = integ{q}.(call.slot); end
+          if strcmp(integ{q}.name, call.integrator)
+            f = integ{q}.(call.slot);
+            if strcmp(call.slot, 'rigid_body_step'), declared = integ{q}.state_keys; end
+          end
         end
         if isempty(f), error('geomech:integrator', 'no integrator %s with a %s', call.integrator, call.slot); end
         if isfield(call, 'repeat')
@@ -214,7 +236,11 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
           end
           states = cell(1, n);
           for s = 1:n
-            states{s} = gm_encode(kinds.result, f(vals{:}));
+            if isempty(declared)
+              states{s} = gm_encode(kinds.result, f(vals{:}));
+            else
+              states{s} = gm_encode_declared(declared, f(vals{:}));
+            end
             vals{2} = gm_decode_kind(kinds.args{2}, jsondecode(states{s}, 'makeValidName', false));
           end
           results{c} = [',{"ok":[' sprintf('%s,', states{:})];
@@ -228,7 +254,9 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
       end
       % The commonest results, a vector or a matrix, are written here as gm_vec and gm_mat write
       % them: their calls (and gm_encode's, and gm_real's) cost twice the formatting itself.
-      if kinds.shape == 1 && isnumeric(r) && isreal(r)
+      if ~isempty(declared)
+        results{c} = [',{"ok":' gm_encode_declared(declared, r) '}'];
+      elseif kinds.shape == 1 && isnumeric(r) && isreal(r)
         if isempty(r)
           results{c} = ',{"ok":[]}';
         else
@@ -395,8 +423,24 @@ if exist('geomech_integrators') == 2 || exist('geomech_integrators') == 103
     end
     c = '{}';
     if isfield(it, 'claims') && ~isempty(it.claims), c = jsonencode(it.claims); end
-    ijson{end + 1} = sprintf('{"name":%s,"steps":[%s],"scalars":["double"],"claims":%s}', jsonencode(it.name), ...
-                             strjoin(steps, ','), c);
+    % Issue 48: a declared state form ('quaternion_wxyz omega') and a stated precision with its reason.
+    extra = '';
+    entry.state_keys = {};
+    keys = {'state', 'precision', 'precision_reason'};
+    for q = 1:numel(keys)
+      if isfield(it, keys{q}) && ischar(it.(keys{q})) && ~isempty(it.(keys{q}))
+        extra = [extra sprintf(',"%s":%s', keys{q}, jsonencode(it.(keys{q})))];
+      end
+    end
+    if isfield(it, 'state') && ischar(it.state) && ~isempty(it.state)
+      words = strsplit(strtrim(strrep(it.state, ',', ' ')));
+      words = words(~cellfun(@isempty, words));
+      if numel(words) == 2
+        if strcmp(words{1}, 'matrix'), entry.state_keys = {'O', words{2}}; else, entry.state_keys = {'q', words{2}}; end
+      end
+    end
+    ijson{end + 1} = sprintf('{"name":%s,"steps":[%s],"scalars":["double"],"claims":%s%s}', jsonencode(it.name), ...
+                             strjoin(steps, ','), c, extra);
     integ{end + 1} = entry;
   end
 end
@@ -406,8 +450,10 @@ if exist('geomech_description') == 2 || exist('geomech_description') == 103
   desc = geomech_description();
 end
 quoted = cellfun(@(s) ['"' s '"'], have, 'UniformOutput', false);
-gm_send(out, sprintf(['{"protocol":"geomech-slots","version":2,"language":"octave","language_version":%s,' ...
+% Issue 48: the interpreter that runs the file, for the report.
+me = fullfile(OCTAVE_HOME(), 'bin', 'octave-cli');
+gm_send(out, sprintf(['{"protocol":"geomech-slots","version":2,"language":"octave","language_version":%s,"interpreter":%s,' ...
                       '"description":%s,"slots":{"double":[%s]},"integrators":[%s],"notes":{},"warnings":[],' ...
                       '"sessions":true,"repeat":true}'], ...
-                     jsonencode(version()), jsonencode(desc), strjoin(quoted, ','), strjoin(ijson, ',')));
+                     jsonencode(version()), jsonencode(me), jsonencode(desc), strjoin(quoted, ','), strjoin(ijson, ',')));
 gm_serve(out, false, slot_kinds, integ, step_kinds, target, tmp);

@@ -252,11 +252,34 @@ void put(std::string& out, const std::string& kind, const octave_value& x) {
   }
 }
 
+// A rigid-body state in its declared form (docs/PROTOCOL.md, "State forms"): the keys `a` (O or q)
+// and `w` (Pi, Omega, omega or pi), from a struct with those fields or a cell {attitude, angular}.
+void put_declared(std::string& out, const std::string& a, const std::string& w, const octave_value& x) {
+  octave_value av, wv;
+  if (x.iscell() && x.numel() == 2) {
+    const Cell c = x.cell_value();
+    av = c(0);
+    wv = c(1);
+  } else if (x.isstruct() && x.numel() == 1) {
+    av = field_of(x, a.c_str(), "state");
+    wv = field_of(x, w.c_str(), "state");
+  } else {
+    throw std::runtime_error("expected a state as a struct with fields " + a + " and " + w + ", or a cell {" + a + ", " + w + "}");
+  }
+  out += "{\"" + a + "\":";
+  if (a == "O") put_matrix(out, av);
+  else put_vector(out, av);
+  out += ",\"" + w + "\":";
+  put_vector(out, wv);
+  out += '}';
+}
+
 // ---- the server ----------------------------------------------------------------------------------
 
 struct Integrator {
   std::string name;
   std::map<std::string, octave_value> steps;  // step slot -> function handle
+  std::string state_a, state_w;               // a rigid_body_step kept in a declared form: its keys
 };
 
 struct Server {
@@ -342,11 +365,17 @@ struct Server {
       for (std::size_t k = 0; k < a.size(); ++k)
         args(k) = decode_kind(k < kinds.args.size() ? kinds.args[k] : std::string(), a[k]);
       octave_value f;
+      const Integrator* which = nullptr;
+      // The result as its kind says, or a rigid-body state in the integrator's declared form.
+      auto write = [&](std::string& o, const octave_value& v) {
+        if (which && !which->state_a.empty() && slot == "rigid_body_step") put_declared(o, which->state_a, which->state_w, v);
+        else put(o, kinds.result, v);
+      };
       if (stepping) {
         const std::string& name = call["integrator"].get_ref<const std::string&>();
         for (const auto& i : integrators)
           if (i.name == name)
-            if (auto s = i.steps.find(slot); s != i.steps.end()) f = s->second;
+            if (auto s = i.steps.find(slot); s != i.steps.end()) f = s->second, which = &i;
         if (f.is_undefined()) throw std::runtime_error("no integrator " + name + " with a " + slot);
         if (call.contains("repeat")) {
           // A run of steps (docs/PROTOCOL.md): each step's state, written as its reply would be, is
@@ -358,7 +387,7 @@ struct Server {
           const long count = n.get<long>();
           for (long s = 0; s < count; ++s) {
             std::string state;
-            put(state, kinds.result, call_one(f, slot, args));
+            write(state, call_one(f, slot, args));
             args(1) = decode_kind(kinds.args[1], json::parse(state));
             if (s) out += ',';
             out += state;
@@ -369,7 +398,7 @@ struct Server {
       }
       const octave_value r = call_one(f, slot, args);
       out += ",{\"ok\":";
-      put(out, kinds.result, r);
+      write(out, r);
       out += '}';
     } catch (const octave::execution_exception& e) {
       interp->recover_from_exception();
@@ -543,8 +572,20 @@ struct Server {
           }
           std::string claims = "{}";
           if (it.isfield("claims") && !it.getfield("claims").isempty()) claims = jsonencode(it.getfield("claims"));
+          // Issue 48: a declared state form ('quaternion_wxyz omega') and a stated precision with its reason.
+          std::string extra;
+          for (const char* key : {"state", "precision", "precision_reason"})
+            if (it.isfield(key) && it.getfield(key).is_string() && !it.getfield(key).isempty())
+              extra += std::string(",\"") + key + "\":" + json(it.getfield(key).string_value()).dump();
+          if (it.isfield("state") && it.getfield("state").is_string() && !it.getfield("state").isempty()) {
+            std::string words = it.getfield("state").string_value();
+            std::replace(words.begin(), words.end(), ',', ' ');
+            std::istringstream ws(words);
+            std::string att, ang;
+            if (ws >> att >> ang) in.state_a = att == "matrix" ? "O" : "q", in.state_w = ang;
+          }
           ijson += std::string(ijson.empty() ? "" : ",") + "{\"name\":" + json(in.name).dump() + ",\"steps\":[" + steps +
-                   "],\"scalars\":[\"double\"],\"claims\":" + claims + "}";
+                   "],\"scalars\":[\"double\"],\"claims\":" + claims + extra + "}";
           integrators.push_back(std::move(in));
         }
       }
@@ -555,7 +596,8 @@ struct Server {
       return false;
     }
     send("{\"protocol\":\"geomech-slots\",\"version\":2,\"language\":\"octave\",\"language_version\":" +
-         json(std::string(OCTAVE_VERSION)).dump() + ",\"description\":" + json(desc).dump() +
+         json(std::string(OCTAVE_VERSION)).dump() +
+         ",\"interpreter\":\"geomech-octave-server (the system's Octave linked in)\",\"description\":" + json(desc).dump() +
          ",\"slots\":{\"double\":[" + have + "]},\"integrators\":[" + ijson +
          "],\"notes\":{},\"warnings\":[],\"sessions\":true,\"repeat\":true}");
     return true;

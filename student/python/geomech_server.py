@@ -41,7 +41,8 @@ MP_BITS = 168
 
 
 class State(dict):
-    """A state {"Pi": ..., "O": ...} (or {"M": ..., "O": ...}) read as x["Pi"] or x.Pi."""
+    """A state {"Pi": ..., "O": ...} (or {"M": ..., "O": ...}, or a declared form's {"q": ..., "omega": ...})
+    read as x["Pi"] or x.Pi."""
 
     def __getattr__(self, k):
         try:
@@ -123,6 +124,11 @@ def decode(kind, scalar, v):
         return State(Pi=decode("Vec3", scalar, v["Pi"]), O=decode("Mat3", scalar, v["O"]))
     if kind == "ManakovState":
         return State(M=decode("MatX", scalar, v["M"]), O=decode("MatX", scalar, v["O"]))
+    if kind.startswith("EngineState:"):  # a declared state form (docs/PROTOCOL.md, "State forms")
+        a, w = kind.split(":")[1:3]
+        return State({a: decode("Mat3" if a == "O" else "Vec4", scalar, v[a]), w: decode("Vec3", scalar, v[w])})
+    if kind == "Vec4":
+        return [make_scalar(scalar, x) for x in v]
     if kind in ("Vec3Pair", "MatXPair"):  # (Q, P) of the Clebsch steps: a 2-tuple
         part = "Vec3" if kind == "Vec3Pair" else "MatX"
         return (decode(part, scalar, v[0]), decode(part, scalar, v[1]))
@@ -171,7 +177,7 @@ def encode(kind, scalar, x):
         x = x.tolist()
     if kind == "T":
         return encode_number(scalar, x)
-    if kind in ("Vec3", "Vec6", "VecX"):
+    if kind in ("Vec3", "Vec4", "Vec6", "VecX"):
         seq = list(x)
         if seq and numpy is not None and isinstance(seq[0], numpy.ndarray):
             seq = [e.tolist() for e in seq]
@@ -192,6 +198,15 @@ def encode(kind, scalar, x):
     if kind == "MatXPair":
         a, b = x
         return [encode("MatX", scalar, a), encode("MatX", scalar, b)]
+    if kind.startswith("EngineState:"):  # the declared keys: a dict, an object with them, or (attitude, angular)
+        a, w = kind.split(":")[1:3]
+        if isinstance(x, dict):
+            xa, xw = x[a], x[w]
+        elif hasattr(x, a):
+            xa, xw = getattr(x, a), getattr(x, w)
+        else:
+            xa, xw = x
+        return {a: encode("Mat3" if a == "O" else "Vec4", scalar, xa), w: encode("Vec3", scalar, xw)}
     if kind in ("RigidBodyState", "ManakovState"):
         keys = ("Pi", "O") if kind == "RigidBodyState" else ("M", "O")
         vk = "Vec3" if kind == "RigidBodyState" else "MatX"
@@ -240,6 +255,15 @@ def get(obj, key, default=None):
     return getattr(obj, key, default)
 
 
+def state_kind(words):
+    """The argument kind of a rigid-body step kept in a declared form ("quaternion_wxyz omega"):
+    EngineState:<attitude key>:<angular key>:<attitude word>. The harness checks the words."""
+    w = str(words).replace(",", " ").split()
+    if len(w) != 2:
+        return None
+    return "EngineState:%s:%s:%s" % ("O" if w[0] == "matrix" else "q", w[1], w[0])
+
+
 def find_integrators(mod):
     found = []
     seen = set()
@@ -279,6 +303,11 @@ def sample(kind, scalar, k=0):
         return [[f(2 + k), f(0), f(0)], [f(0), f(3), f(0)], [f(0), f(0), f(5)]]
     if kind == "RigidBodyState":
         return State(Pi=sample("Vec3", scalar, 1), O=[[f(1 if i == j else 0) for j in range(3)] for i in range(3)])
+    if kind.startswith("EngineState:"):
+        a, w, order = kind.split(":")[1:4]
+        att = [[f(1 if i == j else 0) for j in range(3)] for i in range(3)] if a == "O" else \
+            ([f(0), f(0), f(0), f(1)] if order == "quaternion_xyzw" else [f(1), f(0), f(0), f(0)])
+        return State({a: att, w: sample("Vec3", scalar, 1)})
     if kind == "ManakovState":
         M = [[f(0), f(1), f(-1)], [f(-1), f(0), f(1, 2)], [f(1), f(-1, 2), f(0)]]
         return State(M=M, O=[[f(1 if i == j else 0) for j in range(3)] for i in range(3)])
@@ -307,7 +336,7 @@ def probe(fn, sig, scalar):
     result, args = sig
     try:
         vals = [sample(a, scalar, i) for i, a in enumerate(args)]
-        if sig in STEP_SIGS.values():  # a step: a small h
+        if sig in STEP_SIGS.values() or sig[0].startswith("EngineState:"):  # a step: a small h
             vals[-1] = make_scalar(scalar, "1/64")
         encode(result, scalar, fn(*vals))
         return None
@@ -361,8 +390,8 @@ def answer(req, functions, steps):
         slot, scalar = call.get("slot"), call.get("scalar")
         try:
             if call.get("integrator"):
-                fn = steps.get((call["integrator"], slot))
-                sig = STEP_SIGS.get(slot)
+                fn = steps[0].get((call["integrator"], slot))
+                sig = steps[1].get((call["integrator"], slot), STEP_SIGS.get(slot))
                 if fn is None:
                     raise LookupError("no integrator %r with a %s" % (call["integrator"], slot))
             else:
@@ -468,13 +497,25 @@ def main():
         STEP_SIGS[k] = parse_signature(v)
     scalars = ["double", "mp50", "exact"] if mpmath is not None else ["double", "exact"]
     warnings = []
+    unavailable = {}
     if mpmath is None:
-        warnings.append("mpmath is not installed (apt-get install python3-mpmath): nothing is checked in 50 digits")
+        # Issue 48: say which interpreter lacks it, and how to choose another.
+        why = ("mpmath cannot be imported by %s (Python %s), the interpreter that runs your file, so nothing is "
+               "checked in 50 digits: install mpmath for that interpreter (Debian's /usr/bin/python3: apt-get install "
+               "python3-mpmath; a venv: its pip), or set GEOMECH_PYTHON to an interpreter that has it"
+               % (sys.executable, sys.version.split()[0]))
+        warnings.append(why)
+        unavailable["mp50"] = why
     try:
         mod = load(sys.argv[1])
     except BaseException as e:
+        hint = ""
+        if isinstance(e, ImportError):  # issue 48: which interpreter, and how to choose another
+            hint = ("\n(the interpreter running it is %s, Python %s: a module the file imports is not installed for it; "
+                    "install it there, or set GEOMECH_PYTHON to an interpreter that has it)"
+                    % (sys.executable, sys.version.split()[0]))
         _out.write(json.dumps({"protocol": PROTOCOL, "version": VERSION, "language": "python",
-                               "fatal": "importing %s failed:\n%s" % (sys.argv[1], student_traceback(e))}) + "\n")
+                               "fatal": "importing %s failed:\n%s%s" % (sys.argv[1], student_traceback(e), hint)}) + "\n")
         _out.flush()
         return 1
 
@@ -503,15 +544,32 @@ def main():
                 notes.setdefault(scalar, {})[name] = why[1]
     integrators = []
     steps = {}
+    step_sigs = {}
     for iname, obj, isteps in find_integrators(mod):
         iscalars = []
+        # A rigid-body step kept in a declared form (docs/PROTOCOL.md, "State forms"): its state
+        # argument and result are that form's keys; the harness converts.
+        declared = get(obj, "state", None)
+        isigs = {}
+        if declared is not None and "rigid_body_step" in isteps and state_kind(declared):
+            kind = state_kind(declared)
+            isigs["rigid_body_step"] = (kind, ["Vec3", kind, "T"])
         for scalar in ("double", "mp50"):
             if scalar not in scalars:
                 continue
             ok = True
+            precision = get(obj, "precision", None)
+            if precision is not None and str(precision) == "double" and scalar != "double":
+                # A stated precision (issue 48): run in double only, and say why in the report.
+                why = get(obj, "precision_reason", None)
+                for s in isteps:
+                    notes.setdefault(scalar, {})["%s.%s" % (iname, s)] = "computes in double (%s)" % (
+                        "stated: " + inert(str(why)) if why else "stated, without a reason")
+                continue
             for s in (isteps if table.get("probe", True) and scalar != "double" else []):
-                why = probe(get(obj, s), STEP_SIGS[s], scalar)
-                if why is not None and why[0] == "inexact" and probe(get(obj, s), STEP_SIGS[s], "double") is None:
+                sig = isigs.get(s, STEP_SIGS[s])
+                why = probe(get(obj, s), sig, scalar)
+                if why is not None and why[0] == "inexact" and probe(get(obj, s), sig, "double") is None:
                     ok = False
                     notes.setdefault(scalar, {})["%s.%s" % (iname, s)] = why[1]
             if ok:
@@ -520,18 +578,26 @@ def main():
         entry = {"name": iname, "steps": isteps, "scalars": iscalars}
         if claims:
             entry["claims"] = dict(claims)
+        if declared is not None:
+            entry["state"] = inert(str(declared))
+        for key in ("precision", "precision_reason"):
+            if get(obj, key, None) is not None:
+                entry[key] = inert(str(get(obj, key)))
         integrators.append(entry)
         for s in isteps:
             steps[(iname, s)] = get(obj, s)
+            step_sigs[(iname, s)] = isigs.get(s, STEP_SIGS[s])
     description = inert(getattr(mod, "description", None) or ((mod.__doc__ or "").strip().splitlines() or [""])[0])
     hello = {"protocol": PROTOCOL, "version": VERSION, "language": "python",
-             "language_version": sys.version.split()[0], "description": description,
+             "language_version": sys.version.split()[0], "interpreter": sys.executable, "description": description,
              "slots": slots, "integrators": integrators, "notes": notes, "warnings": warnings,
              "mp50_bits": MP_BITS, "sessions": hasattr(os, "fork"), "repeat": True}
+    if unavailable:
+        hello["scalar_unavailable"] = unavailable
     _out.write(json.dumps(hello) + "\n")
     _out.flush()
 
-    return serve(Lines(0), functions, steps, in_session=False)
+    return serve(Lines(0), functions, (steps, step_sigs), in_session=False)
 
 
 if __name__ == "__main__":

@@ -43,7 +43,12 @@ bool maybe_write_ctest_script(int argc, char** argv, const LabelFn& labels_for, 
       std::string labels;
       for (const auto& l : labels_for(suite_name, name)) labels += (labels.empty() ? "" : ";") + l;
       script << "set_tests_properties(" << bracket(full) << " PROPERTIES LABELS " << bracket(labels)
-             << " TIMEOUT " << timeout_seconds << ")\n";
+             << " TIMEOUT " << timeout_seconds
+#ifdef GM_TEST_PYTHON
+             // The interpreter the project installed its Python packages for (tests/CMakeLists.txt).
+             << " ENVIRONMENT " << bracket(std::string("GEOMECH_PYTHON=") + GM_TEST_PYTHON)
+#endif
+             << ")\n";
     }
   }
   const std::string tmp = out + ".tmp";

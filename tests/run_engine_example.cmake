@@ -1,0 +1,51 @@
+# The Open Dynamics Engine's free body (examples/engines/ode_free_body.cpp, which links ODE by its own
+# `// geomech: pkg ode` line) checked in one mode, then each finding confirmed by the test's own
+# computation (tests/engines/ode_confirm.cpp). Issue 48.
+#   cmake -DGEOMECH=... -DCONFIRM=ode_confirm -DFILE=ode_free_body.cpp -DMODE=trusted|untrusted|class
+#         -DOUT=dir -P run_engine_example.cmake
+if(NOT CONFIRM)
+  message(FATAL_ERROR "libode-dev (and pkg-config) are not installed, so ODE cannot be checked: apt-get install -y "
+                      "libode-dev pkg-config (./geomech installs them)")
+endif()
+set(props -p integrator_order -p integrator_unit_quaternion -p integrator_energy -p integrator_casimir -p integrator_noether)
+# Trusted: compiled for every scalar, as `./geomech check ode_free_body.cpp` does (the three objects
+# are linked together); the steps state double, so nothing runs in 50 digits. Sandboxed: double only.
+if(NOT MODE STREQUAL "trusted")
+  list(PREPEND props --scalar double)
+endif()
+file(REMOVE_RECURSE ${OUT})
+get_filename_component(name ${FILE} NAME_WE)
+if(MODE STREQUAL "class")
+  file(MAKE_DIRECTORY ${OUT}/class)
+  file(COPY ${FILE} DESTINATION ${OUT}/class)
+  execute_process(COMMAND ${GEOMECH} check-class ${OUT}/class --report ${OUT}/report --parallel 1 --quiet ${props}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(dir ${OUT}/report/${name})
+else()
+  set(extra "")
+  if(MODE STREQUAL "untrusted")
+    set(extra --untrusted)
+  endif()
+  execute_process(COMMAND ${GEOMECH} check ${FILE} ${extra} --quiet --report ${OUT}/report ${props}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  set(dir ${OUT}/report)
+endif()
+message("${out}")
+# Nothing is claimed (ODE's documentation claims nothing the suite can verify), so nothing can be false.
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "exit status ${status}, expected 0\n${err}")
+endif()
+file(READ ${dir}/report.md report)
+foreach(text "State: a unit quaternion q = (w, x, y, z) and the spatial angular velocity omega"
+             "Precision: computes in double, stated: ODE is built in double here"
+             "### dWorldStep_gyroscopic_off")
+  string(FIND "${report}" "${text}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "the report (${dir}/report.md) does not contain: ${text}")
+  endif()
+endforeach()
+execute_process(COMMAND ${CONFIRM} ${dir}/verdicts.json RESULT_VARIABLE confirmed OUTPUT_VARIABLE said ERROR_VARIABLE said_err)
+message("${said}${said_err}")
+if(NOT confirmed EQUAL 0)
+  message(FATAL_ERROR "the suite's findings on ODE and this test's own computation disagree (above)")
+endif()
