@@ -79,6 +79,14 @@ json claims_json(const IntegratorClaims& c) {
   return j;
 }
 
+json domain_json(const StepDomain& d) {
+  json j = json::object();
+  if (d.max_omega > 0) j["max_omega"] = d.max_omega;
+  if (d.max_pi > 0) j["max_pi"] = d.max_pi;
+  if (d.min_h > 0) j["min_h"] = d.min_h;
+  return j;
+}
+
 
 }  // namespace
 
@@ -104,7 +112,10 @@ json hello_for(const SubjectSet& s, const harness::SubjectInfo& info, const std:
           if (in.manakov_clebsch_step) steps.push_back("manakov_clebsch_step");
           json j{{"name", in.name}, {"steps", steps}, {"scalars", json::array()}};
           for (const auto& c : s.claims)
-            if (c.integrator == in.name) j["claims"] = claims_json(c);
+            if (c.integrator == in.name) {
+              j["claims"] = claims_json(c);
+              if (c.domain.declared()) j["domain"] = domain_json(c.domain);
+            }
           integrators.push_back(j);
           it = integrators.end() - 1;
         }

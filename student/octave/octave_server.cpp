@@ -543,8 +543,10 @@ struct Server {
           }
           std::string claims = "{}";
           if (it.isfield("claims") && !it.getfield("claims").isempty()) claims = jsonencode(it.getfield("claims"));
+          std::string domain = "{}";  // where the step is meant to work (issue 47)
+          if (it.isfield("domain") && !it.getfield("domain").isempty()) domain = jsonencode(it.getfield("domain"));
           ijson += std::string(ijson.empty() ? "" : ",") + "{\"name\":" + json(in.name).dump() + ",\"steps\":[" + steps +
-                   "],\"scalars\":[\"double\"],\"claims\":" + claims + "}";
+                   "],\"scalars\":[\"double\"],\"claims\":" + claims + ",\"domain\":" + domain + "}";
           integrators.push_back(std::move(in));
         }
       }

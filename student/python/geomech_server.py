@@ -520,6 +520,9 @@ def main():
         entry = {"name": iname, "steps": isteps, "scalars": iscalars}
         if claims:
             entry["claims"] = dict(claims)
+        domain = get(obj, "domain", None)  # where the step is meant to work (issue 47)
+        if domain:
+            entry["domain"] = {k: float(v) for k, v in dict(domain).items()}
         integrators.append(entry)
         for s in isteps:
             steps[(iname, s)] = get(obj, s)
