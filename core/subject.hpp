@@ -72,10 +72,19 @@ class Slot<R(A...)> {
     return f_(std::forward<A>(args)...);
   }
   const char* name() const { return name_; }
+  const std::function<R(A...)>& function() const { return f_; }
 
  private:
   const char* name_;
   std::function<R(A...)> f_;
+};
+
+// A failure of the process the code under test runs in, not of its code: it died, answered out of
+// step, or sent what is not an answer (harness/remote_subject.hpp). Never taken for a step that
+// raised (properties/support/step_guard.hpp): the code did not get to say anything.
+class ProcessFailure : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // SLOT(name, signature, place in the notes, meaning)
@@ -203,6 +212,17 @@ const std::vector<SlotInfo>& subject_slots();
 bool is_slot_name(std::string_view name);
 
 // What an integrator's author claims about it; the harness verifies every claim.
+// Where an integrator's step is meant to work (issue 47): an engine may refuse or reset states
+// above some speed, or steps below some size. Nothing outside is drawn by any check, the report
+// states the domain, and a step that raises outside an undeclared one is told it may declare it.
+// 0: no limit.
+struct StepDomain {
+  double max_omega = 0;  // the largest |Omega| = max |Pi_i / I_i| (Manakov: max |M_ij| / min a_i)
+  double max_pi = 0;     // the largest max |Pi_i| (Manakov: max |M_ij|; Clebsch: max(|Q|, |P|))
+  double min_h = 0;      // the smallest |h|
+  bool declared() const { return max_omega > 0 || max_pi > 0 || min_h > 0; }
+};
+
 struct IntegratorClaims {
   std::string integrator;        // name of the Integrator this describes
   int order = 0;                 // claimed order of accuracy (0: no claim)
@@ -222,6 +242,7 @@ struct IntegratorClaims {
   // shown in the report beside the claims.
   std::string precision = {};
   std::string precision_reason = {};
+  StepDomain domain;             // where the step is meant to work (not a claim: a statement of scope)
 };
 
 // The yes/no claims by name, in the order reports list them (`order`, a number, comes before them):

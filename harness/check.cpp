@@ -1,6 +1,7 @@
 #include "harness/check.hpp"
 
 #include "harness/inert_text.hpp"
+#include "harness/integrator_verdicts.hpp"
 #include "harness/isolate.hpp"
 #include "harness/portrait.hpp"
 #include "harness/work_precision.hpp"
@@ -147,14 +148,24 @@ void keep_within_budget(CheckResult& r) {
 Verdict abnormal_verdict(const SubjectSet& s, const Item& item, const TaskResult& t, const RunOptions& run) {
   Verdict v = base_verdict(s, item);
   v.seconds = t.seconds;
-  v.seed = derive_seed(run.seed, item.property->id + "/" + v.scalar + (v.integrator.empty() ? "" : "/" + v.integrator));
+  v.seed = derive_seed(run.seed, item.property->id + "/" + v.scalar);  // as the runner derives it
   std::ostringstream m;
   switch (t.status) {
     case TaskResult::Status::TimedOut:
       v.outcome = Outcome::Timeout;
+      if (t.detail.find("it waits") != std::string::npos)
+        m << "the check " << t.detail << ".";
+      else
+        m << "the check " << t.detail
+          << ": the code under test hangs (an endless loop, an iteration that never converges) or is far too slow "
+             "for this check.";
+      break;
+    case TaskResult::Status::Busy:
+      // Not a verdict on the code (issue 47): the machine gave it too little of a core, twice.
+      v.outcome = Outcome::Error;
       m << "the check " << t.detail
-        << ": the code under test hangs (an endless loop, an iteration that never converges) or is far too slow "
-           "for this check.";
+        << ": nothing is known about the code from it. Run it again on a less busy machine (the command below), or "
+           "with fewer checks at once (--jobs).";
       break;
     case TaskResult::Status::Crashed:
       v.outcome = Outcome::Crash;
@@ -352,7 +363,7 @@ std::vector<Verdict> verdicts_of(const SubjectSet& s, const SubjectInfo& info, c
 }
 
 // Where a check goes in the schedule (run_check): smaller first.
-std::tuple<int, int, int, int> schedule_key(const Item& item, bool replayed) {
+std::tuple<int, int, int, int> schedule_key(const Item& item, bool replayed, bool claimed = false) {
   const Property& p = *item.property;
   int group;
   if (p.scope == Scope::Integrator)
@@ -364,6 +375,9 @@ std::tuple<int, int, int, int> schedule_key(const Item& item, bool replayed) {
   // Exact first where a property runs in rationals: its counterexample is the clearest (no
   // tolerance) and its cases are cheap; then double; 50 digits cost most.
   const int scalar = item.kind == ScalarKind::Exact ? 0 : item.kind == ScalarKind::Double ? 1 : 2;
+  // An integrator's claimed checks before its unclaimed ones (issue 47): a false claim leads the
+  // output, what nobody claimed is characterised after.
+  if (p.scope == Scope::Integrator) return {replayed ? 0 : 1, group, claimed ? 0 : 1, scalar};
   return {replayed ? 0 : 1, group, scalar, 0};
 }
 
@@ -413,7 +427,9 @@ int CheckResult::count(Outcome o) const {
   return static_cast<int>(std::count_if(verdicts.begin(), verdicts.end(), [o](const Verdict& v) { return v.outcome == o; }));
 }
 
-int CheckResult::ran() const { return static_cast<int>(verdicts.size()) - count(Outcome::NotProvided); }
+int CheckResult::ran() const {
+  return static_cast<int>(verdicts.size()) - count(Outcome::NotProvided) - count(Outcome::NotCharacterised);
+}
 
 bool CheckResult::ok() const {
   return count(Outcome::Fail) + count(Outcome::Crash) + count(Outcome::Timeout) + count(Outcome::Error) == 0 &&
@@ -515,20 +531,28 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     Verdict v = base_verdict(s, items[i]);
     replayed[i] = cfg.failed_before.count(check_key(v)) > 0;
   }
+  auto claimed_item = [&](const Item& item) {
+    if (item.integrator.empty()) return false;
+    const IntegratorClaims* c = s.claims_for(item.integrator);
+    return c != nullptr && claims_any(*c, item.property->judges);
+  };
   std::vector<std::size_t> order(items.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const auto ka = schedule_key(items[a], replayed[a]), kb = schedule_key(items[b], replayed[b]);
+    const auto ka = schedule_key(items[a], replayed[a], claimed_item(items[a])),
+               kb = schedule_key(items[b], replayed[b], claimed_item(items[b]));
     return ka < kb;
   });
 
+  RunOptions run = cfg.run;
+  run.out_of_process = info.out_of_process;
   std::vector<std::function<std::string()>> tasks;
   for (std::size_t i : order) {
     const Item item = items[i];
-    tasks.push_back([&s, item, &cfg]() {
+    tasks.push_back([&s, item, run]() {
       std::vector<Verdict> vs = item.integrator.empty()
-                                    ? run_property(*item.property, s, item.kind, cfg.run)
-                                    : run_property(*item.property, only_integrator(s, item.kind, item.integrator), item.kind, cfg.run);
+                                    ? run_property(*item.property, s, item.kind, run)
+                                    : run_property(*item.property, only_integrator(s, item.kind, item.integrator), item.kind, run);
       for (auto& v : vs) bound_texts(v);  // before they cross to the harness (issue 46)
       return verdicts_to_string(vs);
     });
@@ -546,6 +570,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   io.isolate = cfg.isolate;
   io.prepare_worker = info.prepare_worker;
   io.worker_done = info.worker_done;
+  io.worker_cpu = info.worker_cpu_seconds;  // the code's CPU behind the protocol (issue 47)
   // The pictures and the work-precision diagram are the longest single tasks (11 s for an untrusted
   // C++ implementation, most of it alone at the end when started last): they start once the slots'
   // own checks and the exact identities have started, so that the other checks run beside them.
@@ -554,7 +579,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   {
     auto group_from = [&](std::size_t from, int group) {
       while (from < n_items) {
-        const auto key = schedule_key(items[order[from]], replayed[order[from]]);
+        const auto key = schedule_key(items[order[from]], replayed[order[from]], claimed_item(items[order[from]]));
         if (std::get<0>(key) == 1 && std::get<1>(key) >= group) break;
         ++from;
       }
@@ -619,6 +644,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   });
   keep_within_budget(result);
   account_for_slots(result, s, cfg);
+  decide_integrator_verdicts(result);  // once; every view renders it (issue 47)
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (CheckListener* l : cfg.listeners) l->ended(result);
   return result;

@@ -37,6 +37,9 @@ struct SubjectInfo {
   // check; empty for subjects linked in.
   std::function<void(int)> prepare_worker;
   std::function<void(int, bool)> worker_done;
+  // The CPU seconds the implementation's server for worker slot w has used so far (its process
+  // tree): a check's limit counts the code's CPU, wherever it runs (issue 47). Empty in process.
+  std::function<double(int)> worker_cpu_seconds;
   // "python" or "octave" for an implementation in another language: the report then names the
   // function to fix in that language ("Python function `casimir` in mine.py") instead of the slot,
   // and its checks get longer by default (timeout_factor).
@@ -91,6 +94,33 @@ std::string check_key(const Verdict& v);
 // run; empty when there is no readable report there.
 std::set<std::string> failed_checks_in_report(const std::string& dir);
 
+// What a claim of an integrator is found to be, decided once from the verdicts of the checks that
+// judge it (harness/integrator_verdicts.hpp, issue 47); every view (the console's claims block,
+// report.md, verdicts.json, the class summary, the gradebook) shows this record.
+enum class ClaimStatus {
+  Verified,        // claimed: every check that judges it ran all its cases and passed
+  FalseClaim,      // claimed: a complete measurement contradicts it
+  NotVerified,     // claimed: a check it rests on could not decide (the step raised, a crash, cut cases)
+  NotRun,          // claimed: no check that judges it ran in this run (a selection, --thorough)
+  NotChecked,      // claimed: no property judges it for this integrator's steps
+  Holds,           // not claimed: the evidence that would verify it if claimed
+  DoesNotHold,     // not claimed: a complete measurement shows it does not hold
+  NotEstablished,  // not claimed: the evidence is incomplete
+  Measured,        // the order, not claimed: measured, and the step converges
+  DoesNotConverge, // the order, not claimed: the step does not converge (its checks FAIL)
+  None,            // not claimed, and nothing judges it for this integrator
+};
+
+struct ClaimDecision {
+  std::string claim;
+  std::string claimed;              // "2" for an order, "yes" / "no"
+  ClaimStatus status = ClaimStatus::None;
+  std::string word;                 // what every view shows: "verified", "FALSE CLAIM", "holds (not claimed)", ...
+  std::string measured;             // in a few words: "order 1.00 (double), 1.00 (mp50)"; may be empty
+  std::string why;                  // what kept it from being decided (NotVerified, NotEstablished, NotRun)
+  std::vector<std::string> evidence;  // "double, integrator_order: ...", one per finding
+};
+
 struct IntegratorInfo {
   std::string name;
   bool has_claims = false;
@@ -98,6 +128,7 @@ struct IntegratorInfo {
   std::vector<std::string> steps;    // "rigid_body_step", "manakov_step"
   std::vector<std::string> scalars;  // the scalars it is instantiated in
   StateForm form;                    // the form it keeps the rigid body's state in (core/state_form.hpp)
+  std::vector<ClaimDecision> decisions;  // decided at the end of the check (harness/integrator_verdicts.hpp)
 };
 
 struct CheckResult {

@@ -244,8 +244,8 @@ std::vector<std::string> words_of(const StudentView& s) {
                   " provided beyond the assignment (not graded)");
   std::vector<std::string> verified, failed;
   for (const auto& c : s.graded.claims)
-    (c.status == "verified" ? verified : failed)
-        .push_back(c.integrator + " " + c.claim + (c.status == "verified" ? "" : " (" + c.status + ")"));
+    (c.status.rfind("verified", 0) == 0 ? verified : failed)
+        .push_back(c.integrator + " " + c.claim + (c.status.rfind("verified", 0) == 0 ? "" : " (" + c.status + ")"));
   // The headline counts the claims when the rubric grades them; the failed ones are named here.
   const bool counted = s.score.headline.find("claim") != std::string::npos;
   if ((!counted && !verified.empty()) || !failed.empty()) {

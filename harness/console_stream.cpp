@@ -102,6 +102,12 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
     if (!is_problem(v.outcome)) continue;
     ++failures_;
     if (replayed) text << "still failing (as in the previous run): " << check_name(v) << "\n";
+    // One finding per cause (issue 47): a step that raises says so once, in full; the other checks it
+    // kept from running say only that.
+    if (!v.step_raised.empty() && !raises_seen_.insert(v.integrator + '\n' + v.step_raised).second) {
+      if (!quiet_) text << outcome_name(v.outcome) << "  " << check_name(v) << ": your step raised, as above\n";
+      continue;
+    }
     // What to fix first: a slot's own definition check names the slot; an integrator's false claim
     // names the claim and what was measured.
     std::string lead;
@@ -119,8 +125,12 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
                             : "THEN:      " + slot_named(stub_.info, slot, "'") + " fails its own check " + v.property +
                                   " in " + v.scalar + ", and it calls '" + callee + "', which is wrong: fix that first";
     }
+    if (!v.step_raised.empty())
+      lead += std::string(lead.empty() ? "" : "\n") + "YOUR STEP RAISES: integrator '" + v.integrator + "' raised at " +
+              v.step_raised_where + ": " + first_line(v.step_raised) +
+              " (the claims whose checks it stops are NOT VERIFIED; the rest NOT CHARACTERISED)";
     for (const auto& c : v.claims)
-      if (c.claimed && !c.holds)
+      if (c.claimed && !c.holds && v.step_raised.empty())
         lead += std::string(lead.empty() ? "" : "\n") + "FALSE CLAIM: integrator '" + v.integrator + "' claims " + c.claim +
                 ": " + c.evidence;
     if (quiet_) {

@@ -316,8 +316,8 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
       const double w = weight_of(r.claim_weights, r.claim_default, c.claim);
       if (c.status == "not claimed" || w <= 0 || !graded) continue;
       ++n_made;
-      const double share = r.claims_weight * w / made, e = c.status == "verified" ? share : 0;
-      n_verified += c.status == "verified";
+      const double share = r.claims_weight * w / made, e = c.status.rfind("verified", 0) == 0 ? share : 0;
+      n_verified += c.status.rfind("verified", 0) == 0;
       if (c.status == "FALSE CLAIM") false_claims.push_back(c.integrator + " " + c.claim);
       earned += e;
       item(ScoreItem::Kind::Claim, c.integrator + " " + c.claim, share, e, c.status, "");

@@ -1,10 +1,13 @@
 #include "harness/isolate.hpp"
 
+#include "harness/process_cpu.hpp"
+
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <set>
 #include <iostream>
 #include <stdexcept>
 
@@ -48,6 +51,10 @@ struct Running {
   std::string result;
   std::string output;
   std::string sanitizer_report;  // the first line of a sanitizer's report in the output, if any
+  double worker_cpu0 = 0;        // the worker's server's CPU when the task started
+  double cpu = 0;                // the code's CPU so far (sampled)
+  Clock::time_point sampled{};   // when `cpu` was last read
+  bool retried = false;
 };
 
 // In a sanitized build (ASan, UBSan) the sanitizer catches a crash before the signal does, prints a
@@ -150,6 +157,8 @@ void write_all(int fd, const std::string& s) {
 TaskResult finish(Running& r, int status) {
   TaskResult t;
   t.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
+  t.cpu_seconds = r.cpu;
+  t.retried = r.retried;
   t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
   t.sanitizer_report = r.sanitizer_report;
   if (WIFSIGNALED(status)) {
@@ -249,7 +258,10 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
   }
 
   const int jobs = o.jobs < 1 ? 1 : o.jobs;
-  const auto timeout = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(o.timeout_seconds));
+  const auto wall_limit = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(std::max(o.timeout_seconds * o.wall_factor, o.timeout_seconds + o.wall_floor)));
+  std::set<std::size_t> retried_;    // tasks started again after a busy machine stopped them
+  std::deque<std::size_t> again;     // ... waiting for a slot, before the rest
   std::deque<Running> running;
   std::size_t next = 0;
   const pid_t self = ::getpid();
@@ -287,10 +299,18 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
     ::fcntl(rp[0], F_SETFL, O_NONBLOCK);
     ::fcntl(op[0], F_SETFL, O_NONBLOCK);
     g_worker = 0;
-    running.push_back(Running{i, w, pid, rp[0], op[0], Clock::now(), {}, {}, {}});
+    Running r{i, w, pid, rp[0], op[0], Clock::now(), {}, {}, {}};
+    r.worker_cpu0 = o.worker_cpu ? o.worker_cpu(w) : 0;
+    r.retried = retried_.count(i) > 0;
+    running.push_back(std::move(r));
   };
 
-  while (next < tasks.size() || !running.empty()) {
+  while (next < tasks.size() || !running.empty() || !again.empty()) {
+    while (!again.empty() && static_cast<int>(running.size()) < jobs) {
+      const std::size_t i = again.front();
+      again.pop_front();
+      start_one(i);
+    }
     while (next < tasks.size() && static_cast<int>(running.size()) < jobs) start_one(seq[next++]);
 
     std::vector<pollfd> fds;
@@ -321,26 +341,69 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         ::kill(-r.pid, SIGKILL);  // descendants it may have left behind
         results[r.index] = finish(r, status);
         done = true;
-      } else if (Clock::now() - r.start > timeout &&
-                 (r.sanitizer_report.empty() || Clock::now() - r.start > timeout + kSanitizerGrace)) {
-        ::kill(-r.pid, SIGKILL);
-        ::kill(r.pid, SIGKILL);
-        ::waitpid(r.pid, &status, 0);
-        TaskResult t;
-        t.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
-        t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
-        t.sanitizer_report = r.sanitizer_report;
-        char buf[96];
-        if (r.sanitizer_report.empty()) {
-          t.status = TaskResult::Status::TimedOut;
-          std::snprintf(buf, sizeof buf, "did not finish within %.0f s and was stopped", o.timeout_seconds);
-          t.detail = buf;
-        } else {  // it was dying, not hanging: the sanitizer had reported an error
-          t.status = TaskResult::Status::Crashed;
-          t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
+      } else {
+        // The code's CPU, read four times a second (issue 47): the limit is on the work it does.
+        const auto now = Clock::now();
+        if (now - r.sampled > std::chrono::milliseconds(250)) {
+          r.cpu = tree_cpu_seconds(r.pid) + (o.worker_cpu ? o.worker_cpu(r.worker) - r.worker_cpu0 : 0);
+          r.sampled = now;
         }
-        results[r.index] = t;
-        done = true;
+        const double wall = std::chrono::duration<double>(now - r.start).count();
+        const bool cpu_out = r.cpu > o.timeout_seconds;
+        const bool wall_out = now - r.start > wall_limit;
+        const bool dying = !r.sanitizer_report.empty() && now - r.start < wall_limit + kSanitizerGrace;
+        if ((cpu_out || wall_out) && !dying) {
+          ::kill(-r.pid, SIGKILL);
+          ::kill(r.pid, SIGKILL);
+          ::waitpid(r.pid, &status, 0);
+          TaskResult t;
+          t.seconds = wall;
+          t.cpu_seconds = r.cpu;
+          t.retried = r.retried;
+          t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
+          t.sanitizer_report = r.sanitizer_report;
+          char buf[400];
+          // Stopped by the wall clock, not the CPU: did it wait (little CPU though a core was free)
+          // or was it starved (the machine busier than its cores)? A starved task is run again once.
+          const double load = load_per_core();
+          const double fair_share = load > 1 ? 1 / load : 1;
+          const bool starved = !cpu_out && r.cpu > 0.1 * fair_share * wall && load > 1;
+          if (!r.sanitizer_report.empty()) {  // it was dying, not hanging: the sanitizer had reported an error
+            t.status = TaskResult::Status::Crashed;
+            t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
+          } else if (cpu_out) {
+            t.status = TaskResult::Status::TimedOut;
+            std::snprintf(buf, sizeof buf, "did not finish within %.0f s of CPU time (%.0f s of wall clock) and was stopped",
+                          o.timeout_seconds, wall);
+            t.detail = buf;
+          } else if (starved && !r.retried) {
+            retried_.insert(r.index);
+            again.push_back(r.index);
+            done = true;
+            if (r.result_fd >= 0) ::close(r.result_fd);
+            if (r.output_fd >= 0) ::close(r.output_fd);
+            busy[static_cast<std::size_t>(r.worker)] = false;
+            if (o.worker_done) o.worker_done(r.worker, false);
+            it = running.erase(it);
+            continue;  // not finished: it starts again when a slot is free
+          } else if (starved) {
+            t.status = TaskResult::Status::Busy;
+            std::snprintf(buf, sizeof buf,
+                          "could not do its work: stopped twice by the wall clock after %.0f s, having had %.1f s of CPU, "
+                          "while the machine was busy (load %.1f per core)",
+                          wall, r.cpu, load);
+            t.detail = buf;
+          } else {
+            t.status = TaskResult::Status::TimedOut;
+            std::snprintf(buf, sizeof buf,
+                          "was stopped by the wall clock after %.0f s having used only %.1f s of CPU: it waits (a sleep, "
+                          "an input it reads, a lock) rather than computes",
+                          wall, r.cpu);
+            t.detail = buf;
+          }
+          results[r.index] = t;
+          done = true;
+        }
       }
       if (done) {
         if (r.result_fd >= 0) ::close(r.result_fd);

@@ -18,7 +18,18 @@ struct TaskResult;
 
 struct IsolationOptions {
   int jobs = 1;                  // children running at once
-  double timeout_seconds = 120;  // wall-clock limit per task
+  // The limit of a task (issue 47: slow is judged by the work done): the CPU seconds of the code
+  // under test, its child's process tree and its worker's server (worker_cpu) together. A wall
+  // clock of wall_factor times as long (and at least wall_floor more) stays, for a task that waits
+  // (sleeps, reads input) and uses no CPU: stopped there, it is TimedOut ("it waited") when it used
+  // little CPU on an idle machine; when the machine was busy and it did work, it is started again
+  // once, and stopped a second time it is Busy, not a verdict on the code.
+  double timeout_seconds = 120;
+  double wall_factor = 3;
+  double wall_floor = 60;
+  // The CPU seconds the server of worker slot w has used so far (out-of-process implementations);
+  // none: the code runs in the task's own process.
+  std::function<double(int)> worker_cpu;
   long memory_limit_mb = 4096;   // address-space limit of a child (not applied under AddressSanitizer)
   bool isolate = true;           // false: run the tasks in this process, one after the other (debugging)
   // Called in the parent as each task starts (index), and as it finishes (index, its result): a
@@ -50,6 +61,7 @@ struct TaskResult {
     Crashed,   // killed by a signal, or exited without a result (std::exit, a stray _exit, ...)
     TimedOut,  // killed after the timeout
     Threw,     // the task threw an exception outside the property machinery (message in `detail`)
+    Busy,      // stopped twice by the wall clock while the machine was too busy for it to do its work
   };
   Status status = Status::Crashed;
   std::string payload;
@@ -60,7 +72,9 @@ struct TaskResult {
   std::string sanitizer_report;
   int signal = 0;
   int exit_code = 0;
-  double seconds = 0;
+  double seconds = 0;      // wall clock
+  double cpu_seconds = 0;  // CPU of the code under test (the task's process tree and its worker's server)
+  bool retried = false;    // started again after the wall clock stopped it on a busy machine
 };
 
 std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,

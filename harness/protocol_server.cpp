@@ -85,6 +85,14 @@ json claims_json(const IntegratorClaims& c) {
   return j;
 }
 
+json domain_json(const StepDomain& d) {
+  json j = json::object();
+  if (d.max_omega > 0) j["max_omega"] = d.max_omega;
+  if (d.max_pi > 0) j["max_pi"] = d.max_pi;
+  if (d.min_h > 0) j["min_h"] = d.min_h;
+  return j;
+}
+
 
 }  // namespace
 
@@ -115,6 +123,7 @@ json hello_for(const SubjectSet& s, const harness::SubjectInfo& info, const std:
               j["claims"] = claims_json(c);
               if (!c.precision.empty()) j["precision"] = c.precision;
               if (!c.precision_reason.empty()) j["precision_reason"] = c.precision_reason;
+              if (c.domain.declared()) j["domain"] = domain_json(c.domain);
             }
           integrators.push_back(j);
           it = integrators.end() - 1;

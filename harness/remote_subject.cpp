@@ -1,6 +1,8 @@
 #include "harness/remote_subject.hpp"
 
 #include "harness/inert_text.hpp"
+#include "harness/isolate.hpp"
+#include "harness/process_cpu.hpp"
 #include "harness/submission_intake.hpp"
 #include "harness/slot_names.hpp"
 
@@ -18,6 +20,7 @@
 #include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -299,6 +302,16 @@ json Connection::request_text(ServerProcess& s, const std::string& text, long id
   return rep;
 }
 
+double Connection::server_cpu_seconds(int w) const {
+  // The server of slot w (a session runs in a fork of it), or this process's own copy.
+  pid_t pid = -1;
+  if (w >= 0 && static_cast<std::size_t>(w) < pool_.size() && pool_[static_cast<std::size_t>(w)].running())
+    pid = pool_[static_cast<std::size_t>(w)].pid;
+  else if (own_.running() && own_pid_ == ::getpid())
+    pid = own_.pid;
+  return pid > 0 ? harness::tree_cpu_seconds(pid) : 0;
+}
+
 ServerProcess& Connection::server_for_this_process() {
   const pid_t me = ::getpid();
   const int w = harness::current_worker();
@@ -560,6 +573,25 @@ RemoteDescription parse_hello(const json& h) {
       }
       if (i.contains("precision_reason") && i["precision_reason"].is_string())
         x.claims.precision_reason = i["precision_reason"].get<std::string>();
+      // Where the step is meant to work (issue 47): positive numbers, each optional.
+      if (i.contains("domain") && i["domain"].is_object() && !i["domain"].empty()) {
+        x.has_claims = true;
+        x.claims.integrator = x.name;
+        for (const auto& [k, v] : i["domain"].items()) {
+          double* field = k == "max_omega" ? &x.claims.domain.max_omega
+                          : k == "max_pi"  ? &x.claims.domain.max_pi
+                          : k == "min_h"   ? &x.claims.domain.min_h
+                                           : nullptr;
+          if (!field) {
+            d.unchecked.push_back("integrator '" + x.name + "' declares its domain with '" + harness::inert_text(k) +
+                                  "', which the suite does not know (max_omega, max_pi, min_h)");
+            continue;
+          }
+          if (!v.is_number() || !(v.get<double>() > 0) || !std::isfinite(v.get<double>()))
+            throw bad("integrator '" + x.name + "': domain '" + k + "' must be a positive number, got " + v.dump());
+          *field = v.get<double>();
+        }
+      }
       d.integrators.push_back(std::move(x));
     }
   // What the implementation says of itself is its own text (issue 46): each bounded, notes only on
@@ -719,6 +751,10 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   info.prepare_worker = [conn](int w) { conn->prepare_worker(w); };
   info.out_of_process = true;
   info.worker_done = [conn](int w, bool normally) { conn->worker_done(w, normally); };
+  info.worker_cpu_seconds = [conn](int w) { return conn->server_cpu_seconds(w); };
+  // In a check's own process, its case budget counts the CPU of the code under test: this
+  // process's and its server's (issue 47).
+  set_code_cpu_clock([conn] { return harness::self_cpu_seconds() + conn->server_cpu_seconds(harness::current_worker()); });
   SubjectSet s;
   s.name = name;
   s.description = d.description.empty() ? "a " + d.language + " implementation"

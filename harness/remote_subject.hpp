@@ -31,9 +31,9 @@ inline constexpr int kMaxWorkers = 256;  // the isolation's --jobs limit
 
 // The implementation's process failed (could not start, died, wrote something that is not the
 // protocol). The message names the slot and includes what the program wrote to stderr, if known.
-class RemoteError : public std::runtime_error {
+class RemoteError : public ProcessFailure {
  public:
-  using std::runtime_error::runtime_error;
+  using ProcessFailure::ProcessFailure;
 };
 
 // The implementation's own code raised an error for a call: the message carries its traceback.
@@ -105,6 +105,9 @@ class Connection {
 
   // The isolation's worker hooks (harness/isolate.hpp), in the process that created this.
   void prepare_worker(int w);
+  // The CPU seconds the server of worker slot w (or this process's own copy) and everything it
+  // started have used so far (issue 47: a check's limit counts the code's CPU).
+  double server_cpu_seconds(int w) const;
   void worker_done(int w, bool ended_normally);
 
   const std::vector<std::string>& argv() const { return argv_; }

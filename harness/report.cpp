@@ -2,6 +2,7 @@
 
 #include "harness/html_page.hpp"
 #include "harness/inert_text.hpp"
+#include "harness/integrator_verdicts.hpp"
 #include "harness/source_calls.hpp"
 
 #include "harness/svg.hpp"
@@ -78,24 +79,14 @@ bool nothing_ran(const std::map<std::string, const Verdict*>& by_scalar) {
   return true;
 }
 
-// The table cell of a verdict (issue 13): an integrator property reports what it found about the
-// claim it checks: the measured order where the slope belongs, and "not held (unclaimed)" for an
-// invariant the integrator does not keep and does not claim ("unclaimed, not held"), not a bare PASS.
+// The table cell of a verdict: its word, decided once (harness/integrator_verdicts.hpp, issue 47),
+// with what a pass measured: the order where one was measured, the cases run of those planned when
+// the time budget was spent, the worst residual.
 std::string verdict_cell(const Verdict& v, bool exact_column) {
-  std::string cell = outcome_name(v.outcome);
+  std::string cell = v.word.empty() ? outcome_name(v.outcome) : v.word;
   if (v.outcome != Outcome::Pass) return cell;
-  for (const auto& f : v.claims) {
-    if (f.claim == "order") {
-      const auto at = f.evidence.find("measured order ");
-      if (at != std::string::npos) {
-        const std::string num = f.evidence.substr(at + 15, f.evidence.find_first_of(", ", at + 15) - at - 15);
-        return cell + " p = " + num;
-      }
-      continue;
-    }
-    if (!f.claimed && !f.holds) return "unclaimed, not held";
-    if (!f.claimed && f.holds) cell = "unclaimed, holds";
-  }
+  for (const auto& f : v.claims)
+    if (f.claim == "order" && f.measured.rfind("order ", 0) == 0) return cell + " p = " + f.measured.substr(6);
   const bool plain = cell == "PASS";
   if (plain && v.cases_planned > v.cases)  // the time budget was spent: cases run / planned
     cell += " " + std::to_string(v.cases) + "/" + std::to_string(v.cases_planned);
@@ -106,7 +97,8 @@ std::string verdict_cell(const Verdict& v, bool exact_column) {
 std::string summary_counts(const CheckResult& r) {
   std::ostringstream os;
   bool first = true;
-  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error}) {
+  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error,
+                    Outcome::NotCharacterised}) {
     const int n = r.count(o);
     if (n == 0 && o != Outcome::Pass && o != Outcome::Fail) continue;
     os << (first ? "" : ", ") << n << " " << outcome_name(o);
@@ -188,6 +180,25 @@ std::string md_cell(const std::string& s) { return md_inline(s); }
 // A code block that no text inside can close (issue 46).
 std::string fence(const std::string& s) { return md_fenced(s); }
 
+// " (declared domain: |Omega| <= 1e+06, h >= 1e-09; nothing outside it is checked)", or empty.
+std::string domain_words(const StepDomain& d) {
+  if (!d.declared()) return {};
+  std::string w;
+  char buf[64];
+  if (d.max_omega > 0) std::snprintf(buf, sizeof buf, "|Omega| <= %.3g", d.max_omega), w += buf;
+  if (d.max_pi > 0) std::snprintf(buf, sizeof buf, "%s|state| <= %.3g", w.empty() ? "" : ", ", d.max_pi), w += buf;
+  if (d.min_h > 0) std::snprintf(buf, sizeof buf, "%s|h| >= %.3g", w.empty() ? "" : ", ", d.min_h), w += buf;
+  return " (declared domain: " + w + "; nothing outside it is checked)";
+}
+
+// Whether the verdict is a check of a claim its integrator made.
+bool judges_a_claim_made(const CheckResult& r, const Verdict& v) {
+  if (v.integrator.empty()) return false;
+  for (const auto& i : r.integrators)
+    if (i.name == v.integrator) return i.has_claims && claims_any(i.claims, judged_claims(v));
+  return false;
+}
+
 std::string anchor_of(const Verdict& v) {
   return file_safe(v.property + "-" + v.scalar + (v.integrator.empty() ? "" : "-" + v.integrator));
 }
@@ -213,39 +224,20 @@ std::string area_of(const Verdict& v, const Catalogue* c) {
 }
 
 std::vector<ClaimRow> claim_rows(const CheckResult& r, const IntegratorInfo& integrator) {
-  // The claims an integrator can declare, then any other claim a check reported on.
-  std::vector<std::string> names = claim_names();
-  for (const auto& v : r.verdicts)
-    if (v.integrator == integrator.name)
-      for (const auto& f : v.claims)
-        if (std::find(names.begin(), names.end(), f.claim) == names.end()) names.push_back(f.claim);
+  // The decisions of the check (harness/integrator_verdicts.hpp), made once; a result assembled
+  // without them (a test's) is decided here by the same function.
+  const std::vector<ClaimDecision> decisions =
+      integrator.decisions.empty() ? decide_claims(r, integrator) : integrator.decisions;
   std::vector<ClaimRow> rows;
-  for (const auto& claim : names) {
+  for (const auto& d : decisions) {
     ClaimRow row;
-    row.claim = claim;
-    const std::string declared = claimed_text(integrator.claims, claim);
-    bool claimed = declared != "no";
-    bool found = false, holds = true;
-    std::vector<std::string> evidence;
-    for (const auto& v : r.verdicts) {
-      if (v.integrator != integrator.name) continue;
-      for (const auto& f : v.claims) {
-        if (f.claim != claim) continue;
-        found = true;
-        claimed = claimed || f.claimed;
-        holds = holds && f.holds;
-        evidence.push_back(v.scalar + ", " + v.property + ": " + f.evidence);
-      }
-    }
-    row.claimed = declared != "no" ? declared : claimed ? "yes" : "no";
-    if (!found)
-      row.status = claimed ? (r.narrowed ? "claimed, not selected in this run" : "claimed, NOT CHECKED by any property")
-                           : "-";
-    else if (claimed)
-      row.status = holds ? "verified" : "FALSE CLAIM";
-    else
-      row.status = holds ? "holds, not claimed" : "does not hold (not claimed)";
-    for (const auto& e : evidence) row.evidence += (row.evidence.empty() ? "" : "\n") + e;
+    row.claim = d.claim;
+    row.claimed = d.claimed;
+    row.status = d.word;
+    row.measured = d.measured;
+    row.why = d.why;
+    row.fails = fails_check(d);
+    for (const auto& e : d.evidence) row.evidence += (row.evidence.empty() ? "" : "\n") + e;
     rows.push_back(row);
   }
   return rows;
@@ -394,7 +386,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
       auto it = by.find(s);
       std::string cell = "-";
       if (it != by.end()) cell = verdict_cell(*it->second, std::string(s) == "exact");
-      os << std::setw(20) << cell;
+      os << std::setw(20) << cell + " ";  // a cell wider than its column still ends with a space
     }
     os << "\n";
   }
@@ -468,8 +460,15 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     std::ostringstream rows;
     rows << std::left;
     for (const auto& row : claim_rows(r, integ))
-      if (row.status != "-" && row.status.find("not selected") == std::string::npos)
+      if (row.status != "-" && row.status.find("not selected") == std::string::npos) {
         rows << "\n  " << std::setw(18) << row.claim << std::setw(6) << row.claimed << row.status;
+        if (!row.measured.empty()) rows << ": " << row.measured;
+        // Why, where it is not in the measurement: what kept a claim from being decided, what
+        // contradicts a claim made.
+        if (!row.why.empty() && (row.fails || row.status.rfind("not established", 0) == 0 ||
+                                 row.status.find("by the checks that ran") != std::string::npos))
+          rows << "\n  " << std::setw(24) << "" << "(" << row.why << ")";
+      }
     if (rows.str().empty()) continue;
     os << "\nintegrator '" << integ.name << "'";
     if (!integ.form.is_notes()) os << " (state: " << state_form_words(integ.form) << ")";
@@ -478,14 +477,25 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
          << (integ.claims.precision_reason.empty() ? std::string("")
                                                     : ": " + bounded_text(inert_text(integ.claims.precision_reason), 300))
          << ")";
-    os << " claims:" << rows.str() << "\n";
+    os << " claims" << domain_words(integ.claims.domain) << ":" << rows.str() << "\n";
   }
   if (details) {
     bool header = false;
-    for (const auto& v : r.verdicts) {
-      if (!is_problem(v.outcome)) continue;
+    std::set<std::string> raised;  // one step raise in full per integrator and message (issue 47)
+    std::vector<const Verdict*> ordered;
+    for (const auto& v : r.verdicts)
+      if (is_problem(v.outcome)) ordered.push_back(&v);
+    std::stable_sort(ordered.begin(), ordered.end(), [&](const Verdict* a, const Verdict* b) {
+      return judges_a_claim_made(r, *a) > judges_a_claim_made(r, *b);
+    });
+    for (const Verdict* vp : ordered) {
+      const Verdict& v = *vp;
       if (!header) os << "\ndetails of every verdict that is not a pass or not provided:\n";
       header = true;
+      if (!v.step_raised.empty() && !raised.insert(v.integrator + "\n" + v.step_raised).second) {
+        os << "\n" << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]: your step raised, as above\n";
+        continue;
+      }
       os << "\n" << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]  spec " << v.spec;
       os << "\n  " << v.title;
       std::istringstream lines(v.message);
@@ -564,9 +574,47 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
         md << "\n";
       }
     }
+    // A step that raises: one line per integrator and message, with the checks it stopped (issue 47).
+    std::vector<std::pair<std::string, std::vector<const Verdict*>>> raises;
+    for (const Verdict* v : problems) {
+      if (v->step_raised.empty()) continue;
+      const std::string key = v->integrator + "\n" + v->step_raised;
+      auto it = std::find_if(raises.begin(), raises.end(), [&](const auto& g) { return g.first == key; });
+      if (it == raises.end()) raises.push_back({key, {v}});
+      else it->second.push_back(v);
+    }
+    // The integrator's domain check says where it raises (properties/integrator_domain.cpp): its
+    // line leads, and it is not repeated below.
+    std::set<const Verdict*> said;
+    auto domain_of = [&](const std::string& integrator) -> const Verdict* {
+      for (const Verdict* v : problems)
+        if (v->integrator == integrator && v->property.find("integrator_domain") != std::string::npos) return v;
+      return nullptr;
+    };
+    for (const auto& [key, vs] : raises) {
+      const Verdict* domain = domain_of(vs.front()->integrator);
+      md << "- **integrator `" << vs.front()->integrator << "`: your step raises**: ";
+      if (domain) {
+        std::string line = first_line(domain->message);
+        if (line.rfind(domain->integrator + ": ", 0) == 0) line = line.substr(domain->integrator.size() + 2);
+        md << md_cell(line);
+        for (const Verdict* v : problems)
+          if (v->property == domain->property && v->integrator == domain->integrator) said.insert(v);
+      } else {
+        md << "at " << md_cell(vs.front()->step_raised_where) << ": " << md_cell(first_line(vs.front()->step_raised));
+      }
+      md << ". The claimed checks it stopped: ";
+      for (std::size_t i = 0; i < vs.size(); ++i)
+        md << (i ? ", " : "") << "[`" << vs[i]->property << "` " << vs[i]->scalar << "](#" << anchor_of(*vs[i]) << ")";
+      md << "\n";
+    }
+    // Then the rest, an integrator's claimed checks before the ones nobody claimed.
+    std::stable_sort(problems.begin(), problems.end(), [&](const Verdict* a, const Verdict* b) {
+      return judges_a_claim_made(r, *a) > judges_a_claim_made(r, *b);
+    });
     std::vector<std::pair<std::string, std::vector<const Verdict*>>> groups;
     for (const Verdict* v : problems) {
-      if (rc.explained.count(v->property)) continue;
+      if (rc.explained.count(v->property) || !v->step_raised.empty() || said.count(v)) continue;
       const std::string key = row_name(*v) + "|" + outcome_name(v->outcome);
       auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == key; });
       if (it == groups.end()) groups.push_back({key, {v}});
@@ -625,7 +673,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       for (std::size_t i = 0; i < integ.steps.size(); ++i) md << (i ? ", " : "") << "`" << integ.steps[i] << "`";
       md << "; scalars: ";
       for (std::size_t i = 0; i < integ.scalars.size(); ++i) md << (i ? ", " : "") << integ.scalars[i];
-      md << (integ.has_claims ? "" : "; no claims declared") << ".\n\n";
+      md << (integ.has_claims ? "" : "; no claims declared") << domain_words(integ.claims.domain) << ".\n\n";
       if (!integ.form.is_notes())
         md << "State: " << describe_state_form(integ.form) << " (declared `" << state_form_words(integ.form)
            << "`); the suite reads it as the notes' (Pi, O) by " << state_form_conversion(integ.form)
@@ -638,12 +686,16 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       bool any_row = false;
       for (const auto& row : claim_rows(r, integ)) any_row = any_row || row.status != "-";
       if (!any_row) md << "Nothing claimed, and no property reported on any claim.\n\n";
-      else md << "| claim | claimed | finding | evidence |\n|---|---|---|---|\n";
+      else md << "| claim | claimed | finding | measured | evidence |\n|---|---|---|---|---|\n";
       for (const auto& row : claim_rows(r, integ)) {
         if (row.status == "-") continue;  // neither claimed nor checked
-        std::string status = row.status;
-        if (status == "FALSE CLAIM") status = "**FALSE CLAIM**";
-        md << "| " << row.claim << " | " << row.claimed << " | " << status << " | " << md_cell(row.evidence) << " |\n";
+        std::string status = md_cell(row.status);
+        if (row.fails) status = "**" + status + "**";
+        std::string finding = row.measured.empty() ? "" : md_cell(row.measured);
+        if (!row.why.empty() && row.status.rfind("verified", 0) != 0)
+          finding += (finding.empty() ? "" : "; ") + md_cell(row.why);
+        md << "| " << row.claim << " | " << row.claimed << " | " << status << " | " << finding << " | " << md_cell(row.evidence)
+           << " |\n";
       }
       md << "\n";
       if (std::find(integ.steps.begin(), integ.steps.end(), "rigid_body_step") == integ.steps.end() &&
@@ -837,7 +889,7 @@ std::string junit_report(const CheckResult& r) {
   for (const auto& v : r.verdicts) {
     if (v.outcome == Outcome::Fail) ++failures;
     if (v.outcome == Outcome::Crash || v.outcome == Outcome::Timeout || v.outcome == Outcome::Error) ++errors;
-    if (v.outcome == Outcome::NotProvided) ++skipped;
+    if (v.outcome == Outcome::NotProvided || v.outcome == Outcome::NotCharacterised) ++skipped;
   }
   skipped += static_cast<int>(r.left_to_thorough.size());
   const std::size_t tests = r.verdicts.size() + r.left_to_thorough.size();
@@ -874,9 +926,16 @@ std::string junit_report(const CheckResult& r) {
       case Outcome::NotProvided:
         x << "      <skipped message=\"NOT PROVIDED: " << xml_escape(v.message) << "\"/>\n";
         break;
+      case Outcome::NotCharacterised:
+        x << "      <skipped message=\"NOT CHARACTERISED: " << xml_escape(first_line(v.message)) << "\"/>\n";
+        break;
       case Outcome::Pass:
         break;
     }
+    // The verdict's word (issue 47: "holds (not claimed)", "does not hold (not claimed)", ...), as
+    // every other view shows it.
+    if (!v.integrator.empty() && !v.word.empty())
+      x << "      <properties><property name=\"verdict\" value=\"" << xml_escape(v.word) << "\"/></properties>\n";
     x << "    </testcase>\n";
   }
   for (const auto& c : r.left_to_thorough)
@@ -906,7 +965,8 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   j["scalar_unavailable"] = r.info.scalar_unavailable;
   j["provided"] = r.provided;
   json counts;
-  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error})
+  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error,
+                    Outcome::NotCharacterised})
     counts[outcome_name(o)] = r.count(o);
   j["counts"] = counts;
   j["left_to_thorough"] = r.left_to_thorough;
@@ -915,10 +975,16 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   for (const auto& i : r.integrators) {
     json claims = json::array();
     for (const auto& row : claim_rows(r, i))
-      claims.push_back({{"claim", row.claim}, {"claimed", row.claimed}, {"status", row.status}, {"evidence", row.evidence}});
+      claims.push_back({{"claim", row.claim}, {"claimed", row.claimed}, {"status", row.status}, {"measured", row.measured},
+                        {"why", row.why}, {"fails", row.fails}, {"evidence", row.evidence}});
     json one{{"name", i.name}, {"steps", i.steps}, {"scalars", i.scalars}, {"claims", claims}};
     if (!i.form.is_notes()) one["state"] = state_form_words(i.form);
     if (!i.claims.precision.empty()) one["precision"] = {{"stated", i.claims.precision}, {"reason", i.claims.precision_reason}};
+    json domain = json::object();
+    if (i.claims.domain.max_omega > 0) domain["max_omega"] = i.claims.domain.max_omega;
+    if (i.claims.domain.max_pi > 0) domain["max_pi"] = i.claims.domain.max_pi;
+    if (i.claims.domain.min_h > 0) domain["min_h"] = i.claims.domain.min_h;
+    one["domain"] = domain;
     integrators.push_back(std::move(one));
   }
   j["integrators"] = integrators;

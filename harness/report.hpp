@@ -65,11 +65,14 @@ void write_report_dir(const CheckResult& r, const std::string& dir, const Catalo
 void write_file_atomically(const std::string& path, const std::string& content);
 
 // The claims table of one integrator: for each claim, what was claimed and what the properties found.
+// A claim's decision (harness/integrator_verdicts.hpp) as the reports render it.
 struct ClaimRow {
   std::string claim;
-  std::string claimed;  // "2" for an order, "yes"/"no" otherwise
-  std::string status;   // "verified", "FALSE CLAIM", "holds, not claimed", "does not hold (not claimed)",
-                        // "claimed, not checked by any property", "-"
+  std::string claimed;   // "2" for an order, "yes"/"no" otherwise
+  std::string status;    // the decided word: "verified", "FALSE CLAIM", "NOT VERIFIED", "holds (not claimed)", ...
+  std::string measured;  // "order 1.00 (double)", "loses energy: ..."
+  std::string why;       // what kept it from being decided, or what contradicts it
+  bool fails = false;    // a claim made and not shown true
   std::string evidence;
 };
 std::vector<ClaimRow> claim_rows(const CheckResult& r, const IntegratorInfo& integrator);

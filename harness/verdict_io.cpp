@@ -24,7 +24,7 @@ double number_from_json(const json& j) {
 
 Outcome outcome_from_name(const std::string& name) {
   for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout,
-                    Outcome::Error})
+                    Outcome::Error, Outcome::NotCharacterised})
     if (name == outcome_name(o)) return o;
   throw std::invalid_argument("unknown outcome '" + name + "'");
 }
@@ -70,8 +70,11 @@ json to_json(const Verdict& v) {
   j["series"] = series;
   json claims = json::array();
   for (const auto& c : v.claims)
-    claims.push_back({{"claim", c.claim}, {"claimed", c.claimed}, {"holds", c.holds}, {"evidence", c.evidence}});
+    claims.push_back({{"claim", c.claim}, {"claimed", c.claimed}, {"holds", c.holds}, {"evidence", c.evidence},
+                      {"complete", c.complete}, {"measured", c.measured}});
   j["claims"] = claims;
+  if (!v.word.empty()) j["word"] = v.word;
+  if (!v.step_raised.empty()) j["step_raised"] = {{"message", v.step_raised}, {"where", v.step_raised_where}};
   return j;
 }
 
@@ -113,7 +116,13 @@ Verdict verdict_from_json(const json& j) {
   }
   for (const auto& c : j.at("claims"))
     v.claims.push_back(ClaimFinding{c.at("claim").get<std::string>(), c.at("claimed").get<bool>(),
-                                    c.at("holds").get<bool>(), c.at("evidence").get<std::string>()});
+                                    c.at("holds").get<bool>(), c.at("evidence").get<std::string>(),
+                                    c.value("complete", true), c.value("measured", std::string())});
+  v.word = j.value("word", std::string());
+  if (j.contains("step_raised")) {
+    v.step_raised = j["step_raised"].value("message", std::string());
+    v.step_raised_where = j["step_raised"].value("where", std::string());
+  }
   return v;
 }
 

@@ -64,7 +64,7 @@ GM_PROPERTY(integrator_unit_quaternion, integrator_scalars,
              .needs = {},
              .negative_controls = {"quaternion_euler_claims_unit_norm"},
              .cases = {.d = 10, .mp = 2, .q = 0},
-             .step = StepKind::RigidBodyQuaternion});
+             .step = StepKind::RigidBodyQuaternion, .judges = {"unit_quaternion"}});
 
 }  // namespace properties_integrator_quaternion
 }  // namespace gm

@@ -1,10 +1,13 @@
 #include "properties/runner.hpp"
 
+#include "properties/support/step_guard.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include <rapidcheck.h>
 
 #include <chrono>
+#include <ctime>
+#include <functional>
 #include <cstdio>
 #include <cstdlib>
 #include <optional>
@@ -28,6 +31,7 @@ const char* outcome_name(Outcome o) {
     case Outcome::Crash: return "CRASH";
     case Outcome::Timeout: return "TIMEOUT";
     case Outcome::Error: return "ERROR";
+    case Outcome::NotCharacterised: return "NOT CHARACTERISED";
   }
   return "?";
 }
@@ -84,7 +88,8 @@ constexpr const char* kShrinkStopped = "geomech: shrinking stopped by its time b
 class SilentListener : public rc::detail::TestListener {
  public:
   SilentListener(Clock::time_point start, const RunOptions& o, int planned)
-      : start_(start), case_budget_(o.case_budget_seconds), shrink_budget_(o.shrink_budget_seconds), planned_(planned) {}
+      : start_(start), cpu_start_(code_cpu_seconds()), case_budget_(o.case_budget_seconds),
+        shrink_budget_(o.shrink_budget_seconds), planned_(planned) {}
 
   int discarded = 0;
   std::string first_reason;
@@ -103,11 +108,13 @@ class SilentListener : public rc::detail::TestListener {
     if (d.result.type == Type::Failure) {
       failed = true;
       failure_time_ = Clock::now();
+      failure_cpu_ = code_cpu_seconds();
       keep(d);
       return;
     }
     ++passed_;
-    if (case_budget_ > 0 && passed_ < planned_ && seconds_since(start_) > case_budget_) throw CaseBudgetSpent{passed_};
+    if (case_budget_ > 0 && passed_ < planned_ && code_cpu_seconds() - cpu_start_ > case_budget_)
+      throw CaseBudgetSpent{passed_};
   }
   void onShrinkTried(const rc::detail::CaseDescription& d, bool accepted) override {
     if (accepted) keep(d);
@@ -116,17 +123,23 @@ class SilentListener : public rc::detail::TestListener {
 
   // During shrinking: whether the shrink budget is spent (each further candidate is then discarded
   // before it runs, so shrinking ends quickly with the smallest failure found).
-  bool shrink_budget_spent() const {
-    return failed && shrink_budget_ > 0 && seconds_since(failure_time_) > shrink_budget_;
-  }
+  bool shrink_budget_spent() const { return failed && shrink_budget_ > 0 && code_cpu_seconds() - failure_cpu_ > shrink_budget_; }
 
  private:
   static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
   void keep(const rc::detail::CaseDescription& d) {
     failure_description = d.result.description;
     failure_example = d.example ? d.example() : decltype(failure_example){};
+    failure_raise = current_step_raise();  // the case that just ran (issue 47)
   }
+
+ public:
+  // The step's raise in the failing case kept (the one reported), if the step raised there.
+  std::optional<StepRaise> failure_raise;
+
+ private:
   Clock::time_point start_, failure_time_;
+  double cpu_start_ = 0, failure_cpu_ = 0;
   double case_budget_, shrink_budget_;
   int planned_;
   int passed_ = 0;
@@ -267,14 +280,28 @@ int default_cases(const Property& p, ScalarKind k) {
   return 1;
 }
 
+thread_local const RunOptions* run_options_in_progress = nullptr;
+
+std::function<double()>& code_cpu_clock() {
+  static std::function<double()> clock;
+  return clock;
+}
+
 template <class Fn>
 void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& o, Fn&& fn) {
   const auto start = Clock::now();
+  struct Current {
+    const RunOptions* saved = run_options_in_progress;
+    explicit Current(const RunOptions& o) { run_options_in_progress = &o; }
+    ~Current() { run_options_in_progress = saved; }
+  } current(o);
   static const RcEnv no_env;
   const RcEnv& env = o.honour_rc_params ? rc_env() : no_env;
   std::uint64_t base = o.seed;
   if (env.seed) base = *env.seed;
-  v.seed = derive_seed(base, p.id + "/" + v.scalar + (v.integrator.empty() ? "" : "/" + v.integrator));
+  // Not the integrator's name (issue 47): every integrator of a subject is checked on the same draws,
+  // so that identical steps get identical verdicts, to the last digit of their evidence.
+  v.seed = derive_seed(base, p.id + "/" + v.scalar);
 
   rc::detail::TestParams params;
   params.seed = v.seed;
@@ -305,11 +332,16 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
             if (listener.shrink_budget_spent()) RC_DISCARD(kShrinkStopped);
             recorded_series().clear();
             recorded_notes().clear();
+            current_step_raise().reset();
             try {
               fn();
             } catch (const SlotMissing& e) {
               missing_slot = e.slot();
               throw;
+            } catch (const OutsideDomain& e) {
+              // A state or step outside the integrator's declared domain: not checked (issue 47).
+              current_step_raise().reset();
+              RC_DISCARD(e.what());
             }
           }),
           metadata, params, listener, with);
@@ -377,6 +409,10 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
         example = listener.failure_example;
       }
       for (const auto& [type, value] : example) v.counterexample.emplace_back(in_language(pretty_type(type)), value);
+      if (listener.failure_raise) {
+        v.step_raised = listener.failure_raise->message;
+        v.step_raised_where = listener.failure_raise->where;
+      }
       // A state-dependent failure replays as the whole sequence (the seed), not as its last case.
       if (!state_between_calls) v.reproduce = rc::detail::reproduceMapToString({{metadata.id, failure.reproduce}});
     }
@@ -453,7 +489,28 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
     const IntegratorClaims* claims = s.claims_for(integrator.name);
     IntegratorClaims none;
     none.integrator = integrator.name;
-    run_checked(v, p, k, o, [&] { (*ibody)(subject, integrator, claims ? *claims : none); });
+    const Integrator<T> guarded_integrator = guarded(integrator);  // a raise is told as one (issue 47)
+    // A claim is verified only on all its planned cases (issue 47): no time budget cuts them (a
+    // slow step takes longer; the timeout still stops a hang).
+    RunOptions all_cases = o;
+    all_cases.case_budget_seconds = 0;
+    struct Domain {  // the integrator's declared domain, for the draws and the guard (issue 47)
+      StepDomain saved = current_step_domain();
+      explicit Domain(const StepDomain& d) { current_step_domain() = d; }
+      ~Domain() { current_step_domain() = saved; }
+    } domain(claims ? claims->domain : StepDomain{});
+    run_checked(v, p, k, all_cases, [&] { (*ibody)(subject, guarded_integrator, claims ? *claims : none); });
+    // The step raised in the case reported: a claimed property FAILS (its claim could not be
+    // verified); one that judges only claims nobody made, or none, could measure nothing and says so.
+    if (v.outcome == Outcome::Fail && !v.step_raised.empty() &&
+        !claims_any(claims ? *claims : none, p.judges)) {
+      v.outcome = Outcome::NotCharacterised;
+      v.message = "not characterised: your step raised at " + v.step_raised_where + ": " + v.step_raised +
+                  " (nothing of " + (p.judges.empty() ? std::string("this") : p.judges.front()) +
+                  " was claimed, and nothing could be measured)";
+      v.counterexample.clear();
+      v.reproduce.clear();
+    }
     out.push_back(std::move(v));
   }
   if (out.empty()) {
@@ -466,6 +523,29 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
 }
 
 }  // namespace
+
+void set_code_cpu_clock(std::function<double()> clock) { code_cpu_clock() = std::move(clock); }
+
+double code_cpu_seconds() {
+  if (code_cpu_clock()) return code_cpu_clock()();
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+const RunOptions& current_run_options() {
+  static const RunOptions defaults;
+  return run_options_in_progress ? *run_options_in_progress : defaults;
+}
+
+bool claims_any(const IntegratorClaims& c, const std::vector<std::string>& judged) {
+  for (const auto& claim : judged) {
+    if (claim == "order" && c.order > 0) return true;
+    for (const auto& b : kBooleanClaims)
+      if (claim == b.name && c.*b.member) return true;
+  }
+  return false;
+}
 
 std::vector<Verdict> run_property(const Property& p, const SubjectSet& s, ScalarKind k, const RunOptions& o) {
   // A slot's own definition check compares the subject's result with the notes' formula: its

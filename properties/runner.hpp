@@ -14,7 +14,9 @@
 
 namespace gm {
 
-enum class Outcome { Pass, Fail, NotProvided, Crash, Timeout, Error };
+// NotCharacterised (issue 47): an integrator property that judges only claims nobody made could
+// measure nothing (the step raised); it neither passes nor fails the check.
+enum class Outcome { Pass, Fail, NotProvided, Crash, Timeout, Error, NotCharacterised };
 const char* outcome_name(Outcome o);
 
 struct RunOptions {
@@ -33,7 +35,21 @@ struct RunOptions {
   // 0: no budget (ctest's reference runs and negative controls).
   double case_budget_seconds = 0;
   double shrink_budget_seconds = 0;
+  // The subject runs out of process (behind the protocol): every step is a round trip, so a long
+  // run of a claim nobody made is characterised over a shorter run, and its finding says it is not
+  // the evidence that would verify the claim (issue 47). In process, it is run in full.
+  bool out_of_process = false;
 };
+
+// The CPU seconds of the code under test so far: the clock of the case and shrink budgets (issue
+// 47: a busy machine does not cut a check's cases; the work done does). By default this process's
+// CPU; an implementation behind the protocol adds its server's (harness/remote_subject.cpp).
+void set_code_cpu_clock(std::function<double()> clock);
+double code_cpu_seconds();
+
+// The options of the property run in progress on this thread (set by run_property): what a
+// property may adapt to, such as RunOptions::out_of_process.
+const RunOptions& current_run_options();
 
 struct Verdict {
   std::string subject;
@@ -60,6 +76,14 @@ struct Verdict {
   std::vector<Series> series; // data for pictures, from the last case run
   std::vector<std::string> notes;  // remarks from the last case run (e.g. an unclaimed invariant that holds)
   std::vector<ClaimFinding> claims;  // integrator properties: what they found about each claim
+  // Integrator properties (issue 47): the step raised in the case this verdict reports: its message
+  // and where it was called; empty otherwise.
+  std::string step_raised;
+  std::string step_raised_where;
+  // What every view shows for this verdict, decided once (harness/integrator_verdicts.hpp): for an
+  // integrator property, "PASS", "FALSE CLAIM", "holds (not claimed)", "does not hold (not claimed)",
+  // "not established (not claimed): ...", "NOT CHARACTERISED"; empty for the others (the outcome).
+  std::string word;
 
   std::string key() const;    // subject/property/scalar[/integrator]: RapidCheck's test id
 };
@@ -72,6 +96,9 @@ std::vector<Verdict> run_property(const Property& p, const SubjectSet& subject, 
 // Seed used for a given property key and base seed (deterministic, independent of the subject so
 // every subject of a class sees the same inputs).
 std::uint64_t derive_seed(std::uint64_t base, const std::string& property_key);
+
+// Whether the integrator claims any of `judged` (claim names: "order", "casimir", ...).
+bool claims_any(const IntegratorClaims& c, const std::vector<std::string>& judged);
 
 // Human-readable verdict, several lines for anything but a pass.
 std::string format_verdict(const Verdict& v);

@@ -146,30 +146,41 @@ TEST(Generators, IntegersShrinkTowardZero) {
   EXPECT_EQ(gen::zigzag(3), 2);
 }
 
-// The long-time energy classifier (support/long_time.hpp) on synthetic errors: a linear drift
-// under an oscillation, a pure oscillation (a window shorter than its period included), round-off,
-// and a blow-up.
-TEST(LongTime, ClassifiesDriftOscillationRoundoffAndBlowup) {
-  std::vector<double> t, drift, wave, slow, tiny, blowup;
+// The long-time energy classifier (support/long_time.hpp) on synthetic errors whose nature is
+// known by construction: a linear drift under an oscillation (down and up), a pure oscillation, a
+// slow one (10 periods in the run), round-off, a blow-up, and the issue-47 case: a monotone loss
+// that saturates early (backward Euler loses half of its energy and then changes little), which the
+// maximum over windows called bounded.
+TEST(LongTime, TellsOscillationLossGrowthAndRoundoffApart) {
+  std::vector<double> t, loss, growth, wave, slow, tiny, blowup, saturating;
   for (int k = 0; k <= 20000; ++k) {
     const double s = k / 8.0;
     t.push_back(s);
-    drift.push_back(1e-6 * std::sin(s) + 1e-9 * s);  // drift 2.5e-6 over the run > 2 x amplitude 1e-6
+    loss.push_back(1e-6 * std::sin(s) - 1e-9 * s);   // drift -2.5e-6 over the run, 4 x amplitude 1e-6 and more
+    growth.push_back(1e-6 * std::sin(s) + 1e-9 * s);
     wave.push_back(1e-4 * (1 - std::cos(s)));
-    slow.push_back(1e-4 * std::sin(s / 40));         // period ~250: 10 periods in the run, windows of ~125
+    slow.push_back(1e-4 * std::sin(s / 40));         // period ~250: 10 periods in the run
     tiny.push_back(1e-14 * std::sin(s));
     blowup.push_back(k < 15000 ? 1e-3 * std::exp(s / 100) : std::numeric_limits<double>::infinity());
+    saturating.push_back(-0.51 * (1 - std::exp(-s / 10)));  // 51% lost, nearly all in the first 1% of the run
   }
   using longtime::EnergyKind;
-  const double budget = 32.0 * 20000 * std::numeric_limits<double>::epsilon();
-  EXPECT_EQ(longtime::classify_energy_error(t, drift, budget).kind, EnergyKind::Drifting);
-  EXPECT_EQ(longtime::classify_energy_error(t, wave, budget).kind, EnergyKind::Bounded);
-  EXPECT_EQ(longtime::classify_energy_error(t, slow, budget).kind, EnergyKind::Bounded);
-  EXPECT_EQ(longtime::classify_energy_error(t, tiny, budget).kind, EnergyKind::Conserved);
-  EXPECT_EQ(longtime::classify_energy_error(t, blowup, budget).kind, EnergyKind::Drifting);
-  const auto c = longtime::classify_energy_error(t, drift, budget);
-  EXPECT_NEAR(c.slope, 1e-9, 2e-10);  // the fitted drift of the window maxima
-  EXPECT_NE(c.evidence().find("drifting"), std::string::npos);
+  const double eps = std::numeric_limits<double>::epsilon(), budget = 32.0 * 20000 * eps, step = 16 * eps;
+  EXPECT_EQ(longtime::classify_energy_error(t, loss, budget, step).kind, EnergyKind::Losing);
+  EXPECT_EQ(longtime::classify_energy_error(t, growth, budget, step).kind, EnergyKind::Gaining);
+  EXPECT_EQ(longtime::classify_energy_error(t, wave, budget, step).kind, EnergyKind::Oscillating);
+  EXPECT_EQ(longtime::classify_energy_error(t, slow, budget, step).kind, EnergyKind::Oscillating);
+  EXPECT_EQ(longtime::classify_energy_error(t, tiny, budget, step).kind, EnergyKind::Conserved);
+  EXPECT_EQ(longtime::classify_energy_error(t, blowup, budget, step).kind, EnergyKind::Gaining);
+  const auto s = longtime::classify_energy_error(t, saturating, budget, step);
+  EXPECT_EQ(s.kind, EnergyKind::Losing);
+  EXPECT_FALSE(s.holds());
+  EXPECT_NE(s.words().find("loses energy at every step that changes it"), std::string::npos) << s.words();
+  EXPECT_NE(s.words().find("51% lost after 20000 steps"), std::string::npos) << s.words();
+  // Control: a trend at the size of the oscillation is not one (c T < 4 a).
+  std::vector<double> hidden;
+  for (double s2 : t) hidden.push_back(1e-6 * std::sin(s2) - 1e-10 * s2);
+  EXPECT_EQ(longtime::classify_energy_error(t, hidden, budget, step).kind, EnergyKind::Oscillating);
 }
 
 // Issue 36: errors at round-off at every step size are an exact step: any claimed order holds,

@@ -20,9 +20,11 @@ struct SlopeFit {
 // `floor[i]` is the round-off plateau for point i (round-off grows with the number of steps):
 // points whose error is at most their floor (or not finite and positive) are excluded, and so is
 // every point at a smaller h than the first excluded one (once on the plateau, smaller steps only
-// add round-off). `h` must be decreasing.
+// add round-off). `h` must be decreasing. `label` names the step column as it is measured: "h", or
+// "h |Omega|" where the steps are relative to the motion's time scale (issue 47: a table must say
+// which).
 inline SlopeFit loglog_slope(const std::vector<double>& h, const std::vector<double>& err,
-                             const std::vector<double>& floor) {
+                             const std::vector<double>& floor, const char* label = "h") {
   SlopeFit f;
   std::vector<double> X, Y;
   bool plateau = false;
@@ -30,7 +32,8 @@ inline SlopeFit loglog_slope(const std::vector<double>& h, const std::vector<dou
   for (std::size_t i = 0; i < h.size() && i < err.size(); ++i) {
     const bool usable = !plateau && std::isfinite(err[i]) && err[i] > floor[i] && h[i] > 0;
     if (!usable) plateau = true;
-    std::snprintf(line, sizeof line, "    h = %-12.6g error = %-12.6g %s\n", h[i], err[i], usable ? "" : "(round-off plateau, excluded)");
+    std::snprintf(line, sizeof line, "    %s = %-12.6g error = %-12.6g %s\n", label, h[i], err[i],
+                  usable ? "" : "(round-off plateau, excluded)");
     f.table += line;
     if (usable) {
       X.push_back(std::log(h[i]));

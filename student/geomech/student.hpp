@@ -35,7 +35,8 @@
 // - If a template does not compile for a scalar, `geomech check` drops just that slot in just that
 //   scalar and says so. In your own build you can opt out: `static constexpr const char* skip_exact
 //   = "all";` (or a list of slot names, "hamiltonian_3_4 clebsch_3_21"); `skip_mp50` likewise.
-// - Integrators need `name`; `claims` is optional (nothing claimed); `rigid_body_step`,
+// - Integrators need `name`; `claims` is optional (nothing claimed), and so is `domain` (where the
+//   step is meant to work: gm::student::Domain); `rigid_body_step`,
 //   `manakov_step`, `clebsch_step` and `manakov_clebsch_step` are detected like slots. Integrators are
 //   never run in rationals.
 // - A rigid-body step may keep the state as an engine does (core/state_form.hpp): declare
@@ -77,6 +78,15 @@ struct Claims {
   bool bounded_energy = false; // over long runs the energy error stays bounded (no secular drift)
   bool symplectic = false;     // canonical steps (clebsch_step, manakov_clebsch_step) preserve dQ ^ dP
   bool unit_quaternion = false; // an attitude kept as a quaternion (`state`): |q| = 1 is kept to round-off
+};
+
+// Where an integrator's step is meant to work (optional; issue 47), as
+//   static constexpr gm::student::Domain domain{.max_omega = 1e6};
+// No check draws a state or step outside it, and the report states it; 0: no limit.
+struct Domain {
+  double max_omega = 0;  // the largest |Omega| = max |Pi_i / I_i|
+  double max_pi = 0;     // the largest max |Pi_i| (Manakov: max |M_ij|)
+  double min_h = 0;      // the smallest |h|
 };
 
 // What one translation unit registered for one scalar (filled by GEOMECH_STUDENT).
@@ -341,6 +351,11 @@ IntegratorClaims claims_of() {
   }
   if constexpr (requires { std::string_view(Int::precision); }) c.precision = Int::precision;
   if constexpr (requires { std::string_view(Int::precision_reason); }) c.precision_reason = Int::precision_reason;
+  if constexpr (requires { Int::domain; }) {
+    c.domain.max_omega = Int::domain.max_omega;
+    c.domain.max_pi = Int::domain.max_pi;
+    c.domain.min_h = Int::domain.min_h;
+  }
   return c;
 }
 

@@ -405,7 +405,7 @@ for k = 1:numel(names)
 end
 
 % Integrators: a function geomech_integrators() returning a struct array with fields name, claims
-% (struct) and function handles rigid_body_step / manakov_step / clebsch_step / manakov_clebsch_step.
+% (struct), optionally domain (struct: max_omega, max_pi, min_h) and function handles rigid_body_step / manakov_step / clebsch_step / manakov_clebsch_step.
 integ = {};
 ijson = {};
 if exist('geomech_integrators') == 2 || exist('geomech_integrators') == 103
@@ -439,8 +439,10 @@ if exist('geomech_integrators') == 2 || exist('geomech_integrators') == 103
         if strcmp(words{1}, 'matrix'), entry.state_keys = {'O', words{2}}; else, entry.state_keys = {'q', words{2}}; end
       end
     end
-    ijson{end + 1} = sprintf('{"name":%s,"steps":[%s],"scalars":["double"],"claims":%s%s}', jsonencode(it.name), ...
-                             strjoin(steps, ','), c, extra);
+    dom = '{}';  % where the step is meant to work (issue 47)
+    if isfield(it, 'domain') && ~isempty(it.domain), dom = jsonencode(it.domain); end
+    ijson{end + 1} = sprintf('{"name":%s,"steps":[%s],"scalars":["double"],"claims":%s,"domain":%s%s}', jsonencode(it.name), ...
+                             strjoin(steps, ','), c, dom, extra);
     integ{end + 1} = entry;
   end
 end

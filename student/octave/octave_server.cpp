@@ -584,8 +584,10 @@ struct Server {
             std::string att, ang;
             if (ws >> att >> ang) in.state_a = att == "matrix" ? "O" : "q", in.state_w = ang;
           }
+          std::string domain = "{}";  // where the step is meant to work (issue 47)
+          if (it.isfield("domain") && !it.getfield("domain").isempty()) domain = jsonencode(it.getfield("domain"));
           ijson += std::string(ijson.empty() ? "" : ",") + "{\"name\":" + json(in.name).dump() + ",\"steps\":[" + steps +
-                   "],\"scalars\":[\"double\"],\"claims\":" + claims + extra + "}";
+                   "],\"scalars\":[\"double\"],\"claims\":" + claims + ",\"domain\":" + domain + extra + "}";
           integrators.push_back(std::move(in));
         }
       }

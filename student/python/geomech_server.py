@@ -583,6 +583,9 @@ def main():
         for key in ("precision", "precision_reason"):
             if get(obj, key, None) is not None:
                 entry[key] = inert(str(get(obj, key)))
+        domain = get(obj, "domain", None)  # where the step is meant to work (issue 47)
+        if domain:
+            entry["domain"] = {k: float(v) for k, v in dict(domain).items()}
         integrators.append(entry)
         for s in isteps:
             steps[(iname, s)] = get(obj, s)

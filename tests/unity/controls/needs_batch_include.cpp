@@ -11,7 +11,7 @@ namespace {
 
 template <class T>
 bool drifting(const std::vector<double>& t, const std::vector<T>& e) {
-  return longtime::classify_energy_error(t, e, 0.0).kind == longtime::EnergyKind::Drifting;
+  return longtime::classify_energy_error(t, e, 0.0, 0.0).kind == longtime::EnergyKind::Gaining;
 }
 
 }  // namespace

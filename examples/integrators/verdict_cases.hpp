@@ -1,0 +1,292 @@
+// Integrators whose true behaviour is known by theory (issue 47): each is a step a researcher or an
+// engine writes, with the claims it makes, and the verdict theory gives is what the suite must say.
+// tests/integrator_verdict_tests.py checks each, confirming the verdict by a computation of its own.
+#pragma once
+
+#include <geomech/student.hpp>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace cases {
+
+using namespace gm;
+
+// The notes' (3.8), (3.5) and (2.11), written here so that each step below is self-contained.
+template <class T>
+Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& Pi) {
+  const Vec3<T> W = Pi.cwiseQuotient(I);
+  return Pi.cross(W);
+}
+template <class T>
+Mat3<T> hat(const Vec3<T>& v) {
+  Mat3<T> m;
+  m << T(0), -v(2), v(1), v(2), T(0), -v(0), -v(1), v(0), T(0);
+  return m;
+}
+template <class T>
+Mat3<T> cayley(const Mat3<T>& A) {
+  const Mat3<T> Id = Mat3<T>::Identity();
+  return (Id - A / T(2)).inverse() * (Id + A / T(2));
+}
+template <class T>
+T size(const Vec3<T>& v) {
+  return v.cwiseAbs().maxCoeff();
+}
+
+// The implicit midpoint rule on (Pi, O) (correct.hpp's Midpoint), with the vector field given:
+// Pi' = Pi + h F(mid), O' = O cay(h hat(I^-1 mid)). F = (3.8) gives the true midpoint rule.
+template <class T, class Field>
+RigidBodyState<T> midpoint(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h, const Field& F) {
+  Vec3<T> next = x.Pi;
+  for (int it = 0; it < 200; ++it) {
+    const Vec3<T> mid = (x.Pi + next) / T(2);
+    const Vec3<T> again = x.Pi + h * F(mid);
+    const T change = (again - next).cwiseAbs().maxCoeff();
+    next = again;
+    if (change <= T(8) * std::numeric_limits<T>::epsilon() * size(x.Pi)) break;
+  }
+  const Vec3<T> W_mid = ((x.Pi + next) / T(2)).cwiseQuotient(I);
+  return {next, x.O * cayley<T>(h * hat<T>(W_mid))};
+}
+
+struct None {};  // the implementation: integrators only
+
+// 1. Backward Euler, claiming order 1 (true) and bounded energy (false: it loses energy at every
+//    step, the classic dissipative method).
+struct BackwardEuler {
+  static constexpr const char* name = "backward_euler";
+  static constexpr gm::student::Claims claims{.order = 1, .bounded_energy = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    Vec3<T> next = x.Pi;
+    for (int it = 0; it < 400; ++it) {
+      const Vec3<T> again = x.Pi + h * euler_3_8<T>(I, next);
+      const T change = (again - next).cwiseAbs().maxCoeff();
+      next = again;
+      if (change <= T(8) * std::numeric_limits<T>::epsilon() * size(x.Pi)) break;
+    }
+    return {next, x.O * cayley<T>(h * hat<T>(Vec3<T>(next.cwiseQuotient(I))))};
+  }
+};
+
+// 2. Explicit Euler under two names: the same step, so the same verdicts.
+template <class T>
+RigidBodyState<T> explicit_euler(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+  return {x.Pi + h * euler_3_8<T>(I, x.Pi), x.O * (Mat3<T>::Identity() + h * hat<T>(Vec3<T>(x.Pi.cwiseQuotient(I))))};
+}
+struct ExplicitEuler {
+  static constexpr const char* name = "explicit_euler";
+  static constexpr gm::student::Claims claims{.order = 1, .casimir = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    return explicit_euler<T>(I, x, h);
+  }
+};
+struct ExplicitEulerTwin {
+  static constexpr const char* name = "explicit_euler_twin";
+  static constexpr gm::student::Claims claims{.order = 1, .casimir = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    return explicit_euler<T>(I, x, h);
+  }
+};
+
+// 3. A step that raises on every call.
+struct AlwaysRaises {
+  static constexpr const char* name = "always_raises";
+  static constexpr gm::student::Claims claims{.order = 2};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>&, const RigidBodyState<T>&, const T&) {
+    throw std::runtime_error("the engine is not initialised");
+  }
+};
+
+// 4. The midpoint rule of an engine that refuses fast states (|Omega| >= 2^20, "resets above"):
+//    order 2, Casimir, energy and orthogonality claimed and true where it works.
+template <class T>
+void refuse_fast(const Vec3<T>& I, const Vec3<T>& Pi) {
+  if (size(Vec3<T>(Pi.cwiseQuotient(I))) >= T(1 << 20)) throw std::runtime_error("angular velocity out of range");
+}
+struct RaisesBeyond {
+  static constexpr const char* name = "raises_beyond";
+  static constexpr gm::student::Claims claims{.order = 2, .casimir = true, .energy = true, .orthogonality = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    refuse_fast<T>(I, x.Pi);
+    return midpoint<T>(I, x, h, [&](const Vec3<T>& P) { return euler_3_8<T>(I, P); });
+  }
+};
+
+// 4b. The same engine, declaring where it is meant to work: nothing faster than 2^19 is drawn.
+struct RaisesBeyondDeclared {
+  static constexpr const char* name = "raises_beyond_declared";
+  static constexpr gm::student::Claims claims{.order = 2, .casimir = true, .energy = true, .orthogonality = true};
+  static constexpr gm::student::Domain domain{.max_omega = 524288};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    refuse_fast<T>(I, x.Pi);
+    return midpoint<T>(I, x, h, [&](const Vec3<T>& P) { return euler_3_8<T>(I, P); });
+  }
+};
+
+// 5. A midpoint rule computed in single precision (as engines built with float are), claiming
+//    order 2 and the Casimir: true in exact arithmetic, not at float's round-off.
+struct SinglePrecision {
+  static constexpr const char* name = "single_precision";
+  static constexpr gm::student::Claims claims{.order = 2, .casimir = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    const Vec3<float> If(float(to_double_value(I(0))), float(to_double_value(I(1))), float(to_double_value(I(2))));
+    RigidBodyState<float> xf;
+    for (int i = 0; i < 3; ++i) xf.Pi(i) = float(to_double_value(x.Pi(i)));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) xf.O(i, j) = float(to_double_value(x.O(i, j)));
+    const RigidBodyState<float> yf =
+        midpoint<float>(If, xf, float(to_double_value(h)), [&](const Vec3<float>& P) { return euler_3_8<float>(If, P); });
+    RigidBodyState<T> y;
+    for (int i = 0; i < 3; ++i) y.Pi(i) = T(double(yf.Pi(i)));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) y.O(i, j) = T(double(yf.O(i, j)));
+    return y;
+  }
+  template <class T>
+  static double to_double_value(const T& v) {
+    return static_cast<double>(v);
+  }
+};
+
+// 6. An engine's wrapper with a frame slip: the engine keeps the spatial momentum pi = O Pi; the
+//    wrapper converts back with O instead of O^T. The engine's step is right; the wrapper is not:
+//    step(x, h) does not tend to x as h -> 0 (unless O = Id).
+struct FrameSlip {
+  static constexpr const char* name = "frame_slip";
+  static constexpr gm::student::Claims claims{.order = 2};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    const RigidBodyState<T> y = midpoint<T>(I, x, h, [&](const Vec3<T>& P) { return euler_3_8<T>(I, P); });
+    const Vec3<T> pi = y.O * y.Pi;      // the engine's spatial momentum
+    return {Vec3<T>(y.O * pi), y.O};   // the slip: O pi, where O^T pi is Pi
+  }
+};
+
+// 7. A Lie-group RK4: Pi by the classical RK4 (order 4), O by one Cayley factor of the body's
+//    angular velocity at the middle of the step (order 2). Claims order 4: false, and it is the
+//    attitude that is order 2.
+struct LieRK4 {
+  static constexpr const char* name = "lie_rk4";
+  static constexpr gm::student::Claims claims{.order = 4};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    const Vec3<T> k1 = euler_3_8<T>(I, x.Pi);
+    const Vec3<T> k2 = euler_3_8<T>(I, Vec3<T>(x.Pi + h / T(2) * k1));
+    const Vec3<T> k3 = euler_3_8<T>(I, Vec3<T>(x.Pi + h / T(2) * k2));
+    const Vec3<T> k4 = euler_3_8<T>(I, Vec3<T>(x.Pi + h * k3));
+    const Vec3<T> next = x.Pi + h / T(6) * (k1 + T(2) * k2 + T(2) * k3 + k4);
+    const Vec3<T> W_mid = ((x.Pi + next) / T(2)).cwiseQuotient(I);
+    return {next, x.O * cayley<T>(h * hat<T>(W_mid))};
+  }
+};
+
+// 8. A Strang splitting with a little damping (Pi multiplied by exp(-h / 2^14) after each step, a
+//    "numerical friction" engines add for stability), claiming bounded energy: false, it loses
+//    energy at every step.
+struct DampedSplitting {
+  static constexpr const char* name = "damped_splitting";
+  static constexpr gm::student::Claims claims{.bounded_energy = true};
+  template <class T>
+  static Mat3<T> rotation(int axis, const T& angle) {
+    using std::cos;
+    using std::sin;
+    const int j = (axis + 1) % 3, k = (axis + 2) % 3;
+    Mat3<T> R = Mat3<T>::Identity();
+    R(j, j) = cos(angle), R(j, k) = -sin(angle), R(k, j) = sin(angle), R(k, k) = cos(angle);
+    return R;
+  }
+  template <class T>
+  static void flow(int axis, const Vec3<T>& I, RigidBodyState<T>& x, const T& t) {
+    const T angle = t * x.Pi(axis) / I(axis);
+    x.Pi = rotation<T>(axis, -angle) * x.Pi;
+    x.O = x.O * rotation<T>(axis, angle);
+  }
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x0, const T& h) {
+    using std::exp;
+    RigidBodyState<T> x = x0;
+    flow<T>(0, I, x, h / T(2)), flow<T>(1, I, x, h / T(2)), flow<T>(2, I, x, h), flow<T>(1, I, x, h / T(2)),
+        flow<T>(0, I, x, h / T(2));
+    x.Pi *= exp(-h / T(16384));
+    return x;
+  }
+};
+
+// 9. The midpoint rule behind a "nothing to do" guard: it returns its input for h < 2^-30.
+struct StillBelow {
+  static constexpr const char* name = "still_below";
+  static constexpr gm::student::Claims claims{.order = 2, .casimir = true, .energy = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    using std::abs;
+    if (abs(h) < T(1) / T(1073741824)) return x;
+    return midpoint<T>(I, x, h, [&](const Vec3<T>& P) { return euler_3_8<T>(I, P); });
+  }
+};
+
+// 10. The midpoint rule with a capped angular velocity: beyond |Omega| = 2^10 the field is 0.347
+//     times (3.8) (a "max angular velocity" setting, as engines have).
+struct Capped {
+  static constexpr const char* name = "capped";
+  static constexpr gm::student::Claims claims{.order = 2};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    const bool fast = size(Vec3<T>(x.Pi.cwiseQuotient(I))) > T(1024);
+    const T factor = fast ? T(347) / T(1000) : T(1);
+    return midpoint<T>(I, x, h, [&](const Vec3<T>& P) { return Vec3<T>(factor * euler_3_8<T>(I, P)); });
+  }
+};
+
+// 11. A step that does nothing at all (Pi and O unchanged), claiming nothing.
+struct Frozen {
+  static constexpr const char* name = "frozen";
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>&, const RigidBodyState<T>& x, const T&) {
+    return x;
+  }
+};
+
+// 12. The classical RK4 on (Pi, O) together, claiming only its order: its energy drifts (slowly,
+//     linearly in t), which an unclaimed energy row must say, not "holds".
+struct RK4 {
+  static constexpr const char* name = "rk4";
+  static constexpr gm::student::Claims claims{.order = 4};
+  template <class T>
+  static RigidBodyState<T> f(const Vec3<T>& I, const RigidBodyState<T>& x) {
+    return {euler_3_8<T>(I, x.Pi), Mat3<T>(x.O * hat<T>(Vec3<T>(x.Pi.cwiseQuotient(I))))};
+  }
+  template <class T>
+  static RigidBodyState<T> plus(const RigidBodyState<T>& x, const T& a, const RigidBodyState<T>& k) {
+    return {Vec3<T>(x.Pi + a * k.Pi), Mat3<T>(x.O + a * k.O)};
+  }
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    const auto k1 = f<T>(I, x), k2 = f<T>(I, plus<T>(x, h / T(2), k1)), k3 = f<T>(I, plus<T>(x, h / T(2), k2)),
+               k4 = f<T>(I, plus<T>(x, h, k3));
+    return {Vec3<T>(x.Pi + h / T(6) * (k1.Pi + T(2) * k2.Pi + T(2) * k3.Pi + k4.Pi)),
+            Mat3<T>(x.O + h / T(6) * (k1.O + T(2) * k2.O + T(2) * k3.O + k4.O))};
+  }
+};
+
+// The midpoint rule itself, every claim true: the positive control.
+struct Midpoint {
+  static constexpr const char* name = "midpoint";
+  static constexpr gm::student::Claims claims{.order = 2, .symmetric = true, .casimir = true, .energy = true,
+                                              .orthogonality = true, .noether = true, .equivariant = true,
+                                              .bounded_energy = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    return midpoint<T>(I, x, h, [&](const Vec3<T>& P) { return euler_3_8<T>(I, P); });
+  }
+};
+
+}  // namespace cases
