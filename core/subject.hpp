@@ -242,7 +242,7 @@ struct IntegratorClaims {
   // shown in the report beside the claims.
   std::string precision = {};
   std::string precision_reason = {};
-  StepDomain domain;             // where the step is meant to work (not a claim: a statement of scope)
+  StepDomain domain{};           // where the step is meant to work (not a claim: a statement of scope)
 };
 
 // The yes/no claims by name, in the order reports list them (`order`, a number, comes before them):

@@ -38,6 +38,8 @@ constexpr std::size_t kOutputTail = 4096;
 // stack (the DWARF of a large binary, compressed with -gz) can take seconds on a loaded machine, so
 // such a child gets this long past the timeout to finish its report before it is stopped.
 constexpr Clock::duration kSanitizerGrace = std::chrono::seconds(120);
+// A task past its time that has had less than this share of a core waits rather than computes.
+constexpr double kWaitingShare = 0.05;
 
 int g_worker = 0;  // this process's worker slot (set before a task's child is forked)
 
@@ -351,8 +353,17 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         const double wall = std::chrono::duration<double>(now - r.start).count();
         const bool cpu_out = r.cpu > o.timeout_seconds;
         const bool wall_out = now - r.start > wall_limit;
+        // Past its time with almost no CPU (less than a starved task gets below a load of 20 per
+        // core, and under a quarter of its fair share of the machine): it waits (a sleep, a read, a
+        // lock); it is stopped at once, not at the wall guard.
+        bool waiting = wall > o.timeout_seconds && r.sampled > r.start + std::chrono::seconds(1) &&
+                       r.cpu < kWaitingShare * wall;
+        if (waiting) {
+          const double load = load_per_core();
+          waiting = r.cpu < 0.25 * (load > 1 ? 1 / load : 1) * wall;
+        }
         const bool dying = !r.sanitizer_report.empty() && now - r.start < wall_limit + kSanitizerGrace;
-        if ((cpu_out || wall_out) && !dying) {
+        if ((cpu_out || wall_out || waiting) && !dying) {
           ::kill(-r.pid, SIGKILL);
           ::kill(r.pid, SIGKILL);
           ::waitpid(r.pid, &status, 0);
@@ -367,7 +378,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
           // or was it starved (the machine busier than its cores)? A starved task is run again once.
           const double load = load_per_core();
           const double fair_share = load > 1 ? 1 / load : 1;
-          const bool starved = !cpu_out && r.cpu > 0.1 * fair_share * wall && load > 1;
+          const bool starved = !cpu_out && !waiting && r.cpu > 0.1 * fair_share * wall && load > 1;
           if (!r.sanitizer_report.empty()) {  // it was dying, not hanging: the sanitizer had reported an error
             t.status = TaskResult::Status::Crashed;
             t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
@@ -396,9 +407,9 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
           } else {
             t.status = TaskResult::Status::TimedOut;
             std::snprintf(buf, sizeof buf,
-                          "was stopped by the wall clock after %.0f s having used only %.1f s of CPU: it waits (a sleep, "
-                          "an input it reads, a lock) rather than computes",
-                          wall, r.cpu);
+                          "did not finish within %.0f s: stopped by the wall clock after %.0f s having used only %.1f s "
+                          "of CPU: it waits (a sleep, an input it reads, a lock) rather than computes",
+                          o.timeout_seconds, wall, r.cpu);
             t.detail = buf;
           }
           results[r.index] = t;

@@ -380,7 +380,16 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     const std::string full = place_of(any, c);
     if (!full.empty()) place += " " + full.substr(0, full.find(','));
     if (place.size() > 29) place = place.substr(0, 28) + "~";
-    std::string shown = name.size() > 43 ? name.substr(0, 42) + "~" : name;
+    std::string shown = name;
+    if (shown.size() > 43) {
+      // An integrator's row keeps its integrator whole (two integrators whose names begin alike
+      // must not share a row's name): the property's name is cut instead.
+      const auto bracket = name.rfind(" [");
+      if (bracket != std::string::npos && name.back() == ']' && name.size() - bracket <= 34)
+        shown = name.substr(0, 43 - (name.size() - bracket) - 1) + "~" + name.substr(bracket);
+      else
+        shown = name.substr(0, 42) + "~";
+    }
     os << std::setw(44) << shown << std::setw(30) << place;
     for (const char* s : scalars) {
       auto it = by.find(s);

@@ -40,7 +40,7 @@ namespace {
 // The verdict on one claimable property: `residual` (the worst over the states tried) against
 // k eps scale. The finding goes to the report's claims table (properties/support/claims.hpp):
 // claimed and holding, a verified claim; claimed and not holding, a FAIL (a false claim, with the
-// residual as evidence); not claimed but holding, "holds, not claimed" (also a note on the
+// residual as evidence); not claimed but holding, "holds (not claimed)" (also a note on the
 // verdict). Each case tries kStates generic states (distinct moments, no zero component): a
 // degenerate body (a sphere, a symmetric top) keeps more than a generic one, and a finding must
 // not come from such a coincidence.

@@ -341,7 +341,7 @@ TEST(Gradebook, UnknownSlotOrClaimInARubricIsRefusedWithDidYouMean) {
   EXPECT_EQ(err(R"({"claims_weight": 1, "claims": {"symetric": 2}})"),
             "rubric \"week3.json\": key \"claims.symetric\": unknown claim \"symetric\" (did you mean \"symmetric\"?); "
             "the claims are order, symmetric, casimir, energy, orthogonality, spectrum, poisson, noether, equivariant, "
-            "bounded_energy, symplectic");
+            "bounded_energy, symplectic, unit_quaternion");
   // The control: the same rubrics with the names spelt right are read.
   EXPECT_EQ(err(R"({"assignment": ["hat", "casimir"], "slots": {"default": 1, "euler_3_8": 2},
                     "claims_weight": 1, "claims": {"symmetric": 2, "default": 1}})"),

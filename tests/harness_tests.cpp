@@ -1,5 +1,5 @@
 // Tests of the harness itself: isolation (crash, abort, hang, exception, exit, runaway memory),
-// the check engine on deliberately broken subjects, claims and "holds, not claimed", the report
+// the check engine on deliberately broken subjects, claims and "holds (not claimed)", the report
 // writers, the trajectory reader's error messages, the reference flow, and the helpers that read
 // compiler output. Nothing here compiles a student's code; tests/example_tests.cpp does that.
 #include "harness/build.hpp"
@@ -7,6 +7,7 @@
 #include "harness/isolate.hpp"
 #include "harness/reference_flow.hpp"
 #include "harness/report.hpp"
+#include "harness/integrator_verdicts.hpp"
 #include "harness/svg.hpp"
 #include "harness/thorough_only.hpp"
 #include "harness/trajectory.hpp"
@@ -220,7 +221,8 @@ GM_PROPERTY(test_only_casimir_claim, integrator_scalars,
              .needs = {},
              .negative_controls = {},
              .scope = Scope::Integrator,
-             .step = StepKind::RigidBody});
+             .step = StepKind::RigidBody,
+             .judges = {"casimir"}});
 
 template <class T>
 RigidBodyState<T> rotate_step(const Vec3<T>&, const RigidBodyState<T>& x, const T&) {
@@ -262,8 +264,11 @@ TEST(Claims, FalseClaimsFailAndUnclaimedPropertiesAreReported) {
   for (const auto& i : r.integrators)
     for (const auto& row : claim_rows(r, i))
       if (row.claim == "casimir") status[i.name] = row.status;
-  EXPECT_EQ(status["rotation_claimed"], "verified");
-  EXPECT_EQ(status["rotation_unclaimed"], "holds, not claimed");
+  // Only the test's check of the casimir ran: a verified claim says by which checks it was decided.
+  EXPECT_EQ(status["rotation_claimed"].rfind("verified by the checks that ran (double, mp50)", 0), 0u)
+      << status["rotation_claimed"];
+  EXPECT_EQ(status["rotation_unclaimed"].rfind("holds (not claimed) by the checks that ran", 0), 0u)
+      << status["rotation_unclaimed"];
   EXPECT_EQ(status["stretch_claimed"], "FALSE CLAIM");
   EXPECT_EQ(status["stretch_unclaimed"], "does not hold (not claimed)");
   EXPECT_EQ(r.count(Outcome::Fail), 2);  // the false claim, in double and in mp50
@@ -278,7 +283,7 @@ TEST(Claims, FalseClaimsFailAndUnclaimedPropertiesAreReported) {
   EXPECT_TRUE(convergence);
   const std::string md = markdown_report(r, nullptr);
   EXPECT_NE(md.find("**FALSE CLAIM**"), std::string::npos);
-  EXPECT_NE(md.find("holds, not claimed"), std::string::npos);
+  EXPECT_NE(md.find("holds (not claimed)"), std::string::npos);
   EXPECT_NE(md.find("](figures/portrait-rotation_claimed-invariants-over-time.svg)"), std::string::npos);
 }
 

@@ -25,6 +25,8 @@
 
 #include <rapidcheck.h>
 
+#include <algorithm>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -187,7 +189,13 @@ Diagnosis diagnose(const Field<T>& f, const Vec3<T>& I, const RigidBodyState<T>&
 // explains itself in the claims table as well as in its FIRST FIX.
 template <class Explain, class Judge>
 void explaining_claims(Explain&& explanation, Judge&& judge) {
-  const std::size_t before = recorded_claims().size();
+  // Findings are kept one per claim (record_claim_finding merges cases): those this judge recorded
+  // or replaced are the ones whose evidence is new.
+  std::vector<std::pair<std::string, std::string>> before;
+  for (const auto& f : recorded_claims()) before.emplace_back(f.claim, f.evidence);
+  const auto is_new = [&](const ClaimFinding& f) {
+    return std::find(before.begin(), before.end(), std::make_pair(f.claim, f.evidence)) == before.end();
+  };
   try {
     judge();
   } catch (rc::detail::CaseResult& r) {
@@ -202,9 +210,8 @@ void explaining_claims(Explain&& explanation, Judge&& judge) {
       why = std::string("the step's own equation could not be read: ") + e.what();
     }
     current_step_raise() = raise;
-    for (std::size_t k = before; k < recorded_claims().size(); ++k)
-      if (recorded_claims()[k].claimed && !recorded_claims()[k].holds)
-        recorded_claims()[k].evidence = why + "; measured: " + recorded_claims()[k].evidence;
+    for (auto& f : recorded_claims())
+      if (f.claimed && !f.holds && is_new(f)) f.evidence = why + "; measured: " + f.evidence;
     r.description = why + "\n" + r.description;
     throw;
   }

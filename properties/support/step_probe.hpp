@@ -65,11 +65,17 @@ double precision_of(const Integrator<T>& in, const Vec3<T>& I, const RigidBodySt
   if (!(size > T(0))) return 0;
   const T h = at_least_min_h<T>(T(pow2<T>(-6) / rate_of(I, x.Pi)));
   const RigidBodyState<T> y = in.rigid_body_step(I, x, h);
+  // The delta goes to the largest component of Pi: a delta added to a zero component is held
+  // exactly by any floating-point type (a float holds 1e-40 beside 0), and would be followed at
+  // any precision.
+  int j = 0;
+  for (int i = 1; i < 3; ++i)
+    if (abs_value(x.Pi(i)) > abs_value(x.Pi(j))) j = i;
   double followed = 0;  // the smallest relative delta followed so far
   for (int k = 8; k <= mantissa_bits<T>() - 6; k += 2) {
     const T delta = pow2<T>(-k) * size;
     RigidBodyState<T> xd = x;
-    xd.Pi(0) += delta;
+    xd.Pi(j) += delta;
     const T response = max_abs(Vec3<T>(in.rigid_body_step(I, xd, h).Pi - y.Pi)) / delta;
     if (!(response > T(1) / T(4) && response < T(4))) break;  // no longer followed
     followed = to_double(pow2<T>(-k));
