@@ -157,23 +157,6 @@ std::string not_provided_kind(const CheckResult& r, const Verdict& v) {
   return other_scalar || r.info.scalar_unavailable.count(v.scalar) ? "double only" : "not written";
 }
 
-std::string claimed_text(const IntegratorClaims& c, const std::string& claim) {
-  if (claim == "order") return c.order > 0 ? std::to_string(c.order) : "no";
-  for (const auto& b : kBooleanClaims)
-    if (claim == b.name) return c.*b.member ? "yes" : "no";
-  return "no";
-}
-
-// "order", then every yes/no claim (core/subject.hpp).
-const std::vector<std::string>& claim_names() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> n{"order"};
-    for (const auto& b : kBooleanClaims) n.push_back(b.name);
-    return n;
-  }();
-  return names;
-}
-
 // A table cell or a list item: inert, on one line, nothing Markdown or HTML would act on (issue 46).
 std::string md_cell(const std::string& s) { return md_inline(s); }
 
