@@ -11,6 +11,8 @@ theory. This test checks them with the suite and asserts, for each, the verdict 
   raises_beyond            the domain check says where it raises (|Omega| >= about 2^20) and how to
                            declare a domain; the claims its raise stopped are NOT VERIFIED
   raises_beyond_declared   the same step with its domain declared: every claim verified, the domain stated
+  wrong_inside_declared    the same domain declared, explicit Euler inside it: the Casimir a FALSE CLAIM
+                           (a declared domain discards only the calls outside it)
   single_precision         said to compute in single precision; its order claim FALSE
   frame_slip               said not to reduce to the identity as h -> 0; its order claim FALSE
   lie_rk4                  order 4 FALSE, the attitude O named with its order 2
@@ -274,6 +276,11 @@ for claim in ("order", "casimir", "energy", "orthogonality"):
           "raises_beyond_declared: %s should be verified inside its domain, is %s" % (claim, word("raises_beyond_declared", claim)))
 check(all(v["outcome"] == "PASS" for v in rows("raises_beyond_declared", "integrator_domain")), "raises_beyond_declared: the domain check should pass")
 check("declared domain: |Omega| <= 5.24e+05" in console, "the console should state the declared domain")
+# The negative control of a domain: a step wrong inside the domain it declares is still caught.
+check(word("wrong_inside_declared", "casimir") == "FALSE CLAIM",
+      "wrong_inside_declared: a Casimir broken inside the declared domain should be a FALSE CLAIM, is " + word("wrong_inside_declared", "casimir"))
+check(word("wrong_inside_declared", "order").startswith("verified"),
+      "wrong_inside_declared: order 1 (explicit Euler) should be verified, is " + word("wrong_inside_declared", "order"))
 
 # Single precision.
 drift = float_midpoint_casimir_drift()

@@ -3,5 +3,5 @@
 #include "verdict_cases.hpp"
 
 GEOMECH_STUDENT(cases::None, cases::BackwardEuler, cases::ExplicitEuler, cases::ExplicitEulerTwin, cases::AlwaysRaises,
-                cases::RaisesBeyond, cases::RaisesBeyondDeclared, cases::SinglePrecision, cases::FrameSlip, cases::LieRK4, cases::DampedSplitting,
+                cases::RaisesBeyond, cases::RaisesBeyondDeclared, cases::WrongInsideDeclared, cases::SinglePrecision, cases::FrameSlip, cases::LieRK4, cases::DampedSplitting,
                 cases::StillBelow, cases::Capped, cases::Frozen, cases::RK4, cases::Midpoint);

@@ -131,6 +131,20 @@ struct RaisesBeyondDeclared {
   }
 };
 
+// 4c. The negative control of a declared domain: the engine of 4b declaring the same domain, whose
+//     step inside it is explicit Euler (2.6), claiming the Casimir. The claim is false where the step
+//     is meant to work, so it must stay a FALSE CLAIM: a domain only discards the calls outside it.
+struct WrongInsideDeclared {
+  static constexpr const char* name = "wrong_inside_declared";
+  static constexpr gm::student::Claims claims{.order = 1, .casimir = true};
+  static constexpr gm::student::Domain domain{.max_omega = 524288};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    refuse_fast<T>(I, x.Pi);
+    return explicit_euler<T>(I, x, h);
+  }
+};
+
 // 5. A midpoint rule computed in single precision (as engines built with float are), claiming
 //    order 2 and the Casimir: true in exact arithmetic, not at float's round-off.
 struct SinglePrecision {
