@@ -6,12 +6,11 @@
 #include "harness/class_html.hpp"
 #include "harness/class_record.hpp"
 
+#include "tests/support/scratch.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-
-#include <unistd.h>
 
 using namespace gm::harness;
 using nlohmann::json;
@@ -19,17 +18,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("geomech-lecturer-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
-
-void write(const fs::path& p, const std::string& text) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p) << text;
-}
+fs::path scratch(const std::string& name) { return gm::testing_support::scratch_folder("lecturer", name); }
+using gm::testing_support::write_file;
 
 // A checked row of a Python implementation whose report says `provided` (all exercised, all passing).
 ClassRow checked_row(const std::string& name, const std::vector<std::string>& provided, int exit_code = 0) {
@@ -128,21 +118,21 @@ TEST(Autograder, ResultsRenderTheDecidedStudentInEachFormat) {
 
 TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
   const fs::path root = scratch("layout");
-  write(root / "py" / "mine.py", "def hat(v): pass\n");
-  write(root / "py" / "notes.txt", "x");
+  write_file(root / "py" / "mine.py", "def hat(v): pass\n");
+  write_file(root / "py" / "notes.txt", "x");
   EXPECT_EQ(lay_out_submission((root / "py").string(), (root / "c1").string()), "mine");
   EXPECT_TRUE(fs::is_regular_file(root / "c1" / "mine.py"));
-  for (const char* f : {"hat.m", "vee.m"}) write(root / "m" / "dave" / f, "function m = f()\nend\n");  // a zipped folder
+  for (const char* f : {"hat.m", "vee.m"}) write_file(root / "m" / "dave" / f, "function m = f()\nend\n");  // a zipped folder
   EXPECT_EQ(lay_out_submission((root / "m").string(), (root / "c2").string()), "submission");
   EXPECT_TRUE(fs::is_regular_file(root / "c2" / "submission" / "vee.m"));
-  write(root / "cpp" / "erin.cpp", "#include \"so3.hpp\"\nGEOMECH_STUDENT(E);\n");
-  write(root / "cpp" / "so3.hpp", "");
+  write_file(root / "cpp" / "erin.cpp", "#include \"so3.hpp\"\nGEOMECH_STUDENT(E);\n");
+  write_file(root / "cpp" / "so3.hpp", "");
   fs::create_symlink("/etc/passwd", root / "cpp" / "secret.hpp");
   EXPECT_EQ(lay_out_submission((root / "cpp").string(), (root / "c3").string()), "erin");
   EXPECT_TRUE(fs::is_regular_file(root / "c3" / "erin" / "so3.hpp"));
   EXPECT_TRUE(fs::is_symlink(root / "c3" / "erin" / "secret.hpp"));  // copied as a link, never read through
-  write(root / "two" / "a.py", "");
-  write(root / "two" / "b.py", "");
+  write_file(root / "two" / "a.py", "");
+  write_file(root / "two" / "b.py", "");
   try {
     lay_out_submission((root / "two").string(), (root / "c4").string());
     ADD_FAILURE() << "two Python files were taken as one implementation";

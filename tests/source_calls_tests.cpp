@@ -3,29 +3,19 @@
 #include "harness/report.hpp"
 #include "harness/source_calls.hpp"
 
+#include "tests/support/scratch.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
-
-#include <unistd.h>
 
 using namespace gm::harness;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path scratch(const std::string& name) {
-  const fs::path p = fs::temp_directory_path() / ("geomech-calls-" + std::to_string(::getpid()) + "-" + name);
-  fs::remove_all(p);
-  fs::create_directories(p);
-  return p;
-}
-
-void write(const fs::path& p, const std::string& text) {
-  fs::create_directories(p.parent_path());
-  std::ofstream(p) << text;
-}
+fs::path scratch(const std::string& name) { return gm::testing_support::scratch_folder("calls", name); }
+using gm::testing_support::write_file;
 
 }  // namespace
 
@@ -47,8 +37,8 @@ TEST(SourceCalls, ACallerIsReadFromPythonOctaveAndCpp) {
   // A folder of Octave function files: calls across files; a link is not read (the control: the
   // same file as a regular file is).
   const fs::path dir = scratch("calls");
-  write(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
-  write(dir / "elsewhere" / "euler.m", "function d = euler_3_8(I, P)\n  d = cross(P, omega_3_5(I, P));\nend\n");
+  write_file(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
+  write_file(dir / "elsewhere" / "euler.m", "function d = euler_3_8(I, P)\n  d = cross(P, omega_3_5(I, P));\nend\n");
   fs::create_symlink(dir / "elsewhere" / "euler.m", dir / "euler_3_8.m");
   const auto f = slot_calls(dir.string(), "octave");
   EXPECT_EQ(f, (std::map<std::string, std::set<std::string>>{{"manakov_2_34", {"manakov_Omega"}}}));
@@ -62,8 +52,8 @@ TEST(SourceCalls, ACallerIsReadFromPythonOctaveAndCpp) {
 // submission). Both own checks fail; the callee comes first, and the caller says why it fails.
 TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
   const fs::path dir = scratch("first-fix");
-  write(dir / "manakov_Omega.m", "function W = manakov_Omega(A, M)\n  W = -M;\nend\n");
-  write(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
+  write_file(dir / "manakov_Omega.m", "function W = manakov_Omega(A, M)\n  W = -M;\nend\n");
+  write_file(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
   CheckResult r;
   r.info.source = dir.string();
   r.info.language = "octave";
@@ -82,7 +72,7 @@ TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
   EXPECT_NE(md.find("- **Octave function `manakov_Omega` in " + dir.filename().string() + " is wrong**"), std::string::npos) << md;
   EXPECT_NE(md.find("fails too**, and it calls `manakov_Omega`, which is wrong (above): fix that first"), std::string::npos) << md;
   // The control: a manakov_2_34 that does not call it is wrong on its own, and sorts as before.
-  write(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  d = M;\nend\n");
+  write_file(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  d = M;\nend\n");
   const RootCauses alone = root_causes(r);
   EXPECT_TRUE(alone.calls_broken.empty());
   EXPECT_EQ(alone.order, (std::vector<std::string>{"manakov_2_34", "manakov_Omega"}));
