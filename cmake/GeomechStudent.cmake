@@ -12,8 +12,8 @@ target_link_libraries(geomech_student_driver PRIVATE geomech_harness)
 add_library(geomech_server_driver OBJECT ${PROJECT_SOURCE_DIR}/student/cpp/server_driver.cpp)
 target_link_libraries(geomech_server_driver PRIVATE geomech_harness)
 # Both read the suite's precompiled headers (the same flags as the suite's libraries).
-target_precompile_headers(geomech_student_driver REUSE_FROM geomech)
-target_precompile_headers(geomech_server_driver REUSE_FROM geomech)
+target_precompile_headers(geomech_student_driver REUSE_FROM ${GM_PCH_OWNER})
+target_precompile_headers(geomech_server_driver REUSE_FROM ${GM_PCH_OWNER})
 
 # Optimisation of student code: -O1 for every scalar. Measured on examples/students/correct.cpp
 # (CPU seconds to compile double / mp50 / exact): -O0 4.9 / 6.7 / 5.6, -O1 4.7 / 7.4 / 6.2,
