@@ -76,6 +76,8 @@ struct ClassView {
 // `rows` must outlive the view. When the rubric leaves the class nothing to grade, every student
 // gets no grade and `no_grades` says why.
 ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric);
+// A temporary would leave the view pointing at freed rows (ASan caught one in a test): refused.
+ClassView decide_class(std::vector<ClassRow>&& rows, const Rubric& rubric) = delete;
 
 // One student in words, as plain text parts each renderer escapes and joins (summary.md, summary.html,
 // an autograder's output): the result and grade first ("FAIL, 80.00 of 100: 3 of 4 slots correct"),

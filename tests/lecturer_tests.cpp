@@ -106,7 +106,8 @@ TEST(Autograder, ResultsRenderTheDecidedStudentInEachFormat) {
   bad.name = "gina";
   bad.built = false;
   bad.build_message = "gina.cpp:11:5: error: expected ';' before 'return'";
-  const ClassView w = decide_class({bad}, r);
+  const std::vector<ClassRow> bad_rows{bad};  // the view points into its rows: they must outlive it
+  const ClassView w = decide_class(bad_rows, r);
   const json pl2 = prairielearn_results(w.students[0], "");
   EXPECT_EQ(pl2.at("gradable"), false);
   EXPECT_FALSE(pl2.contains("score"));
