@@ -16,6 +16,7 @@
 #include "properties/registry.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/named_inputs.hpp"
+#include "properties/support/regimes.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/step_guard.hpp"
 #include "properties/support/tolerance.hpp"
