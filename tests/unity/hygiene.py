@@ -8,8 +8,11 @@ signature is not, and a call could silently bind to the other file's helper. So 
 batch keeps its code in a namespace of its own, and its macros end with it:
 
   1. every `namespace gm {` is followed by `namespace <folder>_<file> {` (for instance
-     `namespace properties_variations {` in properties/variations.cpp), and that namespace closes
-     just before `}  // namespace gm`;
+     `namespace properties_variations {` in properties/variations/variations.cpp), and that namespace
+     closes just before `}  // namespace gm`. <folder> is the nearest enclosing folder named
+     `properties` or `mutants` (a part folder such as properties/s3_4_nambu/ does not change the
+     name, so a file keeps its namespace when it moves between parts), else the file's own folder;
+     file names are unique across those trees, so the names are too;
   2. there is no code outside `namespace gm { ... }` (only comments and preprocessor lines);
   3. every macro the file #defines is #undef'd in the same file.
 
@@ -21,7 +24,9 @@ import sys
 
 
 def unit_namespace(path):
-    folder = os.path.basename(os.path.dirname(os.path.abspath(path)))
+    parts = os.path.dirname(os.path.abspath(path)).split(os.sep)
+    roots = [p for p in parts if p in ("properties", "mutants")]
+    folder = roots[-1] if roots else parts[-1]
     stem = os.path.splitext(os.path.basename(path))[0]
     return f"{folder}_{stem}"
 
@@ -81,6 +86,13 @@ def main(paths):
         print("hygiene.py: no files given (expected the unity-built sources)", file=sys.stderr)
         return 2
     bad = 0
+    seen = {}
+    for p in paths:
+        ns = unit_namespace(p)
+        if ns in seen:
+            print(f"{p}:1: namespace {ns} is also {seen[ns]}'s: two files of one tree share a name")
+            bad += 1
+        seen.setdefault(ns, p)
     for p in paths:
         for line_no, what in problems_in(p):
             print(f"{p}:{line_no}: {what}")
