@@ -16,7 +16,7 @@ set(GM_INSTALL_DATADIR ${CMAKE_INSTALL_DATADIR}/geomech-spec)
 set(GM_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/GeomechSpec)
 
 install(TARGETS geomech_cli RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-if(TARGET geomech_octave_server)  # beside the tool, where it looks for it (harness/remote_subject.cpp)
+if(TARGET geomech_octave_server)  # beside the tool, where it looks for it (harness/remote/remote_subject.cpp)
   install(TARGETS geomech_octave_server RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 endif()
 install(FILES $<TARGET_FILE:geomech> $<TARGET_FILE:geomech_harness> DESTINATION ${GM_INSTALL_LIBDIR})

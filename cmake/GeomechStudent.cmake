@@ -2,7 +2,7 @@
 #
 # 1. The prebuilt main() of a student check program (student/driver.cpp), compiled once.
 # 2. student/toolchain.json in the build tree: the compiler, flags and prebuilt files with which
-#    `geomech check FILE.cpp` compiles only the student's file and links it (harness/build.cpp).
+#    `geomech check FILE.cpp` compiles only the student's file and links it (harness/program/build.cpp).
 # 3. geomech_add_student(<target> <source>...): the same program as a CMake target, used for the
 #    examples (examples/students) and usable by anyone building inside this tree.
 

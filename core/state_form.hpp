@@ -4,7 +4,7 @@
 // Attitude: the notes' O in SO(3), mapping body coordinates to space coordinates (2.10), or a unit
 // quaternion q = (w, v) doing the same (Hamilton's product, x_space = q x_body q^-1, so O = R(q)),
 // written (w, x, y, z) or (x, y, z, w). q and -q are one attitude; a q that is not of unit norm
-// stands for the attitude of q / |q| (its norm is judged on its own, properties/integrator_quaternion.cpp).
+// stands for the attitude of q / |q| (its norm is judged on its own, properties/integrators/integrator_quaternion.cpp).
 //
 // Angular state: the body angular momentum Pi (the notes'), the body angular velocity
 // Omega = I^-1 Pi (3.5), the spatial angular velocity omega = O Omega (Omega_hat = O^-1 dO/dt, so

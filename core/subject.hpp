@@ -80,7 +80,7 @@ class Slot<R(A...)> {
 };
 
 // A failure of the process the code under test runs in, not of its code: it died, answered out of
-// step, or sent what is not an answer (harness/remote_subject.hpp). Never taken for a step that
+// step, or sent what is not an answer (harness/remote/remote_subject.hpp). Never taken for a step that
 // raised (properties/support/step_guard.hpp): the code did not get to say anything.
 class ProcessFailure : public std::runtime_error {
  public:
@@ -165,8 +165,8 @@ struct Integrator {
   Slot<MatXPair<T>(const MatX<T>& A, const MatXPair<T>& QP, const T& h)> manakov_clebsch_step{"manakov_clebsch_step"};
   // Optional: n consecutive steps from x, the state after each, as n calls of the step would give.
   // An implementation behind the protocol fills them, so that a long run costs one round trip per
-  // chunk of steps instead of one per step (harness/remote_subject.cpp); properties reach them
-  // through properties/support/step_runs.hpp, which calls the step n times when they are empty.
+  // chunk of steps instead of one per step (harness/remote/remote_subject.cpp); properties reach them
+  // through properties/integrators/support/step_runs.hpp, which calls the step n times when they are empty.
   std::function<std::vector<RigidBodyState<T>>(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h, int n)>
       rigid_body_run;
   std::function<std::vector<ManakovState<T>>(const MatX<T>& A, const ManakovState<T>& x, const T& h, int n)> manakov_run;

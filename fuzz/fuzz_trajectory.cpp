@@ -1,7 +1,7 @@
-// libFuzzer target: the trajectory-file reader of check-trajectory (harness/trajectory_reader.hpp).
+// libFuzzer target: the trajectory-file reader of check-trajectory (harness/trajectories/trajectory_reader.hpp).
 // Any input must either be read or raise TrajectoryError; a trajectory that is read must be
 // usable (at least two rows, times increasing, every value finite, Pi(0) not zero).
-#include "harness/trajectory_reader.hpp"
+#include "harness/trajectories/trajectory_reader.hpp"
 
 #include <cmath>
 #include <cstdint>

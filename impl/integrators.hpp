@@ -4,7 +4,7 @@
 //     dM/dt = [M, Omega],    dO/dt = O Omega,        A Omega + Omega A = M.
 // Each is one step x_n -> x_{n+1} of size h (h may be negative). Their claims (order, symmetry,
 // preserved invariants, Poisson map) are stated in reference_integrators.cpp and verified by the
-// integrator-scoped properties (properties/integrator_claims.cpp), as anyone's would be.
+// integrator-scoped properties (properties/integrators/integrator_claims.cpp), as anyone's would be.
 #pragma once
 
 #include "core/subject.hpp"

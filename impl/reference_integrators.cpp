@@ -1,6 +1,6 @@
 // The reference subject's integrators (impl/integrators.hpp), in double and Real50, and what
 // their author claims about them. The claims are verified like anyone's, by the integrator-scoped
-// properties (properties/integrator_claims.cpp); a claim is made only where it is a theorem about
+// properties (properties/integrators/integrator_claims.cpp); a claim is made only where it is a theorem about
 // the method, never because a test happened to pass.
 #include "core/declared_step.hpp"
 #include "impl/canonical_integrators.hpp"
@@ -62,7 +62,7 @@ std::vector<IntegratorClaims> reference_integrator_claims() {
   c.push_back({.integrator = "implicit_midpoint", .order = 2, .symmetric = true, .casimir = true, .energy = true,
                .orthogonality = true, .spectrum = false, .poisson = false, .noether = false, .equivariant = true,
                .bounded_energy = true});
-  // (Structure claims, properties/integrator_structure.cpp.) Every method here updates O only by
+  // (Structure claims, properties/integrators/integrator_structure.cpp.) Every method here updates O only by
   // right multiplication, O_{n+1} = O_n U(Pi_n, h) (RK4: each stage is linear in O and multiplied
   // on the right), and the Pi- or M-part does not depend on O: step(Pi, R O) = (Pi', R O'), so all
   // claim `equivariant`. An energy kept exactly is a fortiori bounded, so midpoint and the
@@ -91,7 +91,7 @@ std::vector<IntegratorClaims> reference_integrator_claims() {
                .bounded_energy = true});
   // Isospectral Noether: O_{n+1} M_{n+1} O_{n+1}^T = O_n U U^T M_n U U^T O_n^T = O_n M_n O_n^T.
   //
-  // Canonical (Clebsch) steps, properties/integrator_canonical.cpp. RK4 (above) also steps (3.21)
+  // Canonical (Clebsch) steps, properties/integrators/integrator_canonical.cpp. RK4 (above) also steps (3.21)
   // and (3.23); its order-4 claim covers them, and it is not symplectic. The midpoint rule is
   // symplectic for every canonical Hamiltonian system, symmetric, of order 2; it does not keep H,
   // which is quartic in (Q, P) (a separate integrator from implicit_midpoint, whose energy claim

@@ -1,7 +1,7 @@
 #include "mutation/kill_matrix.hpp"
 
-#include "harness/quick_profile.hpp"
-#include "harness/thorough_only.hpp"
+#include "harness/engine/quick_profile.hpp"
+#include "harness/engine/thorough_only.hpp"
 
 #include <algorithm>
 #include <fstream>

@@ -2,8 +2,8 @@
 #include "mutation/kill_matrix.hpp"
 #include "mutation/served_mutant.hpp"
 
-#include "harness/isolate.hpp"
-#include "harness/report.hpp"
+#include "harness/isolation/isolate.hpp"
+#include "harness/reports/report.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/catalogue.hpp"
 #include "properties/runner.hpp"

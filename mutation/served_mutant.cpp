@@ -1,7 +1,7 @@
 #include "mutation/served_mutant.hpp"
 
-#include "harness/protocol_server.hpp"
-#include "harness/remote_subject.hpp"
+#include "harness/remote/protocol_server.hpp"
+#include "harness/remote/remote_subject.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/catalogue.hpp"
 

@@ -43,7 +43,7 @@ struct RunOptions {
 
 // The CPU seconds of the code under test so far: the clock of the case and shrink budgets (issue
 // 47: a busy machine does not cut a check's cases; the work done does). By default this process's
-// CPU; an implementation behind the protocol adds its server's (harness/remote_subject.cpp).
+// CPU; an implementation behind the protocol adds its server's (harness/remote/remote_subject.cpp).
 void set_code_cpu_clock(std::function<double()> clock);
 double code_cpu_seconds();
 
@@ -80,7 +80,7 @@ struct Verdict {
   // and where it was called; empty otherwise.
   std::string step_raised;
   std::string step_raised_where;
-  // What every view shows for this verdict, decided once (harness/integrator_verdicts.hpp): for an
+  // What every view shows for this verdict, decided once (harness/engine/integrator_verdicts.hpp): for an
   // integrator property, "PASS", "FALSE CLAIM", "holds (not claimed)", "does not hold (not claimed)",
   // "not established (not claimed): ...", "NOT CHARACTERISED"; empty for the others (the outcome).
   std::string word;

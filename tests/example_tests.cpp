@@ -15,7 +15,7 @@
 //
 // Examples whose bug is a false integrator claim are judged by their claims table; an
 // integrator-scoped property may FAIL for them only because of such a claim.
-#include "harness/process.hpp"
+#include "harness/isolation/process.hpp"
 #include "properties/registry.hpp"
 
 #include <nlohmann/json.hpp>

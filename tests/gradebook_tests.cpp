@@ -1,6 +1,6 @@
 // Tests for the gradebook export: scoring under a rubric, rubric and roster
 // errors, and the shape of the CSV that Moodle and Canvas import.
-#include "harness/gradebook.hpp"
+#include "harness/class/gradebook.hpp"
 
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>

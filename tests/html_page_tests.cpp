@@ -1,6 +1,6 @@
 // Reports as HTML pages (issue 49): report.md as a page that loads nothing and runs nothing of the
 // student's, its structure kept.
-#include "harness/html_page.hpp"
+#include "harness/reports/html_page.hpp"
 
 #include <gtest/gtest.h>
 

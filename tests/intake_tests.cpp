@@ -1,11 +1,11 @@
-// Reading a stranger's folder (issue 46; harness/submission_intake.hpp), the inert and bounded
-// texts (harness/inert_text.hpp), the gradebook's cells and the children's input and output
-// (harness/process.hpp). Each refusal test has its control: the naive read the harness used to do
+// Reading a stranger's folder (issue 46; harness/isolation/submission_intake.hpp), the inert and bounded
+// texts (harness/isolation/inert_text.hpp), the gradebook's cells and the children's input and output
+// (harness/isolation/process.hpp). Each refusal test has its control: the naive read the harness used to do
 // (std::ifstream, following everything) shows the attack is real on the same folder.
-#include "harness/gradebook.hpp"
-#include "harness/inert_text.hpp"
-#include "harness/process.hpp"
-#include "harness/submission_intake.hpp"
+#include "harness/class/gradebook.hpp"
+#include "harness/isolation/inert_text.hpp"
+#include "harness/isolation/process.hpp"
+#include "harness/isolation/submission_intake.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // Tests of what a lecturer reads and uploads (issue 49): the class decided once (PASS by the
 // assignment, "not written" apart from "double only", a roster student without a submission), and
 // the Gradescope and PrairieLearn results rendered from that decision.
-#include "harness/autograder.hpp"
-#include "harness/class_mode.hpp"
-#include "harness/class_html.hpp"
-#include "harness/class_record.hpp"
+#include "harness/class/autograder.hpp"
+#include "harness/class/class_mode.hpp"
+#include "harness/class/class_html.hpp"
+#include "harness/class/class_record.hpp"
 
 #include "tests/support/scratch.hpp"
 

@@ -1,7 +1,7 @@
-// The libraries of a C++ file (harness/library_flags.hpp, issue 48): the file's own `// geomech:`
+// The libraries of a C++ file (harness/program/library_flags.hpp, issue 48): the file's own `// geomech:`
 // lines, pkg-config, the vetting of a stranger's flags (and its control: your own file's flags pass
 // unvetted), and the hint for a missing header.
-#include "harness/library_flags.hpp"
+#include "harness/program/library_flags.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
-// The slot protocol's client (harness/remote_subject, protocol_codec) against the Python and Octave
+// The slot protocol's client (harness/remote/remote_subject, protocol_codec) against the Python and Octave
 // servers: exact round trips in all three scalars, shape validation naming the slot, an error reply
 // carrying the Python traceback; sessions (each check starts from the handshake's state, on one
 // server per worker), a crash failing its check alone with how it died, printing that neither
 // blocks nor breaks the protocol, a hang while loading caught by the handshake's deadline; the
 // per-call round-trip cost.
-#include "harness/isolate.hpp"
-#include "harness/protocol_codec.hpp"
-#include "harness/remote_subject.hpp"
+#include "harness/isolation/isolate.hpp"
+#include "harness/remote/protocol_codec.hpp"
+#include "harness/remote/remote_subject.hpp"
 
 #include <gtest/gtest.h>
 

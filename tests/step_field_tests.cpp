@@ -1,5 +1,5 @@
 // The vector field Manakov's step and the Clebsch steps follow (issue 33,
-// properties/support/step_field_matrix.hpp): a step of the right equation is said right, each
+// properties/integrators/support/step_field_matrix.hpp): a step of the right equation is said right, each
 // mistake the diagnosis names is recognised from a step that makes it, and a false order claim of
 // a step that follows the wrong equation leads with that equation, in the verdict and in the claim's
 // evidence (the negative controls manakov_midpoint_commutator_reversed,
@@ -8,7 +8,7 @@
 #include "impl/manakov.hpp"
 #include "impl/reference_subject.hpp"
 #include "properties/runner.hpp"
-#include "properties/support/step_field_matrix.hpp"
+#include "properties/integrators/support/step_field_matrix.hpp"
 #include "tests/mutants/mutants.hpp"
 
 #include <gtest/gtest.h>

@@ -10,7 +10,7 @@
 //
 // Usage: geomech-dynamics-report [cases_double [cases_mp50]]   (defaults 20 and 4; fixed seed)
 #include "impl/reference_subject.hpp"
-#include "properties/support/convergence.hpp"
+#include "properties/integrators/support/convergence.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/spectrum.hpp"
 
@@ -111,7 +111,7 @@ void conserved_along_flows(Worst& w, int cases) {
       w.add("I_space omega (Remark 2.1)", mp,
             d(max_abs((s.inertia_space(x.O, I) * omega - s.inertia_space(O0, I) * omega0).eval())));
     }
-    // Manakov, n = 3..6 (horizons as in properties/manakov_flow.cpp).
+    // Manakov, n = 3..6 (horizons as in properties/s2_2_manakov/manakov_flow.cpp).
     const int n = 3 + c % 4;
     const auto a = dr.manakov_a<T>(n);
     const MatX<T> M0 = dr.skew<T>(n, T(1) / T(2));

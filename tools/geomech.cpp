@@ -12,24 +12,24 @@
 //   geomech mutants    mutation score: single-mistake variants of the reference through the properties
 //   geomech golden     golden trajectories: regenerate/check the fixtures, make your own (golden/cli.hpp)
 #include "golden/cli.hpp"
-#include "harness/build.hpp"
-#include "harness/class_mode.hpp"
-#include "harness/cli.hpp"
-#include "harness/inert_text.hpp"
-#include "harness/isolate.hpp"
-#include "harness/lecturer_cli.hpp"
-#include "harness/process.hpp"
-#include "harness/protocol_codec.hpp"
-#include "harness/remote_subject.hpp"
-#include "harness/report.hpp"
-#include "harness/private_copy.hpp"
-#include "harness/sandbox.hpp"
-#include "harness/sandboxed_interpreter.hpp"
-#include "harness/slot_conventions.hpp"
-#include "harness/slot_names.hpp"
-#include "harness/student_registry.hpp"
-#include "harness/submission_intake.hpp"
-#include "harness/trajectory.hpp"
+#include "harness/program/build.hpp"
+#include "harness/class/class_mode.hpp"
+#include "harness/program/cli.hpp"
+#include "harness/isolation/inert_text.hpp"
+#include "harness/isolation/isolate.hpp"
+#include "harness/class/lecturer_cli.hpp"
+#include "harness/isolation/process.hpp"
+#include "harness/remote/protocol_codec.hpp"
+#include "harness/remote/remote_subject.hpp"
+#include "harness/reports/report.hpp"
+#include "harness/isolation/private_copy.hpp"
+#include "harness/isolation/sandbox.hpp"
+#include "harness/isolation/sandboxed_interpreter.hpp"
+#include "harness/remote/slot_conventions.hpp"
+#include "harness/remote/slot_names.hpp"
+#include "harness/program/student_registry.hpp"
+#include "harness/isolation/submission_intake.hpp"
+#include "harness/engine/trajectory.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/runner.hpp"
 #include "mutation/served_mutant.hpp"
@@ -224,7 +224,7 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
     return 2;
   }
   // A submission is a stranger's: never followed through a link, never a FIFO or device opened
-  // (harness/submission_intake.hpp). A folder (Octave) is looked at whole, within the limits.
+  // (harness/isolation/submission_intake.hpp). A folder (Octave) is looked at whole, within the limits.
   try {
     const fs::path p = fs::path(file).lexically_normal();
     const std::string parent = p.has_parent_path() ? p.parent_path().string() : ".";
@@ -249,7 +249,7 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
   std::vector<std::string> cmd = protocol::server_command(file, &language, &why);
   nlohmann::json notes;
   // What the sandbox sees of this machine besides the system: a private copy of the submission
-  // and of the suite's server, under neutral names (harness/private_copy.hpp).
+  // and of the suite's server, under neutral names (harness/isolation/private_copy.hpp).
   std::optional<harness::PrivateCopy> copy;
   try {
     copy.emplace();
@@ -259,7 +259,7 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
   }
   if (!cmd.empty()) {
     // Python or Octave: the interpreter and its libraries are in /usr, or shown read-only where they
-    // are (a venv, pyenv: harness/sandboxed_interpreter.hpp); the server script and the student's
+    // are (a venv, pyenv: harness/isolation/sandboxed_interpreter.hpp); the server script and the student's
     // file (or folder) are the last two arguments.
     if (cmd.size() > 2) {
       const harness::SandboxedInterpreter si = harness::interpreter_for_sandbox(language, cmd[0]);
@@ -546,7 +546,7 @@ int run_catalogue(bool markdown, bool check, const std::string& path) {
 }  // namespace gm
 
 int main(int argc, char** argv) {
-  // A check started by a class run dies with it (harness/class_mode.cpp): an interrupted class
+  // A check started by a class run dies with it (harness/class/class_mode.cpp): an interrupted class
   // leaves no check running behind it, writing into the reports a resumed run is writing.
   if (std::getenv("GEOMECH_DIE_WITH_PARENT")) {
     const pid_t parent = ::getppid();
@@ -709,7 +709,7 @@ int main(int argc, char** argv) {
   serve_mut->group("");
 
   gm::golden::add_commands(app);  // runs from its own callbacks (golden/cli.hpp)
-  gm::harness::add_lecturer_commands(app);  // autograder, grade-submission, class-html (harness/lecturer_cli.hpp)
+  gm::harness::add_lecturer_commands(app);  // autograder, grade-submission, class-html (harness/class/lecturer_cli.hpp)
 
   // Bad arguments exit with 2, like every other input error of the tool (CLI11's own codes are
   // 100 and up); --help exits with 0.

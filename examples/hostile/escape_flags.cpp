@@ -5,7 +5,7 @@
 // A submission whose own `// geomech:` lines ask for compiler and linker flags that would read this
 // machine's files or run its programs from inside the sandboxed compile (issue 48). In untrusted and
 // class mode each is refused, with its reason, and the file is not compiled; the same lines in your own
-// file, checked in-process, would be passed on (harness/library_flags.hpp).
+// file, checked in-process, would be passed on (harness/program/library_flags.hpp).
 #include <geomech/student.hpp>
 
 struct EscapeFlags {

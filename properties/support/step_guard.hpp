@@ -5,7 +5,7 @@
 // it ended. What the verdict then says depends on the claim the property judges: a claimed
 // property FAILS (its claim could not be verified), an unclaimed one is NOT CHARACTERISED (nothing
 // was promised, and nothing could be measured); the one finding "your step raises ..." is made
-// once, by the integrator's domain check (properties/integrator_domain.cpp).
+// once, by the integrator's domain check (properties/integrators/integrator_domain.cpp).
 //
 // A failure of the code's process (it died, answered out of step: gm::ProcessFailure) is not a
 // raise and passes through: the check ends as the isolation reports it.
@@ -173,7 +173,7 @@ void guard(Slot& slot) {
 }  // namespace stepguard
 
 // The integrator with each of its steps guarded. Runs of steps (Integrator::rigid_body_run) are
-// left as they are: properties/support/step_runs.hpp steps a run that raised again one call at a
+// left as they are: properties/integrators/support/step_runs.hpp steps a run that raised again one call at a
 // time, through the guarded step, so that the raise is told with the step and state it came from.
 template <class T>
 Integrator<T> guarded(Integrator<T> in) {

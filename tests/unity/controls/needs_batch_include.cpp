@@ -1,5 +1,5 @@
 // Control for tests/unity/compiles_alone.py (must fail): this file calls the long-time energy
-// classifier of properties/support/long_time.hpp without including it, as a file can when a file
+// classifier of properties/integrators/support/long_time.hpp without including it, as a file can when a file
 // before it in its unity batch includes that header. Compiled alone, `longtime` is undeclared.
 #include "properties/registry.hpp"
 

@@ -1,0 +1,780 @@
+#include "harness/class/class_mode.hpp"
+#include "harness/class/class_console.hpp"
+#include "harness/class/class_html.hpp"
+#include "harness/class/class_record.hpp"
+#include "harness/class/gradebook.hpp"
+#include "harness/isolation/sandbox.hpp"
+#include "harness/isolation/inert_text.hpp"
+#include "harness/isolation/submission_intake.hpp"
+
+#include "harness/isolation/isolate.hpp"
+#include "harness/isolation/process.hpp"
+#include "harness/reports/report.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+
+namespace gm::harness {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+// The problem of a submission refused before anything of it was checked (issue 46).
+const std::string kNotRead = "the submission was not read: ";
+
+struct Row {
+  Implementation impl;
+  bool built = false;
+  std::string build_message;
+  double build_seconds = 0;
+  int exit_code = -1;
+  double check_seconds = 0;
+  std::string problem;  // the check program itself failed to run properly
+  json report;          // verdicts.json
+};
+
+// A row as class-shard.json and class-row.json keep it (its report is read from its folder).
+json row_json(const Row& row) {
+  return {{"name", row.impl.name}, {"source", row.impl.source}, {"built", row.built},
+          {"build_message", row.build_message}, {"build_seconds", row.build_seconds},
+          {"exit_code", row.exit_code}, {"check_seconds", row.check_seconds}, {"problem", row.problem}};
+}
+
+// The row back, with the report of a checked implementation read from `reports`/<name>.
+Row row_from_json(const json& r, const fs::path& reports) {
+  Row row;
+  row.impl.name = r.at("name");
+  row.impl.source = r.at("source");
+
+  row.built = r.at("built");
+  row.build_message = r.at("build_message");
+  row.build_seconds = r.at("build_seconds");
+  row.exit_code = r.at("exit_code");
+  row.check_seconds = r.at("check_seconds");
+  row.problem = r.at("problem");
+  if (row.built && row.problem.empty()) {
+    // A name from a file (a shard, a kept row) names a folder here only when it could name one.
+    if (const std::string why = bad_implementation_name(row.impl.name); !why.empty())
+      throw std::runtime_error("a class result names an implementation '" + inert_text(row.impl.name) + "': " + why);
+    std::ifstream f(reports / row.impl.name / "verdicts.json");
+    try {
+      row.report = json::parse(f);
+    } catch (const std::exception& e) {
+      row.problem = std::string("its report cannot be read: ") + e.what();
+    }
+  }
+  return row;
+}
+
+// What a check of an implementation depends on, as a fingerprint (FNV-1a, 64 bits): its source
+// (the file, or every file of its folder, by name and content), the options it is checked with and
+// the suite itself (this program's bytes). Equal fingerprints: the same check would run again.
+struct Fingerprint {
+  std::uint64_t h = 14695981039346656037ull;
+  void add(std::string_view bytes) {
+    for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+    h = (h ^ 0xff) * 1099511628211ull;  // a separator, so that ("ab", "c") differs from ("a", "bc")
+  }
+  void add_file(const fs::path& p) {
+    std::ifstream f(p, std::ios::binary);
+    std::ostringstream os;
+    os << f.rdbuf();
+    add(os.str());
+  }
+  // A submission's snapshot: every path and its bytes (harness/isolation/submission_intake.hpp).
+  void add_tree(const SubmissionTree& t) {
+    for (const auto& [path, text] : t.files) {
+      add(path);
+      add(text);
+    }
+  }
+  std::string hex() const {
+    std::ostringstream os;
+    os << std::hex << std::setw(16) << std::setfill('0') << h;
+    return os.str();
+  }
+};
+
+const std::string& suite_identity() {
+  static const std::string id = [] {
+    Fingerprint f;
+    f.add_file("/proc/self/exe");
+    return f.hex();
+  }();
+  return id;
+}
+
+// A row as the class record reads it (harness/class/class_record.hpp): every view renders that.
+ClassRow class_row(const Row& row) {
+  ClassRow c;
+  c.name = row.impl.name;
+  c.source = row.impl.source;
+  c.built = row.built;
+  c.build_message = row.build_message;
+  c.build_seconds = row.build_seconds;
+  c.exit_code = row.exit_code;
+  c.check_seconds = row.check_seconds;
+  c.problem = row.problem;
+  c.report = row.report;
+  return c;
+}
+
+// A finished task's row (the payload of the task in run_class), with its report read.
+Row row_of(const Implementation& impl, const TaskResult& t, const std::string& report_dir) {
+  Row row;
+  row.impl = impl;
+  if (t.status != TaskResult::Status::Ok) {
+    row.problem = "checking it " + (t.detail.empty() ? std::string("failed") : t.detail);
+    return row;
+  }
+  json j = json::parse(t.payload);
+  j["name"] = impl.name;
+  j["source"] = impl.source;
+  for (const char* k : {"build_message", "problem"})
+    if (!j.contains(k)) j[k] = "";
+  for (const char* k : {"build_seconds", "check_seconds"})
+    if (!j.contains(k)) j[k] = 0.0;
+  if (!j.contains("exit_code")) j["exit_code"] = -1;
+  return row_from_json(j, report_dir);
+}
+
+}  // namespace
+
+std::vector<Implementation> find_implementations(const std::string& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw std::runtime_error(dir + " is not a folder");
+  const StrangerFolder folder(dir);
+  std::vector<Implementation> out;
+  auto is_source = [](const std::string& ext) { return ext == ".cpp" || ext == ".py" || ext == ".m"; };
+  for (const auto& e : folder.list()) {
+    const fs::path p(e.name);
+    const std::string ext = p.extension().string();
+    // Hidden: a .git folder, an editor's file, our own snapshots; but "..py" or "...py" would be
+    // implementations named "." or "..", refused below by name.
+    if (e.name[0] == '.' && p.stem() != "." && p.stem() != "..") continue;
+    Implementation impl;
+    impl.origin = e.name;
+    impl.source = (fs::path(dir) / e.name).string();
+    if (e.kind == EntryKind::File) {
+      if (!is_source(ext)) continue;
+      impl.name = p.stem().string();
+    } else if (e.kind == EntryKind::Folder) {
+      // A student's folder: one .cpp that registers a student, else one .py, else .m files (an
+      // Octave implementation may be a folder of function files). Looked at without following
+      // anything: a link, FIFO, socket or device in it refuses the submission, naming the entry.
+      impl.name = e.name;
+      std::vector<std::string> sources, python;
+      bool octave = false;
+      try {
+        for (const auto& f : folder.list(e.name)) {
+          if (f.name[0] == '.' || f.name == "__pycache__") continue;
+          const std::string rel = e.name + "/" + f.name;
+          if (f.kind != EntryKind::File && f.kind != EntryKind::Folder) throw RefusedEntry(rel, describe(f.kind));
+          if (f.kind != EntryKind::File) continue;
+          const std::string fext = fs::path(f.name).extension().string();
+          if (fext == ".cpp" && folder.read(rel, IntakeLimits{}.file_bytes).find("GEOMECH_STUDENT(") != std::string::npos)
+            sources.push_back(rel);
+          if (fext == ".py") python.push_back(rel);
+          if (fext == ".m") octave = true;
+        }
+        if (sources.size() == 1) impl.origin = sources.front();
+        else if (sources.empty() && python.size() == 1) impl.origin = python.front();
+        else if (sources.empty() && python.empty() && octave) impl.origin = e.name;
+        else continue;  // not a submission (a folder of shared material, an empty folder)
+        impl.source = (fs::path(dir) / impl.origin).string();
+      } catch (const RefusedEntry& r) {
+        impl.refused = r.what();
+      }
+    } else {
+      // A link, FIFO, socket or device: never followed or opened. Named like a submission (or like
+      // a folder, which a link may stand for), it is one that cannot be checked; otherwise it is
+      // not a submission and is left alone.
+      if (!ext.empty() && !is_source(ext)) continue;
+      impl.name = is_source(ext) ? p.stem().string() : e.name;
+      impl.refused = e.name + ": " + describe(e.kind);
+    }
+    if (const std::string why = bad_implementation_name(impl.name); !why.empty()) {
+      impl.refused = "'" + inert_text(e.name) + "' cannot be checked under the name '" + inert_text(impl.name) +
+                     "': " + why + " (rename it)";
+      impl.name = inert_text(impl.name);  // shown, never a folder: nothing of it is written
+      impl.source.clear();
+    }
+    out.push_back(std::move(impl));
+  }
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
+  // Two entries of one name (bob.py and a folder bob): neither is checked, and both rows say why.
+  for (std::size_t i = 1; i < out.size(); ++i)
+    if (out[i].name == out[i - 1].name) {
+      const std::string why = "two entries of the class folder are both named '" + out[i].name + "' (" +
+                              out[i - 1].origin + " and " + out[i].origin + "); rename one";
+      out[i].refused = out[i - 1].refused = why;
+    }
+  if (out.empty())
+    throw std::runtime_error(dir + " holds no implementation (*.cpp, *.py or *.m files, or folders with one .cpp using "
+                             "GEOMECH_STUDENT, one .py, or .m files)");
+  return out;
+}
+
+std::string default_class_report_dir(const std::string& class_dir) {
+  std::error_code ec;
+  fs::path p = fs::absolute(class_dir, ec).lexically_normal();
+  if (!p.has_filename()) p = p.parent_path();  // "week3/" is "week3"
+  const std::string name = p.filename().string();
+  return "geomech-reports/" + (name.empty() ? std::string("class") : name);
+}
+
+
+namespace {
+
+// The gradebook's inputs, read and checked before anything is checked (a misspelt rubric key is
+// found in a second, not after the class). The rubric grades the summary too, and the roster names
+// the students who handed nothing in, with or without --grades.
+struct Grades {
+  std::string csv;  // empty: no gradebook file
+  Rubric rubric;
+  std::optional<Roster> roster;
+};
+
+std::string read_text(const std::string& path, const char* what) {
+  std::ifstream f(path, std::ios::binary);
+  if (!f) throw std::runtime_error("cannot read the " + std::string(what) + " " + path);
+  std::ostringstream os;
+  os << f.rdbuf();
+  return os.str();
+}
+
+Grades load_grades(const GradeOptions& g) {
+  Grades out;
+  out.csv = g.csv;
+  if (!g.rubric.empty()) out.rubric = parse_rubric(read_text(g.rubric, "rubric"), g.rubric);
+  if (!g.roster.empty()) out.roster = parse_roster(read_text(g.roster, "roster"), g.roster);
+  return out;
+}
+
+// What a class's views are made from: the rows checked (in name order), the implementations not
+// checked yet (a run going on, or stopped), and the roster's students with nothing in the folder.
+struct ClassState {
+  std::string class_dir;
+  std::vector<Row> rows;
+  std::vector<std::string> pending;
+  std::vector<std::string> no_submission;
+};
+
+std::string md_cell_of(const std::string& text) { return md_inline(text); }
+
+}  // namespace
+
+// Every view of a class, from one decision (harness/class/class_record.hpp, issue 49): summary.md,
+// summary.html and the gradebook, rewritten together (each atomically) as each implementation
+// finishes, so that they always agree, an interrupted run included: the students not checked yet
+// are listed in the summaries and have no grade in the gradebook, which says why. When `final`,
+// the console gets the table. Returns the exit status (0: every row PASS).
+static int summarise_class(const ClassState& st, const std::string& report_dir, const Grades& grades, bool final) {
+  std::error_code ec;
+  std::vector<ClassRow> class_rows;
+  for (const auto& row : st.rows) class_rows.push_back(class_row(row));
+  for (const auto& name : st.no_submission) class_rows.push_back(no_submission_row(name));
+  std::sort(class_rows.begin(), class_rows.end(), [](const ClassRow& a, const ClassRow& b) { return a.name < b.name; });
+  const ClassView view = decide_class(class_rows, grades.rubric);
+  const auto& areas = area_names();
+  const std::size_t total = view.students.size() + st.pending.size();
+  std::ostringstream md, console;
+  md << "# geomech class report: " << md_inline(st.class_dir) << "\n\n";
+  if (!st.pending.empty()) {
+    md << "**In progress: " << view.students.size() << " of " << total
+       << " implementations checked.** Not yet checked (the same command again resumes with them): ";
+    for (std::size_t i = 0; i < st.pending.size(); ++i) md << (i ? ", " : "") << md_inline(st.pending[i]);
+    md << "." << (grades.csv.empty() ? "" : " The gradebook leaves their grades empty and says why in their row"
+                                              " (or is not written yet, while nothing checked can be graded).")
+       << "\n\n";
+  }
+  md << view.students.size() << " implementations";
+  if (!st.no_submission.empty()) md << " (" << st.no_submission.size() << " on the roster with no submission)";
+  md << ". Grades: " << md_inline(grades.rubric.source) << ", " << view.assignment.size() << " slots in the assignment"
+     << (view.assignment_from_rubric ? "" : " (every slot a student of the class provides; a rubric's \"assignment\" "
+                                            "makes a PASS need all of them)")
+     << ". Each area cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or ERROR), then the checks that did "
+        "not run: n/w, of slots not written; d/o, in 50 digits or rationals, which the code or its language does not "
+        "compute in (double only). Details in each implementation's report; summary.html is this page to read, "
+        "sortable.\n\n";
+  if (!view.no_grades.empty()) md << "**No grades**: " << md_inline(view.no_grades) << "\n\n";
+  md << "| implementation | result | grade |";
+  for (const auto& a : areas) md << " " << a << " |";
+  md << " report |\n|---|---|---|";
+  for (std::size_t i = 0; i < areas.size(); ++i) md << "---|";
+  md << "---|\n";
+  console << "\n" << std::left << std::setw(22) << "implementation" << std::setw(18) << "result" << std::setw(10) << "grade";
+  for (const auto& a : areas) console << std::setw(22) << a;
+  console << "\n" << std::string(22 + 18 + 10 + 22 * areas.size(), '-') << "\n";
+  int bad = 0;
+  for (const auto& s : view.students) {
+    if (s.result != "PASS") ++bad;
+    const std::string grade = view.no_grades.empty() ? format_points(s.score.points) : "-";
+    md << "| " << md_inline(s.row->name) << " | " << (s.result == "PASS" ? s.result : "**" + s.result + "**") << " | "
+       << grade << " |";
+    console << std::setw(22) << inert_text(s.row->name) + " " << std::setw(18) << s.result + " " << std::setw(10)
+            << grade + " ";
+    for (const auto& a : areas) {
+      auto it = s.areas.find(a);
+      const std::string c = it == s.areas.end() ? "-" : cell_text(it->second);
+      md << " " << c << " |";
+      console << std::setw(22) << c + " ";  // a cell wider than its column still ends with a space
+    }
+    const std::string link = s.row->name + "/report.md";
+    md << " " << (s.report_link.empty() ? "-" : "[" + md_inline(link) + "](" + md_link_target(link) + ")") << " |\n";
+    console << "\n";
+  }
+  md << "\n## Each student in words\n\n";
+  for (const auto& s : view.students) {
+    md << "- **" << md_inline(s.row->name) << "**" << (s.language.empty() ? "" : " (" + s.language + ")") << ": ";
+    const auto words = words_of(s);
+    for (std::size_t i = 0; i < words.size(); ++i) md << (i ? "; " : "") << md_cell_of(words[i]);
+    md << ".";
+    if (!s.report_link.empty()) md << " [report](" << md_link_target(s.report_link) << ")";
+    md << "\n";
+  }
+  md << "\n";
+  for (const auto& s : view.students) {
+    if (s.status == "does not compile") {
+      md << "## " << md_inline(s.row->name) << ": does not compile\n\n" << md_fenced(bounded_text(s.row->build_message)) << "\n";
+      console << "\n" << inert_text(s.row->name) << " does not compile:\n" << inert_text(bounded_text(s.row->build_message)) << "\n";
+    } else if (s.status == "not checked") {
+      md << "## " << md_inline(s.row->name) << ": not checked\n\n" << md_fenced(bounded_text(s.row->problem)) << "\n";
+      console << "\n" << inert_text(s.row->name) << ": " << inert_text(bounded_text(s.row->problem)) << "\n";
+    }
+  }
+  write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
+  ClassPage page;
+  page.class_name = st.class_dir;
+  page.rubric_source = grades.rubric.source;
+  page.pending = st.pending;
+  write_file_atomically((fs::path(report_dir) / "summary.html").string(), class_summary_html(view, page));
+  // The gradebook, with the summary: the same students, the same grades; one not checked yet has
+  // no grade and says so (an empty cell is "no grade" to Moodle and Canvas).
+  std::vector<StudentResult> students;
+  for (const auto& s : view.students) students.push_back(s.graded);
+  for (const auto& name : st.pending) {
+    StudentResult p;
+    p.name = name;
+    p.status = kNotCheckedYet;
+    students.push_back(p);
+  }
+  if (!grades.csv.empty() && view.no_grades.empty()) {
+    std::string csv;
+    try {
+      csv = write_gradebook_csv(students, grades.rubric, grades.roster);
+    } catch (const std::runtime_error&) {
+      if (final) throw;
+    }
+    // Nothing gradable yet (a run that has checked nobody, under a rubric that learns its
+    // assignment from the class): no gradebook at all rather than an earlier run's.
+    if (csv.empty()) fs::remove(grades.csv, ec);
+    else write_file_atomically(grades.csv, csv);
+  }
+  if (!final) return bad == 0 ? 0 : 1;
+  if (!grades.csv.empty() && !view.no_grades.empty())
+    throw std::runtime_error("no gradebook written: " + view.no_grades + " (the summaries are written)");
+  std::cout << console.str() << "\nsummary: " << report_dir << "/summary.md and summary.html; one report per implementation in "
+            << report_dir << "/<name>/report.md (and .html)\n";
+  if (!grades.csv.empty()) {
+    std::cout << "grades: " << grades.csv << " (" << grades.rubric.source << "; " << view.assignment.size()
+              << " slots in the assignment";
+    if (!grades.rubric.assignment) std::cout << ": every slot a student of the class provides";
+    std::cout << "; docs/GRADEBOOK.md)\n";
+  }
+  if (grades.roster)
+    for (const auto& w : roster_warnings(students, *grades.roster))
+      if (w.find("matches no implementation") == std::string::npos) std::cout << "warning: " << w << "\n";
+  return bad == 0 ? 0 : 1;
+}
+
+
+std::vector<Implementation> shard_of(const std::vector<Implementation>& all, int k, int n) {
+  std::vector<Implementation> out;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    if (static_cast<int>(i % static_cast<std::size_t>(n)) == k - 1) out.push_back(all[i]);
+  return out;
+}
+
+int run_class(const ClassOptions& o, const Toolchain& tc) {
+  const auto all_impls = find_implementations(o.dir);
+  if (o.shard_n < 1 || o.shard_k < 1 || o.shard_k > o.shard_n)
+    throw std::runtime_error("--shard K/N needs 1 <= K <= N (got " + std::to_string(o.shard_k) + "/" +
+                             std::to_string(o.shard_n) + ")");
+  auto impls = shard_of(all_impls, o.shard_k, o.shard_n);
+  const std::string report_dir = o.report_dir.empty() ? default_class_report_dir(o.dir) : o.report_dir;
+  std::error_code ec;
+  fs::create_directories(report_dir, ec);
+  if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
+
+  const auto grades = load_grades(o.grades);  // a bad rubric is said before anything runs
+  // The roster's students with nothing in the class folder get a row each (0, "no submission"), in
+  // a run of the whole class (a shard does not know the other shards' names; merge-class adds them).
+  std::vector<std::string> no_submission;
+  if (grades.roster && o.shard_n == 1)
+    for (const auto& [name, entry] : *grades.roster)
+      if (std::none_of(all_impls.begin(), all_impls.end(), [&](const Implementation& i) { return i.name == name; }))
+        no_submission.push_back(name);
+  if (o.untrusted)
+    if (const std::string why = sandbox_unavailable(); !why.empty()) throw std::runtime_error(why);
+  std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir
+            << (o.untrusted ? " (untrusted mode: each sandboxed)" : " (trusted: in-process)");
+  if (o.shard_n > 1)
+    std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << all_impls.size() << ")";
+  std::cerr << ", " << o.jobs << " at a time\n";
+  // How one implementation's check ended, into its row's JSON: status 0 or 1 is a verdict, anything
+  // else (a crash, a refusal, a bad option) is a problem shown in the summary.
+  auto record_check = [](json& j, const ProcessResult& pr, const std::string& what) {
+    j["exit_code"] = pr.exit_code;
+    j["check_seconds"] = pr.seconds;
+    if (pr.exit_code != 0 && pr.exit_code != 1)
+      j["problem"] = what + " ended with " +
+                     (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
+                     pr.output.substr(0, 2000);
+    return j.dump(-1, ' ', false, json::error_handler_t::replace);
+  };
+  // Resuming (issue 34): what each check depends on, and the implementations whose complete result
+  // from an earlier run (class-row.json beside the report, written once the check has ended) has
+  // the same fingerprint. A check cut off by an interruption left no class-row.json: it runs again.
+  std::string options_text = o.untrusted ? "untrusted" : "trusted";
+  for (const auto& a : to_args(o.check)) options_text += '\0' + a;
+  std::vector<std::string> prints(impls.size());
+  std::vector<std::optional<Row>> finished(impls.size());
+  std::vector<std::size_t> to_check;
+  std::size_t resumed = 0;
+  // The files the lecturer shares with every C++ submission (--shared), read once.
+  SubmissionTree shared;
+  for (const auto& file : o.shared) {
+    try {
+      shared.files.emplace_back(fs::path(file).filename().string(), read_stranger_file(file));
+    } catch (const RefusedEntry& e) {
+      throw std::runtime_error("--shared " + file + ": " + e.why());
+    }
+  }
+  // Each submission's snapshot (harness/isolation/submission_intake.hpp): read without following anything,
+  // within limits, into a folder of ours; what is fingerprinted, compiled and checked is that copy.
+  const StrangerFolder class_folder(o.dir);
+  // In the compilers' cache, under a name of the class folder: a whole run, its shards and a resumed
+  // run check the same copies (and a C++ one compiled once is not compiled again).
+  const fs::path snapshots = fs::absolute(o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir) /
+                             ("class-" + [&] {
+                               Fingerprint f;
+                               f.add(fs::absolute(o.dir).lexically_normal().string());
+                               return f.hex();
+                             }()) / "submissions";
+  for (std::size_t i = 0; i < impls.size(); ++i) {
+    Implementation& impl = impls[i];
+    if (!impl.refused.empty()) {
+      Row row;
+      row.impl = impl;
+      row.problem = kNotRead + impl.refused;
+      finished[i] = std::move(row);
+      continue;
+    }
+    const bool folder = impl.origin.find('/') != std::string::npos ||
+                        class_folder.look(impl.origin).kind == EntryKind::Folder;
+    const std::string root = folder ? impl.origin.substr(0, impl.origin.find('/')) : impl.origin;
+    SubmissionTree tree;
+    try {
+      tree = read_submission(class_folder, root);
+    } catch (const RefusedEntry& e) {
+      impl.refused = e.what();
+      Row row;
+      row.impl = impl;
+      row.problem = kNotRead + impl.refused;
+      finished[i] = std::move(row);
+      continue;
+    }
+    const std::string ext = fs::path(impl.origin).extension().string();
+    if (ext == ".cpp")  // headers shared on purpose; a file of the student's own name stays theirs
+      for (const auto& [name, text] : shared.files)
+        if (std::none_of(tree.files.begin(), tree.files.end(), [&](const auto& f) { return f.first == name; }))
+          tree.files.emplace_back(name, text);
+    const fs::path dest = snapshots / impl.name;
+    write_tree(tree, dest);
+    impl.source = (folder && impl.origin.find('/') == std::string::npos)
+                      ? dest.string()  // an Octave folder
+                      : (dest / fs::path(impl.origin).filename()).string();
+    Fingerprint f;
+    f.add(suite_identity());
+    f.add(options_text);
+    f.add_tree(tree);
+    prints[i] = f.hex();
+    const fs::path row_file = fs::path(report_dir) / impls[i].name / "class-row.json";
+    if (!o.fresh && fs::exists(row_file, ec)) {
+      try {
+        std::ifstream in(row_file);
+        const json j = json::parse(in);
+        if (j.at("format") == "geomech-class-row 1" && j.at("fingerprint") == prints[i]) {
+          Row row = row_from_json(j.at("row"), report_dir);
+          if (row.problem.rfind("its report cannot be read", 0) != 0) {
+            finished[i] = std::move(row);
+            ++resumed;
+            continue;
+          }
+        }
+      } catch (const std::exception&) {
+        // unreadable: checked again
+      }
+    }
+    fs::remove(row_file, ec);
+    to_check.push_back(i);
+  }
+  if (resumed > 0)
+    std::cerr << "geomech check-class: " << resumed << " of " << impls.size()
+              << " implementations are unchanged since their last complete check (source, options and suite) and are "
+                 "not checked again (--fresh checks everyone)\n";
+
+  // The command a student runs on their own file, as the reports print it (issue 49): their file's
+  // name, no folder of the lecturer's, no lecturer's option ("geomech check bob.py", "geomech check
+  // dave/" for a folder of Octave files).
+  auto student_command = [](const Implementation& impl) {
+    const fs::path origin(impl.origin);
+    const bool octave_folder = impl.origin.find('/') == std::string::npos && origin.extension().empty();
+    return std::string("geomech check ") +
+           shell_quote(octave_folder ? impl.origin + "/" : origin.filename().string());
+  };
+  std::vector<std::function<std::string()>> tasks;
+  for (std::size_t i : to_check) {
+    const Implementation& impl = impls[i];
+    tasks.push_back([&, impl]() {
+      // A check started here dies with this run (a Ctrl-C or a killed job stops the class, not
+      // just its parent): tools/geomech.cpp reads this.
+      ::setenv("GEOMECH_DIE_WITH_PARENT", "1", 1);
+      json j;
+      const std::string ext = fs::path(impl.source).extension().string();
+      std::error_code dir_ec;
+      const bool other_language = ext == ".py" || ext == ".m" || fs::is_directory(impl.source, dir_ec);
+      if (o.untrusted && !other_language) {
+        // C++ in untrusted mode: the protocol server is compiled here (sandboxed), so that a file
+        // that does not compile is reported as such; `geomech check --untrusted` then finds it built.
+        BuildOptions bo = o.build;
+        bo.jobs = 1;
+        bo.name = impl.name;
+        bo.server = bo.sandbox = true;
+        const BuildResult b = build_student(impl.source, tc, bo);
+        if (!b.ok) {
+          j["built"] = false;
+          j["build_message"] = b.message;
+          j["build_seconds"] = b.seconds;
+          return j.dump(-1, ' ', false, json::error_handler_t::replace);
+        }
+        j["build_seconds"] = b.seconds;
+      }
+      if (other_language || o.untrusted) {
+        // Python and Octave, and every language in untrusted mode: `geomech check FILE` runs the
+        // implementation as a protocol server (docs/PROTOCOL.md), sandboxed when untrusted.
+        CheckCliOptions co = o.check;
+        co.jobs = 1;
+        co.quiet = true;
+        co.report_dir = (fs::path(report_dir) / impl.name).string();
+        std::vector<std::string> argv{fs::read_symlink("/proc/self/exe").string(), "check", impl.source,
+                                      "--reproduce-prefix", student_command(impl)};
+        if (o.untrusted) argv.insert(argv.end(), {"--untrusted", "--name", impl.name});
+        if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
+        const auto args = to_args(co);
+        argv.insert(argv.end(), args.begin(), args.end());
+        if (fs::path(impl.source).extension() == ".cpp" || fs::path(impl.source).extension() == ".cc") {
+          const auto libs = library_args(o.build.libraries);  // --pkg, --cxxflags, --ldflags (issue 48)
+          argv.insert(argv.end(), libs.begin(), libs.end());
+        }
+        j["built"] = true;
+        if (!j.contains("build_seconds")) j["build_seconds"] = 0.0;  // the sandboxed build above, if any
+        return record_check(j, run_process(ProcessSpec{argv, {}, false}), "the check");
+      }
+      BuildOptions bo = o.build;
+      bo.jobs = 1;
+      bo.name = impl.name;
+      const BuildResult b = build_student(impl.source, tc, bo);
+      j["built"] = b.ok;
+      j["build_message"] = b.message;
+      j["build_seconds"] = b.seconds;
+      if (!b.ok) return j.dump(-1, ' ', false, json::error_handler_t::replace);
+      CheckCliOptions co = o.check;
+      co.jobs = 1;
+      co.quiet = true;
+      co.report_dir = (fs::path(report_dir) / impl.name).string();
+      std::vector<std::string> argv{b.program};
+      const auto args = to_args(co);
+      argv.insert(argv.end(), args.begin(), args.end());
+      argv.insert(argv.end(), {"--name", impl.name, "--source", impl.source, "--build-notes", b.notes_file,
+                               "--reproduce-prefix", student_command(impl)});
+      return record_check(j, run_process(ProcessSpec{argv, {}, false}), "the check program");
+    });
+  }
+  IsolationOptions io;
+  io.jobs = o.jobs;
+  io.timeout_seconds = o.timeout_per_implementation;
+  io.memory_limit_mb = 0;  // the compilers need what they need
+  // For the test of an interrupted run (tests/run_class_resume.cmake): after N implementations,
+  // this process stops itself with the signal named (INT, as Ctrl-C; KILL, as a killed job).
+  long stop_after = -1;
+  int stop_signal = 0;
+  if (const char* t = std::getenv("GEOMECH_TEST_STOP_AFTER")) {
+    const std::string spec(t);
+    stop_after = std::atol(spec.c_str());
+    stop_signal = spec.find("KILL") != std::string::npos ? SIGKILL : SIGINT;
+  }
+  // The views of the class as it stands (summary.md, summary.html, the gradebook), rewritten
+  // together, now (so that an earlier run's complete summary and gradebook never stand beside this
+  // run's deleted results) and as each implementation finishes.
+  const std::string resume = o.command.empty() ? (o.front_door.empty() ? "geomech" : o.front_door) + " check-class " +
+                                                     shell_quote(o.dir)
+                                               : o.command;
+  ClassConsole console(impls.size(), impls.size() - to_check.size());
+  auto state_now = [&] {
+    ClassState st;
+    st.class_dir = o.dir;
+    for (std::size_t k = 0; k < impls.size(); ++k)
+      if (finished[k]) st.rows.push_back(*finished[k]);
+      else st.pending.push_back(impls[k].name);
+    st.no_submission = no_submission;
+    return st;
+  };
+  auto rewrite_views = [&] {
+    const ClassState st = state_now();
+    summarise_class(st, report_dir, grades, false);
+    std::ostringstream say;
+    say << "\n\ngeomech check-class: interrupted. " << st.rows.size() << " of " << impls.size()
+        << " results are kept in " << report_dir << "/ (a report and class-row.json each); summary.md and "
+           "summary.html"
+        << (grades.csv.empty() ? "" : " and the gradebook " + grades.csv) << " list the " << st.pending.size()
+        << " not checked yet" << (grades.csv.empty() ? "" : " (no grade in the gradebook)")
+        << ". The same command resumes, checking only those:\n  " << resume << "\n";
+    console.on_interrupt_say(say.str());
+  };
+  rewrite_views();
+  io.on_started = [&](std::size_t t) { console.started(impls[to_check[t]].name); };
+  io.on_idle = [&] { console.tick(); };
+  std::size_t done = 0;
+  io.on_finished = [&](std::size_t t, const TaskResult& result) {
+    const std::size_t i = to_check[t];
+    Row row = row_of(impls[i], result, report_dir);
+    // The result is kept the moment it is known (class-row.json, then the summary, both atomic),
+    // so an interruption loses at most the checks still running.
+    std::error_code dir_ec;
+    fs::create_directories(fs::path(report_dir) / impls[i].name, dir_ec);
+    json keep{{"format", "geomech-class-row 1"}, {"fingerprint", prints[i]}, {"row", row_json(row)}};
+    write_file_atomically((fs::path(report_dir) / impls[i].name / "class-row.json").string(), keep.dump(1));
+    const double seconds = result.seconds;
+    finished[i] = std::move(row);
+    rewrite_views();
+    // Its line: the verdict and grade the summary now shows for it.
+    std::vector<ClassRow> rows_now;
+    for (const auto& f : finished)
+      if (f) rows_now.push_back(class_row(*f));
+    const ClassView view = decide_class(rows_now, grades.rubric);
+    for (const auto& sv : view.students)
+      if (sv.row->name == impls[i].name)
+        console.finished(impls[i].name, sv.result, view.no_grades.empty() ? sv.score.headline.substr(0, sv.score.headline.find(':')) : "",
+                         seconds);
+    ++done;
+    if (stop_after >= 0 && static_cast<long>(done) >= stop_after) ::raise(stop_signal);
+  };
+  run_isolated(tasks, io);
+
+  std::vector<Row> rows;
+  for (auto& r : finished) rows.push_back(*r);
+
+  // What a merge needs to rebuild the summary: the rows, with the class and the shard they belong to.
+  json shard;
+  shard["format"] = "geomech-class-shard 1";
+  shard["class"] = o.dir;
+  shard["implementations"] = all_impls.size();
+  shard["shard"] = {o.shard_k, o.shard_n};
+  shard["rows"] = json::array();
+  for (const auto& row : rows) shard["rows"].push_back(row_json(row));
+  for (const auto& name : no_submission) shard["rows"].push_back(class_row_to_json(no_submission_row(name)));
+  write_file_atomically((fs::path(report_dir) / "class-shard.json").string(), shard.dump(1));
+  if (o.shard_n > 1)
+    std::cerr << "geomech check-class: shard " << o.shard_k << "/" << o.shard_n << " written to " << report_dir
+              << "; combine the shards with `geomech merge-class OUT SHARD_DIR...`\n";
+  if (resumed > 0)
+    std::cout << "(" << resumed << " of " << impls.size() << " implementations resumed from the previous run, unchanged)\n";
+  ClassState st;
+  st.class_dir = o.dir;
+  st.rows = rows;
+  st.no_submission = no_submission;
+  return summarise_class(st, report_dir, grades, true);
+}
+
+int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir, const GradeOptions& grade_options) {
+  if (shard_dirs.empty()) throw std::runtime_error("merge-class: no shard folders given");
+  const auto grades = load_grades(grade_options);
+  std::vector<Row> rows;
+  std::string klass;
+  std::size_t total = 0;
+  int n = 0;
+  std::set<int> seen;
+  std::error_code ec;
+  fs::create_directories(out_dir, ec);
+  if (ec) throw std::runtime_error("cannot create " + out_dir + ": " + ec.message());
+  for (const auto& dir : shard_dirs) {
+    const fs::path file = fs::path(dir) / "class-shard.json";
+    std::ifstream f(file);
+    if (!f) throw std::runtime_error(file.string() + ": no shard result here (run check-class --shard K/N first)");
+    json j;
+    try {
+      j = json::parse(f);
+      if (j.at("format") != "geomech-class-shard 1") throw std::runtime_error("unknown format");
+    } catch (const std::exception& e) {
+      throw std::runtime_error(file.string() + ": not a class shard result (" + e.what() + ")");
+    }
+    const int k = j.at("shard").at(0), nn = j.at("shard").at(1);
+    if (n == 0) {
+      n = nn;
+      klass = j.at("class");
+      total = j.at("implementations");
+    } else if (nn != n || j.at("class") != klass) {
+      throw std::runtime_error(file.string() + ": shard " + std::to_string(k) + "/" + std::to_string(nn) + " of " +
+                               j.at("class").get<std::string>() + " does not belong with shards of " +
+                               std::to_string(n) + " of " + klass);
+    }
+    if (!seen.insert(k).second) throw std::runtime_error(file.string() + ": shard " + std::to_string(k) + " given twice");
+    for (const auto& r : j.at("rows")) {
+      if (!r.value("submitted", true)) continue;  // a roster name with no submission: added below
+      Row row = row_from_json(r, dir);
+      const fs::path report = fs::path(dir) / row.impl.name;
+      if (fs::exists(report) && fs::absolute(report) != fs::absolute(fs::path(out_dir) / row.impl.name)) {
+        fs::remove_all(fs::path(out_dir) / row.impl.name, ec);
+        fs::copy(report, fs::path(out_dir) / row.impl.name, fs::copy_options::recursive, ec);
+        if (ec) throw std::runtime_error("cannot copy " + report.string() + " into " + out_dir + ": " + ec.message());
+      }
+      rows.push_back(std::move(row));
+    }
+  }
+  if (static_cast<int>(seen.size()) != n) {
+    std::string missing;
+    for (int k = 1; k <= n; ++k)
+      if (!seen.count(k)) missing += (missing.empty() ? "" : ", ") + std::to_string(k);
+    throw std::runtime_error("merge-class: shards " + missing + " of " + std::to_string(n) + " are missing");
+  }
+  if (rows.size() != total)
+    throw std::runtime_error("merge-class: the shards hold " + std::to_string(rows.size()) + " implementations, the class " +
+                             std::to_string(total));
+  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.impl.name < b.impl.name; });
+  ClassState st;
+  st.class_dir = klass;
+  st.rows = rows;
+  if (grades.roster)
+    for (const auto& [name, entry] : *grades.roster)
+      if (std::none_of(rows.begin(), rows.end(), [&](const Row& r) { return r.impl.name == name; }))
+        st.no_submission.push_back(name);
+  return summarise_class(st, out_dir, grades, true);
+}
+
+}  // namespace gm::harness

@@ -1,0 +1,35 @@
+#include "harness/engine/thorough_only.hpp"
+
+#include "core/data_path.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace gm::harness {
+
+std::string default_thorough_only_path() { return suite_data_path("spec/thorough_only.json"); }
+
+ThoroughOnlySelection load_thorough_only(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error(path + ": no list of 50-digit runs left to --thorough (made by `geomech mutants --matrix --write-thorough-only`)");
+  nlohmann::json j;
+  ThoroughOnlySelection s;
+  try {
+    j = nlohmann::json::parse(in);
+    if (j.at("format") != kThoroughOnlyFormat) throw std::runtime_error("unknown format");
+    for (const auto& c : j.at("checks")) s.checks.insert(c.at("check").get<std::string>());
+  } catch (const std::exception& e) {
+    throw std::runtime_error(path + ": not a list of 50-digit runs left to --thorough (" + e.what() + ")");
+  }
+  std::ostringstream os;
+  os << "in the kill matrix, every mutant these " << s.checks.size() << " runs kill is killed by a check that is kept ("
+     << j.value("killed_by_kept", 0) << " of the " << j.value("killable", 0) << " mutants the matrix kills; `"
+     << j.value("made_by", std::string("?")) << "`)";
+  s.provenance = os.str();
+  return s;
+}
+
+}  // namespace gm::harness

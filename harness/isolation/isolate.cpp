@@ -1,0 +1,438 @@
+#include "harness/isolation/isolate.hpp"
+
+#include "harness/isolation/process_cpu.hpp"
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <deque>
+#include <set>
+#include <iostream>
+#include <stdexcept>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#if defined(__SANITIZE_ADDRESS__)
+#define GM_UNDER_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define GM_UNDER_ASAN 1
+#endif
+#endif
+
+namespace gm::harness {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr std::size_t kOutputTail = 4096;
+// A child whose output has begun a sanitizer's report is dying, not hanging: symbolising the report's
+// stack (the DWARF of a large binary, compressed with -gz) can take seconds on a loaded machine, so
+// such a child gets this long past the timeout to finish its report before it is stopped.
+constexpr Clock::duration kSanitizerGrace = std::chrono::seconds(120);
+// A task past its time that has had less than this share of a core waits rather than computes.
+constexpr double kWaitingShare = 0.05;
+
+int g_worker = 0;  // this process's worker slot (set before a task's child is forked)
+
+struct Running {
+  std::size_t index;
+  int worker;
+  pid_t pid;
+  int result_fd;
+  int output_fd;
+  Clock::time_point start;
+  std::string result;
+  std::string output;
+  std::string sanitizer_report;  // the first line of a sanitizer's report in the output, if any
+  double worker_cpu0 = 0;        // the worker's server's CPU when the task started
+  double cpu = 0;                // the code's CPU so far (sampled)
+  Clock::time_point sampled{};   // when `cpu` was last read
+  bool retried = false;
+};
+
+// In a sanitized build (ASan, UBSan) the sanitizer catches a crash before the signal does, prints a
+// report and exits or aborts: its first line says what happened. Kept apart from the output's
+// tail, which a long stack trace would push it out of.
+void note_sanitizer_report(const std::string& buf, std::string& report) {
+  if (!report.empty()) return;
+  for (const char* marker : {"ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "ERROR: UndefinedBehaviorSanitizer",
+                             ": runtime error: "}) {
+    const std::size_t at = buf.find(marker);
+    if (at == std::string::npos) continue;
+    const std::size_t end = buf.find('\n', at);
+    if (end == std::string::npos) return;  // the line is not complete yet
+    std::size_t begin = buf.rfind('\n', at);
+    begin = begin == std::string::npos ? 0 : begin + 1;
+    report = buf.substr(begin, end - begin);
+    if (report.rfind("==", 0) == 0) {  // "==1234==ERROR: ..." -> "ERROR: ..."
+      const std::size_t close = report.find("==", 2);
+      if (close != std::string::npos) report.erase(0, close + 2);
+    }
+    return;
+  }
+}
+
+void append_tail(std::string& buf, const char* data, std::size_t n, std::string* sanitizer_report) {
+  buf.append(data, n);
+  if (sanitizer_report) note_sanitizer_report(buf, *sanitizer_report);
+  if (buf.size() > 2 * kOutputTail) buf.erase(0, buf.size() - kOutputTail);
+}
+
+// Reads what is available; returns false at end of file (or on an error other than EAGAIN).
+// With sanitizer_report, only the tail of the output is kept, and a sanitizer's report is noted.
+bool drain(int fd, std::string& into, std::string* sanitizer_report = nullptr) {
+  const bool tail_only = sanitizer_report != nullptr;
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n > 0) {
+      if (tail_only)
+        append_tail(into, buf, static_cast<std::size_t>(n), sanitizer_report);
+      else
+        into.append(buf, static_cast<std::size_t>(n));
+      continue;
+    }
+    if (n == 0) return false;
+    if (errno == EINTR) continue;
+    return errno == EAGAIN || errno == EWOULDBLOCK;
+  }
+}
+
+void write_all(int fd, const std::string& s) {
+  std::size_t off = 0;
+  while (off < s.size()) {
+    const ssize_t n = ::write(fd, s.data() + off, s.size() - off);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return;
+    }
+    off += static_cast<std::size_t>(n);
+  }
+}
+
+[[noreturn]] void child_main(const std::function<std::string()>& task, int result_fd, int output_fd,
+                             long memory_limit_mb, pid_t parent) {
+  ::setpgid(0, 0);  // its own process group, so a timeout can kill whatever it started
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  if (::getppid() != parent) ::_exit(120);
+  ::dup2(output_fd, STDOUT_FILENO);
+  ::dup2(output_fd, STDERR_FILENO);
+  ::close(output_fd);
+  std::setvbuf(stdout, nullptr, _IONBF, 0);
+  std::cout << std::unitbuf;
+  rlimit no_core{0, 0};
+  ::setrlimit(RLIMIT_CORE, &no_core);
+#ifndef GM_UNDER_ASAN
+  if (memory_limit_mb > 0) {
+    const rlim_t bytes = static_cast<rlim_t>(memory_limit_mb) * 1024 * 1024;
+    rlimit as{bytes, bytes};
+    ::setrlimit(RLIMIT_AS, &as);
+  }
+#else
+  (void)memory_limit_mb;
+#endif
+  std::string message;
+  try {
+    const std::string payload = task();
+    write_all(result_fd, "R" + payload);
+    ::close(result_fd);
+    ::_exit(0);
+  } catch (const std::exception& e) {
+    message = e.what();
+  } catch (...) {
+    message = "an exception that is not a std::exception";
+  }
+  write_all(result_fd, "E" + message);
+  ::close(result_fd);
+  ::_exit(0);
+}
+
+TaskResult finish(Running& r, int status) {
+  TaskResult t;
+  t.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
+  t.cpu_seconds = r.cpu;
+  t.retried = r.retried;
+  t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
+  t.sanitizer_report = r.sanitizer_report;
+  if (WIFSIGNALED(status)) {
+    t.status = TaskResult::Status::Crashed;
+    t.signal = WTERMSIG(status);
+    t.detail = "killed by " + describe_signal(t.signal);
+    if (!r.sanitizer_report.empty()) t.detail += " after the sanitizer's report \"" + r.sanitizer_report + "\"";
+    return t;
+  }
+  t.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (t.exit_code == 0 && !r.result.empty() && r.result[0] == 'R') {
+    t.status = TaskResult::Status::Ok;
+    t.payload = r.result.substr(1);
+  } else if (t.exit_code == 0 && !r.result.empty() && r.result[0] == 'E') {
+    t.status = TaskResult::Status::Threw;
+    t.detail = "threw " + r.result.substr(1);
+  } else {
+    t.status = TaskResult::Status::Crashed;
+    t.detail = "exited with status " + std::to_string(t.exit_code) +
+               (r.sanitizer_report.empty()
+                    ? " without reporting a result (exit() or quick_exit() called by the code under test?)"
+                    : " after the sanitizer's report \"" + r.sanitizer_report + "\"");
+  }
+  return t;
+}
+
+}  // namespace
+
+std::string describe_signal(int sig) {
+  const char* name = nullptr;
+  const char* what = ::strsignal(sig);
+  switch (sig) {
+    case SIGSEGV: name = "SIGSEGV"; break;
+    case SIGABRT: name = "SIGABRT"; break;
+    case SIGFPE: name = "SIGFPE"; break;
+    case SIGILL: name = "SIGILL"; break;
+    case SIGBUS: name = "SIGBUS"; break;
+    case SIGKILL: name = "SIGKILL"; break;
+    case SIGTERM: name = "SIGTERM"; break;
+    case SIGXCPU: name = "SIGXCPU"; break;
+    case SIGPIPE: name = "SIGPIPE"; break;
+    default: break;
+  }
+  std::string s = "signal " + std::to_string(sig);
+  if (name) s += " (" + std::string(name) + (what ? std::string(", ") + what : std::string()) + ")";
+  else if (what) s += " (" + std::string(what) + ")";
+  return s;
+}
+
+int current_worker() { return g_worker; }
+
+std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,
+                                     const IsolationOptions& o) {
+  std::vector<TaskResult> results(tasks.size());
+  std::vector<std::size_t> seq = o.start_order;
+  {
+    std::vector<bool> seen(tasks.size(), false);
+    bool permutation = seq.size() == tasks.size();
+    for (std::size_t i : seq) permutation = permutation && i < tasks.size() && !seen[i] && (seen[i] = true);
+    if (!permutation) {
+      if (!seq.empty()) throw std::invalid_argument("run_isolated: start_order is not a permutation of the tasks");
+      seq.resize(tasks.size());
+      for (std::size_t i = 0; i < seq.size(); ++i) seq[i] = i;
+    }
+  }
+  // prepare_worker's failure is the task's: it did not run.
+  auto prepare = [&](int w, std::size_t i) {
+    if (!o.prepare_worker) return true;
+    try {
+      o.prepare_worker(w);
+      return true;
+    } catch (const std::exception& e) {
+      results[i].status = TaskResult::Status::Threw;
+      results[i].detail = std::string("threw ") + e.what();
+      return false;
+    }
+  };
+  if (!o.isolate) {
+    g_worker = 0;
+    for (std::size_t i : seq) {
+      const auto start = Clock::now();
+      if (o.on_started) o.on_started(i);
+      if (prepare(0, i)) {
+        try {
+          results[i].payload = tasks[i]();
+          results[i].status = TaskResult::Status::Ok;
+        } catch (const std::exception& e) {
+          results[i].status = TaskResult::Status::Threw;
+          results[i].detail = std::string("threw ") + e.what();
+        }
+        if (o.worker_done) o.worker_done(0, true);
+      }
+      results[i].seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      if (o.on_finished) o.on_finished(i, results[i]);
+    }
+    return results;
+  }
+
+  const int jobs = o.jobs < 1 ? 1 : o.jobs;
+  const auto wall_limit = std::chrono::duration_cast<Clock::duration>(
+      std::chrono::duration<double>(std::max(o.timeout_seconds * o.wall_factor, o.timeout_seconds + o.wall_floor)));
+  std::set<std::size_t> retried_;    // tasks started again after a busy machine stopped them
+  std::deque<std::size_t> again;     // ... waiting for a slot, before the rest
+  std::deque<Running> running;
+  std::size_t next = 0;
+  const pid_t self = ::getpid();
+  std::vector<bool> busy(static_cast<std::size_t>(jobs), false);
+
+  auto start_one = [&](std::size_t i) {
+    int w = 0;
+    while (busy[static_cast<std::size_t>(w)]) ++w;
+    if (o.on_started) o.on_started(i);
+    if (!prepare(w, i)) {
+      if (o.on_finished) o.on_finished(i, results[i]);
+      return;
+    }
+    busy[static_cast<std::size_t>(w)] = true;
+    g_worker = w;
+    int rp[2], op[2];
+    if (::pipe2(rp, O_CLOEXEC) != 0 || ::pipe2(op, O_CLOEXEC) != 0)
+      throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
+    std::cout.flush();
+    std::cerr.flush();
+    std::fflush(nullptr);
+    const pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error(std::string("cannot fork: ") + std::strerror(errno));
+    if (pid == 0) {
+      for (const auto& r : running) {  // the other children's pipes are not this child's business
+        ::close(r.result_fd);
+        ::close(r.output_fd);
+      }
+      ::close(rp[0]);
+      ::close(op[0]);
+      child_main(tasks[i], rp[1], op[1], o.memory_limit_mb, self);
+    }
+    ::close(rp[1]);
+    ::close(op[1]);
+    ::fcntl(rp[0], F_SETFL, O_NONBLOCK);
+    ::fcntl(op[0], F_SETFL, O_NONBLOCK);
+    g_worker = 0;
+    Running r{i, w, pid, rp[0], op[0], Clock::now(), {}, {}, {}};
+    r.worker_cpu0 = o.worker_cpu ? o.worker_cpu(w) : 0;
+    r.retried = retried_.count(i) > 0;
+    running.push_back(std::move(r));
+  };
+
+  while (next < tasks.size() || !running.empty() || !again.empty()) {
+    while (!again.empty() && static_cast<int>(running.size()) < jobs) {
+      const std::size_t i = again.front();
+      again.pop_front();
+      start_one(i);
+    }
+    while (next < tasks.size() && static_cast<int>(running.size()) < jobs) start_one(seq[next++]);
+
+    std::vector<pollfd> fds;
+    for (const auto& r : running) {
+      if (r.result_fd >= 0) fds.push_back(pollfd{r.result_fd, POLLIN, 0});
+      if (r.output_fd >= 0) fds.push_back(pollfd{r.output_fd, POLLIN, 0});
+    }
+    ::poll(fds.data(), fds.size(), 20);
+    if (o.on_idle) o.on_idle();
+
+    for (auto it = running.begin(); it != running.end();) {
+      Running& r = *it;
+      if (r.result_fd >= 0 && !drain(r.result_fd, r.result)) {
+        ::close(r.result_fd);
+        r.result_fd = -1;
+      }
+      if (r.output_fd >= 0 && !drain(r.output_fd, r.output, &r.sanitizer_report)) {
+        ::close(r.output_fd);
+        r.output_fd = -1;
+      }
+      int status = 0;
+      const pid_t w = ::waitpid(r.pid, &status, WNOHANG);
+      bool done = false;
+      if (w == r.pid) {
+        // It has ended: whatever it wrote is in the pipes (or held open by a descendant).
+        if (r.result_fd >= 0) drain(r.result_fd, r.result);
+        if (r.output_fd >= 0) drain(r.output_fd, r.output, &r.sanitizer_report);
+        ::kill(-r.pid, SIGKILL);  // descendants it may have left behind
+        results[r.index] = finish(r, status);
+        done = true;
+      } else {
+        // The code's CPU, read four times a second (issue 47): the limit is on the work it does.
+        const auto now = Clock::now();
+        if (now - r.sampled > std::chrono::milliseconds(250)) {
+          r.cpu = tree_cpu_seconds(r.pid) + (o.worker_cpu ? o.worker_cpu(r.worker) - r.worker_cpu0 : 0);
+          r.sampled = now;
+        }
+        const double wall = std::chrono::duration<double>(now - r.start).count();
+        const bool cpu_out = r.cpu > o.timeout_seconds;
+        const bool wall_out = now - r.start > wall_limit;
+        // Past its time with almost no CPU (less than a starved task gets below a load of 20 per
+        // core, and under a quarter of its fair share of the machine): it waits (a sleep, a read, a
+        // lock); it is stopped at once, not at the wall guard.
+        bool waiting = wall > o.timeout_seconds && r.sampled > r.start + std::chrono::seconds(1) &&
+                       r.cpu < kWaitingShare * wall;
+        if (waiting) {
+          const double load = load_per_core();
+          waiting = r.cpu < 0.25 * (load > 1 ? 1 / load : 1) * wall;
+        }
+        const bool dying = !r.sanitizer_report.empty() && now - r.start < wall_limit + kSanitizerGrace;
+        if ((cpu_out || wall_out || waiting) && !dying) {
+          ::kill(-r.pid, SIGKILL);
+          ::kill(r.pid, SIGKILL);
+          ::waitpid(r.pid, &status, 0);
+          TaskResult t;
+          t.seconds = wall;
+          t.cpu_seconds = r.cpu;
+          t.retried = r.retried;
+          t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
+          t.sanitizer_report = r.sanitizer_report;
+          char buf[400];
+          // Stopped by the wall clock, not the CPU: did it wait (little CPU though a core was free)
+          // or was it starved (the machine busier than its cores)? A starved task is run again once.
+          const double load = load_per_core();
+          const double fair_share = load > 1 ? 1 / load : 1;
+          const bool starved = !cpu_out && !waiting && r.cpu > 0.1 * fair_share * wall && load > 1;
+          if (!r.sanitizer_report.empty()) {  // it was dying, not hanging: the sanitizer had reported an error
+            t.status = TaskResult::Status::Crashed;
+            t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
+          } else if (cpu_out) {
+            t.status = TaskResult::Status::TimedOut;
+            std::snprintf(buf, sizeof buf, "did not finish within %.0f s of CPU time (%.0f s of wall clock) and was stopped",
+                          o.timeout_seconds, wall);
+            t.detail = buf;
+          } else if (starved && !r.retried) {
+            retried_.insert(r.index);
+            again.push_back(r.index);
+            done = true;
+            if (r.result_fd >= 0) ::close(r.result_fd);
+            if (r.output_fd >= 0) ::close(r.output_fd);
+            busy[static_cast<std::size_t>(r.worker)] = false;
+            if (o.worker_done) o.worker_done(r.worker, false);
+            it = running.erase(it);
+            continue;  // not finished: it starts again when a slot is free
+          } else if (starved) {
+            t.status = TaskResult::Status::Busy;
+            std::snprintf(buf, sizeof buf,
+                          "could not do its work: stopped twice by the wall clock after %.0f s, having had %.1f s of CPU, "
+                          "while the machine was busy (load %.1f per core)",
+                          wall, r.cpu, load);
+            t.detail = buf;
+          } else {
+            t.status = TaskResult::Status::TimedOut;
+            std::snprintf(buf, sizeof buf,
+                          "did not finish within %.0f s: stopped by the wall clock after %.0f s having used only %.1f s "
+                          "of CPU: it waits (a sleep, an input it reads, a lock) rather than computes",
+                          o.timeout_seconds, wall, r.cpu);
+            t.detail = buf;
+          }
+          results[r.index] = t;
+          done = true;
+        }
+      }
+      if (done) {
+        if (r.result_fd >= 0) ::close(r.result_fd);
+        if (r.output_fd >= 0) ::close(r.output_fd);
+        busy[static_cast<std::size_t>(r.worker)] = false;
+        if (o.worker_done) {
+          const auto st = results[r.index].status;
+          o.worker_done(r.worker, st == TaskResult::Status::Ok || st == TaskResult::Status::Threw);
+        }
+        const std::size_t index = r.index;
+        it = running.erase(it);
+        if (o.on_finished) o.on_finished(index, results[index]);
+      } else {
+        ++it;
+      }
+    }
+  }
+  return results;
+}
+
+}  // namespace gm::harness

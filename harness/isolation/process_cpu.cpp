@@ -1,0 +1,90 @@
+#include "harness/isolation/process_cpu.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <dirent.h>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <unistd.h>
+#include <vector>
+
+namespace gm::harness {
+
+namespace {
+
+struct Stat {
+  pid_t ppid = 0;
+  double cpu = 0;  // own utime + stime + waited-for children's cutime + cstime, in seconds
+};
+
+// /proc/<pid>/stat: "pid (comm) state ppid ... utime stime cutime cstime ..." (fields 4, 14-17);
+// comm may hold spaces and parentheses, so the fields are counted from the last ')'.
+bool read_stat(pid_t pid, Stat& s) {
+  std::ifstream f("/proc/" + std::to_string(pid) + "/stat");
+  std::string line;
+  if (!std::getline(f, line)) return false;
+  const auto close = line.rfind(')');
+  if (close == std::string::npos) return false;
+  std::istringstream rest(line.substr(close + 2));
+  std::vector<std::string> field;
+  for (std::string x; rest >> x && field.size() < 16;) field.push_back(x);
+  if (field.size() < 15) return false;  // field[0] is the state (field 3)
+  static const double tick = static_cast<double>(::sysconf(_SC_CLK_TCK));
+  s.ppid = static_cast<pid_t>(std::atol(field[1].c_str()));
+  s.cpu = (std::atof(field[11].c_str()) + std::atof(field[12].c_str()) + std::atof(field[13].c_str()) +
+           std::atof(field[14].c_str())) /
+          tick;
+  return true;
+}
+
+}  // namespace
+
+double tree_cpu_seconds(pid_t root) {
+  if (root <= 0) return 0;
+  std::map<pid_t, Stat> all;
+  if (DIR* d = ::opendir("/proc")) {
+    while (const dirent* e = ::readdir(d)) {
+      char* end = nullptr;
+      const long pid = std::strtol(e->d_name, &end, 10);
+      if (end == e->d_name || *end != '\0') continue;
+      Stat s;
+      if (read_stat(static_cast<pid_t>(pid), s)) all[static_cast<pid_t>(pid)] = s;
+    }
+    ::closedir(d);
+  }
+  if (!all.count(root)) return 0;
+  std::multimap<pid_t, pid_t> children;
+  for (const auto& [pid, s] : all) children.emplace(s.ppid, pid);
+  double total = 0;
+  std::vector<pid_t> todo{root};
+  while (!todo.empty()) {
+    const pid_t p = todo.back();
+    todo.pop_back();
+    total += all[p].cpu;
+    auto [lo, hi] = children.equal_range(p);
+    for (auto it = lo; it != hi; ++it) todo.push_back(it->second);
+  }
+  return total;
+}
+
+double self_cpu_seconds() {
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+double load_per_core() {
+  double load = 0;
+  if (std::FILE* f = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(f, "%lf", &load) != 1) load = 0;
+    std::fclose(f);
+  }
+  const unsigned cores = std::thread::hardware_concurrency();
+  return load / (cores > 0 ? cores : 1);
+}
+
+}  // namespace gm::harness

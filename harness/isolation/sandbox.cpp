@@ -1,0 +1,174 @@
+#include "harness/isolation/sandbox.hpp"
+
+#include "harness/isolation/process.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <mutex>
+#include <string>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace gm::harness {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr unsigned kNobody = 65534;
+
+std::string which(const std::string& tool) {
+  for (const char* dir : {"/usr/bin", "/bin", "/usr/sbin", "/sbin"}) {
+    const fs::path p = fs::path(dir) / tool;
+    if (::access(p.c_str(), X_OK) == 0) return p.string();
+  }
+  return "";
+}
+
+// RLIMIT_NPROC counts every process of the real user, so the limit is what runs now plus the
+// sandbox's share.
+long processes_of(unsigned uid) {
+  long n = 0;
+  std::error_code ec;
+  for (const auto& e : fs::directory_iterator("/proc", ec)) {
+    const std::string name = e.path().filename().string();
+    if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+    struct stat st {};
+    if (::stat(e.path().c_str(), &st) == 0 && st.st_uid == uid) ++n;
+  }
+  return n;
+}
+
+// What of /etc a sandboxed program needs: the dynamic linker's cache and configuration, the
+// alternatives (c++ is /etc/alternatives/c++), the time zone, the name-service switch (getpwuid),
+// Octave's site startup file (/usr/share/octave/site/m/startup/octaverc links to /etc/octaverc) and
+// Python's sitecustomize (a link into /etc/python3.N). Nothing else: not the accounts, the host's
+// name, its network, its services' configurations.
+const std::vector<std::string>& visible_etc() {
+  static const std::vector<std::string> entries = [] {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (const char* name : {"ld.so.cache", "ld.so.conf", "ld.so.conf.d", "alternatives", "localtime", "nsswitch.conf", "octaverc"})
+      if (fs::exists(fs::path("/etc") / name, ec)) out.push_back((fs::path("/etc") / name).string());
+    for (const auto& e : fs::directory_iterator("/etc", ec))
+      if (e.path().filename().string().rfind("python3", 0) == 0) out.push_back(e.path().string());
+    std::sort(out.begin(), out.end());
+    return out;
+  }();
+  return entries;
+}
+
+// A folder holding the sandbox's /etc/passwd and /etc/group: root, nobody and, when the harness
+// does not run as root, its own user under a neutral name (programs look their user up), nothing
+// of this machine's accounts. Made once per process, removed by the process that made it.
+struct AccountsFolder {
+  std::string path;
+  pid_t owner = ::getpid();
+  AccountsFolder() {
+    std::error_code ec;
+    std::string pattern = (fs::temp_directory_path(ec) / "geomech-sandbox-etc-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) return;
+    path = pattern;
+    fs::permissions(path, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                              fs::perms::others_exec, ec);
+    const unsigned uid = ::geteuid(), gid = ::getegid();
+    std::string passwd = "root:x:0:0:root:/tmp:/usr/sbin/nologin\nnobody:x:65534:65534:nobody:/tmp:/usr/sbin/nologin\n";
+    std::string group = "root:x:0:\nnogroup:x:65534:\n";
+    if (uid != 0 && uid != 65534) passwd += "geomech:x:" + std::to_string(uid) + ":" + std::to_string(gid) + "::/tmp:/usr/sbin/nologin\n";
+    if (gid != 0 && gid != 65534) group += "geomech:x:" + std::to_string(gid) + ":\n";
+    std::ofstream(path + "/passwd") << passwd;
+    std::ofstream(path + "/group") << group;
+    for (const char* f : {"passwd", "group"})
+      fs::permissions(path + "/" + f, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read, ec);
+  }
+  ~AccountsFolder() {
+    std::error_code ec;
+    if (!path.empty() && ::getpid() == owner) fs::remove_all(path, ec);
+  }
+};
+
+const std::string& sandbox_accounts_folder() {
+  static const AccountsFolder folder;
+  return folder.path;
+}
+
+}  // namespace
+
+unsigned sandbox_uid() { return ::geteuid() == 0 ? kNobody : ::geteuid(); }
+
+std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const SandboxSpec& spec) {
+  // The sandbox's own processes (setpriv, bubblewrap, its init in the new PID namespace) start from
+  // an empty environment (issue 34): inside, /proc/1/environ is bubblewrap's, and it must hold
+  // nothing of the harness's (the lecturer's or CI's tokens and paths). --clearenv below does the
+  // same for the submission itself.
+  std::vector<std::string> cmd{which("env"), "-i", "PATH=/usr/bin:/bin"};
+  if (::geteuid() == 0)
+    cmd.insert(cmd.end(), {which("setpriv"), "--reuid=" + std::to_string(kNobody), "--regid=" + std::to_string(kNobody),
+                           "--clear-groups", "--"});
+  // Inside, /proc/1/cmdline is this command line: what it binds is a private copy under a fresh
+  // temporary name (harness/isolation/private_copy.hpp), not the lecturer's folders (issue 34). bubblewrap
+  // stays PID 1 (--as-pid-1 was tried: a server that is PID 1 ignores the signals the kernel sends
+  // it, SIGXFSZ at the file-size limit among them, and reaps no orphan).
+  cmd.insert(cmd.end(), {which("bwrap"), "--unshare-all", "--die-with-parent", "--new-session", "--clearenv",
+                         "--hostname", "geomech-sandbox"});
+  // The visible system, minimised (issue 46): /usr without /usr/local (what was installed on this
+  // machine by hand: tools, tokens in scripts), and of /etc only what the dynamic linker, the
+  // compiler's alternatives, Python and Octave read, with an account file naming root and nobody.
+  cmd.insert(cmd.end(), {"--ro-bind", "/usr", "/usr", "--tmpfs", "/usr/local"});
+  for (const auto& e : visible_etc()) cmd.insert(cmd.end(), {"--ro-bind", e, e});
+  const std::string& accounts = sandbox_accounts_folder();
+  if (!accounts.empty())
+    for (const char* f : {"passwd", "group"}) cmd.insert(cmd.end(), {"--ro-bind", accounts + "/" + f, std::string("/etc/") + f});
+  for (const char* link : {"/bin", "/sbin", "/lib", "/lib64", "/lib32", "/libx32"}) {
+    std::error_code ec;
+    if (fs::is_symlink(link, ec))
+      cmd.insert(cmd.end(), {"--symlink", fs::read_symlink(link, ec).string(), link});
+    else if (fs::exists(link, ec))
+      cmd.insert(cmd.end(), {"--ro-bind", link, link});
+  }
+  cmd.insert(cmd.end(), {"--proc", "/proc", "--dev", "/dev", "--size",
+                         std::to_string(static_cast<long long>(spec.limits.scratch_mb) << 20), "--tmpfs", "/tmp"});
+  for (const auto& p : spec.read_only) cmd.insert(cmd.end(), {"--ro-bind", p, p});
+  for (const auto& [here, inside] : spec.mounts) cmd.insert(cmd.end(), {"--ro-bind", here, inside});
+  if (!spec.writable.empty()) cmd.insert(cmd.end(), {"--bind", spec.writable, spec.writable});
+  cmd.insert(cmd.end(), {"--setenv", "PATH", "/usr/bin:/bin", "--setenv", "HOME", "/tmp", "--setenv", "LANG", "C.UTF-8"});
+  for (const auto& [k, v] : spec.env) cmd.insert(cmd.end(), {"--setenv", k, v});
+  cmd.insert(cmd.end(), {"--chdir", spec.chdir.empty() ? "/tmp" : spec.chdir});
+  const long nproc = processes_of(sandbox_uid()) + spec.limits.processes;
+  const auto mb = [](int m) { return std::to_string(static_cast<long long>(m) << 20); };
+  cmd.insert(cmd.end(), {"--", which("prlimit")});
+  if (spec.limits.memory_mb > 0) cmd.push_back("--as=" + mb(spec.limits.memory_mb));
+  cmd.insert(cmd.end(), {"--cpu=" + std::to_string(spec.limits.cpu_seconds),
+                         "--nproc=" + std::to_string(nproc) + ":" + std::to_string(nproc),
+                         "--fsize=" + mb(spec.limits.file_mb), "--nofile=" + std::to_string(spec.limits.open_files),
+                         "--core=0", "--"});
+  cmd.insert(cmd.end(), argv.begin(), argv.end());
+  return cmd;
+}
+
+std::string sandbox_unavailable() {
+  static std::once_flag once;
+  static std::string why;
+  std::call_once(once, [] {
+    for (const char* tool : {"bwrap", "prlimit"})
+      if (which(tool).empty()) {
+        why = std::string("untrusted mode needs ") + tool + " (" +
+              (std::string(tool) == "bwrap" ? "Debian package bubblewrap" : "Debian package util-linux") +
+              "), which is not installed: `apt-get install bubblewrap`, or check with --trusted (in-process: only "
+              "for code you trust)";
+        return;
+      }
+    if (::geteuid() == 0 && which("setpriv").empty()) {
+      why = "untrusted mode, started as root, needs setpriv (util-linux) to run submissions as nobody";
+      return;
+    }
+    const ProcessResult r = run_process(ProcessSpec{sandboxed({"/usr/bin/true"}, SandboxSpec{}), {}, false}, 30);
+    if (!r.started || r.exit_code != 0)
+      why = "the sandbox (bubblewrap) does not work on this machine: " + r.output +
+            " (user namespaces may be disabled: sysctl kernel.unprivileged_userns_clone=1)";
+  });
+  return why;
+}
+
+}  // namespace gm::harness

@@ -1,0 +1,93 @@
+#include "harness/isolation/sandboxed_interpreter.hpp"
+
+#include "harness/isolation/process.hpp"
+#include "harness/isolation/sandbox.hpp"
+
+#include <filesystem>
+#include <sstream>
+#include <sys/stat.h>
+
+namespace gm::harness {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+// The sandbox shows /usr but for /usr/local (harness/isolation/sandbox.cpp).
+bool in_system(const std::string& p) {
+  return (p == "/usr" || p.rfind("/usr/", 0) == 0) && p != "/usr/local" && p.rfind("/usr/local/", 0) != 0;
+}
+
+// Whether the sandbox's user (nobody, when the harness runs as root) can reach `p`: every folder on
+// the way must let it pass (bubblewrap binds as that user).
+std::string unreachable_part(const fs::path& p) {
+  const unsigned uid = sandbox_uid();
+  fs::path at;
+  for (const auto& part : p) {
+    at /= part;
+    struct stat st {};
+    if (::stat(at.c_str(), &st) != 0) return at.string() + " (does not exist)";
+    if (!S_ISDIR(st.st_mode)) continue;
+    const bool pass = st.st_uid == uid ? (st.st_mode & S_IXUSR) : (st.st_mode & S_IXOTH);
+    if (!pass) return at.string();
+  }
+  return {};
+}
+
+void show(SandboxedInterpreter& r, const std::string& path, const std::string& what) {
+  std::error_code ec;
+  const std::string real = fs::weakly_canonical(path, ec).string();
+  if (ec || real.empty() || in_system(real)) return;
+  for (const auto& x : r.read_only)
+    if (x == real) return;
+  if (const std::string blocked = unreachable_part(real); !blocked.empty()) {
+    if (r.error.empty())
+      r.error = what + " " + real + " cannot be shown to the sandbox: its user (" +
+                std::string(sandbox_uid() == 65534 ? "nobody" : "this user") + ") cannot pass " + blocked +
+                "; untrusted mode cannot run this interpreter. Set GEOMECH_PYTHON (or GEOMECH_OCTAVE) to one it can "
+                "read, such as the system's /usr/bin/python3, or make the interpreter's folders readable";
+    return;
+  }
+  r.read_only.push_back(real);
+}
+
+}  // namespace
+
+SandboxedInterpreter interpreter_for_sandbox(const std::string& language, const std::string& interpreter) {
+  SandboxedInterpreter r;
+  r.program = interpreter;
+  if (language == "python") {
+    const ProcessResult p = run_process(
+        ProcessSpec{{interpreter, "-c",
+                     "import os, sys; print(sys.executable); print(sys.prefix); print(sys.base_prefix); "
+                     "print(os.path.realpath(sys.executable))"},
+                    {},
+                    false},
+        60);
+    std::istringstream in(p.output);
+    std::string executable, prefix, base, real;
+    std::getline(in, executable);
+    std::getline(in, prefix);
+    std::getline(in, base);
+    std::getline(in, real);
+    if (!p.started || p.exit_code != 0 || executable.empty() || real.empty()) {
+      r.error = "the Python interpreter " + interpreter + " could not be asked where it lives: " + p.output;
+      return r;
+    }
+    r.program = executable;
+    show(r, prefix, "the interpreter's folder (sys.prefix)");
+    show(r, base, "the interpreter's installation (sys.base_prefix)");
+    show(r, fs::path(real).parent_path().parent_path().string(), "the interpreter's installation");
+    return r;
+  }
+  // Octave: the installation the program belongs to (<prefix>/bin/octave-cli).
+  std::error_code ec;
+  const fs::path real = fs::weakly_canonical(interpreter, ec);
+  if (!ec && real.is_absolute()) {
+    r.program = real.string();
+    show(r, real.parent_path().parent_path().string(), "the Octave installation");
+  }
+  return r;
+}
+
+}  // namespace gm::harness
