@@ -1,0 +1,2 @@
+// May use the shared helpers.
+#include "properties/support/h.hpp"

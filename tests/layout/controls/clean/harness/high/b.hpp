@@ -1,0 +1,2 @@
+// May use the low room.
+#include "harness/low/a.hpp"

@@ -1,0 +1,2 @@
+// Nothing above.
+#include "core/subject.hpp"

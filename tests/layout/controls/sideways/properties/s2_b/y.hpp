@@ -1,0 +1,2 @@
+// One part using another: refused.
+#include "properties/s1_a/x.hpp"

@@ -1,0 +1,2 @@
+// In a folder that says nothing.
+#include "harness/low/a.hpp"

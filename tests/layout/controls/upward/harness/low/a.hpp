@@ -1,0 +1,2 @@
+// A low room reaching up: refused.
+#include "harness/high/b.hpp"

@@ -1,0 +1,140 @@
+#!/usr/bin/env python3
+"""Checks that no file includes a room above its own (issue 50; docs/DEVELOPING.md, "Layout").
+
+A room is a folder whose README.md has a line
+
+    May include: harness/engine, harness/isolation
+
+naming the other rooms its files may include (`May include: no other room.` for none). A file
+belongs to the innermost room above it. Its `#include "a/b.hpp"` lines are root-relative; one that
+names a file of another room must name a room on that list. A file that is in no room but lies in
+the folder holding some rooms (properties/support/, properties/runner.hpp, tests/mutants/mutants.hpp)
+is the base they stand on and may include none of them. The rooms' lists must not go round in a
+circle, and every folder of a tree that holds rooms (harness/*, properties/*, tests/mutants/*, but
+support/) must be a room, so a new folder cannot escape the check.
+
+Usage: rooms.py ROOT   Prints `FILE:LINE: what is wrong` per problem, then a summary; exit 1 if any.
+"""
+import os
+import re
+import sys
+
+TREES = ("harness", "properties", "tests/mutants")
+INCLUDE = re.compile(r'\s*#\s*include\s+"([^"]+)"')
+MAY = re.compile(r"^May include:\s*(.*)$")
+
+
+def read_rooms(root):
+    """{room folder: set of rooms it may include}, and problems with the declarations."""
+    rooms, problems = {}, []
+    for tree in TREES:
+        top = os.path.join(root, tree)
+        if not os.path.isdir(top):
+            continue
+        for name in sorted(os.listdir(top)):
+            folder = f"{tree}/{name}"
+            if not os.path.isdir(os.path.join(root, folder)) or name == "support":
+                continue
+            readme = os.path.join(root, folder, "README.md")
+            allowed = None
+            if os.path.isfile(readme):
+                with open(readme, encoding="utf-8") as f:
+                    for line in f:
+                        m = MAY.match(line.strip())
+                        if m:
+                            allowed = {w.strip().rstrip(".") for w in m.group(1).split(",")}
+                            allowed = {w for w in allowed if "/" in w}
+            if allowed is None:
+                problems.append((f"{folder}/README.md", 1, "no `May include:` line: every folder of "
+                                 f"{tree}/ is a room that says which rooms it may include"))
+                continue
+            rooms[folder] = allowed
+    for folder, allowed in rooms.items():
+        for other in sorted(allowed):
+            if other not in rooms:
+                problems.append((f"{folder}/README.md", 1, f"`May include:` names {other}, which is not a room"))
+    return rooms, problems
+
+
+def circle(rooms):
+    """A list of rooms that include each other round a circle, or None."""
+    state = {}
+
+    def visit(room, path):
+        state[room] = "open"
+        for other in sorted(rooms.get(room, ())):
+            if state.get(other) == "open":
+                return path[path.index(other):] + [other]
+            if other not in state:
+                found = visit(other, path + [other])
+                if found:
+                    return found
+        state[room] = "done"
+        return None
+
+    for room in sorted(rooms):
+        if room not in state:
+            found = visit(room, [room])
+            if found:
+                return found
+    return None
+
+
+def room_of(path, rooms):
+    best = None
+    for room in rooms:
+        if path.startswith(room + "/") and (best is None or len(room) > len(best)):
+            best = room
+    return best
+
+
+def sources(root):
+    for tree in TREES:
+        for folder, dirs, files in os.walk(os.path.join(root, tree)):
+            dirs.sort()
+            for name in sorted(files):
+                if name.endswith((".cpp", ".hpp")):
+                    yield os.path.relpath(os.path.join(folder, name), root).replace(os.sep, "/")
+
+
+def main(argv):
+    if len(argv) != 1:
+        print("usage: rooms.py ROOT", file=sys.stderr)
+        return 2
+    root = argv[0]
+    rooms, problems = read_rooms(root)
+    found = circle(rooms)
+    if found:
+        problems.append((f"{found[0]}/README.md", 1, "the rooms include each other round a circle: "
+                         + " -> ".join(found)))
+    files = includes = 0
+    for path in sources(root):
+        files += 1
+        mine = room_of(path, rooms)
+        with open(os.path.join(root, path), encoding="utf-8") as f:
+            for line_no, line in enumerate(f, 1):
+                m = INCLUDE.match(line)
+                if not m:
+                    continue
+                includes += 1
+                target = m.group(1)
+                theirs = room_of(target, rooms)
+                if theirs is None or theirs == mine:
+                    continue
+                if mine is None:
+                    holder = os.path.dirname(theirs)
+                    if path.startswith(holder + "/"):
+                        problems.append((path, line_no, f"includes {target} of the room {theirs}: a file "
+                                         f"that {holder}/'s rooms stand on may include none of them"))
+                elif theirs not in rooms[mine]:
+                    allowed = ", ".join(sorted(rooms[mine])) or "no other room"
+                    problems.append((path, line_no, f"includes {target} of the room {theirs}, which "
+                                     f"{mine}/README.md does not list (May include: {allowed})"))
+    for path, line_no, what in problems:
+        print(f"{path}:{line_no}: {what}")
+    print(f"layout: {len(rooms)} rooms, {files} files, {includes} includes, {len(problems)} problems")
+    return 1 if problems else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
