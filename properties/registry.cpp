@@ -28,6 +28,19 @@ static std::vector<Property>& mutable_registry() {
   return r;
 }
 
+std::string source_in_tree(std::string_view path) {
+  // The last folder named properties: a checkout may itself lie in a folder of that name.
+  for (std::size_t at = path.rfind("properties/"); at != std::string_view::npos;
+       at = at == 0 ? std::string_view::npos : path.rfind("properties/", at - 1))
+    if (at == 0 || path[at - 1] == '/') return std::string(path.substr(at));
+  return std::string(path);
+}
+
+PropertyDef registered_in(PropertyDef def, std::string_view path) {
+  def.file = source_in_tree(path);
+  return def;
+}
+
 void register_property(Property p) {
   auto& r = mutable_registry();
   for (const auto& q : r)

@@ -4,9 +4,11 @@
 // must make it fail. Its body is a function template over the scalar, instantiated here for
 // double, Real50 and (for algebraic identities) Rational.
 //
-// Register a property in its own .cpp under properties/ with
+// Register a property in its own .cpp under the folder of its part of the notes (properties/README.md)
+// with
 //   GM_PROPERTY(body_template, all_scalars | float_scalars, {.id = ..., .spec = ..., ...});
-// Nothing else needs editing: tests, the report and the student harness all read the registry.
+// Nothing else needs editing: tests, the report and the student harness all read the registry, and
+// spec/CATALOGUE.md names the file (recorded by GM_PROPERTY).
 #pragma once
 
 #include "core/subject.hpp"
@@ -79,7 +81,15 @@ struct PropertyDef {
   // names of IntegratorClaims). A claim is verified only when every property that judges it ran all
   // its cases and passed (harness/engine/integrator_verdicts.hpp).
   std::vector<std::string> judges{};
+  // The file that registers it, from properties/ on ("properties/s3_4_nambu/nambu_bracket.cpp"):
+  // set by GM_PROPERTY from __FILE__ (also inside a unity batch, where the file is #included).
+  std::string file{};
 };
+
+// `def` with `file` set to `path` from its last "properties/" folder on (source_in_tree), whatever
+// the build's source directory is.
+PropertyDef registered_in(PropertyDef def, std::string_view path);
+std::string source_in_tree(std::string_view path);
 
 struct Property : PropertyDef {
   explicit Property(PropertyDef def) : PropertyDef(std::move(def)) {}
@@ -157,4 +167,5 @@ struct Registrar {
 // (const Subject<T>&, const Integrator<T>&, const IntegratorClaims&).
 #define GM_PROPERTY(fn, scalars, ...)                                                          \
   static const ::gm::Registrar GM_PROPERTY_CONCAT(gm_property_registrar_, fn){               \
-      ::gm::scalars, ::gm::PropertyDef __VA_ARGS__, [](const auto&... args) { fn(args...); }}
+      ::gm::scalars, ::gm::registered_in(::gm::PropertyDef __VA_ARGS__, __FILE__),              \
+      [](const auto&... args) { fn(args...); }}

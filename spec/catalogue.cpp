@@ -212,7 +212,7 @@ std::string catalogue_markdown(const Catalogue& c, const std::vector<Property>& 
      << c.entries.size() << " entries: " << by_status["checked"] << " checked, " << by_status["erratum"]
      << " erratum (the corrected statement is checked), " << by_status["pending"] << " pending; "
      << props.size() << " properties.\n\n"
-     << "| entry | place in the notes | kind | status | properties (tolerance class; scalars) |\n"
+     << "| entry | place in the notes | kind | status | properties (tolerance class; scalars; file) |\n"
      << "|---|---|---|---|---|\n";
   for (const auto& e : c.entries) {
     os << "| `" << e.id << "` | " << md_escape(e.place) << " (line " << e.line << ") | " << e.kind << " | "
@@ -223,7 +223,9 @@ std::string catalogue_markdown(const Catalogue& c, const std::vector<Property>& 
     for (const Property* p : properties_for(e.id, props)) {
       if (!first) os << "<br>";
       first = false;
-      os << "`" << p->id << "` (" << tolerance_name(p->tolerance) << "; " << scalars_of(*p) << ")";
+      os << "`" << p->id << "` (" << tolerance_name(p->tolerance) << "; " << scalars_of(*p);
+      if (!p->file.empty()) os << "; [" << p->file.substr(p->file.find('/') + 1) << "](../" << p->file << ")";
+      os << ")";
     }
     os << " |\n";
   }

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cctype>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -49,6 +50,43 @@ TEST(Spec, GeneratedTableIsCurrent) {
   got << in.rdbuf();
   EXPECT_EQ(got.str(), expected) << path << " is stale; regenerate it with\n"
                                  << "  build/bin/geomech catalogue --markdown > spec/CATALOGUE.md";
+}
+
+// Issue 50: the catalogue points at the files. Every property records the file that registers it,
+// a file of a part of the notes (properties/<part>/, not support/) that exists and names the
+// property's id; spec/CATALOGUE.md prints it.
+TEST(Spec, EveryPropertyNamesItsFile) {
+  ASSERT_FALSE(properties().empty());
+  for (const auto& p : properties()) {
+    SCOPED_TRACE(p.id);
+    ASSERT_EQ(p.file.rfind("properties/", 0), 0u) << "recorded file: '" << p.file << "'";
+    const std::size_t slash = p.file.find('/', 11);
+    ASSERT_NE(slash, std::string::npos) << p.file << " is not in a folder of a part of the notes";
+    EXPECT_NE(p.file.substr(11, slash - 11), "support") << p.file << " registers a property in support/";
+    std::string path = GM_SOURCE_DIR;
+    path += "/" + p.file;
+    std::ifstream in(path);
+    ASSERT_TRUE(in.good()) << path << " does not exist";
+    std::stringstream text;
+    text << in.rdbuf();
+    // The id as a word: quoted in the registration, or the body's name where a macro makes the id
+    // of it (GM_DEFINITION in properties/definitions/).
+    const std::string& t = text.str();
+    auto word_char = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+    bool named = false;
+    for (std::size_t at = t.find(p.id); at != std::string::npos && !named; at = t.find(p.id, at + 1))
+      named = (at == 0 || !word_char(t[at - 1])) && (at + p.id.size() == t.size() || !word_char(t[at + p.id.size()]));
+    EXPECT_TRUE(named) << p.file << " does not name " << p.id;
+  }
+}
+
+TEST(Spec, SourceInTreeKeepsFromTheLastPropertiesFolder) {
+  EXPECT_EQ(source_in_tree("/home/a/properties/clone/properties/s3_4_nambu/nambu_bracket.cpp"),
+            "properties/s3_4_nambu/nambu_bracket.cpp");
+  EXPECT_EQ(source_in_tree("properties/s1_euler_poincare/so4.cpp"), "properties/s1_euler_poincare/so4.cpp");
+  // controls: a folder whose name only ends in "properties", and a file outside properties/
+  EXPECT_EQ(source_in_tree("/x/myproperties/a.cpp"), "/x/myproperties/a.cpp");
+  EXPECT_EQ(source_in_tree("/x/tests/harness_tests.cpp"), "/x/tests/harness_tests.cpp");
 }
 
 TEST(Spec, MalformedCatalogueIsRejectedWithItsName) {
