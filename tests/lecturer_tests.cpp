@@ -148,6 +148,28 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
 // Issue 49: `check-class week3` and `check-class week3/` wrote to different folders (without the
 // slash nothing resumed; with it, classes overwrote each other's summary). One class folder, one
 // report folder, however it is written; the control: another class, another folder.
+// A class run resumes a submission only if what its check depends on is unchanged: for a C++ file
+// that includes the libraries the command line adds (a changed --pkg used to resume the old result).
+TEST(ClassResume, LibraryFlagsCountForACppFileOnly) {
+  ClassOptions plain;
+  ClassOptions ode = plain;
+  ode.build.libraries.pkgs = {"ode"};
+  ClassOptions flags = plain;
+  flags.build.libraries.cxxflags = {"-DdSINGLE"};
+  ClassOptions link = plain;
+  link.build.libraries.ldflags = {"-lode"};
+  for (const auto* changed : {&ode, &flags, &link})
+    EXPECT_NE(check_conditions(plain, ".cpp"), check_conditions(*changed, ".cpp"));
+  // Python and Octave are not compiled: the same flags leave their checks as they were.
+  EXPECT_EQ(check_conditions(plain, ".py"), check_conditions(ode, ".py"));
+  EXPECT_EQ(check_conditions(plain, ""), check_conditions(ode, ""));
+  // control: the same options, the same conditions; the mode and the check's options count for all
+  EXPECT_EQ(check_conditions(plain, ".cpp"), check_conditions(ClassOptions{}, ".cpp"));
+  ClassOptions trusted = plain;
+  trusted.untrusted = false;
+  EXPECT_NE(check_conditions(plain, ".py"), check_conditions(trusted, ".py"));
+}
+
 TEST(ClassRecord, OneClassFolderIsOneReportFolder) {
   const std::string a = default_class_report_dir("week3");
   EXPECT_EQ(a, "geomech-reports/week3");

@@ -109,6 +109,20 @@ struct Fingerprint {
   }
 };
 
+}  // namespace
+
+std::string check_conditions(const ClassOptions& o, const std::string& extension) {
+  std::string text = o.untrusted ? "untrusted" : "trusted";
+  for (const auto& a : to_args(o.check)) text += '\0' + a;
+  if (extension == ".cpp") {
+    text += "\0libraries";
+    for (const auto& a : library_args(o.build.libraries)) text += '\0' + a;
+  }
+  return text;
+}
+
+namespace {
+
 const std::string& suite_identity() {
   static const std::string id = [] {
     Fingerprint f;
@@ -450,8 +464,6 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   // Resuming (issue 34): what each check depends on, and the implementations whose complete result
   // from an earlier run (class-row.json beside the report, written once the check has ended) has
   // the same fingerprint. A check cut off by an interruption left no class-row.json: it runs again.
-  std::string options_text = o.untrusted ? "untrusted" : "trusted";
-  for (const auto& a : to_args(o.check)) options_text += '\0' + a;
   std::vector<std::string> prints(impls.size());
   std::vector<std::optional<Row>> finished(impls.size());
   std::vector<std::size_t> to_check;
@@ -511,7 +523,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
                       : (dest / fs::path(impl.origin).filename()).string();
     Fingerprint f;
     f.add(suite_identity());
-    f.add(options_text);
+    f.add(check_conditions(o, ext));
     f.add_tree(tree);
     prints[i] = f.hex();
     const fs::path row_file = fs::path(report_dir) / impls[i].name / "class-row.json";

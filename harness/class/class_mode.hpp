@@ -59,6 +59,12 @@ struct ClassOptions {
   std::vector<std::string> shared;
 };
 
+// What the check of a submission depends on besides its files, for the fingerprint that decides
+// whether a class run resumes it: the mode, the check's options and, for a C++ file, the libraries
+// the command line adds (--pkg, --cxxflags, --ldflags, -I, -L, -l; its own `// geomech:` lines are
+// in its text). `extension` is the submission's (".cpp", ".py", ".m", "" for a folder).
+std::string check_conditions(const ClassOptions& o, const std::string& extension);
+
 struct Implementation {
   std::string name;     // unique within the class (file stem, or folder name)
   std::string source;   // what is checked: the file (or Octave folder); in the snapshot once taken
