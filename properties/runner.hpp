@@ -80,10 +80,16 @@ struct Verdict {
   // and where it was called; empty otherwise.
   std::string step_raised;
   std::string step_raised_where;
+  double step_raised_rate = 0, step_raised_size = 0;  // |Omega| and |Pi| where it raised (not written out)
   // What every view shows for this verdict, decided once (harness/engine/integrator_verdicts.hpp): for an
   // integrator property, "PASS", "FALSE CLAIM", "holds (not claimed)", "does not hold (not claimed)",
   // "not established (not claimed): ...", "NOT CHARACTERISED"; empty for the others (the outcome).
   std::string word;
+  // Who owns a not-pass: empty, the code under test (FAIL, CRASH, TIMEOUT, ...); otherwise the machine
+  // or the set-up, and this says what went wrong and its fix ("the machine starved the check: ...").
+  // Such an ERROR is never graded, never names a slot, and the check is run again once the
+  // condition changes (DESIGN.md, "A cause is an experiment").
+  std::string machine_fault;
 
   std::string key() const;    // subject/property/scalar[/integrator]: RapidCheck's test id
 };

@@ -5,6 +5,7 @@
 #include "harness/program/build.hpp"
 #include "harness/engine/check.hpp"
 #include "harness/isolation/isolate.hpp"
+#include "harness/isolation/process_cpu.hpp"
 #include "harness/trajectories/reference_flow.hpp"
 #include "harness/reports/report.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
@@ -20,6 +21,9 @@
 #include <gtest/gtest.h>
 
 #include <csignal>
+#include <sched.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -93,6 +97,89 @@ TEST(Isolation, EachWayOfDyingIsToldApart) {
   EXPECT_NE(r[5].detail.find("exited with status 3"), std::string::npos) << r[5].detail;
   EXPECT_EQ(r[6].status, TaskResult::Status::Ok);
   EXPECT_EQ(r[6].payload.size(), std::size_t(1) << 20);
+}
+
+// A machine busier than its cores: `n` processes spinning on the first CPU this process may use,
+// with this process (and so the children it forks) pinned there too; undone at the end of scope.
+class CrowdedCore {
+ public:
+  explicit CrowdedCore(int n) {
+    ::sched_getaffinity(0, sizeof saved_, &saved_);
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+      if (CPU_ISSET(c, &saved_)) {
+        CPU_SET(c, &one);
+        break;
+      }
+    ::sched_setaffinity(0, sizeof one, &one);
+    for (int i = 0; i < n; ++i) {
+      const pid_t pid = ::fork();
+      if (pid == 0) {
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+        for (volatile unsigned long x = 0;; x = x + 1) {
+        }
+      }
+      if (pid > 0) burners_.push_back(pid);
+    }
+  }
+  ~CrowdedCore() {
+    for (pid_t pid : burners_) ::kill(pid, SIGKILL);
+    for (pid_t pid : burners_) ::waitpid(pid, nullptr, 0);
+    ::sched_setaffinity(0, sizeof saved_, &saved_);
+  }
+
+ private:
+  cpu_set_t saved_{};
+  std::vector<pid_t> burners_;
+};
+
+// `seconds` of this process's CPU time, spent computing.
+std::string compute_for(double seconds) {
+  const double start = self_cpu_seconds();
+  volatile double x = 0;
+  while (self_cpu_seconds() - start < seconds)
+    for (int i = 0; i < 10000; ++i) x = x + 1e-9 * i;
+  return "computed";
+}
+
+// Starved is not waiting: the kernel's run-queue accounting, not the task's share of the CPU,
+// tells a task the machine starves from one that sleeps. Eight processes spin on the core the task
+// runs on: it gets about a ninth of it, so its 0.4 s of CPU take about 3.6 s of wall clock, past the
+// 2 s wall guard. It was runnable all along, so it is let finish (before: stopped as "it waits ...
+// rather than computes", a verdict on correct code); past the busy limit it is Busy, the machine's.
+// The sleeping task beside it is runnable almost never, and is stopped as waiting.
+TEST(Isolation, StarvedIsNotWaiting) {
+  const bool kernel_tells = tree_times(::getpid()).queued_known;
+  CrowdedCore crowded(8);
+  IsolationOptions o;
+  o.jobs = 1;
+  o.timeout_seconds = 2;  // of CPU
+  o.wall_factor = 1;
+  o.wall_floor = 0;       // the wall guard: 2 s
+  auto r = run_isolated({[] { return compute_for(0.4); },
+                         []() -> std::string {
+                           for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+                         }},
+                        o);
+  ASSERT_EQ(r.size(), 2u);
+  if (!kernel_tells) {  // no schedstat: waiting and starving cannot be told apart, and neither is the code's
+    EXPECT_EQ(r[0].status, TaskResult::Status::Busy) << r[0].detail;
+    EXPECT_NE(r[0].detail.find("is not known"), std::string::npos) << r[0].detail;
+    return;
+  }
+  // The control: it really was starved (queued longer than it ran, and past the wall guard).
+  EXPECT_GT(r[0].seconds, o.timeout_seconds) << "the task was not slowed past the wall guard: the test shows nothing";
+  EXPECT_GT(r[0].queued_seconds, r[0].cpu_seconds) << r[0].seconds << " s";
+  EXPECT_EQ(r[0].status, TaskResult::Status::Ok) << r[0].detail;
+  EXPECT_EQ(r[1].status, TaskResult::Status::TimedOut) << r[1].detail;
+  EXPECT_NE(r[1].detail.find("asleep: it waits"), std::string::npos) << r[1].detail;
+
+  // Past the busy limit (here 1.25 times the wall guard, 2.5 s), the starved task is the machine's.
+  o.busy_factor = 1.25;
+  r = run_isolated({[] { return compute_for(0.4); }}, o);
+  EXPECT_EQ(r[0].status, TaskResult::Status::Busy) << r[0].detail;
+  EXPECT_NE(r[0].detail.find("the machine starved it"), std::string::npos) << r[0].detail;
 }
 
 #if !defined(__SANITIZE_ADDRESS__)
@@ -332,6 +419,39 @@ TEST(Reports, JUnitMarkdownAndJsonSayTheSame) {
   const auto entries = std::distance(fs::directory_iterator(dir), fs::directory_iterator{});
   EXPECT_EQ(entries, 1);
   fs::remove_all(dir);
+}
+
+// A machine's fault is charged to the machine in every view, and names no slot: a slot's own check
+// that the machine starved is an ERROR (the machine's) with its fix, not the slot's first fix. The
+// control: the same failure without the machine's fault names the slot.
+TEST(Reports, AMachineFaultNamesNoSlotInAnyView) {
+  CheckResult r;
+  r.subject = "reference";
+  gm::Verdict v;
+  v.subject = "reference";
+  v.property = "definition_euler_3_8";
+  v.scalar = "double";
+  v.outcome = gm::Outcome::Error;
+  v.message = "the check could not do its work: the machine starved it";
+  v.machine_fault = "the machine's fault, not the code's: the check could not do its work. Fix: run it again on a "
+                    "less busy machine, or with fewer checks at once (--jobs).";
+  r.verdicts.push_back(v);
+  EXPECT_TRUE(root_causes(r).broken.empty());
+  const auto j = json_report(r, nullptr);
+  EXPECT_TRUE(j.at("first_fix").empty()) << j.at("first_fix").dump();
+  EXPECT_EQ(j.at("verdicts").at(0).at("owner"), "machine");
+  EXPECT_EQ(j.at("verdicts").at(0).at("machine_fault"), v.machine_fault);
+  const std::string junit = junit_report(r);
+  EXPECT_NE(junit.find("type=\"ERROR (the machine's)\""), std::string::npos) << junit;
+  const std::string md = markdown_report(r, nullptr);
+  EXPECT_EQ(md.find("slot `euler_3_8` is wrong"), std::string::npos) << md;
+  // The same verdict read back keeps its owner.
+  EXPECT_EQ(verdict_from_json(to_json(v)).machine_fault, v.machine_fault);
+
+  r.verdicts[0].machine_fault.clear();  // the control: the code's ERROR names its slot
+  EXPECT_EQ(root_causes(r).broken.count("euler_3_8"), 1u);
+  EXPECT_EQ(json_report(r, nullptr).at("verdicts").at(0).at("owner"), "code");
+  EXPECT_NE(markdown_report(r, nullptr).find("slot `euler_3_8` is wrong"), std::string::npos);
 }
 
 TEST(Reports, VerdictsSurviveJsonWithNonFiniteNumbersAndBadBytes) {

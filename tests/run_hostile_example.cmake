@@ -62,6 +62,11 @@ file(MAKE_DIRECTORY ${victim})
 file(CHMOD ${victim} DIRECTORY_PERMISSIONS OWNER_READ OWNER_WRITE OWNER_EXECUTE GROUP_READ GROUP_WRITE
      GROUP_EXECUTE WORLD_READ WORLD_WRITE WORLD_EXECUTE)
 file(GLOB_RECURSE golden_before LIST_DIRECTORIES true ${SOURCE}/golden/*)
+# This check's sandboxes carry a tag of their own (harness/isolation/sandbox.cpp): the leftovers judged
+# below are this check's, not those of another sandboxed run of the same user on this machine.
+string(RANDOM LENGTH 16 ALPHABET abcdefghijklmnopqrstuvwxyz0123456789 tag)
+set(tag "hostile-${tag}")
+set(ENV{GEOMECH_SANDBOX_TAG} "${tag}")
 gm_check(${FILE} ${CMAKE_CURRENT_BINARY_DIR} --untrusted)
 if(NOT rc STREQUAL "${STATUS}")
   message(FATAL_ERROR "expected exit status ${STATUS}, got ${rc}:\n${all}")
@@ -87,14 +92,15 @@ if(uid STREQUAL "0")
   # The sandbox's PID namespace is torn down by the kernel after its first process is killed:
   # allow it 15 s.
   foreach(i RANGE 15)
-    execute_process(COMMAND ps -u 65534 -o pid=,args= OUTPUT_VARIABLE left OUTPUT_STRIP_TRAILING_WHITESPACE)
+    execute_process(COMMAND sh -c "for p in $(ps -u 65534 -o pid=); do tr '\\0' '\\n' < /proc/$p/environ 2>/dev/null | grep -qx 'GEOMECH_SANDBOX_TAG=${tag}' && ps -o pid=,args= -p $p; done; true"
+                    OUTPUT_VARIABLE left OUTPUT_STRIP_TRAILING_WHITESPACE)
     if(left STREQUAL "")
       break()
     endif()
     execute_process(COMMAND sleep 1)
   endforeach()
   if(NOT left STREQUAL "")
-    message(FATAL_ERROR "processes of the sandbox's user outlived the check:\n${left}")
+    message(FATAL_ERROR "processes of this check's sandbox (tag ${tag}) outlived the check:\n${left}")
   endif()
 endif()
 file(REMOVE_RECURSE ${victim})

@@ -263,9 +263,9 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
     // file (or folder) are the last two arguments.
     if (cmd.size() > 2) {
       const harness::SandboxedInterpreter si = harness::interpreter_for_sandbox(language, cmd[0]);
-      if (!si.error.empty()) {
-        std::cerr << "geomech check: " << file << ": " << si.error << "\n";
-        return 2;
+      if (!si.error.empty()) {  // the grader's set-up, not the submission
+        std::cerr << "geomech check: " << file << ": the grader's machine: " << si.error << "\n";
+        return harness::kExitMachine;
       }
       cmd[0] = si.program;
       spec.read_only.insert(spec.read_only.end(), si.read_only.begin(), si.read_only.end());
@@ -285,7 +285,7 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
     for (const auto& line : b.log) std::cerr << "geomech: " << line << " (sandboxed)\n";
     if (!b.ok) {
       std::cerr << "geomech check: " << file << ": " << b.message << "\n";
-      return 2;
+      return b.machine_fault.empty() ? 2 : harness::kExitMachine;
     }
     std::cerr << "geomech: built " << b.name << "'s protocol server" << (b.cached ? " (up to date)" : "") << " in "
               << std::fixed << std::setprecision(1) << b.seconds << " s\n";
@@ -801,6 +801,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::Error& e) {
     app.exit(e);
     return 2;
+  } catch (const gm::harness::MachineError& e) {  // the grader's machine or set-up, not the code
+    std::cerr << "geomech: " << e.what() << "\n";
+    return gm::harness::kExitMachine;
   } catch (const std::exception& e) {
     std::cerr << "geomech: " << e.what() << "\n";
     return 2;

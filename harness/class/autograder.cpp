@@ -3,6 +3,7 @@
 #include "core/data_path.hpp"
 #include "core/subject.hpp"
 #include "harness/isolation/process.hpp"
+#include "harness/isolation/sandbox.hpp"
 #include "harness/reports/report.hpp"
 
 #include <algorithm>
@@ -322,15 +323,27 @@ int grade_submission(const GradeSubmissionOptions& o) {
     std::cout << read_text(log) << std::flush;
     if (auto row = read_class_row(report_dir.string(), name)) {
       rows[0] = *row;
-      report_md = read_text(report_dir / name / "report.md");
+      if (grader_fault_of(rows[0]).empty()) report_md = read_text(report_dir / name / "report.md");
     } else {
+      // No row: the class check refused before checking anyone (the grader's machine, exit 3, or
+      // its own set-up): never the student's.
       rows[0].name = name;
-      rows[0].problem = "the class check left no result (exit status " + std::to_string(pr.exit_code) + "): " +
-                        keep_ends(read_text(log), 4000);
+      rows[0].machine_fault = "the class check left no result (exit status " + std::to_string(pr.exit_code) + "): " +
+                              keep_ends(read_text(log), 4000);
     }
   }
   const ClassView view = decide_class(rows, rubric);
   const StudentView& s = view.students.front();
+  if (s.status == kGraderError) {
+    // The grading machine's failure is the platform's grader error, never a score: no results file
+    // and a failing exit (Gradescope: "The autograder failed to execute correctly"; PrairieLearn: the
+    // grading job failed). The instructor's log says what and the fix.
+    std::error_code gone;
+    fs::remove(o.results, gone);
+    std::cout << "geomech grade-submission: GRADER ERROR, no results written (the grading machine, not the "
+                 "submission): " << grader_fault_of(*s.row) << "\n";
+    return kExitMachine;
+  }
   write_results(o.platform == Platform::gradescope ? gradescope_results(s, report_md) : prairielearn_results(s, report_md));
   std::cout << "geomech grade-submission: " << s.result << ", " << s.score.headline << "\n";
   return 0;
@@ -394,7 +407,10 @@ int write_autograder(const AutograderOptions& o) {
                "cd /opt/geomech-spec\n"
                "GEOMECH_JOBS=$(nproc) ./geomech build\n"
                "ln -sf /opt/geomech-spec/build/bin/geomech /usr/local/bin/geomech\n"
-               "geomech slots >/dev/null  # the tool runs\n",
+               "geomech slots >/dev/null  # the tool runs\n"
+               "# The grader's machine, tried as a submission's check needs it (the sandbox, the cache, Python):\n"
+               "# a container that cannot run the sandbox fails here, with the fix, instead of grading anyone 0.\n"
+               "geomech self-test" + std::string(o.trusted ? " --trusted" : "") + "\n",
                true);
     write_text(out / "run_autograder",
                "#!/usr/bin/env bash\n"

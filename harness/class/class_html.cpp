@@ -23,7 +23,7 @@ std::string key_of(const std::string& area) {
 // Results sort worst first by default reading order: what needs a look.
 int result_rank(const std::string& r) {
   if (r == "NO SUBMISSION") return 0;
-  if (r == "NOT CHECKED") return 1;
+  if (r == "NOT CHECKED" || r == "GRADER ERROR") return 1;
   if (r == "DOES NOT COMPILE") return 2;
   if (r == "PASS") return 6;
   if (r == "INCOMPLETE") return 5;
@@ -141,6 +141,9 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
         << "</pre>\n";
     } else if (s.status == "not checked") {
       b << "<h2>" << html_escape(s.row->name) << ": not checked</h2>\n<pre>" << html_escape(s.row->problem) << "</pre>\n";
+    } else if (s.status == kGraderError) {
+      b << "<h2>" << html_escape(s.row->name) << ": the grader's machine failed its check (no grade)</h2>\n<pre>"
+        << html_escape(grader_fault_of(*s.row)) << "</pre>\n";
     }
   }
   return html_page("geomech class report: " + page.class_name, b.str(), kSortScript);

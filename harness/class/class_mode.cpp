@@ -2,6 +2,8 @@
 #include "harness/class/class_console.hpp"
 #include "harness/class/class_html.hpp"
 #include "harness/class/class_record.hpp"
+#include "harness/class/grader_machine.hpp"
+#include "harness/remote/remote_subject.hpp"
 #include "harness/class/gradebook.hpp"
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/inert_text.hpp"
@@ -44,6 +46,7 @@ struct Row {
   int exit_code = -1;
   double check_seconds = 0;
   std::string problem;  // the check program itself failed to run properly
+  std::string machine_fault;  // the grader's machine or set-up failed it (ClassRow::machine_fault)
   json report;          // verdicts.json
 };
 
@@ -51,7 +54,8 @@ struct Row {
 json row_json(const Row& row) {
   return {{"name", row.impl.name}, {"source", row.impl.source}, {"built", row.built},
           {"build_message", row.build_message}, {"build_seconds", row.build_seconds},
-          {"exit_code", row.exit_code}, {"check_seconds", row.check_seconds}, {"problem", row.problem}};
+          {"exit_code", row.exit_code}, {"check_seconds", row.check_seconds}, {"problem", row.problem},
+          {"machine_fault", row.machine_fault}};
 }
 
 // The row back, with the report of a checked implementation read from `reports`/<name>.
@@ -66,7 +70,8 @@ Row row_from_json(const json& r, const fs::path& reports) {
   row.exit_code = r.at("exit_code");
   row.check_seconds = r.at("check_seconds");
   row.problem = r.at("problem");
-  if (row.built && row.problem.empty()) {
+  row.machine_fault = r.value("machine_fault", "");
+  if (row.built && row.problem.empty() && row.machine_fault.empty()) {
     // A name from a file (a shard, a kept row) names a folder here only when it could name one.
     if (const std::string why = bad_implementation_name(row.impl.name); !why.empty())
       throw std::runtime_error("a class result names an implementation '" + inert_text(row.impl.name) + "': " + why);
@@ -118,6 +123,10 @@ std::string check_conditions(const ClassOptions& o, const std::string& extension
     text += "\0libraries";
     for (const auto& a : library_args(o.build.libraries)) text += '\0' + a;
   }
+  // The interpreter that runs a Python or Octave file: another one (GEOMECH_PYTHON set after a
+  // refusal, a venv) checks it again.
+  if (extension == ".py") text += std::string("\0python\0") + protocol::python_interpreter();
+  if (extension == ".m" || extension.empty()) text += std::string("\0octave\0") + protocol::octave_interpreter();
   return text;
 }
 
@@ -143,6 +152,7 @@ ClassRow class_row(const Row& row) {
   c.exit_code = row.exit_code;
   c.check_seconds = row.check_seconds;
   c.problem = row.problem;
+  c.machine_fault = row.machine_fault;
   c.report = row.report;
   return c;
 }
@@ -151,6 +161,11 @@ ClassRow class_row(const Row& row) {
 Row row_of(const Implementation& impl, const TaskResult& t, const std::string& report_dir) {
   Row row;
   row.impl = impl;
+  if (t.status == TaskResult::Status::Busy) {  // starved by the machine (or it cannot tell): not the code's
+    row.machine_fault = "the machine's fault, not the submission's: checking it " + t.detail +
+                        ". Fix: run the class again on a less busy machine, or with fewer at once (--parallel)";
+    return row;
+  }
   if (t.status != TaskResult::Status::Ok) {
     row.problem = "checking it " + (t.detail.empty() ? std::string("failed") : t.detail);
     return row;
@@ -158,7 +173,7 @@ Row row_of(const Implementation& impl, const TaskResult& t, const std::string& r
   json j = json::parse(t.payload);
   j["name"] = impl.name;
   j["source"] = impl.source;
-  for (const char* k : {"build_message", "problem"})
+  for (const char* k : {"build_message", "problem", "machine_fault"})
     if (!j.contains(k)) j[k] = "";
   for (const char* k : {"build_seconds", "check_seconds"})
     if (!j.contains(k)) j[k] = 0.0;
@@ -369,6 +384,11 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
     } else if (s.status == "not checked") {
       md << "## " << md_inline(s.row->name) << ": not checked\n\n" << md_fenced(bounded_text(s.row->problem)) << "\n";
       console << "\n" << inert_text(s.row->name) << ": " << inert_text(bounded_text(s.row->problem)) << "\n";
+    } else if (s.status == kGraderError) {
+      const std::string fault = bounded_text(grader_fault_of(*s.row));
+      md << "## " << md_inline(s.row->name) << ": the grader's machine failed its check (no grade; checked again by "
+         << "the next run)\n\n" << md_fenced(fault) << "\n";
+      console << "\n" << inert_text(s.row->name) << ": GRADER ERROR (no grade): " << inert_text(fault) << "\n";
     }
   }
   write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
@@ -443,8 +463,20 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     for (const auto& [name, entry] : *grades.roster)
       if (std::none_of(all_impls.begin(), all_impls.end(), [&](const Implementation& i) { return i.name == name; }))
         no_submission.push_back(name);
-  if (o.untrusted)
-    if (const std::string why = sandbox_unavailable(); !why.empty()) throw std::runtime_error(why);
+  // The grader's machine, checked once, first: a fault there is one refusal with its fix, not a
+  // grade for every student (harness/class/grader_machine.hpp).
+  {
+    GraderNeeds needs;
+    needs.untrusted = o.untrusted;
+    needs.cache_dir = o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir;
+    for (const auto& impl : impls) {
+      const std::string ext = fs::path(impl.origin).extension().string();
+      needs.python = needs.python || ext == ".py";
+      needs.octave = needs.octave || ext == ".m" || (ext.empty() && impl.refused.empty());
+    }
+    if (const auto problems = grader_machine_problems(needs); !problems.empty())
+      throw MachineError(grader_machine_message(problems));
+  }
   std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir
             << (o.untrusted ? " (untrusted mode: each sandboxed)" : " (trusted: in-process)");
   if (o.shard_n > 1)
@@ -455,7 +487,9 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   auto record_check = [](json& j, const ProcessResult& pr, const std::string& what) {
     j["exit_code"] = pr.exit_code;
     j["check_seconds"] = pr.seconds;
-    if (pr.exit_code != 0 && pr.exit_code != 1)
+    if (pr.exit_code == kExitMachine)  // the set-up's (tools/geomech.cpp): said with its fix
+      j["machine_fault"] = pr.output.substr(0, 2000);
+    else if (pr.exit_code != 0 && pr.exit_code != 1)
       j["problem"] = what + " ended with " +
                      (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
                      pr.output.substr(0, 2000);
@@ -533,7 +567,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
         const json j = json::parse(in);
         if (j.at("format") == "geomech-class-row 1" && j.at("fingerprint") == prints[i]) {
           Row row = row_from_json(j.at("row"), report_dir);
-          if (row.problem.rfind("its report cannot be read", 0) != 0) {
+          // The grader's fault is checked again: the condition may have changed since.
+          if (row.problem.rfind("its report cannot be read", 0) != 0 && grader_fault_of(class_row(row)).empty()) {
             finished[i] = std::move(row);
             ++resumed;
             continue;
@@ -579,6 +614,12 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
         bo.name = impl.name;
         bo.server = bo.sandbox = true;
         const BuildResult b = build_student(impl.source, tc, bo);
+        if (!b.ok && !b.machine_fault.empty()) {  // the sandbox could not start the compiler: the set-up's
+          j["built"] = true;
+          j["machine_fault"] = b.machine_fault;
+          j["build_seconds"] = b.seconds;
+          return j.dump(-1, ' ', false, json::error_handler_t::replace);
+        }
         if (!b.ok) {
           j["built"] = false;
           j["build_message"] = b.message;

@@ -51,6 +51,7 @@ json class_row_to_json(const ClassRow& row) {
             {"build_message", row.build_message}, {"build_seconds", row.build_seconds},
             {"exit_code", row.exit_code}, {"check_seconds", row.check_seconds}, {"problem", row.problem}};
   if (!row.submitted) j["submitted"] = false;
+  if (!row.machine_fault.empty()) j["machine_fault"] = row.machine_fault;
   return j;
 }
 
@@ -65,7 +66,8 @@ ClassRow class_row_from_json(const json& r, const std::string& report_dir) {
   row.exit_code = r.value("exit_code", -1);
   row.check_seconds = r.value("check_seconds", 0.0);
   row.problem = r.value("problem", "");
-  if (row.submitted && row.built && row.problem.empty()) {
+  row.machine_fault = r.value("machine_fault", "");
+  if (row.submitted && row.built && row.problem.empty() && row.machine_fault.empty()) {
     std::ifstream f(fs::path(report_dir) / row.name / "verdicts.json");
     try {
       row.report = json::parse(f);
@@ -94,8 +96,17 @@ ClassRow no_submission_row(const std::string& name) {
   return row;
 }
 
+std::string grader_fault_of(const ClassRow& row) {
+  if (!row.machine_fault.empty()) return row.machine_fault;
+  if (row.report.is_object())
+    for (const auto& v : row.report.value("verdicts", json::array()))
+      if (v.contains("machine_fault")) return v.at("machine_fault").get<std::string>();
+  return {};
+}
+
 std::string status_of(const ClassRow& row) {
   if (!row.submitted) return "no submission";
+  if (!grader_fault_of(row).empty()) return kGraderError;
   if (!row.problem.empty()) return "not checked";
   if (!row.built) return "does not compile";
   return "checked";
@@ -123,6 +134,10 @@ StudentResult student_result(const ClassRow& row) {
   }
   if (s.status == "not checked") {
     s.first_fix = inert_text(bounded_text(row.problem.substr(0, row.problem.find('\n'))));
+    s.report.clear();
+    return s;
+  }
+  if (s.status == kGraderError) {  // the machine's: nothing of it is the student's to fix
     s.report.clear();
     return s;
   }
@@ -184,6 +199,7 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
     if (s.status == "no submission") s.result = "NO SUBMISSION";
     else if (s.status == "does not compile") s.result = "DOES NOT COMPILE";
     else if (s.status == "not checked") s.result = "NOT CHECKED";
+    else if (s.status == kGraderError) s.result = "GRADER ERROR";
     if (s.status != "checked") {
       view.students.push_back(std::move(s));
       continue;
@@ -228,6 +244,9 @@ std::vector<std::string> words_of(const StudentView& s) {
   const std::string grade = s.score.headline.substr(0, s.score.headline.find(':'));  // "0.00 of 20"
   if (s.status == "no submission")
     return {"NO SUBMISSION, " + grade + ": the roster names this student, and the class folder holds nothing of theirs"};
+  if (s.status == kGraderError)
+    return {"GRADER ERROR, no grade yet: the grading machine could not check this submission (not a problem of the "
+            "code); the next run checks it again"};
   if (s.status != "checked") {
     out.push_back(s.result + ", " + grade);
     if (!s.graded.first_fix.empty()) out.push_back((s.status == "does not compile" ? "first error: " : "why: ") + s.graded.first_fix);

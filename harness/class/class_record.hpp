@@ -28,8 +28,15 @@ struct ClassRow {
   int exit_code = -1;         // of the check: 0 every check passed, 1 some did not; else a problem
   double check_seconds = 0;
   std::string problem;        // the check itself could not run (a refusal, a crash of the harness...)
+  // The grader's machine or set-up failed it, with the fix (a sandbox that cannot start the compiler,
+  // a check starved of CPU): never graded, checked again by the next run.
+  std::string machine_fault;
   nlohmann::json report;      // the check's verdicts.json; null unless it was checked
 };
+
+// The grader's fault in a row: its own, or that of a verdict of its report (verdicts.json's
+// "machine_fault"); empty when none.
+std::string grader_fault_of(const ClassRow& row);
 
 // A row from its JSON (the "row" of class-row.json, or an entry of class-shard.json's "rows"), with
 // the report of a checked implementation read from `report_dir`/<name>/verdicts.json.
@@ -43,7 +50,7 @@ std::optional<ClassRow> read_class_row(const std::string& report_dir, const std:
 ClassRow no_submission_row(const std::string& name);
 
 // How a row ended, in the words every view uses: "checked", "does not compile", "not checked",
-// "no submission".
+// "no submission", kGraderError.
 std::string status_of(const ClassRow& row);
 
 // Checks of one area of the notes for one student. A NOT PROVIDED check is either "not written"
@@ -59,7 +66,8 @@ std::string cell_text(const AreaCell& c);  // "12/12", "3/4 (1 bad) +2 n/w +9 d/
 struct StudentView {
   const ClassRow* row = nullptr;
   std::string status;    // status_of(row)
-  std::string result;    // PASS, INCOMPLETE, FAIL, NOTHING CHECKED, DOES NOT COMPILE, NOT CHECKED, NO SUBMISSION
+  std::string result;    // PASS, INCOMPLETE, FAIL, NOTHING CHECKED, DOES NOT COMPILE, NOT CHECKED, NO SUBMISSION,
+                         // GRADER ERROR
   std::string language;  // "Python", "Octave", "C++", or "" when not checked
   StudentResult graded;  // what the gradebook reads
   Score score;           // the grade under the rubric

@@ -374,6 +374,13 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
   for (const auto& n : notes) middle += (middle.empty() ? "" : "; ") + n;
   const std::string tail = st.report.empty() ? "" : "report: " + one_line(st.report);
   out.feedback = feedback_line(one_line(head), one_line(middle), tail);
+  if (st.status == kGraderError) {
+    // The machine's fault is not the student's: no grade (an empty cell), and words without the
+    // grader's paths; the lecturer's summary says what failed and its fix.
+    out.headline = "no grade yet: the grading machine could not check this submission";
+    out.feedback = "no grade yet: the grading machine could not check this submission (a problem of the grader, not of "
+                   "your code); it will be checked again";
+  }
   if (st.status == kNotCheckedYet) {
     // A class run stopped before this submission (issue 49): no grade, and the row says why, as
     // the summary does; an empty grade cell is "no grade" to both importers.
@@ -408,7 +415,7 @@ std::string write_gradebook_csv(const std::vector<StudentResult>& cls, const Rub
     const bool listed = roster && roster->count(s->name);
     if (listed) id = roster->at(s->name);
     else id.username = id.full_name = s->name;  // no roster row: the implementation name identifies
-    const std::string grade = s->status == kNotCheckedYet ? "" : format_points(score.points);
+    const std::string grade = s->status == kNotCheckedYet || s->status == kGraderError ? "" : format_points(score.points);
     if (r.format == LmsFormat::canvas) {
       out += csv_row({id.full_name.empty() ? s->name : id.full_name, id.canvas_id, id.sis_user_id,
                       id.sis_login_id, id.section, grade});

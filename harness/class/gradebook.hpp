@@ -24,10 +24,13 @@ struct ClaimResult {
 // The status of a submission a class run has not checked yet (stopped before it): its gradebook
 // row has no grade, and says so.
 inline const std::string kNotCheckedYet = "not checked yet";
+// The grader's machine or set-up failed the check (a sandbox that cannot start, a cache or an
+// interpreter out of its reach, a check starved of CPU): no grade, and it is checked again.
+inline const std::string kGraderError = "grader error";
 
 struct StudentResult {
   std::string name;                   // the implementation's name in the class (file stem or folder name); unique
-  std::string status;                 // "checked", "does not compile", "not checked", "no submission", kNotCheckedYet
+  std::string status;                 // "checked", "does not compile", "not checked", "no submission", kNotCheckedYet, kGraderError
   std::vector<std::string> provided;  // slot names the submission provides (any scalar) and a check exercised
   std::vector<std::string> unexercised;  // slots it provides that no check that ran called
   std::vector<std::string> wrong;     // provided slots the check found wrong, first fix first

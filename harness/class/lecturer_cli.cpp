@@ -2,6 +2,9 @@
 
 #include "harness/class/autograder.hpp"
 #include "harness/class/class_html.hpp"
+#include "harness/class/grader_machine.hpp"
+#include "harness/program/build.hpp"
+#include "harness/isolation/sandbox.hpp"
 #include "harness/program/cli.hpp"
 #include "harness/reports/report.hpp"
 
@@ -29,6 +32,9 @@ void run_command(F&& body) {
     status = body();
   } catch (const CLI::Error&) {
     throw;
+  } catch (const MachineError& e) {  // the grader's machine, not the code: its own status
+    std::cerr << "geomech: " << e.what() << "\n";
+    status = kExitMachine;
   } catch (const std::exception& e) {
     std::cerr << "geomech: " << e.what() << "\n";
     status = 2;
@@ -103,6 +109,38 @@ void add_lecturer_commands(CLI::App& app) {
     run_command([&] {
       gr->o.platform = platform_from_name(gr->platform);
       return grade_submission(gr->o);
+    });
+  });
+
+  // geomech self-test: the grader's machine, checked as a class run checks it before any student.
+  struct SelfTest {
+    bool trusted = false, no_python = false, octave = false;
+    std::string cache_dir;
+  };
+  auto st = std::make_shared<SelfTest>();
+  auto* t = app.add_subcommand("self-test", "try what checking submissions needs on this machine, as the sandbox's "
+                                            "user: the sandbox, the compilers' cache, the interpreters (exit 3 and the "
+                                            "fix when something fails)");
+  t->add_flag("--trusted", st->trusted, "checks will run in-process (nothing of the sandbox is needed)");
+  t->add_option("--cache-dir", st->cache_dir, "the compilers' cache to try (default: the build tree's)");
+  t->add_flag("--no-python", st->no_python, "do not try the Python interpreter");
+  t->add_flag("--octave", st->octave, "try the Octave interpreter too");
+  t->callback([st] {
+    run_command([&] {
+      GraderNeeds needs;
+      needs.untrusted = !st->trusted;
+      needs.cache_dir = st->cache_dir.empty() ? load_toolchain(default_toolchain_path()).cache_dir : st->cache_dir;
+      needs.python = !st->no_python;
+      needs.octave = st->octave;
+      const auto problems = grader_machine_problems(needs);
+      if (!problems.empty()) throw MachineError(grader_machine_message(problems));
+      std::cout << "geomech self-test: this machine can check submissions"
+                << (needs.untrusted ? " sandboxed (the sandbox starts, the cache " + needs.cache_dir + " is within its reach" +
+                                          (needs.python ? ", Python starts in it" : "") +
+                                          (needs.octave ? ", Octave can be shown to it" : "") + ")"
+                                    : " in-process (trusted)")
+                << "\n";
+      return 0;
     });
   });
 

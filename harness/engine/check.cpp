@@ -161,11 +161,14 @@ Verdict abnormal_verdict(const SubjectSet& s, const Item& item, const TaskResult
              "for this check.";
       break;
     case TaskResult::Status::Busy:
-      // Not a verdict on the code (issue 47): the machine gave it too little of a core, twice.
+      // Not a verdict on the code: the kernel's accounting says the machine starved it (or cannot say).
       v.outcome = Outcome::Error;
       m << "the check " << t.detail
         << ": nothing is known about the code from it. Run it again on a less busy machine (the command below), or "
            "with fewer checks at once (--jobs).";
+      v.machine_fault = "the machine's fault, not the code's: the check " + t.detail +
+                        ". Fix: run it again on a less busy machine, or with fewer checks at once (--jobs).";
+      v.word = kMachineErrorWord;
       break;
     case TaskResult::Status::Crashed:
       v.outcome = Outcome::Crash;
@@ -309,10 +312,16 @@ void account_for_slots(CheckResult& result, const SubjectSet& s, const CheckConf
     if (!i.has_claims) continue;
     auto check_claim = [&](const std::string& claim, bool claimed) {
       if (!claimed) return;
+      // Checked: a check that judges the claim ran (its verdict decides it, a raise included).
       for (const auto& v : result.verdicts)
-        if (v.integrator == i.name)
+        if (v.integrator == i.name) {
           for (const auto& f : v.claims)
             if (f.claim == claim) return;
+          if (v.outcome != Outcome::NotProvided) {
+            const auto judged = judged_claims(v);
+            if (std::find(judged.begin(), judged.end(), claim) != judged.end()) return;
+          }
+        }
       if (claim == "orthogonality" && i.form.has_quaternion())
         result.unchecked.push_back("integrator '" + i.name + "' claims orthogonality, but keeps its attitude as a "
                                    "quaternion: the matrix the suite reads it as, R(q / |q|), is orthogonal by "
@@ -570,7 +579,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   io.isolate = cfg.isolate;
   io.prepare_worker = info.prepare_worker;
   io.worker_done = info.worker_done;
-  io.worker_cpu = info.worker_cpu_seconds;  // the code's CPU behind the protocol (issue 47)
+  io.worker_times = info.worker_times;  // the code's CPU and queueing behind the protocol
   // The pictures and the work-precision diagram are the longest single tasks (11 s for an untrusted
   // C++ implementation, most of it alone at the end when started last): they start once the slots'
   // own checks and the exact identities have started, so that the other checks run beside them.

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "harness/engine/check_events.hpp"
+#include "harness/isolation/process_cpu.hpp"
 #include "properties/runner.hpp"
 
 #include <functional>
@@ -37,9 +38,10 @@ struct SubjectInfo {
   // check; empty for subjects linked in.
   std::function<void(int)> prepare_worker;
   std::function<void(int, bool)> worker_done;
-  // The CPU seconds the implementation's server for worker slot w has used so far (its process
-  // tree): a check's limit counts the code's CPU, wherever it runs (issue 47). Empty in process.
-  std::function<double(int)> worker_cpu_seconds;
+  // The CPU and run-queue delay the implementation's server for worker slot w has had so far (its
+  // process tree): a check's limit counts the code's CPU, wherever it runs, and tells a starved
+  // server from a sleeping one. Empty in process.
+  std::function<harness::TreeTimes(int)> worker_times;
   // "python" or "octave" for an implementation in another language: the report then names the
   // function to fix in that language ("Python function `casimir` in mine.py") instead of the slot,
   // and its checks get longer by default (timeout_factor).

@@ -124,9 +124,23 @@ ScalarState scalar_state(const CheckResult& r, const IntegratorInfo& integ, cons
       else if (!f->measured.empty() && claim != "order")
         measured.push_back(f->measured + " (" + scalar + ")");
       // A measurement that does not hold decides, complete or shortened (a loss of energy seen in a
-      // short run is a loss), unless the step raised in it.
-      if (!f->holds && v->step_raised.empty() && contradicted.empty()) contradicted = v->property + " [" + scalar + "]";
+      // short run is a loss), even when the step raised in a later case: a finding is recorded only
+      // by a case that ran to its end.
+      if (!f->holds && contradicted.empty()) contradicted = v->property + " [" + scalar + "]";
       all_hold = all_hold && f->holds;
+    }
+    // A check that ran and failed (not for a raise, not for the machine) contradicts the claims it
+    // judges, unless its findings name another claim as the one that failed: a failed check is not
+    // "not verified".
+    if (v->outcome == Outcome::Fail && v->step_raised.empty() && v->machine_fault.empty() && contradicted.empty()) {
+      const ClaimFinding* mine = finding_of(*v, claim);
+      const bool another = std::any_of(v->claims.begin(), v->claims.end(),
+                                       [&](const ClaimFinding& f) { return f.claim != claim && !f.holds; });
+      if (!another && (!mine || !mine->holds)) {
+        contradicted = v->property + " [" + scalar + "]";
+        all_hold = false;
+        if (!mine) evidence.push_back(scalar + ", " + v->property + ": FAILS: " + first_line(v->message));
+      }
     }
     const std::string why = incomplete_because(*v, claim);
     if (!why.empty() && incomplete.empty()) incomplete = why;
@@ -169,6 +183,7 @@ std::vector<std::string> judged_claims(const Verdict& v) {
 }
 
 std::string verdict_word(const Verdict& v, const IntegratorClaims* claims) {
+  if (!v.machine_fault.empty()) return kMachineErrorWord;
   if (v.outcome != Outcome::Pass || v.integrator.empty()) return outcome_name(v.outcome);
   const auto judged = judged_claims(v);
   if (judged.empty()) return "PASS";

@@ -28,6 +28,9 @@
 
 namespace gm::harness {
 
+// The word of a verdict whose not-pass is the machine's or the set-up's (Verdict::machine_fault).
+inline constexpr const char* kMachineErrorWord = "ERROR (the machine's)";
+
 // The claims a verdict's check judges: its property's `judges`, or, for checks that are not in the
 // registry (trajectory files), the claims it reported findings on.
 std::vector<std::string> judged_claims(const Verdict& v);

@@ -74,6 +74,10 @@ json to_json(const Verdict& v) {
                       {"complete", c.complete}, {"measured", c.measured}});
   j["claims"] = claims;
   if (!v.word.empty()) j["word"] = v.word;
+  if (!v.machine_fault.empty()) j["machine_fault"] = v.machine_fault;
+  j["owner"] = v.outcome == Outcome::Pass || v.outcome == Outcome::NotProvided ? "none"
+               : !v.machine_fault.empty()                                      ? "machine"
+                                                                               : "code";
   if (!v.step_raised.empty()) j["step_raised"] = {{"message", v.step_raised}, {"where", v.step_raised_where}};
   return j;
 }
@@ -119,6 +123,7 @@ Verdict verdict_from_json(const json& j) {
                                     c.at("holds").get<bool>(), c.at("evidence").get<std::string>(),
                                     c.value("complete", true), c.value("measured", std::string())});
   v.word = j.value("word", std::string());
+  v.machine_fault = j.value("machine_fault", std::string());
   if (j.contains("step_raised")) {
     v.step_raised = j["step_raised"].value("message", std::string());
     v.step_raised_where = j["step_raised"].value("where", std::string());

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <deque>
+#include <algorithm>
 #include <set>
 #include <iostream>
 #include <stdexcept>
@@ -38,8 +39,13 @@ constexpr std::size_t kOutputTail = 4096;
 // stack (the DWARF of a large binary, compressed with -gz) can take seconds on a loaded machine, so
 // such a child gets this long past the timeout to finish its report before it is stopped.
 constexpr Clock::duration kSanitizerGrace = std::chrono::seconds(120);
-// A task past its time that has had less than this share of a core waits rather than computes.
+// A task past its time that was runnable (on a CPU or queued for one) for less than this share of
+// its wall clock sleeps: it waits (a sleep, a read, a lock) rather than computes, and is stopped at
+// once. At the wall guard, one runnable for less than half of it is stopped as waiting; one runnable
+// for more is computing or starved (the kernel's run queue held it) and goes on, up to the CPU
+// limit or, on a machine too busy to give it a core, busy_factor times the wall guard.
 constexpr double kWaitingShare = 0.05;
+constexpr double kRunnableAtGuard = 0.5;
 
 int g_worker = 0;  // this process's worker slot (set before a task's child is forked)
 
@@ -53,10 +59,9 @@ struct Running {
   std::string result;
   std::string output;
   std::string sanitizer_report;  // the first line of a sanitizer's report in the output, if any
-  double worker_cpu0 = 0;        // the worker's server's CPU when the task started
-  double cpu = 0;                // the code's CPU so far (sampled)
-  Clock::time_point sampled{};   // when `cpu` was last read
-  bool retried = false;
+  TreeTimes worker0;             // the worker's server's times when the task started
+  TreeTimes times;               // the code's CPU and run-queue delay so far (sampled)
+  Clock::time_point sampled{};   // when `times` was last read
 };
 
 // In a sanitized build (ASan, UBSan) the sanitizer catches a crash before the signal does, prints a
@@ -159,8 +164,8 @@ void write_all(int fd, const std::string& s) {
 TaskResult finish(Running& r, int status) {
   TaskResult t;
   t.seconds = std::chrono::duration<double>(Clock::now() - r.start).count();
-  t.cpu_seconds = r.cpu;
-  t.retried = r.retried;
+  t.cpu_seconds = r.times.cpu;
+  t.queued_seconds = r.times.queued;
   t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
   t.sanitizer_report = r.sanitizer_report;
   if (WIFSIGNALED(status)) {
@@ -262,8 +267,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
   const int jobs = o.jobs < 1 ? 1 : o.jobs;
   const auto wall_limit = std::chrono::duration_cast<Clock::duration>(
       std::chrono::duration<double>(std::max(o.timeout_seconds * o.wall_factor, o.timeout_seconds + o.wall_floor)));
-  std::set<std::size_t> retried_;    // tasks started again after a busy machine stopped them
-  std::deque<std::size_t> again;     // ... waiting for a slot, before the rest
+  const auto busy_limit = std::chrono::duration_cast<Clock::duration>(wall_limit * std::max(1.0, o.busy_factor));
   std::deque<Running> running;
   std::size_t next = 0;
   const pid_t self = ::getpid();
@@ -302,17 +306,11 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
     ::fcntl(op[0], F_SETFL, O_NONBLOCK);
     g_worker = 0;
     Running r{i, w, pid, rp[0], op[0], Clock::now(), {}, {}, {}};
-    r.worker_cpu0 = o.worker_cpu ? o.worker_cpu(w) : 0;
-    r.retried = retried_.count(i) > 0;
+    r.worker0 = o.worker_times ? o.worker_times(w) : TreeTimes{};
     running.push_back(std::move(r));
   };
 
-  while (next < tasks.size() || !running.empty() || !again.empty()) {
-    while (!again.empty() && static_cast<int>(running.size()) < jobs) {
-      const std::size_t i = again.front();
-      again.pop_front();
-      start_one(i);
-    }
+  while (next < tasks.size() || !running.empty()) {
     while (next < tasks.size() && static_cast<int>(running.size()) < jobs) start_one(seq[next++]);
 
     std::vector<pollfd> fds;
@@ -344,41 +342,42 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         results[r.index] = finish(r, status);
         done = true;
       } else {
-        // The code's CPU, read four times a second (issue 47): the limit is on the work it does.
+        // The code's CPU and run-queue delay, read four times a second: the limit is on the work it
+        // does, and the kernel's accounting tells a task that sleeps from one a busy machine starves.
         const auto now = Clock::now();
         if (now - r.sampled > std::chrono::milliseconds(250)) {
-          r.cpu = tree_cpu_seconds(r.pid) + (o.worker_cpu ? o.worker_cpu(r.worker) - r.worker_cpu0 : 0);
+          r.times = tree_times(r.pid);
+          if (o.worker_times) {
+            const TreeTimes w = o.worker_times(r.worker);
+            r.times.cpu += w.cpu - r.worker0.cpu;
+            r.times.queued += w.queued - r.worker0.queued;
+          }
           r.sampled = now;
         }
         const double wall = std::chrono::duration<double>(now - r.start).count();
-        const bool cpu_out = r.cpu > o.timeout_seconds;
-        const bool wall_out = now - r.start > wall_limit;
-        // Past its time with almost no CPU (less than a starved task gets below a load of 20 per
-        // core, and under a quarter of its fair share of the machine): it waits (a sleep, a read, a
-        // lock); it is stopped at once, not at the wall guard.
-        bool waiting = wall > o.timeout_seconds && r.sampled > r.start + std::chrono::seconds(1) &&
-                       r.cpu < kWaitingShare * wall;
-        if (waiting) {
-          const double load = load_per_core();
-          waiting = r.cpu < 0.25 * (load > 1 ? 1 / load : 1) * wall;
-        }
+        const double runnable = r.times.cpu + r.times.queued;
+        const bool known = r.times.queued_known;
+        const bool cpu_out = r.times.cpu > o.timeout_seconds;
+        // Past its time and runnable for almost none of it: it sleeps, and is stopped at once.
+        const bool waiting = known && wall > o.timeout_seconds && r.sampled > r.start + std::chrono::seconds(1) &&
+                             runnable < kWaitingShare * wall;
+        // At the wall guard: stopped if it slept most of the time (or the kernel cannot say); a task
+        // that wanted a core most of the time goes on, up to the busy limit.
+        const bool wall_out = now - r.start > wall_limit && (!known || runnable < kRunnableAtGuard * wall);
+        const bool busy_out = now - r.start > busy_limit;
         const bool dying = !r.sanitizer_report.empty() && now - r.start < wall_limit + kSanitizerGrace;
-        if ((cpu_out || wall_out || waiting) && !dying) {
+        if ((cpu_out || wall_out || waiting || busy_out) && !dying) {
           ::kill(-r.pid, SIGKILL);
           ::kill(r.pid, SIGKILL);
           ::waitpid(r.pid, &status, 0);
           TaskResult t;
           t.seconds = wall;
-          t.cpu_seconds = r.cpu;
-          t.retried = r.retried;
+          t.cpu_seconds = r.times.cpu;
+          t.queued_seconds = r.times.queued;
           t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
           t.sanitizer_report = r.sanitizer_report;
-          char buf[400];
-          // Stopped by the wall clock, not the CPU: did it wait (little CPU though a core was free)
-          // or was it starved (the machine busier than its cores)? A starved task is run again once.
-          const double load = load_per_core();
-          const double fair_share = load > 1 ? 1 / load : 1;
-          const bool starved = !cpu_out && !waiting && r.cpu > 0.1 * fair_share * wall && load > 1;
+          char buf[600];
+          const double asleep = std::max(0.0, wall - runnable);
           if (!r.sanitizer_report.empty()) {  // it was dying, not hanging: the sanitizer had reported an error
             t.status = TaskResult::Status::Crashed;
             t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
@@ -387,29 +386,30 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
             std::snprintf(buf, sizeof buf, "did not finish within %.0f s of CPU time (%.0f s of wall clock) and was stopped",
                           o.timeout_seconds, wall);
             t.detail = buf;
-          } else if (starved && !r.retried) {
-            retried_.insert(r.index);
-            again.push_back(r.index);
-            done = true;
-            if (r.result_fd >= 0) ::close(r.result_fd);
-            if (r.output_fd >= 0) ::close(r.output_fd);
-            busy[static_cast<std::size_t>(r.worker)] = false;
-            if (o.worker_done) o.worker_done(r.worker, false);
-            it = running.erase(it);
-            continue;  // not finished: it starts again when a slot is free
-          } else if (starved) {
+          } else if (!known) {
+            // The kernel keeps no run-queue accounting here: waiting and starving cannot be told apart.
             t.status = TaskResult::Status::Busy;
             std::snprintf(buf, sizeof buf,
-                          "could not do its work: stopped twice by the wall clock after %.0f s, having had %.1f s of CPU, "
-                          "while the machine was busy (load %.1f per core)",
-                          wall, r.cpu, load);
+                          "was stopped by the wall clock after %.0f s having had %.1f s of CPU; this kernel keeps no "
+                          "run-queue accounting (/proc/PID/task/TID/schedstat), so whether it slept or the machine "
+                          "starved it is not known",
+                          wall, r.times.cpu);
             t.detail = buf;
-          } else {
+          } else if (waiting || wall_out) {
             t.status = TaskResult::Status::TimedOut;
             std::snprintf(buf, sizeof buf,
-                          "did not finish within %.0f s: stopped by the wall clock after %.0f s having used only %.1f s "
-                          "of CPU: it waits (a sleep, an input it reads, a lock) rather than computes",
-                          o.timeout_seconds, wall, r.cpu);
+                          "did not finish within %.0f s: stopped by the wall clock after %.0f s, of which the kernel "
+                          "counts %.1f s on a CPU, %.1f s queued for one and %.0f s asleep: it waits (a sleep, an input "
+                          "it reads, a lock) rather than computes",
+                          o.timeout_seconds, wall, r.times.cpu, r.times.queued, asleep);
+            t.detail = buf;
+          } else {
+            t.status = TaskResult::Status::Busy;
+            std::snprintf(buf, sizeof buf,
+                          "could not do its work: the machine starved it, by the kernel's accounting %.1f s on a CPU "
+                          "and %.1f s runnable but queued for one in %.0f s of wall clock (stopped at %.0f times the "
+                          "wall guard)",
+                          r.times.cpu, r.times.queued, wall, std::max(1.0, o.busy_factor));
             t.detail = buf;
           }
           results[r.index] = t;

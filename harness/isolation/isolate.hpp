@@ -8,6 +8,8 @@
 // calling thread).
 #pragma once
 
+#include "harness/isolation/process_cpu.hpp"
+
 #include <functional>
 #include <string>
 #include <vector>
@@ -18,18 +20,20 @@ struct TaskResult;
 
 struct IsolationOptions {
   int jobs = 1;                  // children running at once
-  // The limit of a task (issue 47: slow is judged by the work done): the CPU seconds of the code
-  // under test, its child's process tree and its worker's server (worker_cpu) together. A wall
-  // clock of wall_factor times as long (and at least wall_floor more) stays, for a task that waits
-  // (sleeps, reads input) and uses no CPU: stopped there, it is TimedOut ("it waited") when it used
-  // little CPU on an idle machine; when the machine was busy and it did work, it is started again
-  // once, and stopped a second time it is Busy, not a verdict on the code.
+  // The limit of a task (slow is judged by the work done): the CPU seconds of the code under test,
+  // its child's process tree and its worker's server (worker_times) together. A wall clock of
+  // wall_factor times as long (and at least wall_floor more) stays, for a task that waits (sleeps,
+  // reads input) and uses no CPU. Which it is, the kernel says: a task runnable (on a CPU or queued
+  // for one, schedstat's run_delay) for less than half the wall guard slept and is TimedOut ("it
+  // waits"); one runnable for more was computing or starved and goes on, and only a machine too busy
+  // to give it its CPU time within busy_factor times the wall guard stops it, as Busy: the machine's fault.
   double timeout_seconds = 120;
   double wall_factor = 3;
   double wall_floor = 60;
-  // The CPU seconds the server of worker slot w has used so far (out-of-process implementations);
-  // none: the code runs in the task's own process.
-  std::function<double(int)> worker_cpu;
+  double busy_factor = 8;        // a starved task is stopped, as Busy, at this many times the wall guard
+  // The CPU and run-queue delay the server of worker slot w has had so far (out-of-process
+  // implementations); none: the code runs in the task's own process.
+  std::function<TreeTimes(int)> worker_times;
   long memory_limit_mb = 4096;   // address-space limit of a child (not applied under AddressSanitizer)
   bool isolate = true;           // false: run the tasks in this process, one after the other (debugging)
   // Called in the parent as each task starts (index), and as it finishes (index, its result): a
@@ -61,7 +65,7 @@ struct TaskResult {
     Crashed,   // killed by a signal, or exited without a result (std::exit, a stray _exit, ...)
     TimedOut,  // killed after the timeout
     Threw,     // the task threw an exception outside the property machinery (message in `detail`)
-    Busy,      // stopped twice by the wall clock while the machine was too busy for it to do its work
+    Busy,      // the machine's fault: starved of CPU past the busy limit, or the kernel cannot tell
   };
   Status status = Status::Crashed;
   std::string payload;
@@ -73,8 +77,8 @@ struct TaskResult {
   int signal = 0;
   int exit_code = 0;
   double seconds = 0;      // wall clock
-  double cpu_seconds = 0;  // CPU of the code under test (the task's process tree and its worker's server)
-  bool retried = false;    // started again after the wall clock stopped it on a busy machine
+  double cpu_seconds = 0;     // CPU of the code under test (the task's process tree and its worker's server)
+  double queued_seconds = 0;  // ... and the time its runnable tasks waited for a core (live tasks only)
 };
 
 std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,

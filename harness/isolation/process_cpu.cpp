@@ -41,11 +41,27 @@ bool read_stat(pid_t pid, Stat& s) {
   return true;
 }
 
-}  // namespace
+// The run-queue delay of every thread of `pid`, in seconds; false when the kernel keeps no schedstat.
+bool read_queued(pid_t pid, double& seconds) {
+  const std::string dir = "/proc/" + std::to_string(pid) + "/task";
+  DIR* d = ::opendir(dir.c_str());
+  if (!d) return false;
+  bool any = false;
+  while (const dirent* e = ::readdir(d)) {
+    if (e->d_name[0] == '.') continue;
+    std::ifstream f(dir + "/" + e->d_name + "/schedstat");
+    double on_cpu_ns = 0, run_delay_ns = 0;
+    if (f >> on_cpu_ns >> run_delay_ns) {
+      seconds += run_delay_ns * 1e-9;
+      any = true;
+    }
+  }
+  ::closedir(d);
+  return any;
+}
 
-double tree_cpu_seconds(pid_t root) {
-  if (root <= 0) return 0;
-  std::map<pid_t, Stat> all;
+// The processes of `root`'s tree, root first.
+std::vector<pid_t> tree_of(pid_t root, std::map<pid_t, Stat>& all) {
   if (DIR* d = ::opendir("/proc")) {
     while (const dirent* e = ::readdir(d)) {
       char* end = nullptr;
@@ -56,19 +72,36 @@ double tree_cpu_seconds(pid_t root) {
     }
     ::closedir(d);
   }
-  if (!all.count(root)) return 0;
+  std::vector<pid_t> tree;
+  if (!all.count(root)) return tree;
   std::multimap<pid_t, pid_t> children;
   for (const auto& [pid, s] : all) children.emplace(s.ppid, pid);
-  double total = 0;
   std::vector<pid_t> todo{root};
   while (!todo.empty()) {
     const pid_t p = todo.back();
     todo.pop_back();
-    total += all[p].cpu;
+    tree.push_back(p);
     auto [lo, hi] = children.equal_range(p);
     for (auto it = lo; it != hi; ++it) todo.push_back(it->second);
   }
-  return total;
+  return tree;
+}
+
+}  // namespace
+
+TreeTimes tree_times(pid_t root) {
+  TreeTimes t;
+  if (root <= 0) return t;
+  std::map<pid_t, Stat> all;
+  for (pid_t p : tree_of(root, all)) {
+    t.cpu += all[p].cpu;
+    t.queued_known = read_queued(p, t.queued) || t.queued_known;
+  }
+  return t;
+}
+
+double tree_cpu_seconds(pid_t root) {
+  return tree_times(root).cpu;
 }
 
 double self_cpu_seconds() {

@@ -9,6 +9,26 @@
 
 namespace gm::harness {
 
+// What the kernel says of a process tree's time: the CPU it had, and how long its runnable tasks
+// waited on a run queue for a core (schedstat's run_delay; the time neither on a CPU nor queued
+// was spent asleep: a sleep, a read, a lock). A task that is runnable but not running is starved;
+// one that sleeps waits. `queued_known` is false where the kernel keeps no schedstat.
+struct TreeTimes {
+  double cpu = 0;
+  double queued = 0;
+  bool queued_known = false;
+  TreeTimes& operator+=(const TreeTimes& o) {
+    cpu += o.cpu;
+    queued += o.queued;
+    queued_known = queued_known || o.queued_known;
+    return *this;
+  }
+};
+
+// The tree's CPU (as tree_cpu_seconds) and the run-queue delay of every live task (thread) in it,
+// from /proc/<pid>/task/<tid>/schedstat. The delay of tasks that have ended is not counted.
+TreeTimes tree_times(pid_t root);
+
 // utime + stime of `root` and of every process below it, alive or waited for (cutime, cstime), in
 // seconds; 0 when it does not exist. Reads /proc (Linux).
 double tree_cpu_seconds(pid_t root);

@@ -17,6 +17,7 @@
 //   - limits: address space, CPU time, processes, size of any file written, open files.
 #pragma once
 
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
@@ -44,12 +45,24 @@ struct SandboxSpec {
   SandboxLimits limits;
 };
 
+// The exit status of a command stopped by the grader's machine or set-up (a sandbox that cannot start,
+// a cache or an interpreter out of its reach), not by the code under test; and the error that says so.
+constexpr int kExitMachine = 3;
+struct MachineError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
 // Empty when the sandbox can be used; otherwise why not (bwrap or prlimit missing or not working),
 // with what to install. Checked once per process (it starts bwrap once).
 std::string sandbox_unavailable();
 
 // argv wrapped: [setpriv ... --] bwrap ... -- prlimit ... -- argv...
 std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const SandboxSpec& spec);
+
+// The first folder on the way to `p` that the sandbox's user (nobody, when the harness runs as
+// root) cannot pass, with " (does not exist)" if it is missing; empty when every folder lets it pass
+// (bubblewrap binds as that user, so a folder under a 0700 one, as mktemp -d makes, is out of reach).
+std::string sandbox_cannot_reach(const std::string& p);
 
 // The uid the sandboxed program runs as (nobody when started as root, else ours): a directory it
 // must write to is handed to it with this.

@@ -18,29 +18,13 @@ bool in_system(const std::string& p) {
   return (p == "/usr" || p.rfind("/usr/", 0) == 0) && p != "/usr/local" && p.rfind("/usr/local/", 0) != 0;
 }
 
-// Whether the sandbox's user (nobody, when the harness runs as root) can reach `p`: every folder on
-// the way must let it pass (bubblewrap binds as that user).
-std::string unreachable_part(const fs::path& p) {
-  const unsigned uid = sandbox_uid();
-  fs::path at;
-  for (const auto& part : p) {
-    at /= part;
-    struct stat st {};
-    if (::stat(at.c_str(), &st) != 0) return at.string() + " (does not exist)";
-    if (!S_ISDIR(st.st_mode)) continue;
-    const bool pass = st.st_uid == uid ? (st.st_mode & S_IXUSR) : (st.st_mode & S_IXOTH);
-    if (!pass) return at.string();
-  }
-  return {};
-}
-
 void show(SandboxedInterpreter& r, const std::string& path, const std::string& what) {
   std::error_code ec;
   const std::string real = fs::weakly_canonical(path, ec).string();
   if (ec || real.empty() || in_system(real)) return;
   for (const auto& x : r.read_only)
     if (x == real) return;
-  if (const std::string blocked = unreachable_part(real); !blocked.empty()) {
+  if (const std::string blocked = sandbox_cannot_reach(real); !blocked.empty()) {
     if (r.error.empty())
       r.error = what + " " + real + " cannot be shown to the sandbox: its user (" +
                 std::string(sandbox_uid() == 65534 ? "nobody" : "this user") + ") cannot pass " + blocked +

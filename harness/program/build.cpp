@@ -22,6 +22,34 @@ using nlohmann::json;
 
 namespace {
 
+// When a sandboxed compile or link failed before the compiler ran, the sandbox's own error (its
+// output begins with "bwrap: ", "setpriv: " or "prlimit: "; a compiler's begins with a path or its
+// own name, so a submission cannot write such a first line): the grader's set-up, with the fix.
+std::string sandbox_start_fault(const std::string& output, const fs::path& dir) {
+  std::string first = output.substr(0, output.find('\n'));
+  bool ours = false;
+  for (const char* tool : {"bwrap: ", "setpriv: ", "prlimit: "}) ours = ours || first.rfind(tool, 0) == 0;
+  if (!ours) return {};
+  std::string fault = "the grader's machine, not the file: the sandbox could not start the compiler (" + first + ")";
+  if (const std::string blocked = sandbox_cannot_reach(dir.string()); !blocked.empty())
+    fault += ". Its user (" + std::string(sandbox_uid() == 65534 ? "nobody" : "this user") + ") cannot pass " + blocked +
+             ". Fix: `chmod o+x " + blocked + "`, or --cache-dir DIR in a folder every user may pass";
+  else
+    fault += ". Fix: `geomech self-test` says what the sandbox lacks";
+  return fault;
+}
+
+// The library a link failed for with "DSO missing from command line" ("/usr/lib/.../libdl.so.2:
+// error adding symbols: DSO missing from command line" -> "libdl.so.2"), or "" when it did not.
+std::string dso_missing(const std::string& output) {
+  const std::string marker = ": error adding symbols: DSO missing from command line";
+  const auto at = output.find(marker);
+  if (at == std::string::npos) return {};
+  const auto begin = output.find_last_of(" /\n", at);
+  const std::string lib = output.substr(begin == std::string::npos ? 0 : begin + 1, at - (begin == std::string::npos ? 0 : begin + 1));
+  return lib.rfind("lib", 0) == 0 && lib.find(".so") != std::string::npos ? lib : std::string();
+}
+
 // What a sandboxed compile may read and write: the suite's headers (of a source tree, only its
 // core/ and student/ folders: the compiler can be told to read any file through #include), the
 // prebuilt files, and the build folder (handed to the sandbox's user).
@@ -536,6 +564,13 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
                         std::to_string(static_cast<long>(o.compile_timeout_seconds)) +
                         " s (an #include of a device such as /dev/zero, or a template recursion without end?)\n";
       std::ofstream(dir / (scalar + ".log"), std::ios::trunc) << shell_join(specs[i].argv) << "\n\n" << pr.output;
+      if (o.sandbox && pr.exit_code != 0) {
+        if (std::string fault = sandbox_start_fault(pr.output, dir); !fault.empty()) {
+          r.machine_fault = r.message = std::move(fault);
+          r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          return r;
+        }
+      }
       if (pr.started && pr.exit_code == 0) {
         st[k].done = st[k].ok = true;
         std::ofstream(dir / (scalar + ".cmd"), std::ios::trunc) << commands[i];
@@ -639,11 +674,21 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     r.log.push_back(std::string("linking") + (o.verbose ? ": " + link_cmd : ""));
     fs::remove(link_file, ec);
     const ProcessResult pr = run_process(ProcessSpec{run_argv(link), {}, false}, o.compile_timeout_seconds);
+    if (o.sandbox && pr.exit_code != 0) {
+      if (std::string fault = sandbox_start_fault(pr.output, dir); !fault.empty()) {
+        r.machine_fault = r.message = std::move(fault);
+        return r;
+      }
+    }
     if (!pr.started || pr.exit_code != 0) {
       std::string hint;
       if (pr.output.find("multiple definition of `main'") != std::string::npos)
         hint = "\nhint: the file defines main(); guard it with #ifndef GEOMECH_STUDENT_CHECK ... #endif";
-      if (pr.output.find("undefined reference") != std::string::npos)
+      if (const std::string lib = dso_missing(pr.output); !lib.empty())
+        hint = "\nhint: the program needs the library " + lib + ", which no flag names (a library that a library you "
+               "use depends on, left out of its pkg-config file): add --ldflags -l" + lib.substr(3, lib.find(".so") - 3) +
+               " (or `// geomech: ldflags -l" + lib.substr(3, lib.find(".so") - 3) + "` in the file)";
+      else if (pr.output.find("undefined reference") != std::string::npos)
         hint = "\nhint: a function is declared but never defined (or defined in another file: list every file)";
       r.message = "the program could not be linked:\n" + trim_lines(pr.output, 30) + hint;
       return r;

@@ -76,6 +76,10 @@ struct BuildResult {
   std::string name;
   std::string source;            // absolute path of the source
   std::string message;           // when !ok: what went wrong, with the compiler's output
+  // When !ok because the sandbox could not start the compiler or the linker (bubblewrap's own
+  // error, such as a cache folder its user cannot reach): the grader's set-up, not the file; the
+  // message says what and the fix. Empty otherwise.
+  std::string machine_fault;
   nlohmann::json notes;          // scalar_unavailable, slot_notes, warnings (for --build-notes)
   std::string notes_file;        // where the notes were written
   double seconds = 0;

@@ -302,14 +302,14 @@ json Connection::request_text(ServerProcess& s, const std::string& text, long id
   return rep;
 }
 
-double Connection::server_cpu_seconds(int w) const {
+harness::TreeTimes Connection::server_times(int w) const {
   // The server of slot w (a session runs in a fork of it), or this process's own copy.
   pid_t pid = -1;
   if (w >= 0 && static_cast<std::size_t>(w) < pool_.size() && pool_[static_cast<std::size_t>(w)].running())
     pid = pool_[static_cast<std::size_t>(w)].pid;
   else if (own_.running() && own_pid_ == ::getpid())
     pid = own_.pid;
-  return pid > 0 ? harness::tree_cpu_seconds(pid) : 0;
+  return pid > 0 ? harness::tree_times(pid) : harness::TreeTimes{};
 }
 
 ServerProcess& Connection::server_for_this_process() {
@@ -751,10 +751,10 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   info.prepare_worker = [conn](int w) { conn->prepare_worker(w); };
   info.out_of_process = true;
   info.worker_done = [conn](int w, bool normally) { conn->worker_done(w, normally); };
-  info.worker_cpu_seconds = [conn](int w) { return conn->server_cpu_seconds(w); };
+  info.worker_times = [conn](int w) { return conn->server_times(w); };
   // In a check's own process, its case budget counts the CPU of the code under test: this
   // process's and its server's (issue 47).
-  set_code_cpu_clock([conn] { return harness::self_cpu_seconds() + conn->server_cpu_seconds(harness::current_worker()); });
+  set_code_cpu_clock([conn] { return harness::self_cpu_seconds() + conn->server_times(harness::current_worker()).cpu; });
   SubjectSet s;
   s.name = name;
   s.description = d.description.empty() ? "a " + d.language + " implementation"

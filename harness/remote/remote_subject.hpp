@@ -105,9 +105,10 @@ class Connection {
 
   // The isolation's worker hooks (harness/isolation/isolate.hpp), in the process that created this.
   void prepare_worker(int w);
-  // The CPU seconds the server of worker slot w (or this process's own copy) and everything it
-  // started have used so far (issue 47: a check's limit counts the code's CPU).
-  double server_cpu_seconds(int w) const;
+  // The CPU and run-queue delay of the server of worker slot w (or this process's own copy) and
+  // everything it started, so far (a check's limit counts the code's CPU; the delay tells starved
+  // from asleep).
+  harness::TreeTimes server_times(int w) const;
   void worker_done(int w, bool ended_normally);
 
   const std::vector<std::string>& argv() const { return argv_; }

@@ -108,6 +108,12 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
       if (!quiet_) text << outcome_name(v.outcome) << "  " << check_name(v) << ": your step raised, as above\n";
       continue;
     }
+    // The machine's or the set-up's fault names no slot: it says what went wrong and its fix.
+    if (!v.machine_fault.empty()) {
+      text << "\nERROR (the machine's, not the code's)  " << check_name(v) << "  (" << seconds_text(p.elapsed)
+           << " into the check)\n  " << v.machine_fault << "\n";
+      continue;
+    }
     // What to fix first: a slot's own definition check names the slot; an integrator's false claim
     // names the claim and what was measured.
     std::string lead;

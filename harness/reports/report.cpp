@@ -295,7 +295,7 @@ bool clearer(const Verdict& a, const Verdict& b) {
 RootCauses root_causes(const CheckResult& r) {
   RootCauses rc;
   for (const auto& v : r.verdicts) {
-    if (!is_problem(v.outcome)) continue;
+    if (!is_problem(v.outcome) || !v.machine_fault.empty()) continue;  // the machine's: names no slot
     const Property* p = property_of(v);
     if (!p || p->needs.size() != 1 || p->scope != Scope::Subject) continue;
     auto it = rc.broken.find(p->needs.front());
@@ -304,7 +304,7 @@ RootCauses root_causes(const CheckResult& r) {
   for (const auto& [slot, direct] : rc.broken) rc.explained.insert(direct->property);
   std::set<std::string> listed;
   for (const auto& v : r.verdicts) {
-    if (!is_problem(v.outcome) || rc.explained.count(v.property)) continue;
+    if (!is_problem(v.outcome) || !v.machine_fault.empty() || rc.explained.count(v.property)) continue;
     const Property* p = property_of(v);
     if (!p) continue;
     for (const auto& need : p->needs)
@@ -912,8 +912,12 @@ std::string junit_report(const CheckResult& r) {
       case Outcome::Crash:
       case Outcome::Timeout:
       case Outcome::Error:
-        x << "      <error type=\"" << outcome_name(v.outcome) << "\" message=\"" << xml_escape(first_line(v.message))
-          << "\">" << xml_escape(body) << "</error>\n";
+        if (!v.machine_fault.empty())  // the machine's: said as such, with its fix
+          x << "      <error type=\"" << kMachineErrorWord << "\" message=\"" << xml_escape(first_line(v.machine_fault))
+            << "\">" << xml_escape(body) << "</error>\n";
+        else
+          x << "      <error type=\"" << outcome_name(v.outcome) << "\" message=\"" << xml_escape(first_line(v.message))
+            << "\">" << xml_escape(body) << "</error>\n";
         break;
       case Outcome::NotProvided:
         x << "      <skipped message=\"NOT PROVIDED: " << xml_escape(v.message) << "\"/>\n";

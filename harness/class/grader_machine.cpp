@@ -1,0 +1,80 @@
+#include "harness/class/grader_machine.hpp"
+
+#include "harness/isolation/process.hpp"
+#include "harness/isolation/sandbox.hpp"
+#include "harness/isolation/sandboxed_interpreter.hpp"
+#include "harness/remote/remote_subject.hpp"
+
+#include <filesystem>
+#include <unistd.h>
+
+namespace gm::harness {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string who() { return sandbox_uid() == 65534 ? "nobody" : "this user"; }
+
+// The cache: the sandboxed compiler writes there, so every folder on the way must let the sandbox's
+// user pass.
+void try_cache(const std::string& cache_dir, std::vector<std::string>& problems) {
+  std::error_code ec;
+  const fs::path dir = fs::absolute(cache_dir, ec);
+  fs::create_directories(dir, ec);
+  if (ec) {
+    problems.push_back("the compilers' cache " + dir.string() + " cannot be made: " + ec.message() +
+                       ". Fix: --cache-dir DIR, a folder this user can write");
+    return;
+  }
+  const std::string blocked = sandbox_cannot_reach(dir.string());
+  if (blocked.empty()) return;
+  problems.push_back("the compilers' cache " + dir.string() + " is out of the sandbox's reach: its user (" + who() +
+                     ") cannot pass " + blocked +
+                     " (a folder only its owner may enter, as mktemp -d makes). Fix: `chmod o+x " + blocked +
+                     "`, or --cache-dir DIR in a folder every user may pass");
+}
+
+void try_interpreter(const std::string& language, const std::string& program, const std::string& variable,
+                     std::vector<std::string>& problems) {
+  std::error_code ec;
+  if (!fs::path(program).is_absolute() || !fs::exists(program, ec))
+    return;  // not installed: each check says so in its own words (a missing interpreter is not a sandbox's fault)
+  const SandboxedInterpreter si = interpreter_for_sandbox(language, program);
+  if (!si.error.empty()) {
+    problems.push_back(si.error);
+    return;
+  }
+  if (language != "python") return;  // Octave's start is tried by its first check
+  // Started inside the sandbox, as a check starts it.
+  SandboxSpec spec;
+  spec.read_only = si.read_only;
+  const ProcessResult r = run_process(ProcessSpec{sandboxed({si.program, "-c", "import sys"}, spec), {}, false}, 60);
+  if (!r.started || r.exit_code != 0)
+    problems.push_back("the Python interpreter " + si.program + " does not start in the sandbox (as " + who() +
+                       "): " + r.output.substr(0, 600) + ". Fix: " + variable +
+                       "=/usr/bin/python3 (the system's), or an interpreter whose folders every user may read");
+}
+
+}  // namespace
+
+std::vector<std::string> grader_machine_problems(const GraderNeeds& needs) {
+  std::vector<std::string> problems;
+  if (!needs.untrusted) return problems;
+  if (const std::string why = sandbox_unavailable(); !why.empty()) {
+    problems.push_back(why);
+    return problems;  // nothing else can be tried inside it
+  }
+  if (!needs.cache_dir.empty()) try_cache(needs.cache_dir, problems);
+  if (needs.python) try_interpreter("python", protocol::python_interpreter(), "GEOMECH_PYTHON", problems);
+  if (needs.octave) try_interpreter("octave", protocol::octave_interpreter(), "GEOMECH_OCTAVE", problems);
+  return problems;
+}
+
+std::string grader_machine_message(const std::vector<std::string>& problems) {
+  std::string m = "the grader's machine cannot check submissions (nothing was checked, nobody was graded):";
+  for (const auto& p : problems) m += "\n  - " + p;
+  return m;
+}
+
+}  // namespace gm::harness
