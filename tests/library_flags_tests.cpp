@@ -5,10 +5,15 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <set>
 
 namespace gm::harness {
 namespace {
+
+namespace fs = std::filesystem;
 
 TEST(LibraryFlags, AFileDeclaresItsLibrariesInCommentLines) {
   const LibraryRequest r = declared_in_source(
@@ -62,6 +67,44 @@ TEST(LibraryFlags, AStrangersFlagsAreVettedYoursAreNot) {
   const LibraryFlags mine = resolve_library_flags(r, false);
   EXPECT_EQ(mine.compile, r.cxxflags);
   EXPECT_EQ(mine.link, r.ldflags);
+}
+
+// A library's flags are read, not pasted: pkg-config's language standard (a dependency's -std=c++11
+// after the suite's -std=c++20 broke the suite's own headers), optimisation and warning switches are
+// left out and said; a package asked twice (on the command line and in the file) gives its flags
+// once; a stranger's folders reach the sandbox canonical. The control: your own flags as given.
+TEST(LibraryFlags, APackagesFlagsAreReadNotPasted) {
+  const fs::path dir = fs::temp_directory_path() / "geomech-pc-test";
+  fs::create_directories(dir / "lib" / "pkgconfig");
+  std::ofstream(dir / "lib" / "pkgconfig" / "engine.pc")
+      << "prefix=/usr\nName: engine\nDescription: a library-shaped example\nVersion: 1\n"
+         "Cflags: -std=c++11 -O2 -Wall -DENGINE=1 -I${pcfiledir}/../../../../usr/include/eigen3\nLibs: -lm -lm\n";
+  ::setenv("PKG_CONFIG_PATH", (dir / "lib" / "pkgconfig").c_str(), 1);
+  LibraryRequest r;
+  r.pkgs = {"engine", "engine"};
+  const LibraryFlags f = resolve_library_flags(r, true);
+  ::unsetenv("PKG_CONFIG_PATH");
+  EXPECT_EQ(std::set<std::string>(f.compile.begin(), f.compile.end()),
+            (std::set<std::string>{"-DENGINE=1", "-I/usr/include/eigen3"}));
+  EXPECT_EQ(f.link, (std::vector<std::string>{"-lm"}));
+  ASSERT_EQ(f.dropped.size(), 3u);
+  EXPECT_NE(f.dropped[0].find("'-std=c++11' from pkg-config --cflags engine: the suite compiles in its own standard"),
+            std::string::npos)
+      << f.dropped[0];
+  // Two precisions of one library are alternatives: refused together, naming both.
+  r.pkgs = {"engine", "engine-float64"};
+  try {
+    resolve_library_flags(r, false);
+    FAIL() << "two builds of one library were accepted together";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("--pkg engine and --pkg engine-float64 are two builds of one library"),
+              std::string::npos)
+        << e.what();
+  }
+  LibraryRequest mine;
+  mine.cxxflags = {"-I/usr/include/../include", "-include", "a.h", "-include", "b.h"};
+  EXPECT_EQ(resolve_library_flags(mine, false).compile, mine.cxxflags);
+  fs::remove_all(dir);
 }
 
 TEST(LibraryFlags, AMissingHeaderSuggestsItsPackage) {

@@ -85,6 +85,14 @@ int run_builtin_check(const std::string& name, const harness::CheckCliOptions& o
   return harness::run_check_cli(subject, info, o);
 }
 
+// The build options a replay of a C++ file's check needs to build the same program: its libraries
+// (--pkg, --cxxflags, --ldflags), " --pkg ode" and the like; "" when none.
+std::string replay_build_options(const harness::BuildOptions& bo) {
+  std::string out;
+  for (const auto& a : harness::library_args(bo.libraries)) out += " " + a;
+  return out;
+}
+
 // `geomech check FILE.cpp`: compile only the student's file against the prebuilt library, then
 // run its check program (which isolates every property in a child process).
 int run_student_check(const std::string& file, harness::CheckCliOptions o, const harness::BuildOptions& bo) {
@@ -108,7 +116,7 @@ int run_student_check(const std::string& file, harness::CheckCliOptions o, const
                 << " s: a first look at every slot in double while the 50-digit and exact ones compile\n";
       std::vector<std::string> argv{q.program, "--definitions", "--jobs", "1", "--name", q.name, "--source", file,
                                     "--build-notes", q.notes_file, "--reproduce-prefix",
-                                    front_door() + " check " + harness::shell_quote(file)};
+                                    front_door() + " check " + harness::shell_quote(file) + replay_build_options(bo)};
       first_look = std::thread([argv] { harness::run_process(harness::ProcessSpec{argv, {}, true}); });
     }
   }
@@ -130,7 +138,7 @@ int run_student_check(const std::string& file, harness::CheckCliOptions o, const
   const auto args = harness::to_args(o);
   argv.insert(argv.end(), args.begin(), args.end());
   argv.insert(argv.end(), {"--name", b.name, "--source", file, "--build-notes", b.notes_file, "--reproduce-prefix",
-                           front_door() + " check " + harness::shell_quote(file)});
+                           front_door() + " check " + harness::shell_quote(file) + replay_build_options(bo)});
   const harness::ProcessResult pr = harness::run_process(harness::ProcessSpec{argv, {}, true});
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cerr << "geomech: checked " << b.name << " in " << std::fixed << std::setprecision(1) << total
@@ -304,7 +312,8 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
     return 2;
   }
   spec.mounts = copy->mounts();
-  return run_protocol_check(file, harness::sandboxed(cmd, spec), language, o, notes, " --untrusted", t0, bo.name);
+  return run_protocol_check(file, harness::sandboxed(cmd, spec), language, o, notes,
+                            " --untrusted" + replay_build_options(bo), t0, bo.name);
 }
 
 // `geomech bench-protocol mine.py`: the round-trip cost of one slot call, one at a time and batched.

@@ -452,6 +452,8 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     r.message = e.what();
     return r;
   }
+  if (o.verbose)
+    for (const auto& d : libs.dropped) r.log.push_back("left out " + d);
 
   std::vector<std::string> pch_inputs;
   if (!tc.precompiled_header.empty()) pch_inputs.push_back(tc.precompiled_header + ".gch");

@@ -2,6 +2,7 @@
 
 #include "harness/isolation/process.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <set>
@@ -163,30 +164,106 @@ std::vector<std::string> pkg_config(const std::string& pkg, const char* what) {
 
 }  // namespace
 
+namespace {
+
+// A package's --cflags without what the suite sets itself: -std=..., -O..., warning switches (-W...
+// but -Wl,/-Wa,/-Wp, which are passed on and vetted), with each left out said in `dropped`.
+std::vector<std::string> without_suite_switches(const std::vector<std::string>& flags, const std::string& pkg,
+                                                std::vector<std::string>& dropped) {
+  std::vector<std::string> kept;
+  for (const auto& f : flags) {
+    const bool standard = f.rfind("-std=", 0) == 0 || f.rfind("--std=", 0) == 0;
+    const bool optimisation = f.rfind("-O", 0) == 0;
+    const bool warning = f.rfind("-W", 0) == 0 && f.rfind("-Wl,", 0) != 0 && f.rfind("-Wa,", 0) != 0 && f.rfind("-Wp,", 0) != 0;
+    if (standard || optimisation || warning)
+      dropped.push_back("'" + f + "' from pkg-config --cflags " + pkg +
+                        (standard ? ": the suite compiles in its own standard (C++20)"
+                                  : optimisation ? ": the suite sets the optimisation" : ": the suite sets the warnings"));
+    else
+      kept.push_back(f);
+  }
+  return kept;
+}
+
+// A folder flag (-I, -isystem, -L) with its folder canonical, "-I" "DIR" joined; other flags as they are.
+std::vector<std::string> canonical_folders(const std::vector<std::string>& flags) {
+  std::vector<std::string> out;
+  for (std::size_t i = 0; i < flags.size(); ++i) {
+    std::string f = flags[i];
+    for (const char* flag : {"-isystem", "-I", "-L"}) {
+      const std::string prefix = flag;
+      if (f.rfind(prefix, 0) != 0) continue;
+      std::string dir = f.substr(prefix.size());
+      if (dir.empty() && i + 1 < flags.size()) dir = flags[++i];
+      std::error_code ec;
+      const fs::path real = fs::weakly_canonical(fs::path(dir), ec);  // as the compiler finds it, links followed
+      f = prefix + (ec || dir.empty() ? dir : real.string());
+      break;
+    }
+    out.push_back(f);
+  }
+  return out;
+}
+
+// Each flag once, in the order first given (a package asked on the command line and in the file).
+// An option whose value is the next word (-include FILE, -isystem DIR, ...) and that word are kept as
+// they come, and so is a word that is not an option.
+void append_once(std::vector<std::string>& to, const std::vector<std::string>& flags) {
+  static const std::set<std::string> takes_next = {"-include", "-imacros", "-isystem", "-iquote", "-idirafter", "-I",
+                                                   "-L", "-D", "-U", "-Xlinker", "-Xpreprocessor", "-Xassembler", "-x"};
+  for (std::size_t i = 0; i < flags.size(); ++i) {
+    const std::string& f = flags[i];
+    if (takes_next.count(f) && i + 1 < flags.size()) {
+      to.push_back(f);
+      to.push_back(flags[++i]);
+    } else if (f.empty() || f[0] != '-' || std::find(to.begin(), to.end(), f) == to.end()) {
+      to.push_back(f);
+    }
+  }
+}
+
+}  // namespace
+
 LibraryFlags resolve_library_flags(const LibraryRequest& req, bool stranger) {
   LibraryFlags out;
   std::vector<std::string> refused;
-  for (const auto& p : req.pkgs) {
+  std::vector<std::string> pkgs;
+  for (const auto& p : req.pkgs)
+    if (std::find(pkgs.begin(), pkgs.end(), p) == pkgs.end()) pkgs.push_back(p);
+  // Two builds of one library (ode and ode-float64, say: single and double precision) linked
+  // together mix their scalars: refused, naming both.
+  for (const auto& a : pkgs)
+    for (const auto& b : pkgs)
+      if (b.size() > a.size() + 1 && b.rfind(a + "-", 0) == 0) {
+        const std::string suffix = b.substr(a.size() + 1);
+        for (const char* precision : {"float", "float32", "float64", "double", "single", "sp", "dp", "f32", "f64"})
+          if (suffix == precision)
+            throw std::invalid_argument("--pkg " + a + " and --pkg " + b + " are two builds of one library (in another "
+                                        "precision): a program linking both mixes them; give one of them");
+      }
+  for (const auto& p : pkgs) {
     if (!package_name_ok(p)) {
       refused.push_back("'" + p + "' is not a pkg-config package name (letters, digits, _ - . +)");
       continue;
     }
-    const auto cflags = pkg_config(p, "--cflags");
+    const auto cflags = without_suite_switches(pkg_config(p, "--cflags"), p, out.dropped);
     const auto libs = pkg_config(p, "--libs");
     if (stranger) {
       vet(cflags, false, "pkg-config --cflags " + p, refused);
       vet(libs, true, "pkg-config --libs " + p, refused);
     }
-    out.compile.insert(out.compile.end(), cflags.begin(), cflags.end());
-    out.link.insert(out.link.end(), libs.begin(), libs.end());
+    // pkg-config spells folders as its .pc file does (PREFIX/lib/pkgconfig/../../include): the
+    // sandbox is shown them canonical, as vetted.
+    append_once(out.compile, stranger ? canonical_folders(cflags) : cflags);
+    append_once(out.link, stranger ? canonical_folders(libs) : libs);
     out.pkgs.push_back(p);
   }
   if (stranger) {
     vet(req.cxxflags, false, "compile flags", refused);
     vet(req.ldflags, true, "link flags", refused);
   }
-  out.compile.insert(out.compile.end(), req.cxxflags.begin(), req.cxxflags.end());
-  out.link.insert(out.link.end(), req.ldflags.begin(), req.ldflags.end());
+  append_once(out.compile, stranger ? canonical_folders(req.cxxflags) : req.cxxflags);
+  append_once(out.link, stranger ? canonical_folders(req.ldflags) : req.ldflags);
   if (!refused.empty()) {
     std::string msg = "flags refused for a file checked in untrusted mode (its compiler runs in the sandbox, which may "
                       "read the system's headers and libraries and nothing else of this machine):";
@@ -230,9 +307,16 @@ std::string missing_header_hint(const std::string& out) {
   if (!pkgs.empty()) {
     hint += "it is in";
     for (const auto& d : dirs) hint += " " + d;
-    hint += "; give its package:";
-    for (const auto& p : pkgs) hint += " --pkg " + p;
-    return hint + " (or the line `// geomech: pkg " + *pkgs.begin() + "` in the file)";
+    if (pkgs.size() == 1)
+      return hint + "; give its package: --pkg " + *pkgs.begin() + " (or the line `// geomech: pkg " + *pkgs.begin() +
+             "` in the file)";
+    // Several packages hold it: builds of one library (single and double precision, say), each an
+    // alternative to the others; given together, a program would mix them.
+    hint += "; give one of its packages, not several (each is another build of the library, such as single or double "
+            "precision):";
+    bool first = true;
+    for (const auto& p : pkgs) hint += std::string(first ? " " : " or ") + "--pkg " + p, first = false;
+    return hint;
   }
   if (!dirs.empty()) {
     hint += "it is in";

@@ -40,10 +40,17 @@ struct LibraryFlags {
   std::vector<std::string> compile;  // after the suite's compile flags
   std::vector<std::string> link;     // after the objects and the suite's libraries
   std::vector<std::string> pkgs;     // what was asked, for the report and the cache
+  // What was left out of pkg-config's --cflags, each with why: a language standard (the suite
+  // compiles in C++20: a -std=c++11 after it breaks the suite's own headers), an optimisation or a
+  // warning switch (the suite sets its own). Said under --verbose.
+  std::vector<std::string> dropped;
 };
 
-// The flags of a request: pkg-config's for each package, then the explicit ones. `stranger`:
-// vet every flag (above). Throws std::invalid_argument with every refusal and its reason, or with
+// The flags of a request: pkg-config's for each package, then the explicit ones. A package or a
+// flag asked twice (on the command line and in the file) counts once; folders are given canonical
+// (/usr/lib/x86_64-linux-gnu/pkgconfig/../../../include is /usr/include); pkg-config's standard,
+// optimisation and warning switches are dropped (LibraryFlags::dropped). `stranger`: vet every flag
+// (above). Throws std::invalid_argument with every refusal and its reason, or with
 // pkg-config's message for a package it does not know.
 LibraryFlags resolve_library_flags(const LibraryRequest& request, bool stranger);
 

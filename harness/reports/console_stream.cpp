@@ -131,10 +131,15 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
                             : "THEN:      " + slot_named(stub_.info, slot, "'") + " fails its own check " + v.property +
                                   " in " + v.scalar + ", and it calls '" + callee + "', which is wrong: fix that first";
     }
-    if (!v.step_raised.empty())
+    if (!v.step_raised.empty()) {
       lead += std::string(lead.empty() ? "" : "\n") + "YOUR STEP RAISES: integrator '" + v.integrator + "' raised at " +
               v.step_raised_where + ": " + first_line(v.step_raised) +
               " (the claims whose checks it stops are NOT VERIFIED; the rest NOT CHARACTERISED)";
+      // A step written for floats, given 50-digit numbers (an mpf to numpy or math): its precision says so.
+      if (v.scalar == "mp50" && stub_.info.language == "python" && v.step_raised.find("TypeError") != std::string::npos)
+        lead += "\n  (a TypeError in 50 digits: a step that computes in double only says so with precision = \"double\" "
+                "in its class, and is then run in double only; docs/STUDENTS.md, \"A step's stated precision\")";
+    }
     for (const auto& c : v.claims)
       if (c.claimed && !c.holds && v.step_raised.empty())
         lead += std::string(lead.empty() ? "" : "\n") + "FALSE CLAIM: integrator '" + v.integrator + "' claims " + c.claim +

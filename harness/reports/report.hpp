@@ -51,6 +51,7 @@ std::string slot_named(const SubjectInfo& info, const std::string& slot, const c
 // skipped).
 std::string first_line(const std::string& s);
 bool is_problem(Outcome o);  // FAIL, CRASH, TIMEOUT or ERROR
+bool is_engine_wrapper(const CheckResult& r);  // integrators, and no slot of the notes
 
 std::string console_report(const CheckResult& r, const Catalogue* catalogue, bool details = true);
 std::string markdown_report(const CheckResult& r, const Catalogue* catalogue);
