@@ -412,6 +412,8 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
       if (listener.failure_raise) {
         v.step_raised = listener.failure_raise->message;
         v.step_raised_where = listener.failure_raise->where;
+        v.step_raised_rate = listener.failure_raise->rate;
+        v.step_raised_size = listener.failure_raise->size;
       }
       // A state-dependent failure replays as the whole sequence (the seed), not as its last case.
       if (!state_between_calls) v.reproduce = rc::detail::reproduceMapToString({{metadata.id, failure.reproduce}});
@@ -500,14 +502,49 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
       ~Domain() { current_step_domain() = saved; }
     } domain(claims ? claims->domain : StepDomain{});
     run_checked(v, p, k, all_cases, [&] { (*ibody)(subject, guarded_integrator, claims ? *claims : none); });
+    // A raise beyond some size does not hide a finding below it: with no domain declared, the check
+    // is run again inside the range where the step was seen to work (|Omega| and |Pi| below a
+    // quarter of where it raised, when that still holds the states the checks draw, of size about
+    // 1). A failure there is the verdict, said with the raise; a pass there leaves the raise's verdict
+    // (the claim is not verified beyond) and says it passes inside.
+    const bool declared = claims && claims->domain.declared();
+    if (v.outcome == Outcome::Fail && !v.step_raised.empty() && !declared && v.step_raised_rate >= 64 &&
+        v.step_raised_size >= 64) {
+      StepDomain inside;
+      inside.max_omega = v.step_raised_rate / 4;
+      inside.max_pi = v.step_raised_size / 4;
+      Verdict again = base_verdict<T>(p, s);
+      again.integrator = integrator.name;
+      {
+        Domain narrowed(inside);
+        run_checked(again, p, k, all_cases, [&] { (*ibody)(subject, guarded_integrator, claims ? *claims : none); });
+      }
+      char range[160];
+      std::snprintf(range, sizeof range, "|Omega| <= %.3g and |Pi| <= %.3g", inside.max_omega, inside.max_pi);
+      const std::string raised = "your step raised at " + v.step_raised_where + ": " + v.step_raised.substr(0, v.step_raised.find('\n'));
+      if (again.step_raised.empty() && again.outcome == Outcome::Fail) {
+        again.message = raised + "; run again inside " + range +
+                        " (where it works; declare a domain to set it), the check fails there too:\n" + again.message;
+        again.notes.push_back(raised + "; the check was run again inside " + range + ", where it fails");
+        v = std::move(again);
+      } else if (again.step_raised.empty() && again.outcome == Outcome::Pass) {
+        v.notes.push_back("run again inside " + std::string(range) + " (where the step works), the check passes there");
+        v.message += std::string("\n(run again inside ") + range + ", where the step works, the check passes there)";
+      }
+    }
     // The step raised in the case reported: a claimed property FAILS (its claim could not be
     // verified); one that judges only claims nobody made, or none, could measure nothing and says so.
     if (v.outcome == Outcome::Fail && !v.step_raised.empty() &&
         !claims_any(claims ? *claims : none, p.judges)) {
+      // Cases that ran to their end before the raise keep what they measured: said, not "nothing".
+      std::string before;
+      for (const auto& f : v.claims)
+        if (!f.holds) before = f.evidence;
       v.outcome = Outcome::NotCharacterised;
       v.message = "not characterised: your step raised at " + v.step_raised_where + ": " + v.step_raised +
-                  " (nothing of " + (p.judges.empty() ? std::string("this") : p.judges.front()) +
-                  " was claimed, and nothing could be measured)";
+                  (before.empty() ? " (nothing of " + (p.judges.empty() ? std::string("this") : p.judges.front()) +
+                                        " was claimed, and nothing could be measured)"
+                                  : " (not claimed; before that, a case measured to its end: " + before + ")");
       v.counterexample.clear();
       v.reproduce.clear();
     }

@@ -19,6 +19,15 @@ theory. This test checks them with the suite and asserts, for each, the verdict 
   damped_splitting         bounded energy a FALSE CLAIM: it loses energy
   still_below              said to return its input for h below about 2^-30
   capped                   said to follow 0.347 x (3.8) beyond a size
+  clamped                  said to follow (3.8) shrunk to a constant size (a cap of magnitude)
+  guarded_clamp            the same clamp behind a guard for h < 2^-60: the cap named, never the guard
+                           for failures whose steps are above it
+  rk4_casimir              Casimir a FALSE CLAIM whose cause is never "depends on the units": its
+                           relative drift is the same at every scale
+  float_backward_euler     bounded energy a FALSE CLAIM in single precision: it loses energy, whatever
+                           the round-off noise of its plateau
+  small_angle_snap         order and equivariance FALSE: an attitude within 1e-3 rad of the identity is
+                           taken for the identity; the failures name the attitude regime near the identity
   frozen                   DOES NOT CONVERGE, and its order row FAILS
   rk4                      order 4 verified; its energy does not hold (not claimed)
   midpoint                 every claim it makes verified
@@ -196,6 +205,32 @@ def rk4_pi_midpoint_attitude_orders():
     return order_P, order_O
 
 
+def clamped_field_sizes():
+    """The clamped field of verdict_cases.hpp at Pi scaled by 2^j: its size, and its ratio to (3.8)."""
+    out = []
+    for j in range(0, 24, 2):
+        P = [p * 2.0 ** j for p in Pi0]
+        F = cases.euler_3_8(I0, P)
+        n = max(abs(f) for f in F)
+        G = [f * 1024.0 / n for f in F] if n > 1024 else F
+        out.append((max(abs(g) for g in G), max(abs(g) for g in G) / n))
+    return out
+
+
+def rk4_relative_casimir_drift(scale, steps=64, h=0.125):
+    """RK4 on Pi alone (the Casimir's drift does not involve O), the state scaled and h by its inverse."""
+    P = [p * scale for p in Pi0]
+    h = h / scale
+    c0 = sum(p * p for p in P)
+    for _ in range(steps):
+        k1 = cases.euler_3_8(I0, P)
+        k2 = cases.euler_3_8(I0, [p + h / 2 * k for p, k in zip(P, k1)])
+        k3 = cases.euler_3_8(I0, [p + h / 2 * k for p, k in zip(P, k2)])
+        k4 = cases.euler_3_8(I0, [p + h * k for p, k in zip(P, k3)])
+        P = [p + h / 6 * (a + 2 * b + 2 * c + d) for p, a, b, c, d in zip(P, k1, k2, k3, k4)]
+    return abs(sum(p * p for p in P) - c0) / c0
+
+
 # ---- the check of the C++ cases ----------------------------------------------------------------
 
 shutil.rmtree(OUT, ignore_errors=True)
@@ -321,6 +356,59 @@ check(m and all(float(x.group(1)) < 2 ** -30 <= float(x.group(2)) for x in m),
 # A capped field.
 cp = [v["message"] for v in rows("capped") if v["outcome"] == "FAIL"]
 check(cp and any("0.347 x (3.8)" in s for s in cp), "capped: should be told its field is 0.347 x (3.8) beyond a size")
+
+# A field clamped to a constant size (the issue's "capped in magnitude"): the cap, confirmed at the
+# failing state, is what is named.
+sizes = clamped_field_sizes()
+clamped_at = [r for size, r in sizes if r < 1]
+check(clamped_at and all(abs(size - 1024.0) < 1e-9 for size, r in sizes if r < 1) and len(set(round(r, 12) for r in clamped_at)) > 1,
+      "theory: the clamped field should have the constant size 1024 beyond the clamp, at varying fractions of (3.8)")
+for name in ("clamped", "guarded_clamp"):
+    msgs = [v["message"] for v in rows(name) if v["outcome"] == "FAIL"]
+    check(any("shrunk to the constant size |dPi/dt| = 1024" in m for m in msgs),
+          "%s: should be told its field is (3.8) shrunk to the constant size 1024: %s" % (name, msgs[0][:400] if msgs else "no failure"))
+# The guard of guarded_clamp (h < 2^-60) is named only where the failing steps lie below it.
+for m in (v["message"] for v in rows("guarded_clamp") if v["outcome"] == "FAIL"):
+    for g in re.finditer(r"returns its input unchanged for h <= [0-9.e+-]+ .*?(not the cause here|steps down to h = ([0-9.e+-]+))", m):
+        check(g.group(1) == "not the cause here" or float(g.group(2)) < 2.0 ** -60,
+              "guarded_clamp: the guard named as the cause for steps above it: " + g.group(0)[:300])
+
+# RK4's Casimir drift: the same relative drift at every scale (bit for bit: scaling by powers of 2 is
+# exact), so the units are never its cause.
+drifts = [rk4_relative_casimir_drift(2.0 ** k) for k in (-20, 0, 12)]
+check(drifts[0] == drifts[1] == drifts[2] and drifts[1] > 0, "theory: RK4's relative Casimir drift should not depend on the scale: %r" % drifts)
+check(word("rk4_casimir", "casimir") == "FALSE CLAIM", "rk4_casimir: the Casimir claim should be FALSE, is " + word("rk4_casimir", "casimir"))
+check(word("rk4_casimir", "order").startswith("verified"), "rk4_casimir: order 4 should be verified")
+said = " ".join([v["message"] for v in rows("rk4_casimir")] + [dec["rk4_casimir"]["casimir"].get("why", ""),
+                                                                 dec["rk4_casimir"]["casimir"]["measured"], dec["rk4_casimir"]["casimir"].get("evidence", "")])
+check("depends on the units" not in said, "rk4_casimir: the units named as the cause of a covariant drift: " + said[:600])
+
+# Backward Euler in single precision: a loss, told apart from an oscillation despite float noise.
+check(word("float_backward_euler", "bounded_energy") == "FALSE CLAIM",
+      "float_backward_euler: bounded energy should be a FALSE CLAIM, is " + word("float_backward_euler", "bounded_energy"))
+check("loses energy" in dec["float_backward_euler"]["bounded_energy"]["measured"],
+      "float_backward_euler: the measurement should say it loses energy: " + dec["float_backward_euler"]["bounded_energy"]["measured"])
+
+# An attitude snapped to the identity within 1e-3 rad: the attitude regimes find it and say so.
+def snapped(theta):
+    """Whether small_angle_snap takes an attitude theta rad about x from the identity for the identity."""
+    O = [[1, 0, 0], [0, math.cos(theta), -math.sin(theta)], [0, math.sin(theta), math.cos(theta)]]
+    sin2 = ((O[2][1] - O[1][2]) ** 2 + (O[0][2] - O[2][0]) ** 2 + (O[1][0] - O[0][1]) ** 2) / 4
+    return O[0][0] + O[1][1] + O[2][2] > 1 and sin2 < 1e-6
+
+
+check(snapped(2.0 ** -12) and snapped(2.0 ** -40) and not snapped(2.0 ** -6) and not snapped(math.pi - 2.0 ** -12),
+      "theory: the snap acts within 1e-3 rad of the identity, and only there")
+for claim in ("order", "equivariant"):
+    check(word("small_angle_snap", claim) == "FALSE CLAIM",
+          "small_angle_snap: %s should be a FALSE CLAIM, is %s" % (claim, word("small_angle_snap", claim)))
+named = [v for v in rows("small_angle_snap") if v["outcome"] == "FAIL" and
+         any(c["type"].startswith("attitude (0, 1 generic") and c["value"].strip() == "2" for c in v.get("counterexample", []))]
+check(named, "small_angle_snap: a failure should name its attitude regime (2: 2^-m rad from the identity): " +
+      "; ".join("%s %r" % (v["property"], [c["type"] for c in v.get("counterexample", [])][:4])
+                for v in rows("small_angle_snap") if v["outcome"] == "FAIL")[:800])
+eq = [v for v in rows("small_angle_snap", "integrator_equivariant") if v["outcome"] == "FAIL"]
+check(eq, "small_angle_snap: equivariance should FAIL (it held on random attitudes before the regimes)")
 
 # A step that does nothing.
 check(word("frozen", "order") == "DOES NOT CONVERGE", "frozen: order should be DOES NOT CONVERGE, is " + word("frozen", "order"))

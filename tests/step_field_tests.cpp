@@ -217,5 +217,28 @@ TEST(StepField, AFastMotionIsLookedAtOnItsOwnTimeScale) {
   }
 }
 
+// A cap is named only on its experiment at the failing state (docs/CAUSES.md): explicit Euler of
+// (3.8) with the field clamped to a constant size 1024 is said to be (3.8) shrunk to that size at a
+// state beyond the clamp; the control, the same step at a state below it, is said to follow (3.8).
+TEST(StepField, ACapOfConstantSizeIsNamedWhereItActs) {
+  Integrator<double> in;
+  in.name = "clamped_euler";
+  in.rigid_body_step = [](const Vec3<double>& I, const RigidBodyState<double>& x, const double& h) {
+    Vec3<double> F = x.Pi.cross(Vec3<double>(x.Pi.cwiseQuotient(I)));
+    const double size = F.cwiseAbs().maxCoeff();
+    if (size > 1024) F *= 1024 / size;
+    const Vec3<double> W = x.Pi.cwiseQuotient(I);
+    Mat3<double> W_hat;
+    W_hat << 0, -W(2), W(1), W(2), 0, -W(0), -W(1), W(0), 0;
+    return RigidBodyState<double>{Vec3<double>(x.Pi + h * F), Mat3<double>(x.O + h * x.O * W_hat)};
+  };
+  const Vec3<double> I(1.75, 1.5, 1.25);
+  const RigidBodyState<double> fast{Vec3<double>(128, 128, 128), Mat3<double>::Identity()};
+  const std::string said = stepfield::explain_rigid_body_step(in, I, {fast}, {1.0 / 8192});
+  EXPECT_NE(said.find("a cap, by experiment: your step's field is (3.8) shrunk to the constant size |dPi/dt| = 1024"),
+            std::string::npos)
+      << said;
+}
+
 }  // namespace
 }  // namespace gm

@@ -4,4 +4,5 @@
 
 GEOMECH_STUDENT(cases::None, cases::BackwardEuler, cases::ExplicitEuler, cases::ExplicitEulerTwin, cases::AlwaysRaises,
                 cases::RaisesBeyond, cases::RaisesBeyondDeclared, cases::WrongInsideDeclared, cases::SinglePrecision, cases::FrameSlip, cases::LieRK4, cases::DampedSplitting,
-                cases::StillBelow, cases::Capped, cases::Frozen, cases::RK4, cases::Midpoint);
+                cases::StillBelow, cases::Capped, cases::Frozen, cases::RK4, cases::Clamped, cases::GuardedClamp,
+                cases::RK4Casimir, cases::FloatBackwardEuler, cases::SmallAngleSnap, cases::Midpoint);

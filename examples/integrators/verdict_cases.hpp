@@ -291,6 +291,90 @@ struct RK4 {
   }
 };
 
+// 13. The midpoint rule with the gyroscopic term clamped to a fixed size: |dPi/dt| at most 2^10 (a
+//     "max torque" setting). The cause named must be a cap of constant size (docs/CAUSES.md).
+struct Clamped {
+  static constexpr const char* name = "clamped";
+  static constexpr gm::student::Claims claims{.order = 2};
+  template <class T>
+  static Vec3<T> clamp(const Vec3<T>& F) {
+    const T limit(1024);
+    return size(F) > limit ? Vec3<T>(F * (limit / size(F))) : F;
+  }
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    return midpoint<T>(I, x, h, [&](const Vec3<T>& P) { return clamp<T>(euler_3_8<T>(I, P)); });
+  }
+};
+
+// 14. The same clamp behind a "nothing to do" guard for h below 2^-60: the failures it makes lie at
+//     steps far above the guard, so the cause named must be the cap, and the guard said not to be it.
+struct GuardedClamp {
+  static constexpr const char* name = "guarded_clamp";
+  static constexpr gm::student::Claims claims{.order = 2};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    using std::abs;
+    if (abs(h) < T(1) / T(1152921504606846976.0)) return x;  // 2^-60
+    return Clamped::rigid_body_step<T>(I, x, h);
+  }
+};
+
+// 15. The classical RK4 claiming the Casimir (false: its drift is a truncation error, ~h^5 a step).
+//     It is covariant in the units: scaled by lambda with h by 1/lambda, the relative drift is the
+//     same, so "depends on the units" would be a wrong cause.
+struct RK4Casimir {
+  static constexpr const char* name = "rk4_casimir";
+  static constexpr gm::student::Claims claims{.order = 4, .casimir = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h);
+};
+
+template <class T>
+RigidBodyState<T> RK4Casimir::rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+  return RK4::rigid_body_step<T>(I, x, h);
+}
+
+// 16. Backward Euler computed in single precision, claiming bounded energy (false: it loses energy,
+//     then sits on a plateau where float round-off moves H both ways): the loss must still be called
+//     a loss, however many steps of the plateau's noise rise.
+struct FloatBackwardEuler {
+  static constexpr const char* name = "float_backward_euler";
+  static constexpr gm::student::Claims claims{.bounded_energy = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    const auto f = [](const T& v) { return static_cast<float>(SinglePrecision::to_double_value(v)); };
+    const Vec3<float> If(f(I(0)), f(I(1)), f(I(2)));
+    RigidBodyState<float> xf;
+    for (int i = 0; i < 3; ++i) xf.Pi(i) = f(x.Pi(i));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) xf.O(i, j) = f(x.O(i, j));
+    const RigidBodyState<float> yf = BackwardEuler::rigid_body_step<float>(If, xf, f(h));
+    RigidBodyState<T> y;
+    for (int i = 0; i < 3; ++i) y.Pi(i) = T(double(yf.Pi(i)));
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) y.O(i, j) = T(double(yf.O(i, j)));
+    return y;
+  }
+};
+
+// 17. The midpoint rule behind an engine's small-angle shortcut: an attitude within 1e-3 rad of the
+//     identity is taken for the identity itself before the step (exact at the identity, where the
+//     special states sit, wrong next to it). Order 2 and equivariance claimed, both false there: the
+//     attitude regimes near the identity must catch it, name their regime, and name the attitude.
+struct SmallAngleSnap {
+  static constexpr const char* name = "small_angle_snap";
+  static constexpr gm::student::Claims claims{.order = 2, .equivariant = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    const Mat3<T> A = x.O - x.O.transpose();
+    const T sin2 = (A(2, 1) * A(2, 1) + A(0, 2) * A(0, 2) + A(1, 0) * A(1, 0)) / T(4);
+    RigidBodyState<T> y = x;
+    if (x.O.trace() > T(1) && sin2 < T(1) / T(1000000)) y.O = Mat3<T>::Identity();  // angle < 1e-3 rad
+    return midpoint<T>(I, y, h, [&](const Vec3<T>& P) { return euler_3_8<T>(I, P); });
+  }
+};
+
 // The midpoint rule itself, every claim true: the positive control.
 struct Midpoint {
   static constexpr const char* name = "midpoint";

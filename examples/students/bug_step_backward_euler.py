@@ -1,8 +1,8 @@
 """Buggy claim: backward Euler (implicit, order 1) claiming order 2. Its vector field is exactly the
 notes' (it solves Pi_new = Pi + h f(Pi_new) with f of (3.8) and turns O with Omega = I^-1 Pi_new), so
 what is wrong is not the equation but the order. Expected: the order claim is a FALSE CLAIM whose
-evidence says the step's vector field is right and the problem is how the step uses it, and the
-measured order is 1."""
+evidence says the step's vector field is right (the equation is not the cause), and the measured
+order is 1."""
 from correct import *  # noqa: F401,F403
 import mpmath
 

@@ -100,7 +100,7 @@ using stepfield::explaining_step;
 template <class T>
 void integrator_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   const Vec3<T> I = dyn::draw_generic_inertia<T>();
-  const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+  const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
   const T t_end(1);
   const RigidBodyState<T> exact = dyn::oracle_rigid_body(I, x0, {t_end}).front();
   const T scale = dyn::at_least_one(norm_inf(x0.Pi));
@@ -121,7 +121,7 @@ void integrator_order(const Subject<T>&, const Integrator<T>& in, const Integrat
   record_series(ser);
   // Each part with its own order (issue 47): a Lie-group method may be right on Pi and not on O.
   const std::string parts = parts_order({"Pi", "O"}, {errs_pi, errs_O}, hs, floors);
-  explaining_step(in, I, [&] { return std::vector<RigidBodyState<T>>{x0, exact}; }, [&] {
+  explaining_step(in, I, [&] { return std::vector<RigidBodyState<T>>{x0, exact}; }, hs, [&] {
     showing_inputs([&] { return rigid_body_inputs(I, x0) + "    h = 1/8, halved down to 1/128; t = 1\n"; },
                    [&] { judge_order_claim(in.name, c.order, "", scalar_tag<T>(), hs, errs, floors, parts); });
   });
@@ -136,7 +136,7 @@ void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const Inte
   std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+    const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
     const RigidBodyState<T> back = in.rigid_body_step(I, in.rigid_body_step(I, x0, h), -h);
     const T r = state_distance(back, x0);
     if (k == 0 || worse(r, worst)) worst = r, inputs = rigid_body_inputs(I, x0) + "    h = 1/4\n";
@@ -152,21 +152,52 @@ void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const Inte
 constexpr int kSteps = 64;
 
 // Where the worst residual of an invariant claim was seen, for its evidence: a state scaled by
-// lambda = 2^k with the step scaled by 1/lambda (claim_state_scale below). A cause is named only on
-// evidence (issue 33): when the state as drawn keeps the invariant (its residual `drawn`, in units
-// of the scale, is within `allowed`) and the same motion in other units does not, the defect
-// depends on the units, which an iteration stopped at an absolute tolerance, or a cut-off on the
-// state's size, does; a relative tolerance does not. When the drawn state fails too, the scale
-// explains nothing and no cause is named.
+// lambda = 2^k with the step scaled by 1/lambda (claim_state_scale below). A cause is named only
+// when an experiment at the failing input confirms it: the failing case's own body and state,
+// unscaled (lambda = 1, h = 1/8), is run again; `unscaled` is its residual in units of the scale
+// (NaN when that run raised). When it keeps the invariant and the scaled one does not, the defect
+// depends on the units (an iteration stopped at an absolute tolerance, a cut-off on the state's
+// size); when it fails too, the units are not the cause, and the note says so.
 template <class T>
-std::string scaled_note(const T& lambda, const T& drawn, const T& allowed) {
+std::string scaled_note(const T& lambda, const T& unscaled, const T& allowed) {
   if (lambda == T(1)) return {};
   const std::string where = " (worst at a state scaled by " + to_string_full(lambda) + " and h by its inverse: the same motion in other units";
-  if (!(is_finite(drawn) && drawn <= allowed)) return where + ")";
-  return where + "; the state as drawn keeps it, with " + fmt("%.3g", to_double(T(drawn / allowed))) +
+  if (!is_finite(unscaled))
+    return where + "; the same body and state unscaled could not be run to compare (not finite, or the step raised): "
+                   "cause not identified)";
+  if (!(unscaled <= allowed))
+    return where + "; the same body and state unscaled fail as well, with " + fmt("%.3g", to_double(T(unscaled / allowed))) +
+           " of the allowed residual: the units are not the cause)";
+  return where + "; the same body and state unscaled keep it, with " + fmt("%.3g", to_double(T(unscaled / allowed))) +
          " of the allowed residual: the defect depends on the units, so an absolute "
          "tolerance (an iteration stopped when a change is below a fixed size) or a cut-off on the state's size is the "
-         "likely cause; make them relative to the state)";
+         "cause to look for; make them relative to the state)";
+}
+
+template <class T>
+T residual_size(const T& a, const T& b) {
+  return abs_value(T(a - b));
+}
+template <class T>
+T residual_size(const VecX<T>& a, const VecX<T>& b) {
+  return norm_inf(VecX<T>(a - b));
+}
+
+// The experiment of scaled_note: the worst residual of `invariant` along `steps` steps of h from
+// x0 (in units of `scale`), or NaN when the step raised there.
+template <class T, class X, class Run, class Invariant>
+T residual_along(Run&& run_from, const X& x0, const T& scale, Invariant&& invariant) {
+  T worst(0);
+  try {
+    const auto v0 = invariant(x0);
+    run_from(x0, [&](int, const X& x) {
+      const T r = T(residual_size(invariant(x), v0) / scale);
+      if (worse(r, worst)) worst = r;
+    });
+  } catch (const std::exception&) {
+    return std::numeric_limits<T>::quiet_NaN();
+  }
+  return worst;
 }
 
 // The scale of the k-th of the kStates states of an invariant claim: the first as drawn, the
@@ -184,38 +215,46 @@ T claim_state_scale(int k) {
 template <class T, class Invariant, class Scale>
 void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const char* name, Invariant invariant, Scale scale_of,
                      int degree) {
-  T worst(0), worst_lambda(1), unscaled(0);
-  Vec3<T> I_first;
-  RigidBodyState<T> x_first;
+  T worst(0), worst_lambda(1), worst_scale(1);
+  Vec3<T> I_worst;
+  RigidBodyState<T> drawn_worst, x_worst;  // the worst case as drawn, and as run (scaled)
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> drawn{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+    const RigidBodyState<T> drawn{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
     // Inside the integrator's declared domain (issue 47), h = 1/8 scaled with the state.
     const T lambda = within_domain<T>(claim_state_scale<T>(k), stepguard::rate_of(I, drawn), stepguard::size_of(drawn), 0.125);
     const RigidBodyState<T> x0{(drawn.Pi * lambda).eval(), drawn.O};
-    if (k == 0) I_first = I, x_first = x0;
-    T scale = scale_of(I, drawn);
+    const T drawn_scale = scale_of(I, drawn);
+    T scale = drawn_scale;
     for (int d = 0; d < degree; ++d) scale *= lambda;
     const T v0 = invariant(I, x0);
     Series ser{std::string("invariants: ") + in.name, std::string(name) + scalar_tag<T>(), "t", "|residual|", false, true,
                {}, 0};
+    bool this_worst = k == 0;
     run(in, I, x0, T(1) / (T(8) * lambda), kSteps, [&](int n, const RigidBodyState<T>& x) {
       const T r = abs_value(T(invariant(I, x) - v0));
-      if (worse(T(r / scale), worst)) worst = r / scale, worst_lambda = lambda;  // a NaN stays the worst
-      if (k == 0 && worse(T(r / scale), unscaled)) unscaled = r / scale;
+      if (worse(T(r / scale), worst)) worst = r / scale, worst_lambda = lambda, this_worst = true;  // a NaN stays the worst
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
+    if (this_worst) I_worst = I, drawn_worst = drawn, x_worst = x0, worst_scale = drawn_scale;
     if (k == 0) record_series(ser);
   }
+  const T h_worst = T(1) / (T(8) * worst_lambda);
   const auto states = [&] {
-    return std::vector<RigidBodyState<T>>{x_first, run(in, I_first, x_first, T(1) / T(8), kSteps)};
+    return std::vector<RigidBodyState<T>>{x_worst, run(in, I_worst, x_worst, h_worst, kSteps)};
   };
-  explaining_step(in, I_first, states, [&] {
-    showing_inputs([&] { return rigid_body_inputs(I_first, x_first) + "    h = 1/8, 64 steps (the first case drawn)\n"; },
+  explaining_step(in, I_worst, states, std::vector<double>{to_double(h_worst)}, [&] {
+    showing_inputs([&] { return rigid_body_inputs(I_worst, x_worst) + "    h = " + to_string_full(h_worst) +
+                                ", 64 steps (the case with the worst residual)\n"; },
                    [&] {
-                     // A cause is named on a failing row only (issue 47).
+                     // A cause is named on a failing row only (issue 47), and only on an experiment.
                      const T allowed = T(T(16.0 * degree) * T(kSteps) * eps<T>());
                      const bool fails = !(is_finite(worst) && worst <= allowed);
+                     T unscaled(0);
+                     if (fails && worst_lambda != T(1))
+                       unscaled = residual_along(
+                           [&](const RigidBodyState<T>& x, const auto& each) { run(in, I_worst, x, T(1) / T(8), kSteps, each); },
+                           drawn_worst, worst_scale, [&](const RigidBodyState<T>& x) { return invariant(I_worst, x); });
                      judge_measured_claim<T>(claim, claimed, in.name,
                                              std::string(name) + " is kept to round-off over 64 steps" +
                                                  (fails ? scaled_note(worst_lambda, unscaled, allowed) : std::string()),
@@ -253,7 +292,7 @@ void integrator_orthogonality(const Subject<T>&, const Integrator<T>& in, const 
   std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+    const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
     if (k == 0) inputs = rigid_body_inputs(I, x0) + "    h = 1/8, 64 steps\n";
     Series ser{std::string("invariants: ") + in.name, "|O^T O - Id|" + scalar_tag<T>(), "t", "|residual|", false, true, {},
                0};
@@ -412,13 +451,14 @@ constexpr int kManakovSteps = 32;
 template <class T, class F>
 void manakov_invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const std::string& name, int lo, int hi,
                              F invariant, int degree, int homogeneity) {
-  T worst(0), worst_lambda(1), unscaled(0);
-  ManakovCase<T> first;
+  T worst(0), worst_lambda(1), worst_scale(1);
+  ManakovCase<T> worst_case, drawn_worst;  // the worst case as run (scaled), and as drawn
   for (int k = 0; k < kStates; ++k) {
     ManakovCase<T> m = draw_manakov_case<T>(lo, hi);
-    if (k == 0) first = m;
+    const ManakovCase<T> drawn = m;
     T scale(1);
     for (int d = 0; d < degree; ++d) scale *= dyn::at_least_one(norm_inf(m.x0.M)) * (d ? T(m.n) : T(1));
+    const T drawn_scale = scale;
     // M scaled by lambda and h by 1/lambda, as in invariant_claim; the invariant is homogeneous
     // of degree `homogeneity` in M (-1: it mixes degrees, as the spectrum's eigenvalues and
     // tr(M^4) do, and the states are not scaled).
@@ -429,22 +469,29 @@ void manakov_invariant_claim(const Integrator<T>& in, const char* claim, bool cl
     for (int d = 0; d < homogeneity; ++d) scale *= lambda;
     const auto v0 = invariant(m, m.x0);
     Series ser{"invariants (Manakov): " + in.name, name + scalar_tag<T>(), "t", "|residual|", false, true, {}, 0};
+    bool this_worst = k == 0;
     run(in, m.A, m.x0, T(1) / (T(8) * lambda), kManakovSteps, [&](int n, const ManakovState<T>& x) {
       const T r = norm_inf((invariant(m, x) - v0).eval());
-      if (worse(T(r / scale), worst)) worst = r / scale, worst_lambda = lambda;
-      if (k == 0 && worse(T(r / scale), unscaled)) unscaled = r / scale;
+      if (worse(T(r / scale), worst)) worst = r / scale, worst_lambda = lambda, this_worst = true;
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
+    if (this_worst) worst_case = m, drawn_worst = drawn, worst_scale = drawn_scale;
     if (k == 0) record_series(ser);
   }
+  const T h_worst = T(1) / (T(8) * worst_lambda);
   const auto states = [&] {
-    return std::vector<ManakovState<T>>{first.x0, run(in, first.A, first.x0, T(1) / T(8), kManakovSteps)};
+    return std::vector<ManakovState<T>>{worst_case.x0, run(in, worst_case.A, worst_case.x0, h_worst, kManakovSteps)};
   };
-  explaining_manakov_step(in, first.A, states, [&] {
-    const auto inputs = [&] { return manakov_inputs(first, T(T(1) / T(8))) + "    (32 steps; the first case drawn)\n"; };
+  explaining_manakov_step(in, worst_case.A, states, [&] {
+    const auto inputs = [&] { return manakov_inputs(worst_case, h_worst) + "    (32 steps; the case with the worst residual)\n"; };
     showing_inputs(inputs, [&] {
       const T allowed = T(T(16.0 * degree) * T(kManakovSteps) * eps<T>());
       const bool fails = !(is_finite(worst) && worst <= allowed);
+      T unscaled(0);
+      if (fails && worst_lambda != T(1))
+        unscaled = residual_along(
+            [&](const ManakovState<T>& x, const auto& each) { run(in, drawn_worst.A, x, T(1) / T(8), kManakovSteps, each); },
+            drawn_worst.x0, worst_scale, [&](const ManakovState<T>& x) { return invariant(drawn_worst, x); });
       judge_measured_claim<T>(claim, claimed, in.name,
                               name + " is kept to round-off over 32 steps" +
                                   (fails ? scaled_note(worst_lambda, unscaled, allowed) : std::string()),

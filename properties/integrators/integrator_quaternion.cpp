@@ -30,7 +30,7 @@ void integrator_unit_quaternion(const Subject<T>&, const Integrator<T>& in, cons
   std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+    const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
     EngineState<T> u = to_declared<T>(in.form, I, x0.O, x0.Pi);
     const std::string drawn = named("I", I) + named("q", u.q) + named(angular_key(in.form.angular), u.angular()) +
                               "    (" + describe_state_form(in.form) + "), h = 1/8, 64 steps\n";

@@ -52,7 +52,7 @@ void integrator_noether(const Subject<T>&, const Integrator<T>& in, const Integr
   std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+    RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
     const std::string drawn = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + "    h = 1/8, 64 steps\n";
     if (k == 0) inputs = drawn;
     const Vec3<T> pi0 = x.O * x.Pi;
@@ -116,7 +116,7 @@ void integrator_equivariant(const Subject<T>&, const Integrator<T>& in, const In
   std::string inputs;
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+    const RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
     const Mat3<T> R = dyn::draw_rotation<T>();
     const std::string drawn = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + named("R", R) + "    h = 1/4\n";
     if (k == 0) inputs = drawn;
@@ -217,7 +217,7 @@ void long_time_energy(const std::string& integrator, bool claimed, const std::st
 template <class T>
 void integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   const Vec3<T> I = dyn::draw_generic_inertia<T>();
-  RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_rotation<T>()};
+  RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
   const T h = T(1) / T(4);
   const int steps = long_run_steps<T>(c.bounded_energy, 100000, 4000, 1000);
   const std::string inputs = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + "    h = 1/4\n";

@@ -101,6 +101,37 @@ Mat3<T> draw_rotation() {
   return pick<T>(gen::rotation3<T>(), "O");
 }
 
+// An attitude for an integrator's check, where Lie-group code branches (../shared/DESIGN.md, "input
+// regimes"): half the draws generic (draw_rotation), the others 2^-m rad from the identity or from a
+// rotation by pi, m = 2..52 (small-angle series and their thresholds, 1e-3, 1e-6, sqrt(eps); the
+// other branch point of the log map). Exact rational rotations: Cayley of a small skew about a
+// rational unit axis, times 2 n n^T - Id for a rational unit n. The regime is a named pick, so a
+// failure names it, and shrinking keeps it when only it fails.
+template <class T>
+Mat3<T> draw_attitude() {
+  const int regime = pick<T>(rc::gen::inRange(0, 4),
+                             "attitude (0, 1 generic; 2 2^-m rad from the identity; 3 2^-m rad from a rotation by pi)");
+  if (regime < 2) return draw_rotation<T>();
+  const int m = pick<T>(rc::gen::inRange(2, 53), "m (the attitude 2^-m rad from its branch point)");
+  static const int axes[5][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 2, 2}, {2, -1, 2}};  // / 1 or / 3: unit
+  const auto unit = [](int k) {
+    const Rational d = k < 3 ? Rational(1) : Rational(3);
+    return Vec3<Rational>(Rational(axes[k][0]) / d, Rational(axes[k][1]) / d, Rational(axes[k][2]) / d);
+  };
+  const Vec3<Rational> a = unit(pick<T>(rc::gen::inRange(0, 5), "axis of the small rotation (one of 5)"));
+  // Cayley of S = hat(a) t turns by 2 atan(t): t = 2^-(m+1) turns by about 2^-m rad.
+  const Rational t = Rational(1) / Rational(boost::multiprecision::cpp_int(1) << (m + 1));
+  MatX<Rational> S = MatX<Rational>::Zero(3, 3);
+  S(0, 1) = -a(2) * t, S(0, 2) = a(1) * t, S(1, 0) = a(2) * t, S(1, 2) = -a(0) * t, S(2, 0) = -a(1) * t, S(2, 1) = a(0) * t;
+  MatX<Rational> R = gen::cayley_rational(S);
+  if (regime == 3) {
+    const Vec3<Rational> n = unit(pick<T>(rc::gen::inRange(0, 5), "axis of the rotation by pi (one of 5)"));
+    const Mat3<Rational> flip = Mat3<Rational>(Rational(2) * n * n.transpose()) - Mat3<Rational>::Identity();
+    R = MatX<Rational>(flip * Mat3<Rational>(R));
+  }
+  return Mat3<T>(convert_matrix<T>(R));
+}
+
 // Generic data, where a degenerate draw (a sphere, a symmetric top, Pi along an axis, an
 // equilibrium of Manakov's equations) would make a check vacuous or an "unclaimed property holds"
 // note false: pairwise distinct moments (b + c, c + a, a + b) with a < b < c in a random axis
@@ -435,6 +466,7 @@ std::vector<T> times_to(const T& t_end, int count) {
   PREFIX template Vec3<T> draw_triaxial_inertia<T>();                                                       \
   PREFIX template Vec3<T> draw_momentum<T>();                                                               \
   PREFIX template Mat3<T> draw_rotation<T>();                                                               \
+  PREFIX template Mat3<T> draw_attitude<T>();                                                               \
   PREFIX template Vec3<T> draw_generic_inertia<T>();                                                        \
   PREFIX template T generic_entry<T>();                                                                     \
   PREFIX template Vec3<T> draw_generic_momentum<T>();                                                       \

@@ -30,10 +30,16 @@ inline SlopeFit loglog_slope(const std::vector<double>& h, const std::vector<dou
   bool plateau = false;
   char line[160];
   for (std::size_t i = 0; i < h.size() && i < err.size(); ++i) {
-    const bool usable = !plateau && std::isfinite(err[i]) && err[i] > floor[i] && h[i] > 0;
+    const bool finite = std::isfinite(err[i]);
+    const bool at_floor = finite && err[i] <= floor[i];
+    const bool usable = !plateau && finite && !at_floor && h[i] > 0;
+    // Each excluded point says why, in words its numbers agree with.
+    const char* why = usable     ? ""
+                      : !finite  ? "(not finite, excluded)"
+                      : at_floor ? "(at round-off, excluded)"
+                                 : "(above round-off, excluded: after a point at round-off or not finite)";
     if (!usable) plateau = true;
-    std::snprintf(line, sizeof line, "    %s = %-12.6g error = %-12.6g %s\n", label, h[i], err[i],
-                  usable ? "" : "(round-off plateau, excluded)");
+    std::snprintf(line, sizeof line, "    %s = %-12.6g error = %-12.6g %s\n", label, h[i], err[i], why);
     f.table += line;
     if (usable) {
       X.push_back(std::log(h[i]));
@@ -50,6 +56,22 @@ inline SlopeFit loglog_slope(const std::vector<double>& h, const std::vector<dou
   for (int i = 0; i < f.used; ++i) sxy += (X[i] - mx) * (Y[i] - my), sxx += (X[i] - mx) * (X[i] - mx);
   f.slope = sxx > 0 ? sxy / sxx : 0;
   return f;
+}
+
+// What a run that does not converge did, in words its numbers agree with: the error at the smallest
+// step against its floor, and whether it fell at all from the largest step.
+inline std::string stall_words(const std::vector<double>& err, double last_floor) {
+  if (err.empty()) return "no error measured";
+  char line[200];
+  const double first = err.front(), last = err.back();
+  if (!std::isfinite(last)) return "the error at the smallest step is not finite";
+  if (std::isfinite(first) && last < first)
+    std::snprintf(line, sizeof line, "error %.3g at the smallest step, %.3g times its round-off floor, having fallen only %.3g times from the largest step",
+                  last, last / last_floor, first / last);
+  else
+    std::snprintf(line, sizeof line, "error %.3g at the smallest step, %.3g times its round-off floor, and not smaller than at the largest step",
+                  last, last / last_floor);
+  return line;
 }
 
 // Every error finite and at or below its round-off floor: the method is exact for the problem at

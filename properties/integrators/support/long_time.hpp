@@ -51,6 +51,7 @@ struct EnergyClassification {
   long steps = 0;
   long changed = 0;       // steps that changed H beyond round-off
   long fell = 0, rose = 0;  // of those, how many lowered it and how many raised it
+  double fell_by = 0, rose_by = 0;  // the total variation of e downwards and upwards
   bool not_finite = false;
   bool holds() const { return kind == EnergyKind::Conserved || kind == EnergyKind::Oscillating; }
 
@@ -80,11 +81,18 @@ struct EnergyClassification {
           std::snprintf(buf, sizeof buf, "%s energy at %.1f%% of the steps that change it: %.3g%% %s after %ld steps (%s)",
                         losing ? "loses" : "gains", 100.0 * static_cast<double>(way) / static_cast<double>(changed),
                         pct(final_error), losing ? "lost" : "gained", steps, losing ? "dissipative" : "secular growth");
-        } else {
+        } else if (std::abs(trend) > oscillation) {
           std::snprintf(buf, sizeof buf,
                         "%s energy over the run: %.3g%% %s after %ld steps, a trend larger than its oscillation (%s)",
                         losing ? "loses" : "gains", pct(final_error), losing ? "lost" : "gained", steps,
                         losing ? "dissipative" : "secular growth");
+        } else {
+          const double share = (losing ? fell_by : rose_by) / std::max(fell_by + rose_by, 1e-300);
+          std::snprintf(buf, sizeof buf,
+                        "%s energy over the run: %.3g%% %s after %ld steps, %.1f%% of its motion %s (the rest is "
+                        "round-off noise) (%s)",
+                        losing ? "loses" : "gains", pct(final_error), losing ? "lost" : "gained", steps, 100.0 * share,
+                        losing ? "downwards" : "upwards", losing ? "dissipative" : "secular growth");
         }
         break;
       }
@@ -110,6 +118,7 @@ inline EnergyClassification classify_energy_error(const std::vector<double>& t, 
   c.budget = budget;
   const std::size_t n = e.size();
   c.steps = n > 0 ? static_cast<long>(n - 1) : 0;
+  double rose_by = 0, fell_by = 0;  // the total variation of e upwards and downwards
   for (std::size_t k = 0; k < n; ++k) {
     if (!std::isfinite(e[k])) {
       c.not_finite = true;
@@ -121,6 +130,7 @@ inline EnergyClassification classify_energy_error(const std::vector<double>& t, 
     c.max_error = std::max(c.max_error, std::abs(e[k]));
     if (k > 0) {
       const double d = e[k] - e[k - 1];
+      (d < 0 ? fell_by : rose_by) += std::abs(d);
       if (std::abs(d) > step_roundoff) {
         ++c.changed;
         (d < 0 ? c.fell : c.rose) += 1;
@@ -142,10 +152,17 @@ inline EnergyClassification classify_energy_error(const std::vector<double>& t, 
     c.oscillation = std::max(c.oscillation, hi_e - lo_e);
   }
   c.trend = mean[3] - mean[0];
-  // Monotone: (nearly) every step that changes H beyond round-off changes it one way, and the run
-  // ends beyond the budget that way.
-  const bool monotone_down = c.changed > 0 && c.fell >= 0.99 * static_cast<double>(c.changed) && c.final_error < -budget;
-  const bool monotone_up = c.changed > 0 && c.rose >= 0.99 * static_cast<double>(c.changed) && c.final_error > budget;
+  // Monotone: (nearly) every step that changes H beyond round-off changes it one way, or, weighed
+  // by size, the motion of e one way is at least three times the other (round-off noise on a
+  // plateau, as in single precision, moves e both ways by about as much, and cannot hide a loss of
+  // the state's size); and the run ends beyond the budget that way.
+  c.fell_by = fell_by;
+  c.rose_by = rose_by;
+  const bool down_by_size = fell_by > 3 * rose_by, up_by_size = rose_by > 3 * fell_by;
+  const bool monotone_down =
+      c.changed > 0 && (c.fell >= 0.99 * static_cast<double>(c.changed) || down_by_size) && c.final_error < -budget;
+  const bool monotone_up =
+      c.changed > 0 && (c.rose >= 0.99 * static_cast<double>(c.changed) || up_by_size) && c.final_error > budget;
   if (monotone_down || (std::abs(c.trend) > c.oscillation && c.trend < 0))
     c.kind = EnergyKind::Losing;
   else if (monotone_up || (std::abs(c.trend) > c.oscillation && c.trend > 0))

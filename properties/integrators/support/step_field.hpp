@@ -177,8 +177,8 @@ Diagnosis diagnose(const Field<T>& f, const Vec3<T>& I, const RigidBodyState<T>&
   d.field_right = pi_ok && om_ok;
   if (d.field_right)
     d.text = "your step's vector field is right: it follows (3.8) and (2.10) (the extrapolated (step(x, h) - x)/h "
-             "agrees with Pi x I^-1 Pi = " + v(rhs) + " and Omega = I^-1 Pi = " + v(Omega) + "); what is wrong is how "
-             "the step uses it";
+             "agrees with Pi x I^-1 Pi = " + v(rhs) + " and Omega = I^-1 Pi = " + v(Omega) + "): the equation is not "
+             "the cause, and this reading identifies no other (the measurement is the evidence)";
   else
     d.text = pi_text + (pi_text.empty() || om_text.empty() ? "" : "; ") + om_text;
   return d;
@@ -245,9 +245,14 @@ Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const Rigi
 // What the rigid-body step does at the states `xs` (the first is the case's), in words (issue 47):
 // a precision below the scalar's, a step that does not reduce to the identity, one that returns its
 // input below some h, a capped field (support/step_probe.hpp); only when none of these is found,
-// its vector field against (3.8) and (2.10).
+// its vector field against (3.8) and (2.10). Each is named only when its experiment at the failing
+// input confirms it: "returns its input" only when the failing steps `hs` (in the units of xs; empty:
+// not known) reach down to where the step does so; a cap only when the field at the failing state
+// itself is (3.8) shrunk to a constant fraction or a constant size.
+// (The failing step is tried at the state: T(failing_here) from a double is exact enough for that.)
 template <class T>
-std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, const std::vector<RigidBodyState<T>>& xs) {
+std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, const std::vector<RigidBodyState<T>>& xs,
+                                    const std::vector<double>& hs = {}) {
   const RigidBodyState<T>& x0 = xs.front();
   const double precision = stepprobe::precision_of(in, I, x0);
   if (precision > 0) return stepprobe::precision_words<T>(precision) + scalar_tag<T>();
@@ -266,7 +271,13 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
     while (rate * l < T(1) / T(2)) l *= T(2);
     if (l != T(1)) probed.push_back(RigidBodyState<T>{Vec3<T>(x0.Pi * l), probed.back().O});
   }
-  for (const auto& x : probed) {
+  // The failing steps in the units of the k-th probed state (the last one is rescaled by l: the same
+  // motion is run with steps h / l there).
+  const double h_failing = hs.empty() ? 0.0 : *std::min_element(hs.begin(), hs.end());
+  const double last_scale = probed.size() > xs.size() + 1 ? to_double(T(max_abs(probed.back().Pi) / max_abs(x0.Pi))) : 1.0;
+  std::string guard_seen;  // a guard found below every failing step: evidence, not the cause
+  for (std::size_t k = 0; k < probed.size(); ++k) {
+    const auto& x = probed[k];
     const auto small = stepprobe::small_steps(in, I, x, precision);
     if (small.not_identity) {
       // In the integrator's own variables too, for a step kept in a declared form (issue 48).
@@ -274,7 +285,24 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
           in.form.is_notes() ? std::string() : "; " + in_declared_form(in, I, x, diagnose(rigid_body_field(in, I, x), I, x)).text;
       return small.not_identity_text + own + scalar_tag<T>();
     }
-    if (small.returns_input) return small.returns_input_text + scalar_tag<T>();
+    if (small.returns_input) {
+      // The experiment: the step at this state with the smallest failing h returns its input.
+      const double failing_here = h_failing / (k == xs.size() + 1 ? last_scale : 1.0);
+      bool still = false;
+      if (h_failing > 0) {
+        const RigidBodyState<T> y = in.rigid_body_step(I, x, T(failing_here));
+        still = (y.Pi.array() == x.Pi.array()).all() && (y.O.array() == x.O.array()).all();
+      }
+      if (still)
+        return small.returns_input_text + fmt("; the failing runs use steps down to h = %.3g, where it returns its input too",
+                                              failing_here) +
+               scalar_tag<T>();
+      if (guard_seen.empty())
+        guard_seen = "; besides, " + small.returns_input_text +
+                     (h_failing > 0 ? fmt(", but every failing step is larger (the smallest h = %.3g): not the cause here",
+                                          failing_here)
+                                    : std::string(": the failing steps are not known here, so it is not named the cause"));
+    }
   }
   stepfield::Diagnosis d;
   const RigidBodyState<T>* at = &x0;
@@ -288,13 +316,15 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
     const std::string cap = stepprobe::cap_of(I, *at, [&](const RigidBodyState<T>& y) { return rigid_body_field(in, I, y).Pi_dot; });
     if (!cap.empty()) return cap + scalar_tag<T>();
   }
-  return "the step's own equation: " + d.text + scalar_tag<T>();
+  return "the step's own equation: " + d.text + guard_seen + scalar_tag<T>();
 }
 
-// The rigid body's explanation of a failed claim (explain_rigid_body_step, above).
+// The rigid body's explanation of a failed claim (explain_rigid_body_step, above); `hs` the steps of
+// the judged runs, in the units of the states.
 template <class T, class States, class Judge>
-void explaining_step(const Integrator<T>& in, const Vec3<T>& I, States&& states, Judge&& judge) {
-  stepfield::explaining_claims([&] { return explain_rigid_body_step(in, I, states()); }, judge);
+void explaining_step(const Integrator<T>& in, const Vec3<T>& I, States&& states, const std::vector<double>& hs,
+                     Judge&& judge) {
+  stepfield::explaining_claims([&] { return explain_rigid_body_step(in, I, states(), hs); }, judge);
 }
 
 }  // namespace gm::stepfield

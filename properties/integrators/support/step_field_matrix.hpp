@@ -8,7 +8,7 @@
 // A field that differs is matched against the mistakes these equations invite (a reversed
 // commutator or cross product, Omega solved from one side of (2.34), the notes' misprinted
 // M = (P^T Q - Q^T P)/2, Omega applied from the wrong side) and said in the notes' terms, with the
-// matrices it compares; a field that agrees sends the student to how the step uses it.
+// matrices it compares; a field that agrees rules the equation out, and names no other cause.
 #pragma once
 
 #include "impl/canonical_integrators.hpp"
@@ -115,7 +115,7 @@ Diagnosis diagnose_manakov(const ManakovField<T>& f, const MatX<T>& A, const Man
   d.field_right = pi_ok && om_ok;
   if (d.field_right)
     d.text = "your step's vector field is right: it follows (2.36) and dO/dt = O Omega (the extrapolated (step(x, h) - x)/h "
-             "agrees with [M, Omega] = " + m(rhs) + " and " + omega_is + "); what is wrong is how the step uses it";
+             "agrees with [M, Omega] = " + m(rhs) + " and " + omega_is + "): the equation is not the cause, and this reading identifies no other (the measurement is the evidence)";
   else
     d.text = (pi_ok ? "" : pi_text) + (pi_ok || om_ok ? "" : "; ") + (om_ok ? "" : om_text);
   return d;
@@ -146,7 +146,7 @@ Diagnosis diagnose_canonical(const MatX<T>& field, const MatX<T>& truth, std::ve
   d.field_right = agrees(field, truth, size);
   if (d.field_right)
     d.text = "your step's vector field is right: it follows " + system + " (the extrapolated (step(Z, h) - Z)/h agrees "
-             "with " + qp(truth) + "); what is wrong is how the step uses it";
+             "with " + qp(truth) + "): the equation is not the cause, and this reading identifies no other (the measurement is the evidence)";
   else
     d.text = read_field<T>(field, readings, size, "your step follows " + qp(field) + "; " + system + " gives " + qp(truth));
   return d;

@@ -28,6 +28,7 @@
 #include "properties/support/truth.hpp"
 
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -108,6 +109,7 @@ struct SmallSteps {
   std::string not_identity_text;
   bool returns_input = false;
   std::string returns_input_text;
+  double h_still = 0;  // returns_input: the largest probed h at which the step returns its input
 };
 
 template <class T>
@@ -142,14 +144,15 @@ SmallSteps small_steps(const Integrator<T>& in, const Vec3<T>& I, const RigidBod
                             fmt("%.3g", to_double(m)) + " of the state at h = " + fmt("%.3g", to_double(T(expected / rate))) +
                             " (h |Omega| = 2^-" + std::to_string(smallest) + "), where a consistent step moves it by about " +
                             fmt("%.1g", to_double(expected)) +
-                            ": something changes the state by a fixed amount however small h is (a conversion to "
-                            "another frame or form and back that does not undo itself?); measured at\n" +
+                            ": something changes the state by a fixed amount however small h is (what, this "
+                            "measurement does not tell); measured at\n" +
                             named("I", I) + named("Pi", x.Pi) + named("O", x.O);
     }
   }
   if (first_still > 4) {
     const T h_still = pow2<T>(-first_still) / rate, h_moves = pow2<T>(-(first_still - 1)) / rate;
     s.returns_input = true;
+    s.h_still = to_double(h_still);
     s.returns_input_text = "your step returns its input unchanged for h <= " + fmt("%.3g", to_double(h_still)) +
                            " (it moves x at h = " + fmt("%.3g", to_double(h_moves)) +
                            "; here |Omega| = " + fmt("%.3g", to_double(rate)) +
@@ -159,15 +162,25 @@ SmallSteps small_steps(const Integrator<T>& in, const Vec3<T>& I, const RigidBod
   return s;
 }
 
-// 4. A cap: the step's field at lambda x against lambda^2 times its field at x, lambda = 2^j.
-// `field(x)` is the extrapolated dPi/dt of the step (step_field.hpp), `notes(x)` (3.8) there.
+// 4. A cap: the step's field at lambda x against (3.8) there, lambda = 2^j, j = -16, -14, ..., 24.
+// `field(x)` is the extrapolated dPi/dt of the step (step_field.hpp). A cap is named only when the
+// experiment confirms it at the failing state x itself (lambda = 1): the field is exactly (3.8) below
+// some size and, from there on (x included), (3.8) shrunk to a constant fraction, or to a constant
+// size (the clamp an engine's "max angular velocity" makes).
 template <class T, class Field>
 std::string cap_of(const Vec3<T>& I, const RigidBodyState<T>& x, Field&& field) {
   const T size = max_abs(x.Pi);
   if (!(size > T(0))) return {};
-  std::vector<std::pair<T, T>> ratio;  // (|lambda Pi|, |F(lambda x)| / |(3.8) at lambda x|)
+  struct Point {
+    T pi;     // |lambda Pi|
+    T ratio;  // F(lambda x) as a multiple of (3.8) at lambda x
+    T force;  // |F(lambda x)|
+    T noise;  // what round-off leaves uncertain in |F| there (below)
+  };
+  std::vector<Point> at;
+  constexpr int kFirst = -16, kStride = 2;
   const StepDomain& domain = current_step_domain();
-  for (int j = -16; j <= 24; j += 2) {
+  for (int j = kFirst; j <= 24; j += kStride) {
     const T lambda = pow2<T>(j);
     RigidBodyState<T> xl = x;
     xl.Pi *= lambda;
@@ -179,21 +192,49 @@ std::string cap_of(const Vec3<T>& I, const RigidBodyState<T>& x, Field&& field) 
     const T n = max_abs(notes);
     if (!(n > T(0))) return {};
     const Vec3<T> f = field(xl);
-    // The step's field as a multiple of (3.8): only when it is one (parallel).
+    // The step's field as a multiple of (3.8): only when it is one (parallel). Beyond the failing
+    // state a field that is not (a step too fast to read, a guard on h reached by the small steps
+    // the field is read with) ends the scan: nothing is known from there on.
     const T r = f.dot(notes) / notes.dot(notes);
-    if (max_abs(Vec3<T>(f - r * notes)) > T(1e-6) * n) return {};
-    ratio.emplace_back(lambda * size, r);
+    const std::size_t here = static_cast<std::size_t>(-kFirst / kStride);
+    // The field is read from (step(x, h) - x) / h with h |Omega| down to about 2^-20: its round-off
+    // is eps |Pi| |Omega| amplified by up to 2^20. Where that is not small against the field, the
+    // field cannot be read (double at a large scale with a small field): the scan ends there.
+    const T noise = T(1 << 20) * std::numeric_limits<T>::epsilon() * max_abs(xl.Pi) * T(rate_of(I, xl.Pi));
+    const T tolerance = T(1e-6) * n + T(4) * noise;
+    if (!(max_abs(f) > T(0)) || max_abs(Vec3<T>(f - r * notes)) > tolerance || noise > T(1e-3) * max_abs(f)) {
+      if (at.size() > here) break;
+      return {};
+    }
+    at.push_back({lambda * size, r, abs_value(r) * n, noise});
   }
-  // Right (ratio 1) below some size, a constant other ratio from there on.
+  const auto near = [](const T& a, const T& b, const T& noise) {
+    return abs_value(T(a - b)) <= T(1e-6) * abs_value(b) + T(4) * noise;
+  };
   std::size_t from = 0;
-  while (from < ratio.size() && abs_value(T(ratio[from].second - T(1))) < T(1e-6)) ++from;
-  if (from == 0 || from == ratio.size()) return {};
-  const T r = ratio[from].second;
-  for (std::size_t k = from; k < ratio.size(); ++k)
-    if (abs_value(T(ratio[k].second - r)) > T(1e-6) * abs_value(r)) return {};
-  return "your step's field is " + fmt("%.4g", to_double(r)) + " x (3.8) for |Pi| >= " +
-         fmt("%.3g", to_double(ratio[from].first)) + " (and exactly (3.8) up to |Pi| = " +
-         fmt("%.3g", to_double(ratio[from - 1].first)) + "): a cap on the angular velocity or the momentum?";
+  while (from < at.size() && near(at[from].ratio, T(1), T(at[from].noise / (at[from].force / abs_value(at[from].ratio)))))
+    ++from;
+  const std::size_t here = static_cast<std::size_t>(-kFirst / kStride);  // j = 0: the failing state
+  if (from == 0 || from == at.size() || here >= at.size() || here < from) return {};
+  // Constant from `from` on, each point within its own round-off (`scale(p)` turns |F|'s noise into
+  // the quantity's).
+  const auto constant = [&](auto get, auto scale) {
+    const T c = get(at[from]);
+    for (std::size_t k = from; k < at.size(); ++k)
+      if (!near(get(at[k]), c, T(at[k].noise * scale(at[k])))) return false;
+    return true;
+  };
+  const std::string range = " for every |Pi| >= " + fmt("%.3g", to_double(at[from].pi)) + ", this state's " +
+                            fmt("%.3g", to_double(size)) + " among them, and exactly (3.8) up to |Pi| = " +
+                            fmt("%.3g", to_double(at[from - 1].pi));
+  if (constant([](const Point& p) { return p.ratio; }, [](const Point& p) { return T(abs_value(p.ratio) / p.force); }))
+    return "a cap, by experiment: your step's field is " + fmt("%.4g", to_double(at[here].ratio)) + " x (3.8)" + range +
+           ": (3.8) shrunk to a constant fraction beyond a size (a cap on the angular velocity or the momentum)";
+  if (constant([](const Point& p) { return p.force; }, [](const Point&) { return T(1); }))
+    return "a cap, by experiment: your step's field is (3.8) shrunk to the constant size |dPi/dt| = " +
+           fmt("%.4g", to_double(at[here].force)) + " (here " + fmt("%.4g", to_double(at[here].ratio)) + " x (3.8))" +
+           range + ": a cap on the size of the gyroscopic term";
+  return {};
 }
 
 }  // namespace gm::stepprobe
