@@ -600,7 +600,7 @@ int main(int argc, char** argv) {
   gm::harness::ClassOptions class_opts;
   class_opts.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   auto* klass = app.add_subcommand("check-class", "check every implementation in a folder, in parallel, with a summary table");
-  klass->add_option("folder", class_opts.dir, "folder of *.cpp files (or of one folder per student)")->required();
+  klass->add_option("folder", class_opts.dir, "the class folder: one .cpp, .py or .m file per student, or one folder per student (C++, Python, or Octave function files)")->required();
   klass->add_option("--parallel", class_opts.jobs, "implementations checked at once (default: all cores)")
       ->check(CLI::Range(1, 256));
   klass->add_option("--timeout-per-implementation", class_opts.timeout_per_implementation,

@@ -57,11 +57,25 @@ const SlotInfo* slot_info(const std::string& name) {
 }
 
 // "slot casimir: c(Pi) = |Pi|^2/2 ((2.27), sec. 3.3)"
+// What the compiler said, as a student sees it: the line naming the grader's own log file (a path
+// of the grading machine the student cannot open) left out; the lecturer's summary keeps it.
+std::string for_student(const std::string& build_message) {
+  std::string out;
+  std::istringstream in(build_message);
+  for (std::string line; std::getline(in, line);)
+    if (line.rfind("the compiler's full output: ", 0) != 0) out += line + "\n";
+  return out;
+}
+
 std::string item_title(const ScoreItem& i) {
   switch (i.kind) {
     case ScoreItem::Kind::Slot: {
       const SlotInfo* s = slot_info(i.name);
-      return "slot " + i.name + (s ? std::string(": ") + s->meaning + " (" + s->place + ")" : "");
+      if (!s) return "slot " + i.name;
+      // The place in its parentheses once: "(2.11)" is already parenthesised, "Remark 2.1" is not.
+      const std::string place = s->place;
+      const bool wrapped = !place.empty() && place.front() == '(' && place.back() == ')';
+      return "slot " + i.name + ": " + s->meaning + " " + (wrapped ? place : "(" + place + ")");
     }
     case ScoreItem::Kind::Area: return "area " + i.name + ": the checks of this part of the notes";
     case ScoreItem::Kind::Claim:
@@ -160,7 +174,7 @@ json gradescope_results(const StudentView& s, const std::string& report_md) {
                      {"visibility", "visible"}});
   }
   if (s.status == "does not compile")
-    tests.push_back({{"name", "it compiles"}, {"status", "failed"}, {"output", keep_ends(s.row->build_message, 60000)},
+    tests.push_back({{"name", "it compiles"}, {"status", "failed"}, {"output", keep_ends(for_student(s.row->build_message), 60000)},
                      {"output_format", "text"}, {"visibility", "visible"}});
   if (!report_md.empty())
     tests.push_back({{"name", "the whole report (report.md)"},
@@ -183,7 +197,8 @@ json prairielearn_results(const StudentView& s, const std::string& report_md) {
   json out;
   const bool gradable = s.status == "checked";
   out["gradable"] = gradable;
-  std::string message = s.result + ", " + s.score.headline;
+  // Not gradable has no score to say (PrairieLearn records none): the result and why, not "0.00 of 100".
+  std::string message = gradable ? s.result + ", " + s.score.headline : s.result + ": not graded";
   if (!s.graded.first_fix.empty()) message += ". First fix: " + s.graded.first_fix;
   out["message"] = message;
   if (!gradable) {
@@ -191,7 +206,7 @@ json prairielearn_results(const StudentView& s, const std::string& report_md) {
     // message says why), or a check that could not run.
     json errors = json::array();
     errors.push_back(s.status + (s.graded.first_fix.empty() ? "" : ": " + s.graded.first_fix));
-    if (s.status == "does not compile") errors.push_back(keep_ends(s.row->build_message, 60000));
+    if (s.status == "does not compile") errors.push_back(keep_ends(for_student(s.row->build_message), 60000));
     if (s.status == "not checked") errors.push_back(keep_ends(s.row->problem, 60000));
     out["format_errors"] = errors;
     out["output"] = summary_text(s);
@@ -287,11 +302,19 @@ int grade_submission(const GradeSubmissionOptions& o) {
     throw std::runtime_error(o.config + ": not an autograder configuration written by `geomech autograder`");
   const Rubric rubric = parse_rubric(config.at("rubric").get<std::string>(), config.value("rubric_source", "rubric.json"));
   std::string work = o.work;
+  struct Scratch {  // a work folder of its own is removed at the end, whatever happens (issue 57)
+    std::string path;
+    ~Scratch() {
+      std::error_code ec;
+      if (!path.empty()) fs::remove_all(path, ec);
+    }
+  } scratch;
   if (work.empty()) {
     const char* tmp = std::getenv("TMPDIR");
     std::string pattern = std::string(tmp && *tmp ? tmp : "/tmp") + "/geomech-grade-XXXXXX";
     if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a scratch folder in " + pattern);
     work = pattern;
+    scratch.path = work;
   }
   const fs::path class_dir = fs::path(work) / "class", report_dir = fs::path(work) / "report";
   std::error_code ec;
@@ -316,6 +339,10 @@ int grade_submission(const GradeSubmissionOptions& o) {
                                   "--parallel", "1", "--timeout-per-implementation",
                                   std::to_string(config.value("timeout", 540.0))};
     if (config.value("trusted", false)) argv.push_back("--trusted");
+    // With the rubric, so that the instructor's log says the grade results.json gives (issue 57).
+    const fs::path rubric_file = fs::path(work) / "rubric.json";
+    write_file_atomically(rubric_file.string(), config.at("rubric").get<std::string>());
+    argv.insert(argv.end(), {"--rubric", rubric_file.string()});
     for (const auto& a : config.value("check_args", json::array())) argv.push_back(a.get<std::string>());
     std::cout << "geomech grade-submission: " << shell_join(argv) << "\n" << std::flush;
     const fs::path log = fs::path(work) / "check-class.log";

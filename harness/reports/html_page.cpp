@@ -117,6 +117,19 @@ std::string inline_html(const std::string& s, const MarkdownHtml& o, bool in_lin
       i += 3;
       continue;
     }
+    // An entity the Markdown already spells (md_inline writes < as &lt;) is one character, not
+    // text to escape again ("&amp;lt;" showed "&lt;ad*_xi mu, eta&gt;" in report.html).
+    if (c == '&') {
+      bool entity = false;
+      for (const char* e : {"&lt;", "&gt;", "&amp;", "&quot;", "&#39;"})
+        if (s.compare(i, std::char_traits<char>::length(e), e) == 0) {
+          out += e;
+          i += std::char_traits<char>::length(e) - 1;
+          entity = true;
+          break;
+        }
+      if (entity) continue;
+    }
     out += html_escape(std::string(1, c));
   }
   return out;
