@@ -4,7 +4,9 @@
 # must name the venv's interpreter; in untrusted mode the sandbox must show the venv (read-only). The
 # negative control: a venv without the system's packages has no mpmath, and the report says so,
 # naming that interpreter and GEOMECH_PYTHON.
-#   cmake -DGEOMECH=... -DFILE=a.py -DOUT=dir -DMODE=path|untrusted|no_mpmath -P run_interpreter_on_path.cmake
+# no_gmpy2: mpmath on its pure-Python backend (MPMATH_NOGMPY): the report names the interpreter, the
+# cost and the command that fixes it; the control, mode path (gmpy2 installed), says nothing of it.
+#   cmake -DGEOMECH=... -DFILE=a.py -DOUT=dir -DMODE=path|untrusted|no_mpmath|no_gmpy2 -P run_interpreter_on_path.cmake
 file(REMOVE_RECURSE ${OUT})
 # A folder the sandbox's user can read (mkdtemp's 0700 would hide it from `nobody`).
 file(MAKE_DIRECTORY ${OUT})
@@ -18,6 +20,9 @@ if(NOT made EQUAL 0)
   message(FATAL_ERROR "cannot make a venv with /usr/bin/python3: ${why}")
 endif()
 unset(ENV{GEOMECH_PYTHON})
+if(MODE STREQUAL "no_gmpy2")
+  set(ENV{MPMATH_NOGMPY} 1)
+endif()
 set(ENV{PATH} "${OUT}/venv/bin:$ENV{PATH}")
 set(extra --scalar double -p integrator_unit_quaternion)
 set(status_wanted 0)
@@ -47,6 +52,14 @@ set(wanted "Interpreter: ${OUT}/venv/bin/python3 (Python 3.")
 if(MODE STREQUAL "no_mpmath")
   list(APPEND wanted "mpmath cannot be imported by ${OUT}/venv/bin/python3" "set GEOMECH_PYTHON to an interpreter that has it")
 else()
+  if(MODE STREQUAL "no_gmpy2")
+    list(APPEND wanted "mpmath in ${OUT}/venv/bin/python3" "runs without gmpy2" "apt-get install python3-gmpy2")
+  else()
+    string(FIND "${report}" "without gmpy2" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "gmpy2 is installed, yet the report says mpmath runs without it")
+    endif()
+  endif()
   if(NOT status EQUAL 0)
     message(FATAL_ERROR "exit status ${status}, expected 0")
   endif()

@@ -506,6 +506,15 @@ def main():
                % (sys.executable, sys.version.split()[0]))
         warnings.append(why)
         unavailable["mp50"] = why
+    elif getattr(mpmath.libmp, "BACKEND", "gmpy") != "gmpy":
+        # Issue 56: mpmath without gmpy2 computes with Python's own integers: said, with what it cost
+        # where it was measured and the one command that fixes it.
+        warnings.append(
+            "mpmath in %s (Python %s) runs without gmpy2, on its pure-Python backend: the 50-digit checks take "
+            "longer (examples/students/correct.py's: 1.07x with Debian's python3; more on an interpreter built "
+            "without optimisations); install gmpy2 for that interpreter (Debian's /usr/bin/python3: apt-get install "
+            "python3-gmpy2; a venv or pyenv: its pip install gmpy2), or set GEOMECH_PYTHON to one that has it"
+            % (sys.executable, sys.version.split()[0]))
     try:
         mod = load(sys.argv[1])
     except BaseException as e:
