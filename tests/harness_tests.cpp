@@ -175,6 +175,23 @@ TEST(Isolation, StarvedIsNotWaiting) {
   EXPECT_EQ(r[1].status, TaskResult::Status::TimedOut) << r[1].detail;
   EXPECT_NE(r[1].detail.find("asleep: it waits"), std::string::npos) << r[1].detail;
 
+  // A task whose work is done by processes that end one after the other (compilers, forked
+  // sessions) was starved as much: the delay each showed before it ended still counts.
+  r = run_isolated({[] {
+                     for (int k = 0; k < 3; ++k) {
+                       const pid_t child = ::fork();
+                       if (child == 0) {
+                         compute_for(0.15);
+                         ::_exit(0);
+                       }
+                       ::waitpid(child, nullptr, 0);
+                     }
+                     return std::string("computed by children");
+                   }},
+                   o);
+  EXPECT_GT(r[0].seconds, o.timeout_seconds) << "the children were not slowed past the wall guard: this shows nothing";
+  EXPECT_EQ(r[0].status, TaskResult::Status::Ok) << r[0].detail;
+
   // Past the busy limit (here 1.25 times the wall guard, 2.5 s), the starved task is the machine's.
   o.busy_factor = 1.25;
   r = run_isolated({[] { return compute_for(0.4); }}, o);

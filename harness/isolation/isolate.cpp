@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <set>
 #include <iostream>
+#include <memory>
 #include <stdexcept>
 
 #include <fcntl.h>
@@ -61,6 +62,7 @@ struct Running {
   std::string sanitizer_report;  // the first line of a sanitizer's report in the output, if any
   TreeTimes worker0;             // the worker's server's times when the task started
   TreeTimes times;               // the code's CPU and run-queue delay so far (sampled)
+  std::shared_ptr<QueuedSoFar> queued;  // the tree's delay, ended processes included
   Clock::time_point sampled{};   // when `times` was last read
 };
 
@@ -346,7 +348,8 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         // does, and the kernel's accounting tells a task that sleeps from one a busy machine starves.
         const auto now = Clock::now();
         if (now - r.sampled > std::chrono::milliseconds(250)) {
-          r.times = tree_times(r.pid);
+          if (!r.queued) r.queued = std::make_shared<QueuedSoFar>();
+          r.times = r.queued->sample(r.pid);
           if (o.worker_times) {
             const TreeTimes w = o.worker_times(r.worker);
             r.times.cpu += w.cpu - r.worker0.cpu;

@@ -89,14 +89,29 @@ std::vector<pid_t> tree_of(pid_t root, std::map<pid_t, Stat>& all) {
 
 }  // namespace
 
-TreeTimes tree_times(pid_t root) {
+TreeTimes tree_times(pid_t root, std::map<pid_t, double>* queued_by_pid) {
   TreeTimes t;
   if (root <= 0) return t;
   std::map<pid_t, Stat> all;
   for (pid_t p : tree_of(root, all)) {
     t.cpu += all[p].cpu;
-    t.queued_known = read_queued(p, t.queued) || t.queued_known;
+    double q = 0;
+    if (read_queued(p, q)) {
+      t.queued_known = true;
+      t.queued += q;
+      if (queued_by_pid) (*queued_by_pid)[p] = q;
+    }
   }
+  return t;
+}
+
+TreeTimes QueuedSoFar::sample(pid_t root) {
+  std::map<pid_t, double> now;
+  TreeTimes t = tree_times(root, &now);
+  for (const auto& [pid, q] : seen_)
+    if (!now.count(pid)) gone_ += q;  // ended since the last look: its last delay stays counted
+  seen_ = std::move(now);
+  t.queued += gone_;
   return t;
 }
 

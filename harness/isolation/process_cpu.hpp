@@ -5,6 +5,8 @@
 // wall clock stays, for sleeps and waits, which use no CPU.
 #pragma once
 
+#include <map>
+
 #include <sys/types.h>
 
 namespace gm::harness {
@@ -26,8 +28,22 @@ struct TreeTimes {
 };
 
 // The tree's CPU (as tree_cpu_seconds) and the run-queue delay of every live task (thread) in it,
-// from /proc/<pid>/task/<tid>/schedstat. The delay of tasks that have ended is not counted.
-TreeTimes tree_times(pid_t root);
+// from /proc/<pid>/task/<tid>/schedstat. The kernel keeps no delay for a process that has ended:
+// `queued_by_pid`, when given, is the delay of each live process, for a caller that samples the tree
+// and keeps what the processes that ended had last shown (QueuedSoFar).
+TreeTimes tree_times(pid_t root, std::map<pid_t, double>* queued_by_pid = nullptr);
+
+// The run-queue delay of a tree so far, sampled: the live processes' delay now, plus what each
+// process that has ended (a compiler, a forked session) showed when last seen.
+class QueuedSoFar {
+ public:
+  // The tree's times now, with `queued` counting the ended processes too.
+  TreeTimes sample(pid_t root);
+
+ private:
+  std::map<pid_t, double> seen_;
+  double gone_ = 0;
+};
 
 // utime + stime of `root` and of every process below it, alive or waited for (cutime, cstime), in
 // seconds; 0 when it does not exist. Reads /proc (Linux).
