@@ -12,6 +12,7 @@
 #include "core/subject.hpp"
 
 #include <array>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <stdexcept>
@@ -47,26 +48,21 @@ class Memory {
   std::size_t next_ = 0;
 };
 
-template <class V>
-std::string shown(const V& v) {
-  std::string s = "[";
-  for (Eigen::Index i = 0; i < v.size(); ++i) s += (i ? ", " : "") + to_string_full(v(i));
-  return s + "]";
-}
-
-// The notes' state of what the user's step returned; throws, in the declared form's words, when a
-// declared part is not a finite number or the quaternion is zero.
+// The notes' state of what the user's step returned. A declared part that is not finite (a NaN, an
+// infinity: what a step computes after its energy overflowed) makes the whole state NaN, as a step
+// in the notes' (Pi, O) would return it: the checks measure it ("H is not finite within 2503
+// steps"), as they do for every step; it is not an error of the call. A zero quaternion is no
+// attitude at all, and throws in the declared form's words.
 template <class T>
 RigidBodyState<T> from_declared(const EngineState<T>& u, const Vec3<T>& I) {
   const StateForm& f = u.form;
-  if (f.has_quaternion()) {
-    if (!u.q.allFinite()) throw std::runtime_error(your_attitude(f) + " returned by the step is not finite: " + shown(u.q));
-    if (u.q.squaredNorm() == T(0)) throw std::runtime_error(your_attitude(f) + " returned by the step is zero");
-  } else if (!u.O.allFinite()) {
-    throw std::runtime_error("your O returned by the step is not finite");
+  const bool finite = (f.has_quaternion() ? u.q.allFinite() : u.O.allFinite()) && u.angular().allFinite();
+  if (!finite) {
+    const T nan = std::numeric_limits<T>::quiet_NaN();
+    return RigidBodyState<T>{Vec3<T>::Constant(nan), Mat3<T>::Constant(nan)};
   }
-  if (!u.angular().allFinite())
-    throw std::runtime_error(your_angular(f) + " returned by the step is not finite: " + shown(u.angular()));
+  if (f.has_quaternion() && u.q.squaredNorm() == T(0))
+    throw std::runtime_error(your_attitude(f) + " returned by the step is zero");
   const Mat3<T> O = attitude_of(u);
   return RigidBodyState<T>{body_momentum_of(u, I, O), O};
 }

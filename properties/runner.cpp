@@ -527,6 +527,14 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
                         " (where it works; declare a domain to set it), the check fails there too:\n" + again.message;
         again.notes.push_back(raised + "; the check was run again inside " + range + ", where it fails");
         v = std::move(again);
+      } else if (again.step_raised.empty() && again.outcome == Outcome::Pass &&
+                 !claims_any(claims ? *claims : none, p.judges)) {
+        // Nothing was claimed: what was measured inside is the finding ("holds (not claimed)"), said
+        // with the range and the raise beyond it, never "nothing could be measured".
+        again.notes.push_back(raised + "; measured inside " + range + ", where the step works");
+        again.message = "measured inside " + std::string(range) + ", where the step works (" + raised + ")" +
+                        (again.message.empty() ? "" : "\n" + again.message);
+        v = std::move(again);
       } else if (again.step_raised.empty() && again.outcome == Outcome::Pass) {
         v.notes.push_back("run again inside " + std::string(range) + " (where the step works), the check passes there");
         v.message += std::string("\n(run again inside ") + range + ", where the step works, the check passes there)";

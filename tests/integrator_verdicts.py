@@ -13,6 +13,9 @@ theory. This test checks them with the suite and asserts, for each, the verdict 
   raises_beyond_declared   the same step with its domain declared: every claim verified, the domain stated
   wrong_inside_declared    the same domain declared, explicit Euler inside it: the Casimir a FALSE CLAIM
                            (a declared domain discards only the calls outside it)
+  wrong_below_raise        raises beyond 2^20 with no domain declared and takes explicit Euler below
+                           |Omega| = 2^-20: the Casimir check meets the raise first, runs again inside
+                           the range where the step works and finds the defect (a FALSE CLAIM)
   single_precision         said to compute in single precision; its order claim FALSE
   frame_slip               said not to reduce to the identity as h -> 0; its order claim FALSE
   lie_rk4                  order 4 FALSE, the attitude O named with its order 2
@@ -26,6 +29,8 @@ theory. This test checks them with the suite and asserts, for each, the verdict 
                            relative drift is the same at every scale
   float_backward_euler     bounded energy a FALSE CLAIM in single precision: it loses energy, whatever
                            the round-off noise of its plateau
+  flipped_damping          bounded energy a FALSE CLAIM: its energy grows until its state is not finite,
+                           said as such in C++ and through Python, never "your step raised"
   small_angle_snap         order and equivariance FALSE: an attitude within 1e-3 rad of the identity is
                            taken for the identity; the failures name the attitude regime near the identity
   frozen                   DOES NOT CONVERGE, and its order row FAILS
@@ -231,6 +236,21 @@ def rk4_relative_casimir_drift(scale, steps=64, h=0.125):
     return abs(sum(p * p for p in P) - c0) / c0
 
 
+def flipped_damping_overflows(h=0.25, steps=100000):
+    """The Python step from the long run's kind of state: the energy (sum I Omega^2 / 2) rises at every
+    step until the step returns a state that is not finite, from a finite one."""
+    x = {"q": [1.0, 0.0, 0.0, 0.0], "Omega": [p / i for p, i in zip(Pi0, I0)]}
+    e = [sum(i * w * w for i, w in zip(I0, x["Omega"])) / 2]
+    for n in range(1, steps + 1):
+        y = cases.FlippedDamping.rigid_body_step(I0, x, h)
+        values = y["q"] + y["Omega"]
+        if not all(math.isfinite(v) for v in values):
+            return n, all(math.isfinite(v) for v in x["q"] + x["Omega"]), all(b > a for a, b in zip(e, e[1:]))
+        x = y
+        e.append(sum(i * w * w for i, w in zip(I0, x["Omega"])) / 2)
+    return None, True, False
+
+
 # ---- the check of the C++ cases ----------------------------------------------------------------
 
 shutil.rmtree(OUT, ignore_errors=True)
@@ -316,6 +336,15 @@ check(word("wrong_inside_declared", "casimir") == "FALSE CLAIM",
       "wrong_inside_declared: a Casimir broken inside the declared domain should be a FALSE CLAIM, is " + word("wrong_inside_declared", "casimir"))
 check(word("wrong_inside_declared", "order").startswith("verified"),
       "wrong_inside_declared: order 1 (explicit Euler) should be verified, is " + word("wrong_inside_declared", "order"))
+
+# A defect below a raise: the check run again inside the range where the step works finds it.
+check(word("wrong_below_raise", "casimir") == "FALSE CLAIM",
+      "wrong_below_raise: the Casimir should be a FALSE CLAIM, is " + word("wrong_below_raise", "casimir"))
+wb = [v["message"] for v in rows("wrong_below_raise", "integrator_casimir") if v["scalar"] == "double"]
+check(wb and "run again inside" in wb[0] and "the check fails there too" in wb[0],
+      "wrong_below_raise: the Casimir failure should be found by the run inside the working range: " + (wb[0][:400] if wb else "no row"))
+grew, _ = explicit_euler_grows_the_casimir()
+check(grew > 0, "theory: explicit Euler, the step below 2^-20, grows the Casimir")
 
 # Single precision.
 drift = float_midpoint_casimir_drift()
@@ -410,6 +439,25 @@ check(named, "small_angle_snap: a failure should name its attitude regime (2: 2^
 eq = [v for v in rows("small_angle_snap", "integrator_equivariant") if v["outcome"] == "FAIL"]
 check(eq, "small_angle_snap: equivariance should FAIL (it held on random attitudes before the regimes)")
 
+# An engine's step whose damping grows Omega until its state is not finite: a measurement, not a raise.
+blown_at, from_finite, rising = flipped_damping_overflows()
+check(blown_at is not None and from_finite and rising,
+      "theory: flipped_damping should grow its energy at every step until a step returns a non-finite state "
+      "from a finite one (%r, %r, %r)" % (blown_at, from_finite, rising))
+
+
+def says_not_finite_never_raised(d, rows_of, where):
+    check(d["flipped_damping"]["bounded_energy"]["status"] == "FALSE CLAIM" and
+          "H is not finite" in d["flipped_damping"]["bounded_energy"]["measured"],
+          "%s flipped_damping: bounded energy should be a FALSE CLAIM whose energy is not finite: %s / %s"
+          % (where, d["flipped_damping"]["bounded_energy"]["status"], d["flipped_damping"]["bounded_energy"]["measured"]))
+    told = " ".join(v["message"] for v in rows_of) + " ".join(c.get("measured", "") + c.get("why", "")
+                                                             for c in d["flipped_damping"].values())
+    check("raise" not in told, "%s flipped_damping: a non-finite state called a raise: %s" % (where, told[:600]))
+
+
+says_not_finite_never_raised(dec, rows("flipped_damping"), "C++")
+
 # A step that does nothing.
 check(word("frozen", "order") == "DOES NOT CONVERGE", "frozen: order should be DOES NOT CONVERGE, is " + word("frozen", "order"))
 check(any(v["outcome"] == "FAIL" for v in rows("frozen", "integrator_order")), "frozen: its order row should FAIL (it asserts convergence)")
@@ -438,7 +486,8 @@ def md_unescape(s):
 
 
 for integ, claims in dec.items():
-    block = re.search(r"integrator '%s' claims[^\n]*:\n(.*?)\n\n" % re.escape(integ), console, re.S)
+    # "integrator 'X' claims:", with the declared state form and precision between when there are
+    block = re.search(r"^integrator '%s'[^\n]* claims[^\n]*:\n(.*?)\n\n" % re.escape(integ), console, re.S | re.M)
     check(block is not None, "the console has no claims block for " + integ)
     table = re.search(r"### %s\n(.*?)(\n### |\n## )" % re.escape(integ), md, re.S)
     check(table is not None, "report.md has no claims section for " + integ)
@@ -492,6 +541,16 @@ for lang, f in (("python", "verdict_cases.py"), ("octave", "verdict_cases.m")):
                                                if v["integrator"] == "raises_beyond" and v["property"] == "integrator_domain"),
           "%s raises_beyond: the domain check should say where it raises" % lang)
     check(d["raises_beyond_declared"]["order"]["status"].startswith("verified"), "%s raises_beyond_declared: order should be verified" % lang)
+
+# The same engine through Python: its NaN crosses the protocol as what the step computed.
+r = os.path.join(OUT, "python-flipped")
+rc, text = run(["check", os.path.join(EXAMPLES, "verdict_cases.py"), "--report", r, "--integrator", "flipped_damping",
+                "--scalar", "double", "-p", "integrator_bounded_energy", "-p", "integrator_domain"])
+if rc not in (0, 1):
+    fail("python flipped_damping: the check did not finish (exit %d): %s" % (rc, text[-2000:]))
+else:
+    report_py, d = load(r)
+    says_not_finite_never_raised(d, [v for v in report_py["verdicts"] if v["integrator"] == "flipped_damping"], "python")
 
 # A class of the Python cases: the class summary and the gradebook render the same decisions.
 klass = os.path.join(OUT, "class")

@@ -62,6 +62,27 @@ TEST(ProtocolCodec, ScalarsRoundTripExactly) {
   EXPECT_EQ(decode_scalar<Rational>(json(encode_scalar(q)), "x"), q);
 }
 
+// A step's state may hold what the step computed, NaN or an infinity, in each language's spelling;
+// a slot's result may not, and an overflowing decimal is a number, refused as not finite.
+TEST(ProtocolCodec, AStepsStateCarriesNaNAndInfinitiesASlotsResultDoesNot) {
+  for (const char* word : {"nan", "NaN", "-nan", "inf", "-inf", "+inf", "Inf", "-Inf", "Infinity"}) {
+    EXPECT_FALSE(std::isfinite(decode_scalar<double>(json(word), "x", Values::any))) << word;
+    EXPECT_FALSE(boost::multiprecision::isfinite(decode_scalar<Real50>(json(word), "x", Values::any))) << word;
+    EXPECT_THROW(decode_scalar<double>(json(word), "x"), ProtocolValueError) << word;
+    EXPECT_THROW(decode_scalar<Real50>(json(word), "x"), ProtocolValueError) << word;
+  }
+  EXPECT_TRUE(std::isnan(decode_scalar<double>(json("nan"), "x", Values::any)));
+  EXPECT_EQ(decode_scalar<double>(json("-Inf"), "x", Values::any), -std::numeric_limits<double>::infinity());
+  EXPECT_THROW(decode_scalar<double>(json("1e999"), "x", Values::any), ProtocolValueError);
+  EXPECT_THROW(decode_scalar<double>(json("nano"), "x", Values::any), ProtocolValueError);
+  const auto x = decode<double, RigidBodyState<double>>(
+      json{{"Pi", {"1", "nan", "2"}}, {"O", {{"1", "0", "0"}, {"0", "inf", "0"}, {"0", "0", "1"}}}}, "r", Values::any);
+  EXPECT_TRUE(std::isnan(x.Pi(1)) && std::isinf(x.O(1, 1)));
+  EXPECT_THROW((decode<double, RigidBodyState<double>>(
+                   json{{"Pi", {"1", "nan", "2"}}, {"O", {{"1", "0", "0"}, {"0", "1", "0"}, {"0", "0", "1"}}}}, "r")),
+               ProtocolValueError);
+}
+
 TEST(ProtocolCodec, ShapesAreValidatedWithTheirPlace) {
   try {
     decode<double, Vec3<double>>(json::array({"1", "2"}), "the result of python function 'euler_3_8' (double)");

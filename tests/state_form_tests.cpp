@@ -4,6 +4,7 @@
 #include "core/declared_step.hpp"
 #include "impl/integrators.hpp"
 #include "properties/integrators/support/step_field.hpp"
+#include "properties/support/step_guard.hpp"
 
 #include <gtest/gtest.h>
 
@@ -163,7 +164,9 @@ TEST(DeclaredStep, ARunThroughTheNotesStateIsTheUsersOwnRun) {
       << "a state the user's step did not return is converted";
 }
 
-TEST(DeclaredStep, AStepReturningNoFiniteStateSaysSoInItsForm) {
+TEST(DeclaredStep, AStepReturningNoFiniteStateGivesANaNStateNotARaise) {
+  // A step that computed a NaN (after its energy overflowed, say) returned it: the checks measure
+  // it as they do a notes-form step's NaN ("H is not finite"), never "your step raised".
   Integrator<double> in;
   in.name = "broken";
   in.form = parse_state_form("quaternion_xyzw omega");
@@ -173,14 +176,58 @@ TEST(DeclaredStep, AStepReturningNoFiniteStateSaysSoInItsForm) {
     return y;
   };
   adapt_declared_step(in);
+  const RigidBodyState<double> x{Vec3<double>(1, 0, 0), Mat3<double>::Identity()};
+  const RigidBodyState<double> y = in.rigid_body_step(Vec3<double>(2, 1, 1), x, 0.1);
+  EXPECT_TRUE(y.Pi.array().isNaN().all() && y.O.array().isNaN().all()) << "a NaN omega gives the NaN state";
+  // The control: an infinite quaternion does the same, and a zero quaternion is still refused (no
+  // attitude at all), in the declared form's words.
+  in.declared_step = [](const Vec3<double>&, const EngineState<double>& x, const double&) {
+    EngineState<double> y = x;
+    y.q(0) = std::numeric_limits<double>::infinity();
+    return y;
+  };
+  adapt_declared_step(in);
+  EXPECT_TRUE(in.rigid_body_step(Vec3<double>(2, 1, 1), x, 0.1).Pi.array().isNaN().all());
+  in.declared_step = [](const Vec3<double>&, const EngineState<double>& x, const double&) {
+    EngineState<double> y = x;
+    y.q.setZero();
+    return y;
+  };
+  adapt_declared_step(in);
   try {
-    in.rigid_body_step(Vec3<double>(2, 1, 1), RigidBodyState<double>{Vec3<double>(1, 0, 0), Mat3<double>::Identity()}, 0.1);
-    FAIL() << "a NaN passed";
+    in.rigid_body_step(Vec3<double>(2, 1, 1), x, 0.1);
+    FAIL() << "a zero quaternion passed";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("your omega (the spatial angular velocity) returned by the step is not finite"),
-              std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find("returned by the step is zero"), std::string::npos) << e.what();
   }
+}
+
+// A declared step called in its own form (integrator_unit_quaternion steps the quaternion itself) is
+// guarded like the notes-form step: its raise is a StepRaised, which the runner reports as a raise
+// (an unclaimed check NOT CHARACTERISED, as orthogonality is), not as the check failing.
+TEST(DeclaredStep, ARaiseInTheDeclaredFormIsToldAsARaise) {
+  Integrator<double> in;
+  in.name = "engine";
+  in.form = parse_state_form("quaternion_wxyz omega");
+  in.declared_step = [](const Vec3<double>&, const EngineState<double>&, const double&) -> EngineState<double> {
+    throw std::runtime_error("must be real number, not mpf");
+  };
+  adapt_declared_step(in);
+  const Integrator<double> g = guarded(in);
+  const EngineState<double> u = to_declared<double>(in.form, Vec3<double>(2, 1, 1), Mat3<double>::Identity(), Vec3<double>(2, 0, 0));
+  try {
+    g.declared_step(Vec3<double>(2, 1, 1), u, 0.125);
+    FAIL() << "the raise passed";
+  } catch (const StepRaised& e) {
+    EXPECT_EQ(e.raise().message, "must be real number, not mpf");
+    EXPECT_DOUBLE_EQ(e.raise().rate, 1.0) << "|Omega| of omega = (1, 0, 0)";
+    EXPECT_DOUBLE_EQ(e.raise().h, 0.125);
+  }
+  current_step_raise().reset();
+  // The control: without the guard it is a plain exception, which a check reports as its own failure.
+  EXPECT_THROW(
+      try { in.declared_step(Vec3<double>(2, 1, 1), u, 0.125); } catch (const StepRaised&) { FAIL() << "guarded already"; },
+      std::runtime_error);
 }
 
 // The step's field read in the declared form (step_field_form.hpp): a right step "follows the notes",

@@ -177,6 +177,17 @@ TEST(LongTime, TellsOscillationLossGrowthAndRoundoffApart) {
   EXPECT_FALSE(s.holds());
   EXPECT_NE(s.words().find("loses energy at every step that changes it"), std::string::npos) << s.words();
   EXPECT_NE(s.words().find("51% lost after 20000 steps"), std::string::npos) << s.words();
+  // Not finite: after a growth it is the growth's end; from a state whose energy had not grown, a NaN
+  // the step returned, said as such (never "gains energy"), and the run's statistics not shown.
+  const auto b = longtime::classify_energy_error(t, blowup, budget, step);
+  EXPECT_NE(b.words().find("gains energy without bound: H is not finite within 15000 steps"), std::string::npos) << b.words();
+  EXPECT_EQ(b.evidence(), b.words());
+  std::vector<double> nan_early(wave.begin(), wave.begin() + 100);
+  nan_early.push_back(std::numeric_limits<double>::quiet_NaN());
+  const auto n = longtime::classify_energy_error(t, nan_early, budget, step);
+  EXPECT_FALSE(n.holds());
+  EXPECT_NE(n.words().find("the step returns a state that is not finite at step 100"), std::string::npos) << n.words();
+  EXPECT_EQ(n.words().find("gains"), std::string::npos) << n.words();
   // Control: a trend at the size of the oscillation is not one (c T < 4 a).
   std::vector<double> hidden;
   for (double s2 : t) hidden.push_back(1e-6 * std::sin(s2) - 1e-10 * s2);

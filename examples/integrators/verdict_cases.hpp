@@ -145,6 +145,21 @@ struct WrongInsideDeclared {
   }
 };
 
+// 4d. The engine of 4a with no domain declared and a defect far below where it raises: for
+//     |Omega| < 2^-20 its "slow body" shortcut takes an explicit Euler step (2.6), which does not
+//     keep the Casimir. A check whose cases meet the raise first must still find the defect, run
+//     again inside the range where the step works: the Casimir claimed, a FALSE CLAIM.
+struct WrongBelowRaise {
+  static constexpr const char* name = "wrong_below_raise";
+  static constexpr gm::student::Claims claims{.order = 2, .casimir = true};
+  template <class T>
+  static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+    refuse_fast<T>(I, x.Pi);
+    if (size(Vec3<T>(x.Pi.cwiseQuotient(I))) < T(1) / T(1 << 20)) return explicit_euler<T>(I, x, h);  // "slow body"
+    return midpoint<T>(I, x, h, [&](const Vec3<T>& P) { return euler_3_8<T>(I, P); });
+  }
+};
+
 // 5. A midpoint rule computed in single precision (as engines built with float are), claiming
 //    order 2 and the Casimir: true in exact arithmetic, not at float's round-off.
 struct SinglePrecision {
@@ -372,6 +387,37 @@ struct SmallAngleSnap {
     RigidBodyState<T> y = x;
     if (x.O.trace() > T(1) && sin2 < T(1) / T(1000000)) y.O = Mat3<T>::Identity();  // angle < 1e-3 rad
     return midpoint<T>(I, y, h, [&](const Vec3<T>& P) { return euler_3_8<T>(I, P); });
+  }
+};
+
+// 18. An engine's step in its own form (a quaternion (w, x, y, z) and the body's Omega) whose angular
+//     damping has its sign flipped: Omega is multiplied by 1 + h c |Omega| where 1 / (1 + h c |Omega|)
+//     was meant. dOmega/dt ~ c |Omega| Omega blows up in finite time (t ~ 1 / (c |Omega0|)); past
+//     |Omega| ~ 1e154, |Omega|^2 overflows and the exact turn's cos(inf) makes the quaternion NaN.
+//     Bounded energy claimed (false): the run must say the energy grew until H is not finite, never
+//     "your step raised", since the step returned what it computed.
+struct FlippedDamping {
+  static constexpr const char* name = "flipped_damping";
+  static constexpr const char* state = "quaternion_wxyz Omega";
+  static constexpr const char* precision = "double";
+  static constexpr const char* precision_reason = "written as an engine is, in double";
+  static constexpr gm::student::Claims claims{.bounded_energy = true};
+  static EngineState<double> rigid_body_step(const Vec3<double>& I, const EngineState<double>& x, const double& h) {
+    const double c = 0.01;
+    Vec3<double> W = x.Omega + h * Vec3<double>(I.cwiseProduct(x.Omega).cross(x.Omega)).cwiseQuotient(I);  // (2.2)
+    W *= 1 + h * c * std::sqrt(W.dot(W));  // the flipped damping: "/=" was meant
+    const double angle = h * std::sqrt(W.dot(W));
+    const Vec3<double> axis = angle > 0 ? Vec3<double>(W / std::sqrt(W.dot(W))) : Vec3<double>::Zero();
+    const Vec4<double> turn(std::cos(angle / 2), std::sin(angle / 2) * axis(0), std::sin(angle / 2) * axis(1),
+                            std::sin(angle / 2) * axis(2));
+    const Vec4<double>& q = x.q;
+    EngineState<double> y = x;
+    y.q = Vec4<double>(q(0) * turn(0) - q(1) * turn(1) - q(2) * turn(2) - q(3) * turn(3),
+                       q(0) * turn(1) + q(1) * turn(0) + q(2) * turn(3) - q(3) * turn(2),
+                       q(0) * turn(2) - q(1) * turn(3) + q(2) * turn(0) + q(3) * turn(1),
+                       q(0) * turn(3) + q(1) * turn(2) - q(2) * turn(1) + q(3) * turn(0));  // q turn, on the body's side
+    y.Omega = W;
+    return y;
   }
 };
 

@@ -114,3 +114,40 @@ class RaisesBeyondDeclared:
     claims = {"order": 1}
     domain = {"max_omega": 2 ** 19}
     rigid_body_step = staticmethod(_guarded)
+
+
+def _c_cos(t):
+    """cos as C and numpy compute it: NaN for an infinite angle (Python's math.cos raises)."""
+    return math.cos(t) if math.isfinite(t) else math.nan
+
+
+def _c_sin(t):
+    return math.sin(t) if math.isfinite(t) else math.nan
+
+
+class FlippedDamping:
+    """An engine's step in its own form whose angular damping has its sign flipped (verdict_cases.hpp,
+    18): Omega grows without bound and, once |Omega|^2 overflows, the quaternion turns NaN. The run
+    must say the energy grew until H is not finite, never that the step raised."""
+    name = "flipped_damping"
+    state = "quaternion_wxyz Omega"
+    precision = "double"
+    precision_reason = "written as an engine is, in double"
+    claims = {"bounded_energy": True}
+
+    @staticmethod
+    def rigid_body_step(I, x, h):
+        q, W = x["q"], x["Omega"]
+        g = cross([i * w for i, w in zip(I, W)], W)
+        W = [w + h * gk / i for w, gk, i in zip(W, g, I)]          # (2.2)
+        s = 1 + h * 0.01 * math.sqrt(sum(w * w for w in W))         # the flipped damping
+        W = [w * s for w in W]
+        n = math.sqrt(sum(w * w for w in W))
+        angle = h * n
+        axis = [w / n for w in W] if n > 0 else [0.0, 0.0, 0.0]
+        t = [_c_cos(angle / 2)] + [_c_sin(angle / 2) * a for a in axis]
+        turned = [q[0] * t[0] - q[1] * t[1] - q[2] * t[2] - q[3] * t[3],
+                  q[0] * t[1] + q[1] * t[0] + q[2] * t[3] - q[3] * t[2],
+                  q[0] * t[2] - q[1] * t[3] + q[2] * t[0] + q[3] * t[1],
+                  q[0] * t[3] + q[1] * t[2] - q[2] * t[1] + q[3] * t[0]]
+        return {"q": turned, "Omega": W}

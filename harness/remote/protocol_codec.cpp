@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <sstream>
 
 namespace gm::protocol {
@@ -80,8 +81,22 @@ bool decode_plain_double(const json& j, double& out) {
   return r.ec == std::errc() && r.ptr == end && std::isfinite(out);
 }
 
+// A NaN or an infinity spelt as the languages spell them ("nan", "-inf", Octave's "NaN" and "Inf",
+// mpmath's "+inf", C's "infinity"): true, with its value, for those words only.
+namespace {
+bool non_finite_word(const std::string& s, double& out) {
+  char* end = nullptr;
+  const double x = std::strtod(s.c_str(), &end);
+  if (end == s.c_str() || *end != '\0' || std::isfinite(x)) return false;
+  // strtod also reads an overflowing decimal ("1e999") as an infinity: a number, not a word.
+  if (s.find_first_of("0123456789") != std::string::npos) return false;
+  out = x;
+  return true;
+}
+}  // namespace
+
 template <>
-double decode_scalar<double>(const json& j, const std::string& what) {
+double decode_scalar<double>(const json& j, const std::string& what, Values values) {
   double x;
   if (decode_plain_double(j, x)) return x;
   // The rest: a fraction "p/q", text strtod reads but from_chars does not ("+1", " 1"), or an error.
@@ -90,14 +105,19 @@ double decode_scalar<double>(const json& j, const std::string& what) {
   char* end = nullptr;
   x = std::strtod(s.c_str(), &end);
   if (end == s.c_str() || *end != '\0') throw ProtocolValueError(what + ": not a number: '" + s + "'");
-  if (!std::isfinite(x)) throw ProtocolValueError(what + ": not finite: '" + s + "'");
+  if (!std::isfinite(x) && !(values == Values::any && non_finite_word(s, x)))
+    throw ProtocolValueError(what + ": not finite: '" + s + "'");
   return x;
 }
 
 template <>
-Real50 decode_scalar<Real50>(const json& j, const std::string& what) {
+Real50 decode_scalar<Real50>(const json& j, const std::string& what, Values values) {
   const std::string s = scalar_text(j, what, false);
   if (s.find('/') != std::string::npos) return convert<Real50>(parse_rational(s, what));
+  double special;
+  if (values == Values::any && non_finite_word(s, special))
+    return std::isnan(special) ? std::numeric_limits<Real50>::quiet_NaN()
+                               : (special > 0 ? std::numeric_limits<Real50>::infinity() : -std::numeric_limits<Real50>::infinity());
   try {
     return from_decimal<Real50>(s);
   } catch (const std::invalid_argument& e) {
@@ -106,7 +126,7 @@ Real50 decode_scalar<Real50>(const json& j, const std::string& what) {
 }
 
 template <>
-Rational decode_scalar<Rational>(const json& j, const std::string& what) {
+Rational decode_scalar<Rational>(const json& j, const std::string& what, Values) {
   return parse_rational(scalar_text(j, what, false), what);
 }
 

@@ -16,7 +16,10 @@
 //                         vector}, {"O": matrix, "Pi": vector}, ... (encode/decode_engine_state)
 //
 // Decoding validates shapes (a Vec3 has 3 entries, a Mat3 3 rows of 3, matrices are rectangular)
-// and values (numeric, finite); a bad value throws ProtocolValueError naming what was wrong.
+// and values (numeric, finite); a bad value throws ProtocolValueError naming what was wrong. The
+// state an integrator's step returns is decoded with Values::any: a NaN or an infinity there ("nan",
+// "inf", Octave's "NaN", mpmath's "+inf") is what the step computed, a measurement the checks name
+// ("H is not finite within 2503 steps"), not a reply the protocol refuses.
 #pragma once
 
 #include "core/subject.hpp"
@@ -52,15 +55,19 @@ std::string encode_scalar(double x);
 std::string encode_scalar(const Real50& x);
 std::string encode_scalar(const Rational& x);
 
+// Which values a reply may hold: finite numbers only (a slot's result), or also NaN and the
+// infinities (the state an integrator's step returns; an exact scalar is never non-finite).
+enum class Values { finite, any };
+
 // Throws ProtocolValueError (with `what` naming the place, e.g. "result[1][2]").
 template <class T>
-T decode_scalar(const json& j, const std::string& what);
+T decode_scalar(const json& j, const std::string& what, Values values = Values::finite);
 template <>
-double decode_scalar<double>(const json& j, const std::string& what);
+double decode_scalar<double>(const json& j, const std::string& what, Values values);
 template <>
-Real50 decode_scalar<Real50>(const json& j, const std::string& what);
+Real50 decode_scalar<Real50>(const json& j, const std::string& what, Values values);
 template <>
-Rational decode_scalar<Rational>(const json& j, const std::string& what);
+Rational decode_scalar<Rational>(const json& j, const std::string& what, Values values);
 
 // The common case of a double, decoded without building the text that names its place: a JSON
 // number, or a decimal string read whole and finite. False for anything else (a fraction, a
@@ -70,12 +77,12 @@ bool decode_plain_double(const json& j, double& out);
 // An entry of a vector or matrix: `place()` (its name, e.g. "result[1][2]") is built only when
 // it is needed, for a message or for a scalar other than double.
 template <class T, class Place>
-T decode_entry(const json& j, Place&& place) {
+T decode_entry(const json& j, Place&& place, Values values = Values::finite) {
   if constexpr (std::is_same_v<T, double>) {
     double x;
     if (decode_plain_double(j, x)) return x;
   }
-  return decode_scalar<T>(j, place());
+  return decode_scalar<T>(j, place(), values);
 }
 
 const char* lie_algebra_word(LieAlgebraId g);
@@ -132,10 +139,10 @@ json encode(const X& x) {
 }
 
 template <class T, class X>
-X decode(const json& j, const std::string& what) {
+X decode(const json& j, const std::string& what, Values values = Values::finite) {
   auto bad = [&](const std::string& why) { return ProtocolValueError(what + ": " + why); };
   if constexpr (std::is_same_v<X, T>) {
-    return decode_scalar<T>(j, what);
+    return decode_scalar<T>(j, what, values);
   } else if constexpr (is_eigen_matrix<X>::value) {
     if (!j.is_array()) throw bad("expected an array, got " + j.dump().substr(0, 80));
     if constexpr (X::ColsAtCompileTime == 1) {
@@ -145,7 +152,7 @@ X decode(const json& j, const std::string& what) {
       X v(static_cast<Eigen::Index>(j.size()));
       for (std::size_t i = 0; i < j.size(); ++i) {
         if (j[i].is_array()) throw bad("expected a vector, got a nested array at entry " + std::to_string(i));
-        v(static_cast<Eigen::Index>(i)) = decode_entry<T>(j[i], [&] { return what + "[" + std::to_string(i) + "]"; });
+        v(static_cast<Eigen::Index>(i)) = decode_entry<T>(j[i], [&] { return what + "[" + std::to_string(i) + "]"; }, values);
       }
       return v;
     } else {
@@ -163,20 +170,20 @@ X decode(const json& j, const std::string& what) {
           throw bad("row " + std::to_string(r) + " is not an array of " + std::to_string(cols) + " entries (rows differ)");
         for (std::size_t c = 0; c < cols; ++c)
           m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = decode_entry<T>(
-              j[r][c], [&] { return what + "[" + std::to_string(r) + "][" + std::to_string(c) + "]"; });
+              j[r][c], [&] { return what + "[" + std::to_string(r) + "][" + std::to_string(c) + "]"; }, values);
       }
       return m;
     }
   } else if constexpr (is_pair<X>::value) {
     if (!j.is_array() || j.size() != 2) throw bad("expected a pair (an array of 2 values)");
-    return X{decode<T, typename X::first_type>(j[0], what + ".first"),
-             decode<T, typename X::second_type>(j[1], what + ".second")};
+    return X{decode<T, typename X::first_type>(j[0], what + ".first", values),
+             decode<T, typename X::second_type>(j[1], what + ".second", values)};
   } else if constexpr (std::is_same_v<X, RigidBodyState<T>>) {
     if (!j.is_object() || !j.contains("Pi") || !j.contains("O")) throw bad("expected {\"Pi\": ..., \"O\": ...}");
-    return X{decode<T, Vec3<T>>(j["Pi"], what + ".Pi"), decode<T, Mat3<T>>(j["O"], what + ".O")};
+    return X{decode<T, Vec3<T>>(j["Pi"], what + ".Pi", values), decode<T, Mat3<T>>(j["O"], what + ".O", values)};
   } else if constexpr (std::is_same_v<X, ManakovState<T>>) {
     if (!j.is_object() || !j.contains("M") || !j.contains("O")) throw bad("expected {\"M\": ..., \"O\": ...}");
-    return X{decode<T, MatX<T>>(j["M"], what + ".M"), decode<T, MatX<T>>(j["O"], what + ".O")};
+    return X{decode<T, MatX<T>>(j["M"], what + ".M", values), decode<T, MatX<T>>(j["O"], what + ".O", values)};
   } else if constexpr (std::is_same_v<X, int>) {
     if (!j.is_number_integer()) throw bad("expected an integer");
     return j.get<int>();
@@ -192,8 +199,10 @@ X decode(const json& j, const std::string& what) {
 }
 
 // A state in the declared form `f`: the object must hold the form's two keys ("q" and "omega", ...).
+// Only a step returns one, so NaN and the infinities pass (Values::any).
 template <class T>
 EngineState<T> decode_engine_state(const json& j, const StateForm& f, const std::string& what) {
+  constexpr Values any = Values::any;
   const char* a = attitude_key(f.attitude);
   const char* w = angular_key(f.angular);
   if (!j.is_object() || !j.contains(a) || !j.contains(w))
@@ -201,10 +210,10 @@ EngineState<T> decode_engine_state(const json& j, const StateForm& f, const std:
                              state_form_words(f) + "'; got " + j.dump().substr(0, 120));
   EngineState<T> u = to_declared<T>(f, Vec3<T>::Ones(), Mat3<T>::Identity(), Vec3<T>::Zero());
   if (f.has_quaternion())
-    u.q = decode<T, Vec4<T>>(j[a], what + ".q");
+    u.q = decode<T, Vec4<T>>(j[a], what + ".q", any);
   else
-    u.O = decode<T, Mat3<T>>(j[a], what + ".O");
-  u.angular() = decode<T, Vec3<T>>(j[w], what + "." + w);
+    u.O = decode<T, Mat3<T>>(j[a], what + ".O", any);
+  u.angular() = decode<T, Vec3<T>>(j[w], what + "." + w, any);
   return u;
 }
 

@@ -629,20 +629,22 @@ struct RemoteSlot;
 template <class T, class R, class... A>
 struct RemoteSlot<T, R(A...)> {
   static std::function<R(A...)> make(std::shared_ptr<Connection> conn, const char* slot, std::string integrator = "") {
-    return [conn, slot, integrator](A... a) -> R {
+    // An integrator's step may return NaN or an infinity: what it computed, for the checks to name.
+    const Values values = integrator.empty() ? Values::finite : Values::any;
+    return [conn, slot, integrator, values](A... a) -> R {
       Call c{slot, scalar_word<T>(), json::array({encode<T, std::decay_t<A>>(a)...}), integrator};
       const json result = conn->call(c);
       // Decoded first without the text that names the function (a reply that decodes needs none);
       // a reply that does not is decoded again, to throw the same error with the function named.
       static const std::string unnamed;
       try {
-        return decode<T, R>(result, unnamed);
+        return decode<T, R>(result, unnamed, values);
       } catch (const ProtocolValueError&) {
       }
       const std::string who = (integrator.empty() ? std::string() : integrator + ".") + slot;
       try {
         return decode<T, R>(result, "the result of " + conn->language() + " function '" + who + "' (" +
-                                        scalar_word<T>() + ")");
+                                        scalar_word<T>() + ")", values);
       } catch (const ProtocolValueError& e) {
         throw ProtocolValueError(std::string(e.what()) + "; the reply was " + result.dump().substr(0, 300));
       }
@@ -665,7 +667,7 @@ std::function<std::vector<State>(const Param&, const State&, const T&, int)> rem
                                result.dump().substr(0, 300));
     std::vector<State> out;
     out.reserve(n);
-    for (const auto& r : result) out.push_back(decode<T, State>(r, what));
+    for (const auto& r : result) out.push_back(decode<T, State>(r, what, Values::any));
     return out;
   };
 }

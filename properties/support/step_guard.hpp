@@ -106,6 +106,13 @@ double size_of(const MatXPair<T>& z) {
   return std::max(to_double(max_abs(z.first)), to_double(max_abs(z.second)));
 }
 
+// A state in a declared form (core/state_form.hpp): the size of its angular vector, |Pi| or |pi| for
+// a momentum, |Omega| or |omega| for a velocity (a rotation keeps either's size).
+template <class T>
+double size_of(const EngineState<T>& u) {
+  return to_double(max_abs(u.angular()));
+}
+
 // |Omega| = max |Pi_i / I_i| for the rigid body; for the others, the state's size over the
 // smallest parameter (a bound on the rate, as the regime draws use).
 template <class T>
@@ -115,6 +122,11 @@ double rate_of(const Vec3<T>& I, const RigidBodyState<T>& x) {
 template <class T>
 double rate_of(const Vec3<T>& I, const Vec3Pair<T>& z) {
   return to_double(max_abs(Vec3<T>(z.second.cross(z.first).cwiseQuotient(I))));
+}
+template <class T>
+double rate_of(const Vec3<T>& I, const EngineState<T>& u) {
+  const bool velocity = u.form.angular == Angular::Omega || u.form.angular == Angular::omega;
+  return velocity ? size_of(u) : size_of(u) / to_double(I.minCoeff());  // |pi| / min I bounds |Omega|
 }
 template <class T, class X>
 double rate_of(const MatX<T>& A, const X& x) {
@@ -178,6 +190,7 @@ void guard(Slot& slot) {
 template <class T>
 Integrator<T> guarded(Integrator<T> in) {
   stepguard::guard(in.rigid_body_step);
+  stepguard::guard(in.declared_step);  // called directly in the declared form (integrator_quaternion.cpp)
   stepguard::guard(in.manakov_step);
   stepguard::guard(in.clebsch_step);
   stepguard::guard(in.manakov_clebsch_step);

@@ -52,7 +52,8 @@ struct EnergyClassification {
   long changed = 0;       // steps that changed H beyond round-off
   long fell = 0, rose = 0;  // of those, how many lowered it and how many raised it
   double fell_by = 0, rose_by = 0;  // the total variation of e downwards and upwards
-  bool not_finite = false;
+  bool not_finite = false;     // e is not finite at step `steps` (a NaN or infinite H)
+  double last_finite = 0;      // |e| at the step before, the last finite one
   bool holds() const { return kind == EnergyKind::Conserved || kind == EnergyKind::Oscillating; }
 
   // "loses energy at 100% of the steps that change it: 51.3% after 10^4 steps (dissipative)"
@@ -71,8 +72,17 @@ struct EnergyClassification {
       case EnergyKind::Gaining: {
         const bool losing = kind == EnergyKind::Losing;
         const long way = losing ? fell : rose;
-        if (not_finite) {
-          std::snprintf(buf, sizeof buf, "gains energy without bound: H is not finite within %ld steps (secular growth)", steps);
+        if (not_finite && (std::isinf(max_error) || last_finite > 1)) {
+          std::snprintf(buf, sizeof buf,
+                        "gains energy without bound: H is not finite within %ld steps, after |H - H0| / |H0| reached "
+                        "%.3g (secular growth)",
+                        steps, last_finite);
+        } else if (not_finite) {
+          // A NaN from a state whose energy had not grown: what the step returned, not a growth.
+          std::snprintf(buf, sizeof buf,
+                        "the step returns a state that is not finite at step %ld, from a state whose |H - H0| / |H0| "
+                        "was %.3g",
+                        steps, last_finite);
         } else if (changed > 0 && way == changed) {
           std::snprintf(buf, sizeof buf, "%s energy at every step that changes it: %.3g%% %s after %ld steps (%s)",
                         losing ? "loses" : "gains", pct(final_error), losing ? "lost" : "gained", steps,
@@ -101,6 +111,7 @@ struct EnergyClassification {
   }
   std::string evidence() const {
     char buf[300];
+    if (not_finite) return words();  // the statistics of a run cut short by a NaN say nothing more
     std::snprintf(buf, sizeof buf,
                   "%s; max |e| = %.3g, e at the end %.3g, trend (last quarter's mean - first's) %.3g against an "
                   "oscillation of %.3g within a quarter, round-off budget %.3g",
@@ -123,6 +134,7 @@ inline EnergyClassification classify_energy_error(const std::vector<double>& t, 
     if (!std::isfinite(e[k])) {
       c.not_finite = true;
       c.kind = EnergyKind::Gaining;
+      c.last_finite = k > 0 ? std::abs(e[k - 1]) : 0;
       c.max_error = std::abs(e[k]);
       c.steps = static_cast<long>(k);
       return c;
