@@ -278,5 +278,34 @@ TEST(Process, AChildReadsNothingOfOurInputAndItsOutputIsBounded) {
   EXPECT_NE(big.output.find("bytes of output cut"), std::string::npos);
 }
 
+// The compile in double is decisive: when it fails, the other scalars' compiles are stopped (what
+// they started with them: a driver's compiler proper) and those not started never start.
+TEST(Process, ADecisiveFailureStopsTheOthersAndWhatTheyStarted) {
+  char marker[] = "/tmp/geomech-decisive-XXXXXX";
+  const int fd = ::mkstemp(marker);
+  ASSERT_GE(fd, 0);
+  ::close(fd);
+  ::unlink(marker);
+  ProcessSpec fails{{"/bin/sh", "-c", "sleep 0.2; exit 1"}, {}, false};
+  fails.decisive = true;
+  // A driver whose child (the compiler proper, here a sleep) would write the marker after 3 s.
+  const ProcessSpec driver{{"/bin/sh", "-c", std::string("(sleep 3; touch ") + marker + ") & wait"}, {}, false};
+  const ProcessSpec queued{{"/bin/sh", "-c", std::string("touch ") + marker}, {}, false};
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto r = run_processes({fails, driver, queued}, 2, 60);
+  const double took = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  EXPECT_EQ(r[0].exit_code, 1);
+  EXPECT_FALSE(r[0].cancelled);
+  EXPECT_TRUE(r[1].cancelled && r[2].cancelled);
+  EXPECT_LT(took, 2.5) << "the running one was waited for";
+  std::this_thread::sleep_for(std::chrono::milliseconds(3500));
+  EXPECT_FALSE(std::filesystem::exists(marker)) << "the driver's child outlived it, or the queued one started";
+  // The control: without a decisive failure every process runs to its end.
+  const auto all = run_processes({ProcessSpec{{"/bin/sh", "-c", "exit 1"}, {}, false}, queued}, 2, 60);
+  EXPECT_FALSE(all[1].cancelled);
+  EXPECT_TRUE(std::filesystem::exists(marker));
+  std::filesystem::remove(marker);
+}
+
 }  // namespace
 }  // namespace gm::harness

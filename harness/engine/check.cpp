@@ -248,9 +248,19 @@ void explain_not_provided(Verdict& v, const Property& p, const SubjectSet& s, co
     v.message = "needs slot '" + need + "', which is not provided";
     return;
   }
-  if (p.scope == Scope::Integrator && *kind == ScalarKind::MP50 && !integrators_for(p, s, ScalarKind::Double).empty())
-    v.message = "the integrators are provided for double only (their steps are not function templates on the "
-                "scalar), so this check cannot run in mp50";
+  if (p.scope == Scope::Integrator && *kind == ScalarKind::MP50) {
+    const auto in_double = integrators_for(p, s, ScalarKind::Double);
+    if (in_double.empty()) return;
+    // Each one stated to compute in double: the statement is the reason, not the signature.
+    const bool all_stated = std::all_of(in_double.begin(), in_double.end(), [&](const std::string& name) {
+      const IntegratorClaims* c = s.claims_for(name);
+      return c && c->precision == "double";
+    });
+    v.message = all_stated ? "every integrator it drives is stated to compute in double (precision = \"double\"), so "
+                             "it runs in double only"
+                           : "the integrators are provided for double only (their steps are not function templates on "
+                             "the scalar), so this check cannot run in mp50";
+  }
 }
 
 std::vector<IntegratorInfo> integrator_info(const SubjectSet& s) {

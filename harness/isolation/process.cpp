@@ -94,6 +94,10 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
     if (!spec.pass_through) posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawnattr_t attr;
     posix_spawnattr_init(&attr);
+    if (!spec.pass_through) {  // its own group: stopping it stops what it started (run_processes)
+      posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+      posix_spawnattr_setpgroup(&attr, 0);
+    }
     std::vector<char*> argv;
     for (const auto& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
@@ -124,26 +128,43 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
     }
   };
 
-  while (next < specs.size() || !running.empty()) {
-    while (next < specs.size() && static_cast<int>(running.size()) < jobs) start(next++);
+  // A captured child leads its own group (start): the whole group is stopped.
+  auto stop = [&](const Child& c) {
+    ::kill(specs[c.index].pass_through ? c.pid : -c.pid, SIGKILL);
+    int status = 0;
+    ::waitpid(c.pid, &status, 0);
+    return status;
+  };
+  bool cancelled = false;
+  while ((next < specs.size() && !cancelled) || !running.empty()) {
+    while (!cancelled && next < specs.size() && static_cast<int>(running.size()) < jobs) start(next++);
     bool any = false;
     for (auto it = running.begin(); it != running.end();) {
       int status = 0;
       const pid_t w = ::waitpid(it->pid, &status, WNOHANG);
       if (w == it->pid) {
         finish(*it, status, false);
+        const ProcessResult& r = results[it->index];
+        if (specs[it->index].decisive && (r.exit_code != 0 || r.signal != 0)) cancelled = true;
         it = running.erase(it);
         any = true;
       } else if (timeout_seconds > 0 &&
                  std::chrono::duration<double>(Clock::now() - it->start).count() > timeout_seconds) {
-        ::kill(it->pid, SIGKILL);
-        ::waitpid(it->pid, &status, 0);
-        finish(*it, status, true);
+        finish(*it, stop(*it), true);
+        if (specs[it->index].decisive) cancelled = true;
         it = running.erase(it);
         any = true;
       } else {
         ++it;
       }
+    }
+    if (cancelled) {
+      for (const Child& c : running) {
+        finish(c, stop(c), false);
+        results[c.index].cancelled = true;
+      }
+      running.clear();
+      for (; next < specs.size(); ++next) results[next].cancelled = true;
     }
     if (!any && !running.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }

@@ -12,6 +12,7 @@ struct ProcessResult {
   int signal = 0;        // when a signal ended it
   bool timed_out = false;
   bool started = false;  // false: it could not be started (output says why)
+  bool cancelled = false; // stopped, or never started, because a decisive process failed
   std::string output;    // stdout and stderr, interleaved
   double seconds = 0;
 };
@@ -20,9 +21,15 @@ struct ProcessSpec {
   std::vector<std::string> argv;
   std::string output_file;  // when set, output goes (also) to this file instead of memory
   bool pass_through = false;  // let the child write to our stdout/stderr (nothing captured)
+  // When it fails (exits non-zero, or a signal ends it), the others are stopped and those not yet
+  // started are not: their results say `cancelled`. The compile in double is decisive: when the file
+  // does not compile, the other scalars' compiles can teach nothing.
+  bool decisive = false;
 };
 
-// Runs the processes, at most `jobs` at once; timeout_seconds <= 0 means none.
+// Runs the processes, at most `jobs` at once; timeout_seconds <= 0 means none. A captured child
+// runs in a process group of its own, so that a timeout or a cancellation stops what it started
+// (the compiler proper behind the driver) and not only itself.
 std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, int jobs, double timeout_seconds = 0);
 
 ProcessResult run_process(const ProcessSpec& spec, double timeout_seconds = 0);

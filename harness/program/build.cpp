@@ -548,6 +548,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       p.argv = compile_cmd(k, st[k].skip, st[k].skip_integrators);
       commands.push_back(shell_join(p.argv));  // the cache's key: without the sandbox's wrapping
       p.argv = run_argv(p.argv);
+      p.decisive = k == 0;  // the file does not compile: the other scalars' compiles are stopped
       specs.push_back(p);
       const std::string label = std::string("compiling for ") + kScalars[k] +
                                 (st[k].skip.empty() ? "" : " without " + join(st[k].skip)) +
@@ -560,6 +561,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       const int k = todo[i];
       const std::string scalar = kScalars[k];
       const ProcessResult& pr = results[i];
+      if (pr.cancelled) continue;  // stopped when double failed: nothing learnt, nothing kept
       st[k].output = pr.output;
       if (pr.timed_out)  // said as an error of the file, so that the summary below shows it
         st[k].output += "\n" + source.filename().string() + ": error: the compiler was stopped after " +

@@ -243,6 +243,16 @@ std::string stated_precision_note() {
                                                                       : " (stated: " + why + ")");
 }
 
+// Whether the integrator states precision = "double" where the compiler can read it (a constexpr
+// member, as the docs write it): then its steps are compiled in double only.
+template <class Int>
+constexpr bool states_double() {
+  if constexpr (requires { typename std::bool_constant<std::string_view(Int::precision) == std::string_view("double")>; })
+    return std::string_view(Int::precision) == std::string_view("double");
+  else
+    return false;
+}
+
 // An integrator's steps in scalar T (errors inside them name gm_integrator_of).
 template <class Int, class T>
 void gm_integrator_of(Subject<T>& s, PartInfo& info) {
@@ -251,6 +261,26 @@ void gm_integrator_of(Subject<T>& s, PartInfo& info) {
                 "`static constexpr const char* name = \"...\";`");
   using RS = RigidBodyState<T>;
   using MS = ManakovState<T>;
+  if constexpr (!std::is_same_v<T, double> && states_double<Int>()) {
+    // Stated "double": nothing of it is compiled for T (the compile of a file of engines in double
+    // costs what one scalar costs); the steps it has as templates on T are noted with the reason.
+    const std::pair<bool, const char*> steps[] = {
+        {requires(const Vec3<T>& a, const RS& x, const T& h) { Int::template rigid_body_step<T>(a, x, h); } ||
+             requires(const Vec3<T>& a, const EngineState<T>& x, const T& h) { Int::template rigid_body_step<T>(a, x, h); },
+         "rigid_body_step"},
+        {requires(const MatX<T>& a, const MS& x, const T& h) { Int::template manakov_step<T>(a, x, h); }, "manakov_step"},
+        {requires(const Vec3<T>& a, const Vec3Pair<T>& x, const T& h) { Int::template clebsch_step<T>(a, x, h); },
+         "clebsch_step"},
+        {requires(const MatX<T>& a, const MatXPair<T>& x, const T& h) { Int::template manakov_clebsch_step<T>(a, x, h); },
+         "manakov_clebsch_step"}};
+    for (const auto& [has, step] : steps)
+      if (has) {
+        std::string key = Int::name;  // appended, not `+`: GCC 12 warns wrongly (-Warray-bounds) on that
+        key.append(".").append(step);
+        info.slot_notes[key] = stated_precision_note<Int>();
+      }
+    return;
+  }
   Integrator<T> in;
   in.name = std::string(Int::name);
   // Each step is detected like a slot: a template on the scalar, or (double only) a plain function.
