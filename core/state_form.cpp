@@ -111,4 +111,9 @@ std::string state_form_conversion(const StateForm& f) {
   return O + ", Pi = your Pi";
 }
 
+int& quaternion_sign_given() {
+  thread_local int sign = 1;
+  return sign;
+}
+
 }  // namespace gm

@@ -333,6 +333,7 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
             recorded_series().clear();
             recorded_notes().clear();
             current_step_raise().reset();
+            quaternion_sign_given() = 1;  // an attitude regime of this case may draw the other sign
             try {
               fn();
             } catch (const SlotMissing& e) {

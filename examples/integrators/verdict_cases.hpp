@@ -421,6 +421,37 @@ struct FlippedDamping {
   }
 };
 
+// 19. The midpoint rule kept in a quaternion (w, x, y, z) and Pi, whose attitude goes through a
+//     rotation vector "the shorter way round": angle 2 atan2(|v|, |w|) about v / |v|, taking |w|
+//     without turning the axis. Exact for every q with w >= 0 (the half of the quaternions a
+//     conversion from a matrix returns), wrong for the other half: near the identity given as -q,
+//     the body is turned the other way. Order 2 and equivariance claimed, both false there: the
+//     sign regime of the attitude draws must catch it and name the sign.
+struct ShorterWayRound {
+  static constexpr const char* name = "shorter_way_round";
+  static constexpr const char* state = "quaternion_wxyz Pi";
+  static constexpr gm::student::Claims claims{.order = 2, .equivariant = true};
+  template <class T>
+  static EngineState<T> rigid_body_step(const Vec3<T>& I, const EngineState<T>& x, const T& h) {
+    using std::abs, std::atan2, std::cos, std::sin, std::sqrt;
+    const Vec3<T> v(x.q(1), x.q(2), x.q(3));
+    const T s = sqrt(v.dot(v));
+    const T angle = T(2) * atan2(s, abs(x.q(0)));  // the defect: |w|, the axis v / |v| kept
+    const Vec3<T> axis = s > T(0) ? Vec3<T>(v / s) : Vec3<T>::Zero();
+    const Vec4<T> q(cos(angle / T(2)), sin(angle / T(2)) * axis(0), sin(angle / T(2)) * axis(1),
+                    sin(angle / T(2)) * axis(2));  // exp of the rotation vector angle * axis
+    const RigidBodyState<T> y =
+        midpoint<T>(I, RigidBodyState<T>{x.Pi, Mat3<T>::Identity()}, h, [&](const Vec3<T>& P) { return euler_3_8<T>(I, P); });
+    const Vec3<T> a = h * ((x.Pi + y.Pi) / T(2)).cwiseQuotient(I) / T(2);  // cay(h hat(W)) is the turn (1, h W / 2)
+    Vec4<T> turned(q(0) - q(1) * a(0) - q(2) * a(1) - q(3) * a(2), q(0) * a(0) + q(1) + q(2) * a(2) - q(3) * a(1),
+                   q(0) * a(1) - q(1) * a(2) + q(2) + q(3) * a(0), q(0) * a(2) + q(1) * a(1) - q(2) * a(0) + q(3));
+    EngineState<T> out = x;
+    out.q = turned / sqrt(turned.dot(turned));
+    out.Pi = y.Pi;
+    return out;
+  }
+};
+
 // The midpoint rule itself, every claim true: the positive control.
 struct Midpoint {
   static constexpr const char* name = "midpoint";

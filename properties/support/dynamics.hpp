@@ -113,6 +113,10 @@ Mat3<T> draw_attitude() {
                              "attitude (0, 1 generic; 2 2^-m rad from the identity; 3 2^-m rad from a rotation by pi)");
   if (regime < 2) return draw_rotation<T>();
   const int m = pick<T>(rc::gen::inRange(2, 53), "m (the attitude 2^-m rad from its branch point)");
+  // Near +1 and -1 (the identity), and near w = 0 (pi) from both sides: the quaternion given to a
+  // step kept in one is q or -q (core/state_form.hpp, quaternion_sign_given).
+  quaternion_sign_given() =
+      pick<T>(rc::gen::inRange(0, 2), "sign of the quaternion given to a step kept in one (0: w >= 0; 1: -q, w <= 0)") ? -1 : 1;
   static const int axes[5][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 2, 2}, {2, -1, 2}};  // / 1 or / 3: unit
   const auto unit = [](int k) {
     const Rational d = k < 3 ? Rational(1) : Rational(3);

@@ -19,6 +19,7 @@
 // Each probe is a few dozen calls of the step, made only once a claim has failed.
 #pragma once
 
+#include "core/declared_step.hpp"
 #include "core/subject.hpp"
 #include "properties/support/named_inputs.hpp"
 #include "properties/support/scalar_text.hpp"
@@ -103,6 +104,37 @@ std::string precision_words(double followed) {
          "step's own round-off (no vector field is read from it)";
 }
 
+// 2b. A step kept in a quaternion, tried with the same attitude as q and as -q (w >= 0 and w <= 0):
+// when it reduces to the identity with one sign and not with the other, the sign is the cause
+// (code assuming w >= 0: |w|, w = sqrt(1 - |v|^2), a log map without the sign test). Empty otherwise.
+template <class T>
+std::string quaternion_sign_cause(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x, const T& h,
+                                  const T& size, const T& expected) {
+  if (!in.declared_step || !in.form.has_quaternion()) return {};
+  T move[2];
+  for (int sign = 0; sign < 2; ++sign) {
+    EngineState<T> u = state_form::canonical_declared<T>(in.form, I, x.O, x.Pi);
+    if (sign) u.q = -u.q;
+    try {
+      EngineState<T> v = in.declared_step(I, u, h);
+      v.form = in.form;
+      move[sign] = moved(declared_step_detail::from_declared<T>(v, I), x, size);
+    } catch (const std::exception&) {
+      current_step_raise().reset();
+      return {};
+    }
+  }
+  const T limit = T(1024) * expected;
+  const bool plus_ok = move[0] <= limit, minus_ok = move[1] <= limit;
+  if (plus_ok == minus_ok) return {};
+  return std::string("your step treats q and -q as two attitudes, by experiment: given the same attitude as q with ") +
+         (plus_ok ? "w <= 0 (-q)" : "w >= 0") + " it moves the state by " + fmt("%.3g", to_double(plus_ok ? move[1] : move[0])) +
+         " however small h is, given it with " + (plus_ok ? "w >= 0" : "w <= 0 (-q)") + " by " +
+         fmt("%.1g", to_double(plus_ok ? move[0] : move[1])) +
+         ", as a consistent step does; q and -q are one attitude, so a part of the step assumes a sign of w (|w| "
+         "where w is meant, w = sqrt(1 - |v|^2), a log map or an angle 2 acos(w) without the sign test)";
+}
+
 // 2. and 3.: the step as h -> 0.
 struct SmallSteps {
   bool not_identity = false;
@@ -140,6 +172,10 @@ SmallSteps small_steps(const Integrator<T>& in, const Vec3<T>& I, const RigidBod
     const T expected = pow2<T>(-smallest);
     if (m > T(1024) * expected) {
       s.not_identity = true;
+      if (std::string sign = quaternion_sign_cause<T>(in, I, x, T(expected / rate), size, expected); !sign.empty()) {
+        s.not_identity_text = sign + "; measured at\n" + named("I", I) + named("Pi", x.Pi) + named("O", x.O);
+        return s;
+      }
       s.not_identity_text = "your step does not reduce to the identity as h -> 0: |step(x, h) - x| = " +
                             fmt("%.3g", to_double(m)) + " of the state at h = " + fmt("%.3g", to_double(T(expected / rate))) +
                             " (h |Omega| = 2^-" + std::to_string(smallest) + "), where a consistent step moves it by about " +
