@@ -13,6 +13,7 @@
 //   geomech golden     golden trajectories: regenerate/check the fixtures, make your own (golden/cli.hpp)
 #include "golden/cli.hpp"
 #include "harness/program/build.hpp"
+#include "harness/program/library_flags.hpp"
 #include "harness/class/class_mode.hpp"
 #include "harness/program/cli.hpp"
 #include "harness/isolation/inert_text.hpp"
@@ -299,6 +300,8 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
               << std::fixed << std::setprecision(1) << b.seconds << " s\n";
     notes = b.notes;
     language = "c++";
+    // Its libraries under a folder the grader trusts are loaded inside the sandbox (build_student vetted it).
+    for (const auto& root : harness::trusted_library_roots()) spec.read_only.push_back(root);
     try {
       cmd = {copy->add(b.program, "submission")};
     } catch (const std::exception& e) {

@@ -444,10 +444,15 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   // The libraries it uses (issue 48, harness/program/library_flags.hpp): the command line's and the file's
   // own `// geomech:` lines; a stranger's (sandboxed) are vetted before the compiler sees them.
   LibraryFlags libs;
+  std::vector<std::string> trusted_roots;  // GEOMECH_LIBRARY_ROOTS
   try {
+    trusted_roots = trusted_library_roots();
     LibraryRequest wanted = o.libraries;
     wanted.add(declared_in_source(read_text(compiled_source), source.filename().string()));
     libs = resolve_library_flags(wanted, o.sandbox);
+    // The folders the grader trusts (GEOMECH_LIBRARY_ROOTS) are shown to the sandboxed compiler.
+    if (o.sandbox)
+      for (const auto& root : trusted_roots) sandbox.read_only.push_back(root);
   } catch (const std::exception& e) {
     r.message = e.what();
     return r;
@@ -660,6 +665,12 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   if (!o.server) link.push_back("-Wl,--no-whole-archive");
   for (const auto& l : tc.other_libraries) link.push_back(l);
   link.insert(link.end(), libs.link.begin(), libs.link.end());
+  // A shared library under a folder the grader trusts is found at run time where it was linked (the
+  // suite's own run path: the loader searches only the system's folders).
+  for (const auto& root : trusted_roots)
+    for (const auto& f : libs.link)
+      if (f.rfind("-L" + root, 0) == 0 && (f.size() == 2 + root.size() || f[2 + root.size()] == '/'))
+        link.push_back("-Wl,-rpath," + f.substr(2));
   const std::string program_name = !o.program_name.empty() ? o.program_name : o.server ? "server" : "check";
   const fs::path program = dir / program_name;
   const fs::path link_file = dir / ("link-" + program_name + ".cmd");

@@ -3,6 +3,7 @@
 #include "harness/isolation/process.hpp"
 
 #include <algorithm>
+#include <cstdlib>
 #include <cctype>
 #include <filesystem>
 #include <set>
@@ -75,28 +76,64 @@ LibraryRequest declared_in_source(const std::string& text, const std::string& fi
   return r;
 }
 
+std::vector<std::string> trusted_library_roots() {
+  std::vector<std::string> roots;
+  const char* env = std::getenv("GEOMECH_LIBRARY_ROOTS");
+  if (!env) return roots;
+  std::string text = env;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t colon = std::min(text.find(':', start), text.size());
+    const std::string r = text.substr(start, colon - start);
+    start = colon + 1;
+    if (r.empty()) continue;
+    std::error_code ec;
+    if (r.front() != '/' || !fs::is_directory(r, ec))
+      throw std::invalid_argument("GEOMECH_LIBRARY_ROOTS: '" + r + "' is not an absolute path of a folder (the grader's "
+                                  "setting: the folders of libraries installed for a class, separated by ':')");
+    const std::string real = fs::weakly_canonical(fs::path(r), ec).string();
+    if (real == "/") throw std::invalid_argument("GEOMECH_LIBRARY_ROOTS: '/' would show the sandbox the whole machine");
+    roots.push_back(real);
+  }
+  return roots;
+}
+
+// The folder to trust for DIR: its parent when DIR is an include or lib folder (PREFIX/include ->
+// PREFIX), so that one root covers a library's headers and its archives.
+std::string library_root_of(const std::string& dir) {
+  std::error_code ec;
+  fs::path real = fs::weakly_canonical(fs::path(dir), ec);
+  if (ec) real = dir;
+  for (fs::path p = real; p.has_parent_path() && p != p.parent_path(); p = p.parent_path()) {
+    const std::string leaf = p.filename().string();
+    if (leaf == "include" || leaf == "lib" || leaf == "lib64") return p.parent_path().string();
+  }
+  return real.string();
+}
+
 namespace {
 
 // A folder under one of `roots`, after resolving links and "..": the system's, not the host's.
-bool under(const std::string& dir, std::initializer_list<const char*> roots) {
+bool under(const std::string& dir, const std::vector<std::string>& roots) {
   std::error_code ec;
   const std::string real = fs::weakly_canonical(fs::path(dir), ec).string();
   if (ec || dir.empty() || dir.front() != '/') return false;
-  for (const char* root : roots) {
-    const std::string r = root;
+  for (const std::string& r : roots)
     if (real == r || real.rfind(r + "/", 0) == 0) return true;
-  }
   return false;
 }
 
-constexpr std::initializer_list<const char*> kIncludeRoots = {"/usr/include"};
-constexpr std::initializer_list<const char*> kLibraryRoots = {"/usr/lib", "/lib", "/usr/lib64", "/lib64"};
+// The system's folders, and the ones the grader trusts (GEOMECH_LIBRARY_ROOTS).
+std::vector<std::string> with_trusted(std::vector<std::string> roots) {
+  for (const auto& r : trusted_library_roots()) roots.push_back(r);
+  return roots;
+}
 
 // Why a flag is refused for a stranger's file, or "" when it passes. `next` is the word after it (the
 // folder of a separate -I DIR), consumed by the caller when `takes_next`.
 std::string refusal(const std::string& f, bool link, const std::string* next, bool* takes_next) {
   *takes_next = false;
-  auto folder_flag = [&](const std::string& flag, std::initializer_list<const char*> roots, const char* what) -> std::string {
+  auto folder_flag = [&](const std::string& flag, const std::vector<std::string>& roots, const char* what) -> std::string {
     std::string dir = f.substr(flag.size());
     if (dir.empty()) {
       if (!next) return "'" + f + "' without its folder";
@@ -105,8 +142,9 @@ std::string refusal(const std::string& f, bool link, const std::string* next, bo
     }
     if (under(dir, roots)) return {};
     return "'" + f + (f.size() == flag.size() ? " " + dir : "") + "': the folder is not one of the system's " + what +
-           " folders (" + (link ? "/usr/lib, /lib" : "/usr/include") + "), so it would show the sandboxed compiler a "
-           "folder of this machine";
+           " folders (" + (link ? "/usr/lib, /lib" : "/usr/include") + ") nor under GEOMECH_LIBRARY_ROOTS, so it would "
+           "show the sandboxed compiler a folder of this machine; a grader who installed the library there for the "
+           "class trusts it with GEOMECH_LIBRARY_ROOTS=" + library_root_of(dir);
   };
   if (f.empty()) return "an empty flag";
   if (f[0] == '@') return "'" + f + "': an @file makes the compiler read its options from a file of this machine";
@@ -120,9 +158,11 @@ std::string refusal(const std::string& f, bool link, const std::string* next, bo
   if (f.rfind("-D", 0) == 0 || f.rfind("-U", 0) == 0) return f.size() > 2 ? "" : "'" + f + "' without its macro";
   if (f == "-pthread") return "";
   if (f.rfind("-W", 0) == 0) return "";  // a warning switch (-Wall, -Wno-unused); -Wl, and the like are refused above
-  if (!link && f.rfind("-isystem", 0) == 0) return folder_flag("-isystem", kIncludeRoots, "include");
-  if (!link && f.rfind("-I", 0) == 0) return folder_flag("-I", kIncludeRoots, "include");
-  if (link && f.rfind("-L", 0) == 0) return folder_flag("-L", kLibraryRoots, "library");
+  static const std::vector<std::string> include_roots = with_trusted({"/usr/include"});
+  static const std::vector<std::string> library_roots = with_trusted({"/usr/lib", "/lib", "/usr/lib64", "/lib64"});
+  if (!link && f.rfind("-isystem", 0) == 0) return folder_flag("-isystem", include_roots, "include");
+  if (!link && f.rfind("-I", 0) == 0) return folder_flag("-I", include_roots, "include");
+  if (link && f.rfind("-L", 0) == 0) return folder_flag("-L", library_roots, "library");
   if (link && f.rfind("-l", 0) == 0) {
     const std::string name = f.substr(2);
     if (name.empty() || name.find('/') != std::string::npos || name.find(':') != std::string::npos)
@@ -130,7 +170,8 @@ std::string refusal(const std::string& f, bool link, const std::string* next, bo
     return {};
   }
   return "'" + f + "' is not among the flags a file checked in untrusted mode may give: -D, -U, -I or -isystem "
-         "under /usr/include, -W..., -pthread" + std::string(link ? "; for linking -l and -L under /usr/lib or /lib" : "");
+         "under /usr/include (or GEOMECH_LIBRARY_ROOTS), -W..., -pthread" +
+         std::string(link ? "; for linking -l and -L under /usr/lib or /lib (or GEOMECH_LIBRARY_ROOTS)" : "");
 }
 
 void vet(const std::vector<std::string>& flags, bool link, const std::string& from, std::vector<std::string>& refused) {

@@ -10,7 +10,7 @@
 // mode the file is a stranger's, so its flags (and what pkg-config gives for its package names)
 // are vetted before a sandboxed compiler sees them: only -D, -U, -I/-isystem folders under the
 // system's include folders (/usr/include), -L folders under the system's library folders (/usr/lib,
-// /lib), -l, -pthread and warning switches (-W...) pass; anything else is refused with its reason
+// /lib), or under a folder the grader trusts (GEOMECH_LIBRARY_ROOTS), -l, -pthread and warning switches (-W...) pass; anything else is refused with its reason
 // (an @file reads the host's files, -B and -wrapper run programs of the host, -fplugin loads code
 // into the compiler, -specs rewrites the driver's commands, a folder outside the system's is the
 // host's). Your own file, checked in-process, may use any flag.
@@ -53,6 +53,14 @@ struct LibraryFlags {
 // (above). Throws std::invalid_argument with every refusal and its reason, or with
 // pkg-config's message for a package it does not know.
 LibraryFlags resolve_library_flags(const LibraryRequest& request, bool stranger);
+
+// The folders a grader trusts for strangers' builds beside the system's: GEOMECH_LIBRARY_ROOTS, absolute
+// folders separated by ':' (an engine installed for a class under /opt/engine). -I and -L under them
+// pass the vetting, and the sandboxes of the compile and of the check show them read-only. Throws
+// std::invalid_argument for a relative path, a folder that does not exist, or '/'.
+std::vector<std::string> trusted_library_roots();
+// The root to suggest for a refused folder: PREFIX for PREFIX/include/... or PREFIX/lib/...
+std::string library_root_of(const std::string& dir);
 
 // Why a compile that failed on a missing header might want a package: for "fatal error: X: No such
 // file or directory", the packages whose include folders hold X ("--pkg eigen3"), or the general
