@@ -623,6 +623,12 @@ int main(int argc, char** argv) {
   klass->add_flag("--fresh", class_opts.fresh,
                   "check every implementation again (by default a re-run resumes: one unchanged since its last complete "
                   "check, in source, options and suite, is not checked again)");
+  klass->add_option("--regrade", class_opts.regrade,
+                    "NAME: check this implementation again whatever its last result (repeatable); every other is "
+                    "resumed as usual, and the summary and gradebook cover the whole class");
+  klass->add_flag("--not-checked", class_opts.not_checked,
+                  "check again the implementations whose last result is NOT CHECKED (a timeout, a check that "
+                  "raised); every other is resumed as usual");
   auto add_grade_options = [](CLI::App& app, gm::harness::GradeOptions& g) {
     app.add_option("--grades", g.csv, "write a gradebook CSV for Moodle or Canvas (docs/GRADEBOOK.md)");
     app.add_option("--rubric", g.rubric, "the rubric of --grades, JSON (default: partial credit per correct slot)");

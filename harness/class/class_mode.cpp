@@ -4,6 +4,7 @@
 #include "harness/class/class_record.hpp"
 #include "harness/class/grader_machine.hpp"
 #include "harness/remote/remote_subject.hpp"
+#include "harness/remote/slot_names.hpp"
 #include "harness/class/gradebook.hpp"
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/inert_text.hpp"
@@ -449,6 +450,13 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   if (o.shard_n < 1 || o.shard_k < 1 || o.shard_k > o.shard_n)
     throw std::runtime_error("--shard K/N needs 1 <= K <= N (got " + std::to_string(o.shard_k) + "/" +
                              std::to_string(o.shard_n) + ")");
+  for (const auto& name : o.regrade)  // a regrade names a student of the class, said before anything runs
+    if (std::none_of(all_impls.begin(), all_impls.end(), [&](const Implementation& i) { return i.name == name; })) {
+      std::vector<std::string> names;
+      for (const auto& i : all_impls) names.push_back(i.name);
+      throw std::runtime_error("--regrade " + name + ": no implementation of that name in " + o.dir +
+                               did_you_mean(name, names) + " (names are the files' stems or the folders' names)");
+    }
   auto impls = shard_of(all_impls, o.shard_k, o.shard_n);
   const std::string report_dir = o.report_dir.empty() ? default_class_report_dir(o.dir) : o.report_dir;
   std::error_code ec;
@@ -501,7 +509,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   std::vector<std::string> prints(impls.size());
   std::vector<std::optional<Row>> finished(impls.size());
   std::vector<std::size_t> to_check;
-  std::size_t resumed = 0;
+  std::size_t resumed = 0, regraded = 0, not_checked_again = 0;
   // The files the lecturer shares with every C++ submission (--shared), read once.
   SubmissionTree shared;
   for (const auto& file : o.shared) {
@@ -561,14 +569,19 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     f.add_tree(tree);
     prints[i] = f.hex();
     const fs::path row_file = fs::path(report_dir) / impls[i].name / "class-row.json";
-    if (!o.fresh && fs::exists(row_file, ec)) {
+    const bool named = std::find(o.regrade.begin(), o.regrade.end(), impl.name) != o.regrade.end();
+    if (named) ++regraded;
+    if (!o.fresh && !named && fs::exists(row_file, ec)) {
       try {
         std::ifstream in(row_file);
         const json j = json::parse(in);
         if (j.at("format") == "geomech-class-row 1" && j.at("fingerprint") == prints[i]) {
           Row row = row_from_json(j.at("row"), report_dir);
-          // The grader's fault is checked again: the condition may have changed since.
-          if (row.problem.rfind("its report cannot be read", 0) != 0 && grader_fault_of(class_row(row)).empty()) {
+          // The grader's fault is checked again: the condition may have changed since; so is one
+          // not checked, when the lecturer asks (--not-checked).
+          const bool retry = o.not_checked && status_of(class_row(row)) == "not checked";
+          if (retry) ++not_checked_again;
+          if (!retry && row.problem.rfind("its report cannot be read", 0) != 0 && grader_fault_of(class_row(row)).empty()) {
             finished[i] = std::move(row);
             ++resumed;
             continue;
@@ -585,6 +598,13 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     std::cerr << "geomech check-class: " << resumed << " of " << impls.size()
               << " implementations are unchanged since their last complete check (source, options and suite) and are "
                  "not checked again (--fresh checks everyone)\n";
+  if (regraded > 0 || not_checked_again > 0 || o.not_checked) {
+    std::cerr << "geomech check-class: checked again on request: " << regraded << " named (--regrade), "
+              << not_checked_again << " last NOT CHECKED (--not-checked)";
+    const std::size_t others = to_check.size() - regraded - not_checked_again;
+    if (others > 0) std::cerr << "; " << others << " more changed or never checked, checked too";
+    std::cerr << "\n";
+  }
 
   // The command a student runs on their own file, as the reports print it (issue 49): their file's
   // name, no folder of the lecturer's, no lecturer's option ("geomech check bob.py", "geomech check

@@ -53,6 +53,12 @@ struct ClassOptions {
   // suite are unchanged since (class-row.json beside its report holds their fingerprint) is not
   // checked again; --fresh checks everyone.
   bool fresh = false;
+  // A regrade (a lecturer's term): --regrade NAME (repeatable) checks those implementations again
+  // whatever their last result; --not-checked checks again those whose last result is NOT CHECKED
+  // (a timeout, a raise of the whole check). Every other follows the resume rule above, so the
+  // summary and the gradebook still cover the whole class.
+  std::vector<std::string> regrade;
+  bool not_checked = false;
   GradeOptions grades;
   // --shared FILE: headers (or other files) given to every C++ submission of the class, on
   // purpose; nothing else of the class folder is shared (issue 46).
