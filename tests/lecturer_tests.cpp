@@ -178,3 +178,47 @@ TEST(ClassRecord, OneClassFolderIsOneReportFolder) {
   EXPECT_EQ(default_class_report_dir("other/week3"), a);  // the folder's name, as before
   EXPECT_NE(default_class_report_dir("week4/"), a);
 }
+
+// Issue 57: what the class got wrong, decided once: per slot and per claim, how many of the students
+// checked, who, and the most common first fix, grouped across the students' own names and numbers.
+// The control: a class with nothing wrong has no mistake, and a student not checked counts in neither.
+TEST(ClassRecord, WhatTheClassGotWrongCountsStudentsAndTheCommonFix) {
+  std::vector<ClassRow> rows{checked_row("alice", {"hat", "vee"}, 1), checked_row("bob", {"hat", "vee"}, 1),
+                             checked_row("carol", {"hat", "vee"}, 1), checked_row("dave", {"hat", "vee"})};
+  auto wrong = [](ClassRow& r, const std::string& slot, const std::string& line) {
+    r.report["first_fix"].push_back({{"slot", slot}, {"line", line}});
+  };
+  wrong(rows[0], "vee", "Python function 'vee' in alice.py is wrong: at m = [[0, -3, 2]] it returns -1.5");
+  wrong(rows[1], "vee", "Python function 'vee' in bob.py is wrong: at m = [[0, -1, 7]] it returns 0.25");
+  wrong(rows[2], "vee", "Python function 'vee' in carol.py returns a list of 2 entries");
+  wrong(rows[2], "hat", "Python function 'hat' in carol.py is wrong: at v = [1, 2, 3] it returns 4");
+  rows[1].report["integrators"] = json::array({{{"name", "midpoint"},
+                                                {"claims", json::array({{{"claim", "casimir"}, {"claimed", "yes"}, {"status", "FALSE CLAIM"}}})}}});
+  ClassRow eve = checked_row("eve", {"hat"});
+  eve.problem = "the check ran out of its time";
+  wrong(eve, "vee", "not counted: eve was not checked");
+  rows.push_back(eve);
+  const ClassView v = decide_class(rows, Rubric{});
+  ASSERT_EQ(v.mistakes.size(), 3u);
+  EXPECT_EQ(v.mistakes[0].kind, "slot");
+  EXPECT_EQ(v.mistakes[0].what, "vee");
+  EXPECT_EQ(v.mistakes[0].students, 3);
+  EXPECT_EQ(v.mistakes[0].checked, 4) << "eve was not checked: she counts in neither";
+  EXPECT_EQ(v.mistakes[0].who, (std::vector<std::string>{"alice", "bob", "carol"}));
+  EXPECT_EQ(v.mistakes[0].common_fix_students, 2) << "alice's and bob's fixes differ only in their names and numbers";
+  EXPECT_NE(v.mistakes[0].common_fix.find("is wrong: at m = "), std::string::npos) << v.mistakes[0].common_fix;
+  EXPECT_EQ(v.mistakes[1].what, "hat");  // one student each: by name
+  EXPECT_EQ(v.mistakes[2].kind, "claim");
+  EXPECT_EQ(v.mistakes[2].what, "midpoint casimir");
+  // Rendered in the page, with its chart.
+  const std::string html = class_summary_html(v, ClassPage{"class", "(default rubric)", {}, false});
+  EXPECT_NE(html.find("What the class got wrong"), std::string::npos);
+  EXPECT_NE(html.find("<svg role=\"img\" aria-label=\"students who got each wrong\""), std::string::npos);
+  EXPECT_NE(html.find("3 of 4"), std::string::npos);
+  // The control: nothing wrong, no section.
+  std::vector<ClassRow> fine{checked_row("dave", {"hat", "vee"})};
+  const ClassView f = decide_class(fine, Rubric{});
+  EXPECT_TRUE(f.mistakes.empty());
+  EXPECT_EQ(class_summary_html(f, ClassPage{"class", "(default rubric)", {}, false}).find("What the class got wrong"),
+            std::string::npos);
+}

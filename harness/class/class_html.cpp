@@ -1,5 +1,7 @@
 #include "harness/class/class_html.hpp"
 
+#include <algorithm>
+
 #include "harness/reports/html_page.hpp"
 #include "harness/reports/report.hpp"
 
@@ -123,6 +125,36 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
     b << "<td data-sort=\"" << html_escape(s.graded.first_fix) << "\">" << html_escape(s.graded.first_fix) << "</td></tr>\n";
   }
   b << "</tbody>\n</table>\n";
+  if (!view.mistakes.empty()) {
+    // What the class got wrong: a bar per slot or claim, the share of the students checked who got
+    // it wrong (an inline SVG: the page stays self-contained), then the table with who and the fix.
+    const int bar_h = 22, label_w = 260, bar_w = 360;
+    const int height = bar_h * static_cast<int>(view.mistakes.size()) + 10;
+    b << "<h2 id=\"wrong\">What the class got wrong</h2>\n<svg role=\"img\" aria-label=\"students who got each wrong\" "
+         "width=\"" << label_w + bar_w + 90 << "\" height=\"" << height << "\" style=\"font: 13px sans-serif\">\n";
+    for (std::size_t i = 0; i < view.mistakes.size(); ++i) {
+      const ClassMistake& m = view.mistakes[i];
+      const int y = static_cast<int>(i) * bar_h + 5;
+      const int w = m.checked > 0 ? bar_w * m.students / m.checked : 0;
+      b << "<text x=\"" << label_w - 6 << "\" y=\"" << y + 15 << "\" text-anchor=\"end\">" << html_escape(m.kind + " " + m.what)
+        << "</text><rect x=\"" << label_w << "\" y=\"" << y + 3 << "\" width=\"" << std::max(w, 1) << "\" height=\"" << bar_h - 6
+        << "\" fill=\"#c0392b\"/><text x=\"" << label_w + std::max(w, 1) + 6 << "\" y=\"" << y + 15 << "\">" << m.students
+        << " of " << m.checked << "</text>\n";
+    }
+    b << "</svg>\n<table id=\"wrong-table\">\n<thead><tr><th>wrong</th><th>students</th><th>who</th><th>the most common "
+         "first fix</th></tr></thead>\n<tbody>\n";
+    for (const auto& m : view.mistakes) {
+      std::string who;
+      for (std::size_t i = 0; i < m.who.size(); ++i) who += (i ? ", " : "") + m.who[i];
+      b << "<tr><td>" << html_escape(m.kind) << " <code>" << html_escape(m.what) << "</code></td><td>" << m.students << " of "
+        << m.checked << "</td><td>" << html_escape(who) << "</td><td>"
+        << (m.common_fix.empty() ? std::string("-")
+                                 : "(" + std::to_string(m.common_fix_students) + " of " + std::to_string(m.students) + ") " +
+                                       html_escape(m.common_fix))
+        << "</td></tr>\n";
+    }
+    b << "</tbody>\n</table>\n";
+  }
   b << "<h2 id=\"in-words\">Each student in words</h2>\n<ul>\n";
   for (const auto& s : view.students) {
     b << "<li id=\"words-" << html_escape(key_of(s.row->name)) << "\"><strong>" << html_escape(s.row->name) << "</strong>";

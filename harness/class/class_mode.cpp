@@ -368,6 +368,19 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
     md << " " << (s.report_link.empty() ? "-" : "[" + md_inline(link) + "](" + md_link_target(link) + ")") << " |\n";
     console << "\n";
   }
+  if (!view.mistakes.empty()) {  // the lecture to repeat (class_record.hpp, class_mistakes)
+    md << "\n## What the class got wrong\n\n| wrong | students | who | the most common first fix |\n|---|---|---|---|\n";
+    for (const auto& m : view.mistakes) {
+      std::string who;
+      for (std::size_t i = 0; i < m.who.size(); ++i) who += (i ? ", " : "") + m.who[i];
+      md << "| " << m.kind << " `" << md_inline(m.what) << "` | " << m.students << " of " << m.checked << " | "
+         << md_cell_of(bounded_text(who, 200)) << " | "
+         << (m.common_fix.empty() ? std::string("-")
+                                  : "(" + std::to_string(m.common_fix_students) + " of " + std::to_string(m.students) +
+                                        ") " + md_cell_of(bounded_text(m.common_fix, 300)))
+         << " |\n";
+    }
+  }
   md << "\n## Each student in words\n\n";
   for (const auto& s : view.students) {
     md << "- **" << md_inline(s.row->name) << "**" << (s.language.empty() ? "" : " (" + s.language + ")") << ": ";

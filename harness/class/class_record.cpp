@@ -4,6 +4,7 @@
 #include "harness/reports/report.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -173,6 +174,74 @@ StudentResult student_result(const ClassRow& row) {
   return s;
 }
 
+namespace {
+
+// A first fix as a grouping key: the student's own names (their implementation, its file) and the
+// numbers (inputs, residuals) left out, so that two students told the same fix group together.
+std::string fix_key(const std::string& fix, const std::string& name) {
+  std::string out;
+  for (std::size_t i = 0; i < fix.size();) {
+    if (!name.empty() && fix.compare(i, name.size(), name) == 0) {
+      out += "~";
+      i += name.size();
+      while (i < fix.size() && (std::isalnum(static_cast<unsigned char>(fix[i])) || fix[i] == '.' || fix[i] == '_')) ++i;
+    } else if (std::isdigit(static_cast<unsigned char>(fix[i])) ||
+               (fix[i] == '-' && i + 1 < fix.size() && std::isdigit(static_cast<unsigned char>(fix[i + 1])))) {
+      out += "#";
+      ++i;
+      while (i < fix.size() && (std::isdigit(static_cast<unsigned char>(fix[i])) || fix[i] == '.' || fix[i] == 'e' ||
+                                fix[i] == '-' || fix[i] == '+'))
+        ++i;
+    } else {
+      out += fix[i++];
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<ClassMistake> class_mistakes(const ClassView& view) {
+  struct Seen {
+    ClassMistake m;
+    std::map<std::string, std::pair<int, std::string>> fixes;  // key -> (students, one student's words)
+  };
+  std::map<std::pair<std::string, std::string>, Seen> seen;
+  int checked = 0;
+  for (const auto& s : view.students) {
+    if (s.status != "checked") continue;
+    ++checked;
+    auto note = [&](const std::string& kind, const std::string& what, const std::string& fix) {
+      Seen& e = seen[{kind, what}];
+      e.m.kind = kind, e.m.what = what;
+      ++e.m.students;
+      e.m.who.push_back(s.row->name);
+      if (!fix.empty()) {
+        auto& f = e.fixes[fix_key(fix, s.row->name)];
+        if (f.first++ == 0) f.second = fix;
+      }
+    };
+    for (const auto& slot : s.graded.wrong) {
+      const auto why = s.graded.why_wrong.find(slot);
+      note("slot", slot, why == s.graded.why_wrong.end() ? std::string() : why->second);
+    }
+    for (const auto& c : s.graded.claims)
+      if (c.status == "FALSE CLAIM" || c.status == "DOES NOT CONVERGE") note("claim", c.integrator + " " + c.claim, "");
+  }
+  std::vector<ClassMistake> out;
+  for (auto& [key, e] : seen) {
+    e.m.checked = checked;
+    std::sort(e.m.who.begin(), e.m.who.end());
+    for (const auto& [k, f] : e.fixes)
+      if (f.first > e.m.common_fix_students) e.m.common_fix_students = f.first, e.m.common_fix = f.second;
+    out.push_back(std::move(e.m));
+  }
+  std::stable_sort(out.begin(), out.end(), [](const ClassMistake& a, const ClassMistake& b) {
+    return a.students != b.students ? a.students > b.students : a.what < b.what;
+  });
+  return out;
+}
+
 ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) {
   ClassView view;
   std::vector<StudentResult> results;
@@ -235,6 +304,7 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
     }
     view.students.push_back(std::move(s));
   }
+  view.mistakes = class_mistakes(view);
   return view;
 }
 

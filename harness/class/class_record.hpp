@@ -74,12 +74,29 @@ struct StudentView {
   std::map<std::string, AreaCell> areas;
   std::string report_link;  // "<name>/report.md", or "" when there is no report
 };
+// What the class got wrong (the lecture to repeat): a slot found wrong, or a claim found false, with
+// how many of the students checked, who, and the most common first fix among them (its line as
+// one of them was told; fixes are grouped with the student's own names and the numbers left out).
+struct ClassMistake {
+  std::string kind;                   // "slot" or "claim"
+  std::string what;                   // "vee", or "midpoint casimir"
+  int students = 0;                   // how many got it wrong
+  int checked = 0;                    // of how many checked (compiled and run)
+  std::vector<std::string> who;       // their names, sorted
+  std::string common_fix;             // the most common first fix (one student's words), or ""
+  int common_fix_students = 0;        // how many were told that fix
+};
+
 struct ClassView {
   std::vector<std::string> assignment;  // the slots the grades count (resolve_assignment)
   bool assignment_from_rubric = false;  // false: every slot a student of the class provides
   std::vector<StudentView> students;    // in the rows' order
   std::string no_grades;                // not empty: the rubric leaves this class nothing to grade (why)
+  std::vector<ClassMistake> mistakes;   // most students first, then by name
 };
+
+// What the class got wrong, from its decided students (decide_class fills view.mistakes with it).
+std::vector<ClassMistake> class_mistakes(const ClassView& view);
 
 // `rows` must outlive the view. When the rubric leaves the class nothing to grade, every student
 // gets no grade and `no_grades` says why.
