@@ -5,12 +5,15 @@
 #include "harness/class/class_mode.hpp"
 #include "harness/class/class_html.hpp"
 #include "harness/class/class_record.hpp"
+#include "harness/class/feedback_files.hpp"
 
 #include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 using namespace gm::harness;
 using nlohmann::json;
@@ -221,4 +224,39 @@ TEST(ClassRecord, WhatTheClassGotWrongCountsStudentsAndTheCommonFix) {
   EXPECT_TRUE(f.mistakes.empty());
   EXPECT_EQ(class_summary_html(f, ClassPage{"class", "(default rubric)", {}, false}).find("What the class got wrong"),
             std::string::npos);
+}
+
+// Issue 57: feedback where students read it. A class folder unzipped from Moodle's download has a
+// folder per student named "Full Name_12345_assignsubmission_file_": the page goes into a folder of
+// that name; from Canvas's, files named "lastfirst_12345_67890_...": the page keeps that prefix. Any
+// other name: NAME.html, said to be no LMS's. A roster student with nothing handed in gets no page.
+TEST(FeedbackFiles, NamedForTheLmsBulkUploadAndSelfContained) {
+  EXPECT_EQ(feedback_name("Ada Lovelace_657737_assignsubmission_file_").path,
+            "Ada Lovelace_657737_assignsubmission_file_/geomech-feedback.html");
+  EXPECT_EQ(feedback_name("Ada Lovelace_657737_assignsubmission_file_").lms, "Moodle");
+  EXPECT_EQ(feedback_name("lovelaceada_12345_67890_rigid_body").path, "lovelaceada_12345_67890_geomech-feedback.html");
+  EXPECT_EQ(feedback_name("lovelaceada_LATE_12345_67890_rigid").path, "lovelaceada_LATE_12345_67890_geomech-feedback.html");
+  EXPECT_EQ(feedback_name("lovelaceada_LATE_12345_67890_rigid").lms, "Canvas");
+  EXPECT_EQ(feedback_name("wrong_vee").path, "wrong_vee.html");  // the control: no LMS's name
+  EXPECT_EQ(feedback_name("wrong_vee").lms, "");
+  EXPECT_EQ(feedback_name("bob_2_3").lms, "") << "too short to be Canvas's: name, user id, submission id, then the file";
+
+  std::vector<ClassRow> rows{checked_row("Ada Lovelace_657737_assignsubmission_file_", {"hat", "vee"}, 1),
+                             checked_row("lovelaceada_12345_67890_rigid", {"hat", "vee"}), no_submission_row("carol")};
+  rows[0].report["first_fix"].push_back({{"slot", "vee"}, {"line", "Python function 'vee' in rigid.py is wrong: at m = ..."}});
+  const ClassView v = decide_class(rows, Rubric{});
+  const fs::path dir = scratch("feedback");
+  const auto said = write_feedback_files(v, dir.string());
+  ASSERT_EQ(said.size(), 2u);
+  EXPECT_NE(said[0].find("1 in folders named as Moodle's"), std::string::npos) << said[0];
+  const fs::path moodle = dir / "Ada Lovelace_657737_assignsubmission_file_" / "geomech-feedback.html";
+  ASSERT_TRUE(fs::exists(moodle));
+  ASSERT_TRUE(fs::exists(dir / "lovelaceada_12345_67890_geomech-feedback.html"));
+  EXPECT_FALSE(fs::exists(dir / "carol.html")) << "nothing handed in, nothing to attach to";
+  std::ifstream in(moodle);
+  const std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_NE(page.find("Python function &#39;vee&#39; in rigid.py is wrong"), std::string::npos) << page;
+  EXPECT_NE(page.find("geomech check Ada Lovelace_657737_assignsubmission_file_.py"), std::string::npos)
+      << "the command the student runs";
+  EXPECT_EQ(page.find(dir.string()), std::string::npos) << "no grader path";
 }

@@ -633,6 +633,9 @@ int main(int argc, char** argv) {
     app.add_option("--grades", g.csv, "write a gradebook CSV for Moodle or Canvas (docs/GRADEBOOK.md)");
     app.add_option("--rubric", g.rubric, "the rubric of --grades, JSON (default: partial credit per correct slot)");
     app.add_option("--roster", g.roster, "CSV: implementation name -> the identifiers the LMS matches students on");
+    app.add_option("--feedback-dir", g.feedback_dir,
+                   "DIR: one feedback page per student, named for Moodle's or Canvas's bulk upload when the class "
+                   "folder came from their download (docs/GRADEBOOK.md)");
   };
   add_grade_options(*klass, class_opts.grades);
   std::vector<std::string> merge_dirs;

@@ -2,6 +2,7 @@
 #include "harness/class/class_console.hpp"
 #include "harness/class/class_html.hpp"
 #include "harness/class/class_record.hpp"
+#include "harness/class/feedback_files.hpp"
 #include "harness/class/grader_machine.hpp"
 #include "harness/remote/remote_subject.hpp"
 #include "harness/remote/slot_names.hpp"
@@ -275,6 +276,7 @@ namespace {
 // the students who handed nothing in, with or without --grades.
 struct Grades {
   std::string csv;  // empty: no gradebook file
+  std::string feedback_dir;  // empty: no feedback files (harness/class/feedback_files.hpp)
   Rubric rubric;
   std::optional<Roster> roster;
 };
@@ -290,6 +292,7 @@ std::string read_text(const std::string& path, const char* what) {
 Grades load_grades(const GradeOptions& g) {
   Grades out;
   out.csv = g.csv;
+  out.feedback_dir = g.feedback_dir;
   if (!g.rubric.empty()) out.rubric = parse_rubric(read_text(g.rubric, "rubric"), g.rubric);
   if (!g.roster.empty()) out.roster = parse_roster(read_text(g.roster, "roster"), g.roster);
   return out;
@@ -434,6 +437,10 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
     else write_file_atomically(grades.csv, csv);
   }
   if (!final) return bad == 0 ? 0 : 1;
+  // Feedback where students read it, once the class is complete (never a page of a run cut short).
+  if (!grades.feedback_dir.empty())
+    for (const auto& line : write_feedback_files(view, grades.feedback_dir))
+      std::cout << "feedback: " << grades.feedback_dir << ": " << line << "\n";
   if (!grades.csv.empty() && !view.no_grades.empty())
     throw std::runtime_error("no gradebook written: " + view.no_grades + " (the summaries are written)");
   std::cout << console.str() << "\nsummary: " << report_dir << "/summary.md and summary.html; one report per implementation in "

@@ -31,6 +31,7 @@ struct GradeOptions {
   std::string csv;     // --grades FILE.csv
   std::string rubric;  // --rubric FILE.json (default: partial credit per correct slot)
   std::string roster;  // --roster FILE.csv (implementation name -> the LMS's identifiers)
+  std::string feedback_dir;  // --feedback-dir DIR: one page per student, named for the LMS's bulk upload
 };
 
 struct ClassOptions {
