@@ -178,4 +178,18 @@ file(READ ${OUT}/full/summary.md rechecked)
 if(NOT rechecked STREQUAL full)
   message(FATAL_ERROR "after --not-checked the summary should be the uninterrupted run's:\n${rechecked}\n---\n${full}")
 endif()
+# Issue 57's defects: a refused rubric leaves no report folder behind; the roster's warnings reach
+# the summary (a student with no roster row is graded under their implementation's name).
+file(WRITE ${OUT}/bad_rubric.json "{\"slots\": {\"vei\": 1}}")
+run_class(${OUT}/refused "GEOMECH_UNUSED=1" 2 --rubric ${OUT}/bad_rubric.json)
+if(EXISTS ${OUT}/refused OR NOT out MATCHES "vei")
+  message(FATAL_ERROR "a refused rubric should name its slot and leave no report folder:\n${out}")
+endif()
+file(WRITE ${OUT}/roster.csv "name,full_name,username,email,id_number\nwrong_vee,W V,wv,wv@uni.example,S1\n"
+                             "numpy_double_only,N D,nd,nd@uni.example,S2\nbug_elementwise,B E,be,be@uni.example,S3\n")
+run_class(${OUT}/full "GEOMECH_UNUSED=1" 1 --roster ${OUT}/roster.csv)
+file(READ ${OUT}/full/summary.md rostered)
+if(NOT rostered MATCHES "## Roster\n\n- \"octave_folder\" has no roster row")
+  message(FATAL_ERROR "the summary should carry the roster's warning about octave_folder:\n${rostered}")
+endif()
 message(STATUS "private folder checked; interrupted twice and resumed to the same summary and gradebook; regraded")

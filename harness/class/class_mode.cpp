@@ -408,6 +408,21 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
       console << "\n" << inert_text(s.row->name) << ": GRADER ERROR (no grade): " << inert_text(fault) << "\n";
     }
   }
+  // The roster's warnings (a student with no roster row is graded under their implementation's
+  // name, which the LMS may not match): in the summary, where the lecturer reads, not only on the
+  // console. A roster row matching no implementation is a NO SUBMISSION row already.
+  if (grades.roster) {
+    std::vector<StudentResult> named;
+    for (const auto& s : view.students) named.push_back(s.graded);
+    std::vector<std::string> warnings;
+    for (const auto& w : roster_warnings(named, *grades.roster))
+      if (w.find("matches no implementation") == std::string::npos) warnings.push_back(w);
+    if (!warnings.empty()) {
+      md << "## Roster\n\n";
+      for (const auto& w : warnings) md << "- " << md_cell_of(w) << "\n";
+      md << "\n";
+    }
+  }
   write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
   ClassPage page;
   page.class_name = st.class_dir;
@@ -479,11 +494,13 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     }
   auto impls = shard_of(all_impls, o.shard_k, o.shard_n);
   const std::string report_dir = o.report_dir.empty() ? default_class_report_dir(o.dir) : o.report_dir;
+  // A bad rubric or roster is said before anything runs, and before the report folder is made (a
+  // refused rubric leaves no empty report folder behind).
+  const auto grades = load_grades(o.grades);
   std::error_code ec;
   fs::create_directories(report_dir, ec);
   if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
 
-  const auto grades = load_grades(o.grades);  // a bad rubric is said before anything runs
   // The roster's students with nothing in the class folder get a row each (0, "no submission"), in
   // a run of the whole class (a shard does not know the other shards' names; merge-class adds them).
   std::vector<std::string> no_submission;
