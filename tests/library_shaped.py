@@ -11,9 +11,11 @@ file using the engine says `// geomech: pkg fakeengine` and nothing else. It is 
                GEOMECH_LIBRARY_ROOTS (never a compile error);
   - untrusted, GEOMECH_LIBRARY_ROOTS=OUT/root: the sandboxed build reads the engine there, passes.
 The engine computes the energy (3.4) itself, so the check's verdict is the engine's: its control is
-the same file with the engine's energy off by a factor 2, which must FAIL in both modes.
+the same file with the engine's energy off by a factor 2, which must FAIL in both modes, and
+every replay command it prints, run as printed, must FAIL again.
 """
 import os
+import shlex
 import shutil
 import subprocess
 import sys
@@ -89,6 +91,7 @@ with open(student, "w") as f:
 os.chmod(student, 0o644)
 env = {"PKG_CONFIG_PATH": os.path.join(root, "lib", "pkgconfig")}
 prop = ["-p", "definition_hamiltonian_3_4", "--scalar", "double"]
+replayed = []
 
 
 def verdict(console):
@@ -119,8 +122,20 @@ write("include/fakeengine/engine.hpp", engine_header("4"))
 for mode, extra, e in (("trusted", [], env), ("untrusted", ["--untrusted"], env_root)):
     rc, console = run(["check", student, "--cache-dir", os.path.join(OUT, "cache-" + mode)] + extra + prop, e)
     check(rc == 1 and "FAIL" in verdict(console), "%s control: an engine off by 2 should FAIL (exit %d):\n%s" % (mode, rc, console[-3000:]))
+    # The replay command printed, run as printed in the same shell (no flag added), fails again.
+    replays = sorted({line.split("reproduce:", 1)[1].strip() for line in console.splitlines() if "reproduce:" in line})
+    check(len(replays) > 0, "%s control: no replay command printed:\n%s" % (mode, console[-3000:]))
+    replayed.extend(replays)
+    for replay in replays:
+        replay = replay.replace("geomech check ", shlex.quote(GEOMECH) + " check ", 1)
+        p = subprocess.run(["sh", "-c", replay], capture_output=True, text=True, errors="replace", timeout=900,
+                           env=dict(os.environ, **e))
+        check(p.returncode == 1 and "FAIL" in verdict(p.stdout + p.stderr),
+              "%s control: the replay command did not fail again (exit %d):\n%s\n%s" % (mode, p.returncode, replay,
+                                                                                           (p.stdout + p.stderr)[-3000:]))
 
 if failures:
     print("\n\n".join("FAILED: " + f for f in failures))
     sys.exit(1)
-print("a library-shaped engine is checked trusted and untrusted with no flag written by hand")
+print("a library-shaped engine is checked trusted and untrusted with no flag written by hand; %d replay commands "
+      "run as printed failed again:\n%s" % (len(replayed), "\n".join(replayed)))
