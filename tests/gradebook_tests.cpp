@@ -209,6 +209,24 @@ TEST(Gradebook, FeedbackIsOneShortLine) {
   EXPECT_EQ(score.feedback.substr(score.feedback.size() - end.size()), end) << score.feedback;
 }
 
+// The cut never splits a quoted name (issue 57: "'manakov ..." lost the function's name): wherever
+// the cut falls in a first fix, its quotes stay paired, and a name cut into is kept whole.
+TEST(Gradebook, TheFeedbackCutKeepsAFunctionsName) {
+  const std::vector<std::string> slots = {"manakov_Omega"};
+  int whole = 0;
+  for (int pad = 0; pad < 200; pad += 3) {
+    auto s = checked("dave", slots, slots);
+    s.first_fix = std::string(pad, 'w') + " Octave function 'manakov_Omega' in dave/manakov_Omega.m is wrong: at Pi = " +
+                  std::string(300, '9') + " it returns the transpose";
+    const std::string f = score_student(s, Rubric{}, slots).feedback;
+    EXPECT_LE(f.size(), 400u);
+    EXPECT_EQ(std::count(f.begin(), f.end(), '\''), f.find("'manakov_Omega'") == std::string::npos ? 0 : 2)
+        << "pad " << pad << ": " << f;
+    whole += f.find("function 'manakov_Omega'") != std::string::npos;
+  }
+  EXPECT_GT(whole, 0);  // the name is kept where the cut reaches it
+}
+
 // Issue 49: "slots 11/12" beside a weighted 92.31 read as a mistake. The feedback says the grade, the
 // count and the weight together, and the weight of what is wrong.
 TEST(Gradebook, FeedbackSaysCountsAndWeightsTogether) {
@@ -274,7 +292,7 @@ TEST(Gradebook, RubricErrorsNameTheFileAndTheKey) {
   const auto err = [](const char* json) { return error_of([&] { parse_rubric(json, "rubric.json"); }); };
   EXPECT_EQ(err(R"({"pionts": 10})"),
             "rubric \"rubric.json\": key \"pionts\": unknown key; expected item, points, format, feedback, slots, "
-            "assignment, areas, claims_weight or claims");
+            "assignment, areas, claims_weight, claims or visibility");
   EXPECT_EQ(err(R"({"slots": {"hamiltonian_3_4": -1}})"), "rubric \"rubric.json\": key \"slots.hamiltonian_3_4\": expected a number >= 0, got -1");
   EXPECT_EQ(err(R"({"claims": {"order": "two"}})"),
             "rubric \"rubric.json\": key \"claims.order\": expected a number >= 0, got \"two\"");

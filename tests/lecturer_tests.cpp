@@ -120,6 +120,69 @@ TEST(Autograder, ResultsRenderTheDecidedStudentInEachFormat) {
   EXPECT_EQ(gs2["tests"].back()["name"], "it compiles");
 }
 
+// Hidden tests (issue 57): the rubric's visibility reaches each platform's tests, and nothing the
+// student sees now names a hidden slot: not a test, not the overall words, not the whole report.
+TEST(Autograder, HiddenTestsAreNotShownAndTheirPointsCount) {
+  std::vector<ClassRow> rows{checked_row("bob", {"hat", "vee", "casimir"}, 1)};
+  rows[0].report["first_fix"] = json::array({{{"slot", "casimir"}, {"property", "definition_casimir"}, {"scalar", "mp50"},
+                                              {"line", "Python function 'casimir' in bob.py is wrong: ..."}}});
+  const std::string assignment = R"("points": 20, "assignment": ["hat", "vee", "casimir", "euler_3_8"], "slots": {"casimir": 2})";
+  const Rubric r = parse_rubric("{" + assignment + R"(, "visibility": {"casimir": "after_due_date", "euler_3_8": "hidden"}})",
+                                "week.json");
+  const ClassView v = decide_class(rows, r);
+  const json gs = gradescope_results(v.students[0], "# report naming casimir\n");
+  EXPECT_EQ(gs.at("score"), 8.0);  // the hidden tests count in the score
+  EXPECT_EQ(gs["tests"][0]["visibility"], "visible");
+  EXPECT_EQ(gs["tests"][2]["visibility"], "after_due_date");
+  EXPECT_EQ(gs["tests"][3]["visibility"], "hidden");
+  EXPECT_EQ(gs["tests"].back()["name"], "the whole report (report.md)");
+  EXPECT_EQ(gs["tests"].back()["visibility"], "hidden");  // it names every check: withheld as the most withheld
+  const std::string words = gs["output"].get<std::string>();
+  EXPECT_EQ(words.find("casimir"), std::string::npos) << words;
+  EXPECT_EQ(words.find("euler_3_8"), std::string::npos) << words;
+  EXPECT_EQ(words.find("FAIL"), std::string::npos) << words;
+  EXPECT_NE(words.find("The tests shown now: 2 of 2 passed (8.00 of 8.00 points)."), std::string::npos) << words;
+  EXPECT_NE(words.find("2 tests are hidden from students; they count in the score."), std::string::npos) << words;
+  const json pl = prairielearn_results(v.students[0], "# report naming casimir\n");
+  // PrairieLearn has no visibility per test: hidden ones are left out, their points in one unnamed row.
+  ASSERT_EQ(pl["tests"].size(), 3u);
+  EXPECT_EQ(pl["tests"][2]["name"], "2 tests hidden from students");
+  EXPECT_EQ(pl["tests"][2]["max_points"], 12.0);
+  EXPECT_NEAR(pl.at("score").get<double>(), 0.4, 1e-12);
+  EXPECT_EQ(pl.dump().find("casimir"), std::string::npos) << pl.dump();
+  EXPECT_EQ(pl.dump().find("FAIL"), std::string::npos) << pl.dump();
+  // The control: without "visibility" every test is visible, and the words name the wrong slot.
+  const Rubric open_rubric = parse_rubric("{" + assignment + "}", "week.json");
+  const ClassView o = decide_class(rows, open_rubric);
+  const json gs_open = gradescope_results(o.students[0], "# report naming casimir\n");
+  EXPECT_EQ(gs_open["tests"][2]["visibility"], "visible");
+  EXPECT_NE(gs_open["output"].get<std::string>().find("casimir"), std::string::npos);
+  EXPECT_EQ(prairielearn_results(o.students[0], "").at("tests").size(), 4u);
+}
+
+// A refused rubric names every error, each with its key, not only the first.
+TEST(Rubric, ARefusalNamesEveryError) {
+  try {
+    parse_rubric(R"({"points": -1, "slots": {"casimr": 1, "hatt": 2}, "visibility": {"casimir": "later"}, "colour": 1})",
+                 "week.json");
+    FAIL() << "the rubric was accepted";
+  } catch (const std::runtime_error& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("rubric \"week.json\" has 5 errors:", 0), 0u) << m;
+    for (const char* key : {"key \"points\"", "key \"slots.casimr\"", "key \"slots.hatt\"", "key \"visibility.casimir\"",
+                            "key \"colour\""})
+      EXPECT_NE(m.find(key), std::string::npos) << key << " in " << m;
+    EXPECT_NE(m.find("did you mean \"casimir\""), std::string::npos) << m;
+  }
+  // One error reads as before: one line.
+  try {
+    parse_rubric(R"({"slots": {"casimr": 1}})", "week.json");
+    FAIL() << "the rubric was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+  }
+}
+
 TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
   const fs::path root = scratch("layout");
   write_file(root / "py" / "mine.py", "def hat(v): pass\n");

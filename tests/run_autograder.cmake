@@ -14,27 +14,34 @@ set(checks --scalar double -p definition_hat -p definition_vee -p definition_ome
            -p definition_hamiltonian_3_4 -p definition_casimir -p definition_reconstruction_2_10
            -p definition_spatial_momentum -p definition_manakov_M -p definition_manakov_Omega -p definition_manakov_2_34
            -p integrator_order)
-execute_process(COMMAND ${GEOMECH} autograder ${PLATFORM} ${OUT}/ag --rubric ${examples}/rubric.json ${checks}
-                RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT status EQUAL 0)
-  message(FATAL_ERROR "geomech autograder ${PLATFORM} failed (${status}):\n${out}${err}")
-endif()
-message("${out}")
+foreach(bundle ag ag-hidden)
+  set(rubric ${examples}/rubric.json)
+  if(bundle STREQUAL "ag-hidden")
+    set(rubric ${examples}/rubric-hidden.json)
+  endif()
+  execute_process(COMMAND ${GEOMECH} autograder ${PLATFORM} ${OUT}/${bundle} --rubric ${rubric} ${checks}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "geomech autograder ${PLATFORM} (${rubric}) failed (${status}):\n${out}${err}")
+  endif()
+  message("${out}")
+endforeach()
+set(bundle ag)
 
 # Each submission: NAME, its files, the grade expected (of 20) and a text its results must hold.
 function(grade name expect_score expect_text)
-  set(root ${OUT}/root-${name})
+  set(root ${OUT}/root-${bundle}-${name})
   if(PLATFORM STREQUAL "gradescope")
     set(sub ${root}/autograder/submission)
     file(MAKE_DIRECTORY ${root}/autograder/source ${sub})
     # What Gradescope does: the zip's contents in source/, run_autograder from there.
-    execute_process(COMMAND ${PYTHON3} -m zipfile -e ${OUT}/ag.zip ${root}/autograder/source RESULT_VARIABLE unzip)
+    execute_process(COMMAND ${PYTHON3} -m zipfile -e ${OUT}/${bundle}.zip ${root}/autograder/source RESULT_VARIABLE unzip)
     if(NOT unzip EQUAL 0 OR NOT EXISTS ${root}/autograder/source/run_autograder OR NOT EXISTS ${root}/autograder/source/setup.sh)
       message(FATAL_ERROR "ag.zip does not hold run_autograder and setup.sh at its root")
     endif()
     # zipfile -e does not restore modes: Gradescope's harness runs it as an executable, so check the
     # zip kept it executable, then run it as a program.
-    execute_process(COMMAND ${PYTHON3} -c "import zipfile,sys; i=zipfile.ZipFile(sys.argv[1]).getinfo('run_autograder'); sys.exit(0 if (i.external_attr >> 16) & 0o100 else 1)" ${OUT}/ag.zip
+    execute_process(COMMAND ${PYTHON3} -c "import zipfile,sys; i=zipfile.ZipFile(sys.argv[1]).getinfo('run_autograder'); sys.exit(0 if (i.external_attr >> 16) & 0o100 else 1)" ${OUT}/${bundle}.zip
                     RESULT_VARIABLE exec_bit)
     if(NOT exec_bit EQUAL 0)
       message(FATAL_ERROR "run_autograder is not executable in ag.zip")
@@ -46,7 +53,7 @@ function(grade name expect_score expect_text)
   else()
     set(sub ${root}/grade/student)
     file(MAKE_DIRECTORY ${sub})
-    file(COPY ${OUT}/ag/serverFilesCourse DESTINATION ${root}/grade)
+    file(COPY ${OUT}/${bundle}/serverFilesCourse DESTINATION ${root}/grade)
     set(script ${root}/grade/serverFilesCourse/geomech/run.sh)
     set(env GEOMECH_GRADER_ROOT=${root}/grade)
     set(results ${root}/grade/results/results.json)
@@ -107,6 +114,7 @@ function(grade name expect_score expect_text)
     message(FATAL_ERROR "${name}: results.json does not say: ${expect_text}\n${json}")
   endif()
   message(STATUS "${name}: ${PLATFORM} results valid, grade ${score}")
+  set(results ${results} PARENT_SCOPE)
 endfunction()
 
 # alice: every assigned slot right, her order claim verified: full marks.
@@ -122,4 +130,31 @@ if(PLATFORM STREQUAL "gradescope")
 else()
   grade(gina "not gradable" "does not compile" gina.cpp)
 endif()
-message(STATUS "${PLATFORM}: autograder written, four submissions graded, every results.json valid")
+
+# Hidden tests (examples/class/rubric-hidden.json): dave's wrong manakov_Omega and manakov_2_34 are
+# shown after the due date (the order claim never, but dave makes no claim), and so is the whole
+# report. Same grade; nothing a student sees now names them.
+set(bundle ag-hidden)
+grade(dave 13.33 "they count in the score" dave)
+execute_process(COMMAND ${PYTHON3} -c [=[
+import json, sys
+platform, path = sys.argv[1:3]
+r = json.load(open(path))
+hidden = ("manakov_Omega", "manakov_2_34")
+if platform == "gradescope":
+    levels = {t["name"].split(":")[0]: t.get("visibility") for t in r["tests"]}
+    want = {"slot manakov_Omega": "after_due_date", "slot manakov_2_34": "after_due_date",
+            "the whole report (report.md)": "after_due_date"}
+    wrong = ["%s is %s, expected %s" % (k, levels.get(k), v) for k, v in want.items() if levels.get(k) != v]
+    shown = [r.get("output", "")] + [t.get("output", "") + t["name"] for t in r["tests"] if t.get("visibility") == "visible"]
+else:
+    wrong = ["the test %s is listed" % t["name"] for t in r["tests"] if t["name"] in hidden]
+    shown = [json.dumps(r)]
+wrong += ["a visible text names %s: %s" % (h, s[:300]) for s in shown for h in hidden if h in s]
+print(chr(10).join(wrong))
+sys.exit(1 if wrong else 0)
+]=] ${PLATFORM} ${results} RESULT_VARIABLE leak OUTPUT_VARIABLE said)
+if(NOT leak EQUAL 0)
+  message(FATAL_ERROR "hidden tests are shown on ${PLATFORM} (${results}):\n${said}")
+endif()
+message(STATUS "${PLATFORM}: autograder written, four submissions graded, every results.json valid; hidden tests hidden")

@@ -144,6 +144,49 @@ std::string summary_text(const StudentView& s) {
   return os.str();
 }
 
+// Hidden tests (the rubric's "visibility"): the most withheld level among the grade's items, "" when
+// every item is visible. The whole report and the overall words name every check, so they are
+// withheld as long as the most withheld item is.
+std::string withheld_level(const StudentView& s) {
+  int most = 0;
+  for (const auto& i : s.score.items)
+    for (int k = 1; k < static_cast<int>(kVisibilityLevels.size()); ++k)
+      if (i.visibility == kVisibilityLevels[k]) most = std::max(most, k);
+  return most == 0 ? "" : kVisibilityLevels[most];
+}
+
+std::string withheld_until(const std::string& level) {
+  if (level == "after_due_date") return "until after the due date";
+  if (level == "after_published") return "until the grades are published";
+  return "from students";
+}
+
+// The overall words when some tests are hidden: only what the visible tests say, and how many are not
+// shown (their points count in the score). Nothing here names a hidden slot or claim, and no first fix
+// or replay command of the whole check is given (either could be a hidden test's).
+std::string shown_summary(const StudentView& s, const std::string& level) {
+  if (s.status != "checked") return summary_text(s);
+  int shown = 0, shown_passed = 0, hidden = 0;
+  double points = 0, max_points = 0;
+  const ScoreItem* first_wrong = nullptr;
+  for (const auto& i : s.score.items) {
+    if (i.visibility != "visible") {
+      ++hidden;
+      continue;
+    }
+    ++shown, points += i.points, max_points += i.max_points;
+    if (passed(i)) ++shown_passed;
+    else if (!first_wrong && i.kind == ScoreItem::Kind::Slot && i.state == "wrong") first_wrong = &i;
+  }
+  std::ostringstream os;
+  os << "The tests shown now: " << shown_passed << " of " << shown << " passed (" << format_points(points) << " of "
+     << format_points(max_points) << " points).\n"
+     << hidden << (hidden == 1 ? " test is" : " tests are") << " hidden " << withheld_until(level)
+     << "; " << (hidden == 1 ? "it counts" : "they count") << " in the score.";
+  if (first_wrong) os << "\nFirst fix among the tests shown: " << first_wrong->name << ": " << first_wrong->detail;
+  return os.str();
+}
+
 void write_text(const fs::path& p, const std::string& text, bool executable = false) {
   write_file_atomically(p.string(), text);
   if (executable) fs::permissions(p, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
@@ -171,8 +214,9 @@ json gradescope_results(const StudentView& s, const std::string& report_md) {
                      {"status", passed(i) ? "passed" : "failed"},
                      {"output", item_output(s, i)},
                      {"output_format", "text"},
-                     {"visibility", "visible"}});
+                     {"visibility", i.visibility}});
   }
+  const std::string withheld = withheld_level(s);
   if (s.status == "does not compile")
     tests.push_back({{"name", "it compiles"}, {"status", "failed"}, {"output", keep_ends(for_student(s.row->build_message), 60000)},
                      {"output_format", "text"}, {"visibility", "visible"}});
@@ -181,10 +225,10 @@ json gradescope_results(const StudentView& s, const std::string& report_md) {
                      {"status", s.result == "PASS" ? "passed" : "failed"},
                      {"output", keep_ends(report_md, 200000)},
                      {"output_format", "md"},
-                     {"visibility", "visible"}});
+                     {"visibility", withheld.empty() ? "visible" : withheld}});
   json out;
   out["score"] = s.score.points;
-  out["output"] = summary_text(s);
+  out["output"] = withheld.empty() ? summary_text(s) : shown_summary(s, withheld);
   out["output_format"] = "text";
   out["visibility"] = "visible";
   out["stdout_visibility"] = "hidden";  // the console names the grader's folders; the student's output is above
@@ -213,9 +257,22 @@ json prairielearn_results(const StudentView& s, const std::string& report_md) {
     return out;
   }
   out["score"] = s.score.max_points > 0 ? std::clamp(s.score.points / s.score.max_points, 0.0, 1.0) : 0.0;
-  out["output"] = keep_ends(summary_text(s) + (report_md.empty() ? "" : "\n\n" + report_md), 400000);
+  // PrairieLearn's results have no visibility per test (AUTOGRADERS.md): a test not visible is left
+  // out, its points in the score, and the whole report with it.
+  const std::string withheld = withheld_level(s);
+  if (withheld.empty())
+    out["output"] = keep_ends(summary_text(s) + (report_md.empty() ? "" : "\n\n" + report_md), 400000);
+  else
+    out["output"] = shown_summary(s, withheld), out["message"] = s.score.headline.substr(0, s.score.headline.find(':')) +
+                                                                 "; some tests are hidden " + withheld_until(withheld);
   json tests = json::array();
+  int hidden = 0;
+  double hidden_points = 0, hidden_max = 0;
   for (const auto& i : s.score.items) {
+    if (i.visibility != "visible") {
+      ++hidden, hidden_points += i.points, hidden_max += i.max_points;
+      continue;
+    }
     std::string description;
     if (i.kind == ScoreItem::Kind::Slot)
       if (const SlotInfo* si = slot_info(i.name)) description = std::string(si->meaning) + " (" + si->place + ")";
@@ -226,6 +283,14 @@ json prairielearn_results(const StudentView& s, const std::string& report_md) {
                      {"message", i.state},
                      {"output", item_output(s, i)}});
   }
+  // Their points in one row, named by no slot: the score shows them anyway (score minus the rows shown).
+  if (hidden > 0)
+    tests.push_back({{"name", std::to_string(hidden) + (hidden == 1 ? " test" : " tests") + " hidden " + withheld_until(withheld)},
+                     {"description", "counted in the score; shown when the lecturer releases them"},
+                     {"points", rounded(hidden_points)},
+                     {"max_points", rounded(hidden_max)},
+                     {"message", ""},
+                     {"output", ""}});
   out["tests"] = tests;
   return out;
 }

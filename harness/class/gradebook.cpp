@@ -137,8 +137,34 @@ std::string feedback_line(const std::string& head, const std::string& middle, co
   if (ends.size() + mark.size() + 8 > max_bytes)  // no room for a middle: the head is cut instead
     return join(utf8_prefix(head, max_bytes - std::min(max_bytes, tail.size() + 2 + mark.size())) + mark, tail);
   const std::size_t room = max_bytes - (ends.size() - 1) - mark.size();
-  const std::string cut = utf8_prefix(middle, room - room / 3) + mark + utf8_suffix(middle, room / 3);
-  return join(join(head, cut), tail);
+  // The cut falls between words, never inside a quoted name: a cut in 'manakov_Omega' read as a
+  // function 'manakov (issue 57). A name the cut would split is kept whole if it ends near, else
+  // the cut moves back to the word before it.
+  const std::size_t near = 64;
+  std::string first = utf8_prefix(middle, room - room / 3);
+  if (first.size() < middle.size() && std::count(first.begin(), first.end(), '\'') % 2 == 1) {
+    const std::size_t close = middle.find('\'', first.size());
+    if (close != std::string::npos && close + 1 - first.size() <= near && close + 1 + 8 <= room)
+      first = middle.substr(0, close + 1);
+    else
+      first = first.substr(0, first.rfind('\''));
+  }
+  if (first.size() < middle.size() && middle[first.size()] != ' ' && first.back() != ' ') {
+    const std::size_t space = first.rfind(' ');
+    if (space != std::string::npos && first.size() - space <= near) first = first.substr(0, space);
+  }
+  while (!first.empty() && first.back() == ' ') first.pop_back();
+  std::string last = utf8_suffix(middle, room - std::min(room, first.size()));
+  if (last.size() < middle.size() && middle[middle.size() - last.size() - 1] != ' ') {
+    const std::size_t space = last.find(' ');
+    if (space != std::string::npos && space <= near) last = last.substr(space + 1);
+  }
+  if (std::count(last.begin(), last.end(), '\'') % 2 == 1) {  // it starts inside a quoted name
+    const std::size_t open_end = last.find('\'');
+    if (open_end <= near) last = last.substr(open_end + 1);
+    while (!last.empty() && last.front() == ' ') last.erase(0, 1);
+  }
+  return join(join(head, first + mark + last), tail);
 }
 
 // 100 -> "100", 12.5 -> "12.5", 66.666 -> "66.67": a weight or a maximum as a person writes it.
@@ -155,70 +181,68 @@ std::string csv_row(const std::vector<std::string>& fields) {
   return line + "\r\n";  // RFC 4180 line break; both importers also accept it (GRADEBOOK.md)
 }
 
-}  // namespace
-
-Rubric parse_rubric(std::string_view json_text, const std::string& source) {
-  Rubric r;
-  r.source = source;
-  json doc;
-  try {
-    doc = json::parse(json_text);
-  } catch (const json::parse_error& e) {
-    throw std::runtime_error("rubric \"" + source + "\": not valid JSON: " + e.what());
-  }
-  if (!doc.is_object()) rubric_error(r, "(top level)", "expected a JSON object");
-  for (const auto& [key, v] : doc.items()) {
-    if (key == "item") {
-      if (!v.is_string()) rubric_error(r, key, "expected a string, got " + v.dump());
-      r.item = v.get<std::string>();
-    } else if (key == "points") {
-      if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() <= 0)
-        rubric_error(r, key, "expected a number > 0, got " + v.dump());
-      r.points = v.get<double>();
-    } else if (key == "format") {
-      if (v == "moodle") r.format = LmsFormat::moodle;
-      else if (v == "canvas") r.format = LmsFormat::canvas;
-      else rubric_error(r, key, "expected \"moodle\" or \"canvas\", got " + v.dump());
-    } else if (key == "feedback") {
-      if (!v.is_boolean()) rubric_error(r, key, "expected true or false, got " + v.dump());
-      r.feedback = v.get<bool>();
-    } else if (key == "slots" || key == "claims") {
-      const bool slots = key == "slots";
-      for (const auto& [name, w] : read_object(r, v, key).items()) {
-        const double weight = read_weight(r, w, key + "." + name);
-        if (name != "default") (slots ? check_slot_name : check_claim_name)(r, key + "." + name, name);
-        if (name == "default") (slots ? r.slot_default : r.claim_default) = weight;
-        else (slots ? r.slot_weights : r.claim_weights)[name] = weight;
-      }
-    } else if (key == "areas") {
-      for (const auto& [name, w] : read_object(r, v, key).items()) {
-        if (std::find(kKnownAreas.begin(), kKnownAreas.end(), name) == kKnownAreas.end())
-          rubric_error(r, key + "." + name, "unknown area; expected one of \"sec. 1\", \"sec. 2\", "
-                                            "\"sec. 3\", \"momentum maps\", \"integrators\"");
-        r.area_weights[name] = read_weight(r, w, key + "." + name);
-      }
-    } else if (key == "claims_weight") {
-      r.claims_weight = read_weight(r, v, key);
-    } else if (key == "assignment") {
-      if (!v.is_array() || v.empty()) rubric_error(r, key, "expected a non-empty list of slot names");
-      std::vector<std::string> slots;
-      for (const auto& s : v) {
-        if (!s.is_string() || s.get<std::string>().empty())
-          rubric_error(r, key, "expected slot names as non-empty strings, got " + s.dump());
-        if (std::find(slots.begin(), slots.end(), s.get<std::string>()) != slots.end())
-          rubric_error(r, key, "slot " + s.dump() + " is listed twice");
-        check_slot_name(r, key, s.get<std::string>());
-        slots.push_back(s.get<std::string>());
-      }
-      r.assignment = slots;
-    } else {
-      rubric_error(r, key, "unknown key; expected item, points, format, feedback, slots, assignment, "
-                           "areas, claims_weight or claims");
+// The keys that hold one value (item, points, format, feedback, claims_weight, assignment).
+void read_plain_key(Rubric& r, const std::string& key, const json& v) {
+  if (key == "item") {
+    if (!v.is_string()) rubric_error(r, key, "expected a string, got " + v.dump());
+    r.item = v.get<std::string>();
+  } else if (key == "points") {
+    if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() <= 0)
+      rubric_error(r, key, "expected a number > 0, got " + v.dump());
+    r.points = v.get<double>();
+  } else if (key == "format") {
+    if (v == "moodle") r.format = LmsFormat::moodle;
+    else if (v == "canvas") r.format = LmsFormat::canvas;
+    else rubric_error(r, key, "expected \"moodle\" or \"canvas\", got " + v.dump());
+  } else if (key == "feedback") {
+    if (!v.is_boolean()) rubric_error(r, key, "expected true or false, got " + v.dump());
+    r.feedback = v.get<bool>();
+  } else if (key == "claims_weight") {
+    r.claims_weight = read_weight(r, v, key);
+  } else if (key == "assignment") {
+    if (!v.is_array() || v.empty()) rubric_error(r, key, "expected a non-empty list of slot names");
+    std::vector<std::string> slots;
+    for (const auto& s : v) {
+      if (!s.is_string() || s.get<std::string>().empty())
+        rubric_error(r, key, "expected slot names as non-empty strings, got " + s.dump());
+      if (std::find(slots.begin(), slots.end(), s.get<std::string>()) != slots.end())
+        rubric_error(r, key, "slot " + s.dump() + " is listed twice");
+      check_slot_name(r, key, s.get<std::string>());
+      slots.push_back(s.get<std::string>());
     }
+    r.assignment = slots;
+  } else {
+    rubric_error(r, key, "unknown key; expected item, points, format, feedback, slots, assignment, "
+                         "areas, claims_weight, claims or visibility");
   }
-  check_item(r);
-  // Reject weights that leave nothing to earn. With an explicit assignment the
-  // slot maximum is known now; otherwise any positive slot weight may count.
+}
+
+// "visibility": {"casimir": "after_due_date", "energy": "hidden", "default": "visible"}: a slot, a
+// claim or an area, and when its test is shown to the student by an autograder (AUTOGRADERS.md).
+void read_visibility(Rubric& r, const std::string& key, const std::string& name, const json& level) {
+  const std::vector<std::string> levels(kVisibilityLevels.begin(), kVisibilityLevels.end());
+  if (!level.is_string() || std::find(levels.begin(), levels.end(), level.get<std::string>()) == levels.end())
+    rubric_error(r, key, "expected \"visible\", \"after_due_date\", \"after_published\" or \"hidden\", got " +
+                             level.dump() + (level.is_string() ? did_you_mean(level.get<std::string>(), levels) : ""));
+  if (name == "default") {
+    r.visibility_default = level.get<std::string>();
+    return;
+  }
+  const std::vector<std::string> slots = slot_name_list(), claims = claim_name_list();
+  const bool known = std::find(slots.begin(), slots.end(), name) != slots.end() ||
+                     std::find(claims.begin(), claims.end(), name) != claims.end() ||
+                     std::find(kKnownAreas.begin(), kKnownAreas.end(), name) != kKnownAreas.end();
+  if (!known) {
+    std::vector<std::string> all = slots;
+    all.insert(all.end(), claims.begin(), claims.end());
+    all.insert(all.end(), kKnownAreas.begin(), kKnownAreas.end());
+    rubric_error(r, key, "\"" + name + "\" is not a slot, a claim or an area" + did_you_mean(name, all) +
+                             "; `geomech slots` lists the slot names");
+  }
+  r.visibility[name] = level.get<std::string>();
+}
+
+void check_maximum(const Rubric& r) {
   double slot_max = 0;
   if (r.assignment) {
     for (const auto& s : *r.assignment) slot_max += weight_of(r.slot_weights, r.slot_default, s);
@@ -231,6 +255,72 @@ Rubric parse_rubric(std::string_view json_text, const std::string& source) {
   if (slot_max + area_max + r.claims_weight <= 0)
     rubric_error(r, r.assignment ? "assignment" : "slots",
                  "the weights make the maximum grade 0; give a slot, an area or claims_weight a positive weight");
+}
+
+}  // namespace
+
+Rubric parse_rubric(std::string_view json_text, const std::string& source) {
+  Rubric r;
+  r.source = source;
+  json doc;
+  try {
+    doc = json::parse(json_text);
+  } catch (const json::parse_error& e) {
+    throw std::runtime_error("rubric \"" + source + "\": not valid JSON: " + e.what());
+  }
+  if (!doc.is_object()) rubric_error(r, "(top level)", "expected a JSON object");
+  // Every error is named, not only the first: each key (and each name under slots, claims, areas
+  // and visibility) is read on its own, and the refusal lists what all of them said.
+  std::vector<std::string> errors;
+  auto each = [&](auto&& read) {
+    try {
+      read();
+    } catch (const std::runtime_error& e) {
+      errors.push_back(e.what());
+    }
+  };
+  for (const auto& [key, v] : doc.items()) {
+    if (key == "slots" || key == "claims") {
+      const bool slots = key == "slots";
+      each([&] { read_object(r, v, key); });
+      if (!v.is_object()) continue;
+      for (const auto& [name, w] : v.items())
+        each([&] {
+          const double weight = read_weight(r, w, key + "." + name);
+          if (name != "default") (slots ? check_slot_name : check_claim_name)(r, key + "." + name, name);
+          if (name == "default") (slots ? r.slot_default : r.claim_default) = weight;
+          else (slots ? r.slot_weights : r.claim_weights)[name] = weight;
+        });
+    } else if (key == "areas") {
+      each([&] { read_object(r, v, key); });
+      if (!v.is_object()) continue;
+      for (const auto& [name, w] : v.items())
+        each([&] {
+          if (std::find(kKnownAreas.begin(), kKnownAreas.end(), name) == kKnownAreas.end())
+            rubric_error(r, key + "." + name, "unknown area; expected one of \"sec. 1\", \"sec. 2\", "
+                                              "\"sec. 3\", \"momentum maps\", \"integrators\"");
+          r.area_weights[name] = read_weight(r, w, key + "." + name);
+        });
+    } else if (key == "visibility") {
+      each([&] {
+        if (!v.is_object()) rubric_error(r, key, "expected an object of slot, claim or area names, got " + v.dump());
+      });
+      if (!v.is_object()) continue;
+      for (const auto& [name, level] : v.items()) each([&] { read_visibility(r, key + "." + name, name, level); });
+    } else {
+      each([&] { read_plain_key(r, key, v); });
+    }
+  }
+  each([&] { check_item(r); });
+  // Reject weights that leave nothing to earn. With an explicit assignment the
+  // slot maximum is known now; otherwise any positive slot weight may count.
+  if (errors.empty()) each([&] { check_maximum(r); });
+  if (errors.size() == 1) throw std::runtime_error(errors[0]);
+  if (!errors.empty()) {
+    std::string all = "rubric \"" + r.source + "\" has " + std::to_string(errors.size()) + " errors:";
+    for (const auto& e : errors) all += "\n  " + e;
+    throw std::runtime_error(all);
+  }
   return r;
 }
 
@@ -331,6 +421,11 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
     out.breakdown.insert(out.breakdown.begin(),
                          "slots " + std::to_string(correct) + "/" + std::to_string(assignment.size()));
   out.points = graded ? static_cast<double>(cents(earned * scale)) / 100.0 : 0.0;
+  for (auto& i : out.items) {  // a claim's item is "<integrator> <claim>"; its visibility is the claim's
+    const std::string name = i.kind == ScoreItem::Kind::Claim ? i.name.substr(i.name.rfind(' ') + 1) : i.name;
+    const auto v = r.visibility.find(name);
+    i.visibility = v == r.visibility.end() ? r.visibility_default : v->second;
+  }
 
   // The feedback in words (issue 49): the grade first, then what it rests on, counts and weights
   // together ("11 of 12 slots correct (weight 12 of 13)", "casimir (weight 1)"), the first fix, and

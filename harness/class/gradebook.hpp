@@ -6,6 +6,7 @@
 // so the caller decides where the text goes and writes it atomically.
 #pragma once
 
+#include <array>
 #include <map>
 #include <optional>
 #include <string>
@@ -64,7 +65,15 @@ struct Rubric {
   double claims_weight = 0;                 // share of the grade for claims (0: claims ignored)
   double claim_default = 1;                 // relative weight of a claim not named below
   std::map<std::string, double> claim_weights;
+  // When an autograder shows a slot's, a claim's or an area's test to the student (Gradescope's
+  // test visibility; AUTOGRADERS.md, "Hidden tests"): one of kVisibilityLevels, by name.
+  std::map<std::string, std::string> visibility;
+  std::string visibility_default = "visible";
 };
+
+// Gradescope's words, in order of what a student sees: a test "visible" now, shown
+// "after_due_date", "after_published" (when the lecturer publishes the grades), or "hidden" (never).
+inline constexpr std::array<const char*, 4> kVisibilityLevels = {"visible", "after_due_date", "after_published", "hidden"};
 
 // Parses rubric JSON. Throws std::runtime_error naming `source`, the offending
 // key and what was expected (unknown key, wrong type, negative weight, ...).
@@ -110,6 +119,7 @@ struct ScoreItem {
   std::string state;        // slot: correct, wrong, missing, not exercised; area: "k/n checks passed";
                             // claim: its status; or the student's status when not graded
   std::string detail;       // why, in words (a wrong slot: its first fix); may be empty
+  std::string visibility = "visible";  // the rubric's, for its slot, claim or area (kVisibilityLevels)
 };
 
 struct Score {
