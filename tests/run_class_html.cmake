@@ -5,7 +5,8 @@
 # summary.html#sort=-grade, must render with no console message at all (no script error, no
 # blocked load), hold the class table sorted by the grade (the page's script ran), a row per student
 # (the roster's student without a submission too), and link each student's report.html, which must
-# render with its figure inline. CONTROL=ON opens a page with a script error and a load from the
+# render with its figure inline; the class section's numbers, read back from the rendered page, must
+# be summary.md's. CONTROL=ON opens a page with a script error and a load from the
 # network instead, and asserts that both are seen: the console check can fail.
 find_program(CHROMIUM NAMES chromium chromium-browser)
 if(NOT CHROMIUM)
@@ -71,6 +72,34 @@ string(FIND "${dom}" "id=\"row-dave\"" d)
 string(FIND "${dom}" "id=\"row-henry\"" h)
 if(NOT (a LESS d AND d LESS h))
   message(FATAL_ERROR "summary.html#sort=-grade did not sort by the grade (alice ${a}, dave ${d}, henry ${h})")
+endif()
+
+# What the class got wrong, rendered: each row of summary.md's table is read back from the page, its
+# count in the table and beside its bar in the chart (dave's manakov_Omega, and manakov_2_34 through it).
+file(READ ${OUT}/reports/summary.md md)
+string(REGEX MATCHALL "\\| slot `[A-Za-z_0-9]+` \\| [0-9]+ of [0-9]+ \\|" rows "${md}")
+list(LENGTH rows n_rows)
+if(n_rows LESS 2)
+  message(FATAL_ERROR "summary.md's class section lists ${n_rows} wrong slots, expected manakov_Omega and manakov_2_34:\n${md}")
+endif()
+foreach(row IN LISTS rows)
+  string(REGEX MATCH "`([A-Za-z_0-9]+)` \\| ([0-9]+ of [0-9]+)" _ "${row}")
+  set(slot ${CMAKE_MATCH_1})
+  set(count ${CMAKE_MATCH_2})
+  foreach(text "<code>${slot}</code></td><td>${count}</td>" ">slot ${slot}</text>" "id=\"wrong-table\"")
+    string(FIND "${dom}" "${text}" at)
+    if(at EQUAL -1)
+      message(FATAL_ERROR "summary.html as rendered lacks what summary.md says of ${slot} (${count}): ${text}")
+    endif()
+  endforeach()
+  string(FIND "${dom}" ">slot ${slot}</text>" bar)
+  string(SUBSTRING "${dom}" ${bar} 400 bar_text)
+  if(NOT bar_text MATCHES "^[^\n]*>${count}</text>")
+    message(FATAL_ERROR "the bar of ${slot} does not say ${count}: ${bar_text}")
+  endif()
+endforeach()
+if(NOT md MATCHES "slot `manakov_Omega` \\| 1 of 3 \\| dave")
+  message(FATAL_ERROR "summary.md does not say that dave, 1 of the 3 checked, got manakov_Omega wrong:\n${md}")
 endif()
 
 open_page("file://${OUT}/reports/alice/report.html" dom console)
