@@ -572,11 +572,22 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
 
 void set_code_cpu_clock(std::function<double()> clock) { code_cpu_clock() = std::move(clock); }
 
-double code_cpu_seconds() {
-  if (code_cpu_clock()) return code_cpu_clock()();
+ProtocolCounts& protocol_counts() {
+  static ProtocolCounts counts;  // per process: each check runs in a process of its own
+  return counts;
+}
+
+namespace {
+double self_cpu() {
   timespec t{};
   ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+}  // namespace
+
+double code_cpu_seconds() {
+  if (code_cpu_clock()) return code_cpu_clock()();
+  return self_cpu();
 }
 
 const RunOptions& current_run_options() {
@@ -602,12 +613,28 @@ std::vector<Verdict> run_property(const Property& p, const SubjectSet& s, Scalar
   } restore;
   const bool definition = p.scope == Scope::Subject && p.needs.size() == 1 && p.id.rfind("definition_", 0) == 0;
   detail::side_names() = definition ? detail::SideNames{"yours", "the notes'"} : detail::SideNames{};
+  const ProtocolCounts before = protocol_counts();
+  const double self_before = self_cpu(), code_before = code_cpu_seconds();
+  std::vector<Verdict> out;
   switch (k) {
-    case ScalarKind::Double: return run_in<double>(p, s, k, o, &p.d, &p.int_d);
-    case ScalarKind::MP50: return run_in<Real50>(p, s, k, o, &p.mp, &p.int_mp);
-    case ScalarKind::Exact: return run_in<Rational>(p, s, k, o, &p.q, nullptr);
+    case ScalarKind::Double: out = run_in<double>(p, s, k, o, &p.d, &p.int_d); break;
+    case ScalarKind::MP50: out = run_in<Real50>(p, s, k, o, &p.mp, &p.int_mp); break;
+    case ScalarKind::Exact: out = run_in<Rational>(p, s, k, o, &p.q, nullptr); break;
   }
-  return {};
+  // Where the time went, shared evenly among the verdicts of one run (one per integrator).
+  const ProtocolCounts& after = protocol_counts();
+  const double self = self_cpu() - self_before, code = code_cpu_seconds() - code_before;
+  const double n = out.empty() ? 1.0 : static_cast<double>(out.size());
+  for (auto& v : out) {
+    v.protocol.calls = static_cast<long>((after.calls - before.calls) / n);
+    v.protocol.round_trips = static_cast<long>((after.round_trips - before.round_trips) / n);
+    v.protocol.memo_hits = static_cast<long>((after.memo_hits - before.memo_hits) / n);
+    v.protocol.waiting_seconds = (after.waiting_seconds - before.waiting_seconds) / n;
+    // In process, the code under test runs on the suite's own clock: all of it is counted as the suite's.
+    v.code_cpu_seconds = code_cpu_clock() ? (code - self) / n : 0.0;
+    v.suite_cpu_seconds = self / n;
+  }
+  return out;
 }
 
 bool is_reproduce_string(const std::string& text, std::string* why) {

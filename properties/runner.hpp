@@ -47,6 +47,16 @@ struct RunOptions {
 void set_code_cpu_clock(std::function<double()> clock);
 double code_cpu_seconds();
 
+// Where a check's time goes through the protocol (docs/PERFORMANCE.md): the calls a property made
+// of an implementation behind it, the round trips they took (a call answered from memory takes
+// none; a run of steps takes one), and the wall seconds spent waiting for the replies. Counted by
+// the protocol's connection in this process; a property's share is the difference over its run.
+struct ProtocolCounts {
+  long calls = 0, round_trips = 0, memo_hits = 0;
+  double waiting_seconds = 0;
+};
+ProtocolCounts& protocol_counts();
+
 // The options of the property run in progress on this thread (set by run_property): what a
 // property may adapt to, such as RunOptions::out_of_process.
 const RunOptions& current_run_options();
@@ -73,6 +83,10 @@ struct Verdict {
   std::string worst_check;
   long checks = 0;
   double seconds = 0;
+  // Where the time went (docs/PERFORMANCE.md): this property's protocol counts, the CPU seconds of
+  // the code under test (an implementation behind the protocol: its server's) and of the suite.
+  ProtocolCounts protocol;
+  double code_cpu_seconds = 0, suite_cpu_seconds = 0;
   std::vector<Series> series; // data for pictures, from the last case run
   std::vector<std::string> notes;  // remarks from the last case run (e.g. an unclaimed invariant that holds)
   std::vector<ClaimFinding> claims;  // integrator properties: what they found about each claim

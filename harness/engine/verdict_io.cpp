@@ -54,6 +54,12 @@ json to_json(const Verdict& v) {
   j["worst_check"] = v.worst_check;
   j["checks"] = v.checks;
   j["seconds"] = number_to_json(v.seconds);
+  j["profile"] = {{"calls", v.protocol.calls},
+                  {"round_trips", v.protocol.round_trips},
+                  {"memo_hits", v.protocol.memo_hits},
+                  {"waiting_seconds", number_to_json(v.protocol.waiting_seconds)},
+                  {"code_cpu_seconds", number_to_json(v.code_cpu_seconds)},
+                  {"suite_cpu_seconds", number_to_json(v.suite_cpu_seconds)}};
   json series = json::array();
   for (const auto& s : v.series) {
     json pts = json::array();
@@ -106,6 +112,15 @@ Verdict verdict_from_json(const json& j) {
   v.worst_check = j.at("worst_check").get<std::string>();
   v.checks = j.at("checks").get<long>();
   v.seconds = number_from_json(j.at("seconds"));
+  if (j.contains("profile") && j["profile"].is_object()) {  // absent from reports written before it
+    const json& f = j["profile"];
+    v.protocol.calls = f.value("calls", 0L);
+    v.protocol.round_trips = f.value("round_trips", 0L);
+    v.protocol.memo_hits = f.value("memo_hits", 0L);
+    v.protocol.waiting_seconds = f.contains("waiting_seconds") ? number_from_json(f["waiting_seconds"]) : 0.0;
+    v.code_cpu_seconds = f.contains("code_cpu_seconds") ? number_from_json(f["code_cpu_seconds"]) : 0.0;
+    v.suite_cpu_seconds = f.contains("suite_cpu_seconds") ? number_from_json(f["suite_cpu_seconds"]) : 0.0;
+  }
   for (const auto& s : j.at("series")) {
     Series out;
     out.figure = s.at("figure").get<std::string>();

@@ -385,6 +385,7 @@ std::vector<Reply> Connection::call_batch(const std::vector<Call>& calls) {
   std::vector<std::string> args_texts;
   args_texts.reserve(calls.size());
   for (const auto& c : calls) args_texts.push_back(c.args.dump());
+  protocol_counts().calls += static_cast<long>(calls.size());
   return exchange(calls, args_texts);
 }
 
@@ -413,7 +414,10 @@ std::vector<Reply> Connection::exchange(const std::vector<Call>& calls, const st
   json rep;
   try {
     if (session) slots_[w].in_flight = 1;
+    const auto asked = std::chrono::steady_clock::now();
+    ++protocol_counts().round_trips;
     rep = request_text(s, req, id, what, 0);
+    protocol_counts().waiting_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
     if (!rep.contains("results") || !rep["results"].is_array() || rep["results"].size() != calls.size())
       throw RemoteError("the implementation's reply to " + what + " has no \"results\" array of " +
                         std::to_string(calls.size()) + " entries: " + rep.dump().substr(0, 300));
@@ -457,6 +461,7 @@ json Connection::call(const Call& c) {
   };
   // A repeated call is answered from memory (harness/remote/call_memo.hpp); a run of steps is not kept.
   const std::string args_text = c.args.dump();  // the memory's key, and the request's arguments
+  ++protocol_counts().calls;
   std::string key;
   std::optional<json> known;  // remembered, and asked again to compare
   if (c.repeat == 0) {
@@ -464,7 +469,7 @@ json Connection::call(const Call& c) {
     std::lock_guard lock(memo_mutex_);
     bool recheck = false;
     if (const json* m = memo_.find(key, &recheck)) {
-      if (!recheck) return *m;
+      if (!recheck) return ++protocol_counts().memo_hits, *m;
       known = *m;
     }
   }
@@ -756,7 +761,21 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   info.worker_times = [conn](int w) { return conn->server_times(w); };
   // In a check's own process, its case budget counts the CPU of the code under test: this
   // process's and its server's (issue 47).
-  set_code_cpu_clock([conn] { return harness::self_cpu_seconds() + conn->server_times(harness::current_worker()).cpu; });
+  // The server's CPU is read from /proc for its whole tree (a session is a fork of it), which scans
+  // every process of the machine: sampled at most every 20 ms (the budgets are seconds; a sample per
+  // case made /proc the suite's largest cost after the JSON, docs/PERFORMANCE.md).
+  set_code_cpu_clock([conn] {
+    struct Sample {
+      pid_t pid = -1;
+      std::chrono::steady_clock::time_point at;
+      double server_cpu = 0;
+    };
+    static Sample last;  // per process: a check's process starts with its parent's, and resamples
+    const auto now = std::chrono::steady_clock::now();
+    if (last.pid != ::getpid() || now - last.at >= std::chrono::milliseconds(20))
+      last = Sample{::getpid(), now, conn->server_times(harness::current_worker()).cpu};
+    return harness::self_cpu_seconds() + last.server_cpu;
+  });
   SubjectSet s;
   s.name = name;
   s.description = d.description.empty() ? "a " + d.language + " implementation"
