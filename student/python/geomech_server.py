@@ -101,6 +101,8 @@ def parse_signature(sig):
 
 def make_scalar(scalar, text):
     if scalar == "double":
+        if type(text) is str and "/" not in text:
+            return float(text)
         return float(Fraction(text)) if "/" in str(text) else float(text)
     if scalar == "mp50":
         mpmath.mp.prec = MP_BITS
@@ -136,6 +138,8 @@ def decode(kind, scalar, v):
 
 
 def encode_number(scalar, x):
+    if type(x) is float and scalar == "double":  # the common case, first
+        return repr(x)
     if isinstance(x, bool):
         raise TypeError("a bool where a number was expected")
     if isinstance(x, int):
@@ -367,8 +371,13 @@ class Lines:
 
 
 def reply(obj):
-    _out.write(json.dumps(obj) + "\n")
-    _out.flush()
+    # Straight to the descriptor: a text stream's write and flush cost more than the call itself for
+    # most slots (docs/PERFORMANCE.md). Every other write to _out is flushed at once, so nothing of
+    # it can be left behind in its buffer.
+    data = (json.dumps(obj) + "\n").encode()
+    fd = _out.fileno()
+    while data:
+        data = data[os.write(fd, data):]
 
 
 def how_it_ended(status):
