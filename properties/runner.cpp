@@ -23,25 +23,6 @@ std::unordered_map<std::string, Reproduce> stringToReproduceMap(const std::strin
 
 namespace gm {
 
-const char* outcome_name(Outcome o) {
-  switch (o) {
-    case Outcome::Pass: return "PASS";
-    case Outcome::Fail: return "FAIL";
-    case Outcome::NotProvided: return "NOT PROVIDED";
-    case Outcome::Crash: return "CRASH";
-    case Outcome::Timeout: return "TIMEOUT";
-    case Outcome::Error: return "ERROR";
-    case Outcome::NotCharacterised: return "NOT CHARACTERISED";
-  }
-  return "?";
-}
-
-std::string Verdict::key() const {
-  std::string k = subject + "/" + property + "/" + scalar;
-  if (!integrator.empty()) k += "/" + integrator;
-  return k;
-}
-
 std::uint64_t derive_seed(std::uint64_t base, const std::string& property_key) {
   std::uint64_t h = 1469598103934665603ull;  // FNV-1a
   for (unsigned char c : property_key) {
@@ -571,11 +552,6 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
 }  // namespace
 
 void set_code_cpu_clock(std::function<double()> clock) { code_cpu_clock() = std::move(clock); }
-
-ProtocolCounts& protocol_counts() {
-  static ProtocolCounts counts;  // per process: each check runs in a process of its own
-  return counts;
-}
 
 namespace {
 double self_cpu() {
