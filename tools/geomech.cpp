@@ -303,7 +303,7 @@ int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, har
     // Its libraries under a folder the grader trusts are loaded inside the sandbox (build_student vetted it).
     for (const auto& root : harness::trusted_library_roots()) spec.read_only.push_back(root);
     try {
-      cmd = {copy->add(b.program, "submission")};
+      cmd = {copy->add(b.program, "submission", harness::IntakeLimits{}.program_bytes)};
     } catch (const std::exception& e) {
       std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
       return 2;

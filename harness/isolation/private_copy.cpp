@@ -59,7 +59,7 @@ PrivateCopy::~PrivateCopy() {
   fs::remove_all(root_, ec);
 }
 
-std::string PrivateCopy::add(const std::string& path, const std::string& area) {
+std::string PrivateCopy::add(const std::string& path, const std::string& area, std::uint64_t max_bytes) {
   const fs::path from = fs::path(path).lexically_normal();
   const fs::path name = from.has_filename() ? from.filename() : from.parent_path().filename();
   const fs::path folder = fs::path(root_) / area;
@@ -81,7 +81,7 @@ std::string PrivateCopy::add(const std::string& path, const std::string& area) {
     if (is_folder) {
       write_tree(read_submission(folder, leaf), to);
     } else {
-      const std::string text = folder.read(leaf, IntakeLimits{}.file_bytes);
+      const std::string text = folder.read(leaf, max_bytes);
       std::ofstream out(to, std::ios::binary | std::ios::trunc);
       out.write(text.data(), static_cast<std::streamsize>(text.size()));
       if (!out) throw std::runtime_error("cannot write " + to.string());

@@ -11,7 +11,10 @@
 // The copy is removed when the object goes.
 #pragma once
 
+#include "harness/isolation/submission_intake.hpp"
+
 #include <filesystem>
+#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,7 +34,9 @@ class PrivateCopy {
   // a stranger's: read without following any link, never opening a FIFO or device, within limits
   // (harness/isolation/submission_intake.hpp; a refusal throws RefusedEntry naming the entry). The suite's
   // own files ("geomech") are copied as they are (a link among them is left out).
-  std::string add(const std::string& path, const std::string& area);
+  // `max_bytes`: the largest file of the "submission" area (IntakeLimits::file_bytes; a program
+  // built from a submission: IntakeLimits::program_bytes).
+  std::string add(const std::string& path, const std::string& area, std::uint64_t max_bytes = IntakeLimits{}.file_bytes);
 
   // The --ro-bind pairs for SandboxSpec::mounts: each area's folder here and its path inside.
   std::vector<std::pair<std::string, std::string>> mounts() const;

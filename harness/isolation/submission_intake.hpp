@@ -30,6 +30,9 @@ namespace gm::harness {
 
 struct IntakeLimits {
   std::uint64_t file_bytes = 8u << 20;    // one file
+  // A program built from a submission in the sandbox (a C++ file's protocol server): the suite's code
+  // linked with theirs, about 9 MiB of it the suite's. Read as a stranger's file, within this.
+  std::uint64_t program_bytes = 64u << 20;
   std::uint64_t total_bytes = 32u << 20;  // one submission, all files
   std::size_t entries = 512;              // files and folders in one submission
   int depth = 6;                          // folders within folders
