@@ -1,0 +1,36 @@
+#!/usr/bin/env python3
+"""Every test's cost, from the JUnit file of a ctest run (ctest --output-junit FILE):
+
+    ctest --test-dir build -j2 --output-junit /tmp/ctest.xml
+    bench/test_costs.py /tmp/ctest.xml [N]
+
+Prints the number of tests and their summed seconds, the N costliest (all of them without N), and
+the seconds per first part of the name (student., golden_check., engines., ...), costliest first.
+CI prints the 20 costliest of each of its ctest runs this way (.ci/run)."""
+import collections
+import sys
+import xml.etree.ElementTree as ET
+
+
+def main(argv):
+    if not argv:
+        sys.exit(__doc__)
+    cases = [(float(c.get("time", 0)), c.get("name")) for c in ET.parse(argv[0]).iter("testcase")]
+    top = int(argv[1]) if len(argv) > 1 else len(cases)
+    total = sum(t for t, _ in cases)
+    print(f"  {len(cases)} tests, {total:.0f} s of test time in all")
+    for t, name in sorted(cases, reverse=True)[:top]:
+        print(f"  {t:7.1f} s  {name}")
+    if top < len(cases):
+        return 0
+    groups = collections.Counter()
+    for t, name in cases:
+        groups[name.split(".")[0]] += t
+    print("  by the first part of the name:")
+    for name, t in groups.most_common():
+        print(f"  {t:7.1f} s  {name}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
