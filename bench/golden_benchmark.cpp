@@ -1,4 +1,4 @@
-// The golden generator's performance (issue 5), measured with Google Benchmark:
+// The golden generator's performance, measured with Google Benchmark:
 //
 //   1. the 40-digit trajectory of the free rigid body I = (2, 1, 2/3), Pi(0) = (cos 1.1, 0,
 //      sin 1.1), sampled at t = 0.5, 1, ..., 10, in Real50 (cpp_bin_float<50>):

@@ -1,4 +1,4 @@
-// Property throughput (issue 7): random cases checked per second, for the same property in
+// Property throughput: random cases checked per second, for the same property in
 // double, in 50 digits and in exact rationals, in one run, so the three read as ratios.
 //
 // Representative properties: one cheap identity (the hat map is a Lie-algebra isomorphism:

@@ -1,4 +1,4 @@
-# Installing the suite (issue 17): `cmake --install build --prefix P` puts in place
+# Installing the suite: `cmake --install build --prefix P` puts in place
 #   P/bin/geomech                              the tool (geomech check FILE.cpp works from there)
 #   P/bin/geomech-octave-server                Octave's protocol server, where liboctave-dev was installed
 #   P/lib/geomech-spec/                        the prebuilt property and harness libraries, the check program's main

@@ -154,7 +154,7 @@ class ProcessFailure : public std::runtime_error {
 // One step of an integrator for the rigid body with attitude (Pi, O), or for Manakov's (M, O); or,
 // in the canonical variables of the Clebsch formulations, for (3.21) on T*R^3 (Q, P) with
 // H(Q, P) = h(P x Q), and for (3.23) on T*R^{n x n} (Q, P) with Manakov's energy of M = Q^T P - P^T Q
-// (issue 16: the symplecticity claim acts on these).
+// (the symplecticity claim acts on these).
 template <class T>
 struct Integrator {
   std::string name;
@@ -212,7 +212,7 @@ const std::vector<SlotInfo>& subject_slots();
 bool is_slot_name(std::string_view name);
 
 // What an integrator's author claims about it; the harness verifies every claim.
-// Where an integrator's step is meant to work (issue 47): an engine may refuse or reset states
+// Where an integrator's step is meant to work: an engine may refuse or reset states
 // above some speed, or steps below some size. Nothing outside is drawn by any check, the report
 // states the domain, and a step that raises outside an undeclared one is told it may declare it.
 // 0: no limit.

@@ -1,4 +1,4 @@
-// A real number enclosed in a ball [mid - rad, mid + rad] (issue 35): a thin C++ wrapper of Arb's
+// A real number enclosed in a ball [mid - rad, mid + rad]: a thin C++ wrapper of Arb's
 // arb_t (Debian's libflint-arb-dev), for the certified enclosures of golden/certify.hpp.
 //
 // Every operation returns a ball that contains every result of the operation on members of its

@@ -128,7 +128,7 @@ Request make_request(const FixtureDefinition& d) {
   r.name = d.name;
   r.title = d.title;
   r.digits = d.digits;
-  r.certify = true;  // every fixture carries its certificate (issue 35)
+  r.certify = true;  // every fixture carries its certificate
   r.problem = make_problem(d.system, "fixture " + d.name, 0, d.parameters, d.initial, false);
   for (const auto& t : d.times) r.times.push_back(parse_decimal(t));
   validate_times(r.times, "fixture " + d.name);

@@ -1,4 +1,4 @@
-// Certified golden trajectories (issue 35): a rigorous enclosure of the exact solution of a
+// Certified golden trajectories: a rigorous enclosure of the exact solution of a
 // fixture's initial-value problem at every sample time, by a validated Taylor method in ball
 // arithmetic (golden/ball.hpp, Arb), and the certificate it gives each printed row: a radius r
 // such that every printed value of the row lies within r of the true solution.

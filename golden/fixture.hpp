@@ -35,7 +35,7 @@
 namespace gm::golden {
 
 inline constexpr const char* kFormatName = "geomech-golden";
-// Version 2 (issue 35) adds the certificate: a "#: certificate ..." line after the checks and,
+// Version 2 adds the certificate: a "#: certificate ..." line after the checks and,
 // after the data rows, one "#: certified_radius T R" line per row. Version 1 files (no
 // certificate) are still read.
 inline constexpr int kFormatVersion = 2;

@@ -30,7 +30,7 @@ struct Request {
   Problem problem;
   std::vector<Rational> times;  // finite decimals, 0 <= t_0 < t_1 < ... <= kMaxRequestTime
   int digits = kDefaultDigits;
-  // Issue 35: prove the printed digits with a validated enclosure in ball arithmetic
+  // Prove the printed digits with a validated enclosure in ball arithmetic
   // (golden/certify.hpp) and write each row's certified radius; refused (VerificationError,
   // naming the first time) where fewer than `certified_digits` digits can be proved.
   bool certify = false;

@@ -14,7 +14,7 @@
 //            few roundings of size |x| in each of its 2K-substep midpoint sweeps and its
 //            extrapolation, plus its local truncation error (tolerance 1e-14 ~ 45 eps, an
 //            estimate for the order 2K-2 value, not the order 2K value kept);
-//   Real50   1e-35 absolute (issue 5).
+//   Real50   1e-35 absolute.
 // Errors are also reported as max and RMS in units of eps * scale, with the worst sample.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Integrators in the canonical variables of the Clebsch formulations (issue 16):
+// Integrators in the canonical variables of the Clebsch formulations:
 //   (3.21) on T*R^3, z = (Q, P), Pi = P x Q, Omega = I^-1 Pi:
 //       dQ/dt = -Omega x Q = dH/dP,   dP/dt = -Omega x P = -dH/dQ,   H(Q, P) = h(P x Q) (3.4);
 //   (3.23) on T*R^{n x n}, z = (Q, P), M = Q^T P - P^T Q (the corrected momentum of

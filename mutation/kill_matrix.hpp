@@ -1,4 +1,4 @@
-// The kill matrix of `geomech mutants --matrix` (issue 32): which check (property and scalar)
+// The kill matrix of `geomech mutants --matrix`: which check (property and scalar)
 // kills which mutant of the full reference, and what it costs; and the quick profile chosen from
 // it, the small set of checks that still kills every mutant the full suite kills, which
 // `geomech check --quick` runs (spec/quick_profile.json).

@@ -24,7 +24,7 @@ struct MutantsOptions {
   std::string equivalent_file; // default: spec/equivalent_mutants.json in the source tree
   bool alone = true;           // also run the "alone" mode
   std::string front_door = "geomech";
-  // Issue 32: the kill matrix. Every property and scalar runs on every mutant in the full
+  // The kill matrix. Every property and scalar runs on every mutant in the full
   // reference (no stop at the first kill), timed; the report gains the matrix and the quick
   // profile chosen from it (mutation/kill_matrix.hpp), written to `quick_profile_out` if set.
   bool matrix = false;
@@ -58,7 +58,7 @@ struct ModeResult {
 struct MutantResult {
   std::string name, slot, op, op_class, description, integrator;
   bool equivalent = false;
-  // Equivalent with the mutated slot alone only (issue 36: a negated hat_n is another valid
+  // Equivalent with the mutated slot alone only (a negated hat_n is another valid
   // convention of so(n) coordinates on its own, and wrong beside the reference's vee_n).
   bool equivalent_alone_only = false;
   std::string equivalence_argument;

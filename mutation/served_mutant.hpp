@@ -1,4 +1,4 @@
-// The mutation score through the protocol (issue 32, item 5): a mutant of the reference served out
+// The mutation score through the protocol (item 5): a mutant of the reference served out
 // of process by the C++ protocol server, as untrusted mode serves a student's C++ file, and checked
 // through remote_subject like any implementation in another language. A mutant the suite kills
 // in-process but not through the protocol (or the reverse) would show the codec or the client

@@ -77,7 +77,7 @@ struct PropertyDef {
   Cases cases{};
   Scope scope = Scope::Subject;                // set by the registration tag
   StepKind step = StepKind::None;              // Integrator scope: the step function it drives
-  // Integrator scope (issue 47): the claims this property decides ("order", "casimir", ...; the
+  // Integrator scope: the claims this property decides ("order", "casimir", ...; the
   // names of IntegratorClaims). A claim is verified only when every property that judges it ran all
   // its cases and passed (harness/engine/integrator_verdicts.hpp).
   std::vector<std::string> judges{};

@@ -63,7 +63,7 @@ struct CaseBudgetSpent {
 // The text of the discard that stands for "shrinking stopped by its budget" in the final run.
 constexpr const char* kShrinkStopped = "geomech: shrinking stopped by its time budget";
 
-// Prints nothing; counts the discarded cases (issue 18: a discarded case is not a check, and the
+// Prints nothing; counts the discarded cases (a discarded case is not a check, and the
 // verdict says how many there were); keeps the time budgets (RunOptions) and the last failing case
 // seen, which stands for the counterexample when shrinking is stopped.
 class SilentListener : public rc::detail::TestListener {
@@ -111,7 +111,7 @@ class SilentListener : public rc::detail::TestListener {
   void keep(const rc::detail::CaseDescription& d) {
     failure_description = d.result.description;
     failure_example = d.example ? d.example() : decltype(failure_example){};
-    failure_raise = current_step_raise();  // the case that just ran (issue 47)
+    failure_raise = current_step_raise();  // the case that just ran
   }
 
  public:
@@ -154,7 +154,7 @@ const RcEnv& rc_env() {
   return env;
 }
 
-// The type of a counterexample value in the student's language (issue 33): Python and Octave
+// The type of a counterexample value in the student's language: Python and Octave
 // students never wrote Vec3<Real50>.
 std::string in_language(const std::string& shown) {
   const ShowStyle style = show_style();
@@ -280,7 +280,7 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   const RcEnv& env = o.honour_rc_params ? rc_env() : no_env;
   std::uint64_t base = o.seed;
   if (env.seed) base = *env.seed;
-  // Not the integrator's name (issue 47): every integrator of a subject is checked on the same draws,
+  // Not the integrator's name: every integrator of a subject is checked on the same draws,
   // so that identical steps get identical verdicts, to the last digit of their evidence.
   v.seed = derive_seed(base, p.id + "/" + v.scalar);
 
@@ -321,7 +321,7 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
               missing_slot = e.slot();
               throw;
             } catch (const OutsideDomain& e) {
-              // A state or step outside the integrator's declared domain: not checked (issue 47).
+              // A state or step outside the integrator's declared domain: not checked.
               current_step_raise().reset();
               RC_DISCARD(e.what());
             }
@@ -332,7 +332,7 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
     }
   };
   attempt(reproduce);
-  // Issue 33: a replayed case that passes alone, where the check it came from failed, depends on
+  // A replayed case that passes alone, where the check it came from failed, depends on
   // what the implementation kept from earlier calls (a cache, a global). The replay then runs the
   // whole sequence of the check again, from its seed, and names the state if it fails there.
   bool state_between_calls = false;
@@ -473,12 +473,12 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
     const IntegratorClaims* claims = s.claims_for(integrator.name);
     IntegratorClaims none;
     none.integrator = integrator.name;
-    const Integrator<T> guarded_integrator = guarded(integrator);  // a raise is told as one (issue 47)
-    // A claim is verified only on all its planned cases (issue 47): no time budget cuts them (a
+    const Integrator<T> guarded_integrator = guarded(integrator);  // a raise is told as one
+    // A claim is verified only on all its planned cases: no time budget cuts them (a
     // slow step takes longer; the timeout still stops a hang).
     RunOptions all_cases = o;
     all_cases.case_budget_seconds = 0;
-    struct Domain {  // the integrator's declared domain, for the draws and the guard (issue 47)
+    struct Domain {  // the integrator's declared domain, for the draws and the guard
       StepDomain saved = current_step_domain();
       explicit Domain(const StepDomain& d) { current_step_domain() = d; }
       ~Domain() { current_step_domain() = saved; }
@@ -582,7 +582,7 @@ bool claims_any(const IntegratorClaims& c, const std::vector<std::string>& judge
 
 std::vector<Verdict> run_property(const Property& p, const SubjectSet& s, ScalarKind k, const RunOptions& o) {
   // A slot's own definition check compares the subject's result with the notes' formula: its
-  // failures say "yours" and "the notes'" rather than lhs and rhs (issue 33).
+  // failures say "yours" and "the notes'" rather than lhs and rhs.
   struct Sides {
     detail::SideNames saved = detail::side_names();
     ~Sides() { detail::side_names() = saved; }

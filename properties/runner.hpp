@@ -23,7 +23,7 @@ struct RunOptions {
   bool honour_rc_params = true;  // read seed / max_success / reproduce from $RC_PARAMS
   bool shrink = true;            // shrink a failure to a small case (a negative control only needs the failure)
   // Time budgets, so that a correct but slow implementation (Python in 50 digits, a solve redone
-  // at every call) is checked on fewer cases instead of being stopped as a TIMEOUT (issue 15):
+  // at every call) is checked on fewer cases instead of being stopped as a TIMEOUT:
   //  - case_budget_seconds: once this much time has passed, no new case is started (at least one
   //    case runs); the verdict says how many of the planned cases ran;
   //  - shrink_budget_seconds: once this much time has passed since a failure was found, shrinking
@@ -33,7 +33,7 @@ struct RunOptions {
   double shrink_budget_seconds = 0;
   // The subject runs out of process (behind the protocol): every step is a round trip, so a long
   // run of a claim nobody made is characterised over a shorter run, and its finding says it is not
-  // the evidence that would verify the claim (issue 47). In process, it is run in full.
+  // the evidence that would verify the claim. In process, it is run in full.
   bool out_of_process = false;
 };
 

@@ -14,7 +14,7 @@
 
 namespace gm {
 
-// NotCharacterised (issue 47): an integrator property that judges only claims nobody made could
+// NotCharacterised: an integrator property that judges only claims nobody made could
 // measure nothing (the step raised); it neither passes nor fails the check.
 enum class Outcome { Pass, Fail, NotProvided, Crash, Timeout, Error, NotCharacterised };
 const char* outcome_name(Outcome o);
@@ -58,7 +58,7 @@ struct Verdict {
   std::vector<Series> series; // data for pictures, from the last case run
   std::vector<std::string> notes;  // remarks from the last case run (e.g. an unclaimed invariant that holds)
   std::vector<ClaimFinding> claims;  // integrator properties: what they found about each claim
-  // Integrator properties (issue 47): the step raised in the case this verdict reports: its message
+  // Integrator properties: the step raised in the case this verdict reports: its message
   // and where it was called; empty otherwise.
   std::string step_raised;
   std::string step_raised_where;

@@ -168,7 +168,7 @@ std::vector<std::string> traceability_problems(const Catalogue& c, const std::ve
       if (!is_slot_name(n)) problem("property '" + p.id + "' needs '" + n + "', which is not a subject slot");
     if (p.title.empty()) problem("property '" + p.id + "' has no title");
   }
-  // Issue 13: every slot is checked on its own by a property that needs that slot alone, so that
+  // Every slot is checked on its own by a property that needs that slot alone, so that
   // an implementation providing any subset of the slots has each of them checked.
   for (const auto& slot : subject_slots()) {
     const bool alone = std::any_of(props.begin(), props.end(), [&](const Property& p) {

@@ -1,6 +1,6 @@
 # The slot lists in docs/STUDENTS.md (Python, Octave/MATLAB) are the output of `geomech slots
 # --python` / `--octave`, pasted between marker lines, so that the documentation cannot drift from
-# the slot table the harness uses (issue 15). Checks them, or rewrites them with -DUPDATE=1:
+# the slot table the harness uses. Checks them, or rewrites them with -DUPDATE=1:
 #   cmake -DGEOMECH=build/bin/geomech -DDOC=docs/STUDENTS.md [-DUPDATE=1] -P tests/docs_slots.cmake
 file(READ ${DOC} doc)
 set(stale "")

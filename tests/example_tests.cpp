@@ -55,7 +55,7 @@ struct Example {
   std::vector<ClaimExpected> claims;
   bool false_claims = false;  // the bug is a false claim: integrator properties may FAIL
   std::vector<std::string> args;
-  // The first item of "What to fix" in report.md must contain this (issue 13: the slot that is
+  // The first item of "What to fix" in report.md must contain this (the slot that is
   // wrong comes first); empty: not asserted.
   std::string first_fix = {};
   std::vector<std::string> report_says = {};  // lines report.md must contain
@@ -162,7 +162,7 @@ const std::vector<Example>& examples() {
        {}},
       {"bug_order_claim",
        "a first-order Lie-Trotter splitting claiming order 2 and symmetry",
-       // Issue 33: its field is right at every state drawn, fast (scaled) motions included, and the
+       // Its field is right at every state drawn, fast (scaled) motions included, and the
        // false claim says so first; its inputs are by the notes' names.
        {{"integrator_converges_in_every_regime", {"double", "mp50"}, "FAIL",
          "the step's own equation: your step's vector field is right"},
@@ -173,7 +173,7 @@ const std::vector<Example>& examples() {
         {"lie_trotter", "orthogonality", "verified"}},
        true,
        {}},
-      // Issue 16: structural claims that do not hold.
+      // Structural claims that do not hold.
       {"bug_claims_structure",
        "RK4 with the rows of O normalised claiming equivariance and Noether; explicit Verlet on the "
        "non-separable Clebsch Hamiltonian claiming symplecticity; explicit Euler claiming bounded energy",
@@ -186,7 +186,7 @@ const std::vector<Example>& examples() {
         {"explicit_euler", "order", "verified"}},
        true,
        {}},
-      // Issue 13: a slot provided alone, wrongly, fails its own direct property.
+      // A slot provided alone, wrongly, fails its own direct property.
       {"bug_energy_alone",
        "only the energy (3.4), without its 1/2",
        {{"definition_hamiltonian_3_4", all3, "FAIL", "slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4) does not hold"}},
@@ -221,7 +221,7 @@ const std::vector<Example>& examples() {
        "slot `spatial_momentum` is wrong"},
       // In double only: its slots are correct.hpp's, which student.end_to_end.correct checks in every scalar
       // with the same seed; what this example is about (UNCHECKED, exit status 1) does not depend on
-      // the scalar, and the two other scalars cost 25 of its 35 s (issue 37).
+      // the scalar, and the two other scalars cost 25 of its 35 s.
       {"bug_integrator_signature",
        "an integrator whose step cannot be called as the slot expects: its claims cannot be checked",
        {},
@@ -350,7 +350,7 @@ void check_example_outputs(const Example& e, const fs::path& report_dir, int exi
           "the first item of What to fix is \"" + first + "\", expected it to say \"" + e.first_fix + "\"");
   }
   check(fs::exists(report_dir / "junit.xml"), "no junit.xml");
-  // Issue 16: an implementation with integrators gets the work-precision diagram, with rows for
+  // An implementation with integrators gets the work-precision diagram, with rows for
   // each of its integrators (in double) and for the suite's methods, Boost.Odeint's among them.
   std::vector<std::string> stepping;
   for (const auto& i : report.at("integrators"))
@@ -399,7 +399,7 @@ int run_example(const std::string& name, const std::string& program, const std::
 
 // `geomech check FILE.cpp` from nothing: compile (in a fresh cache), link, check, report.
 // correct.cpp's report is also held to its row of the examples' table (check_example_outputs):
-// this test is the one complete check of correct.cpp in the suite (issue 37: it was made twice,
+// this test is the one complete check of correct.cpp in the suite (it was made twice,
 // here and by a CMake-built example program, 35-45 s of ctest's time for the same verdicts).
 int run_end_to_end(const std::string& name, const std::string& geomech, const std::string& source) {
   const std::string dir = temp_dir("e2e-" + name);
@@ -426,7 +426,7 @@ int run_end_to_end(const std::string& name, const std::string& geomech, const st
       // The second run finds everything up to date. What it checks does not matter here (the first
       // run's check is the one asserted above, correct.cpp's complete check): the
       // build is of the whole program whatever is selected (tools/geomech.cpp), so one property in
-      // every scalar is enough to show that nothing is compiled again. Issue 37: this saves a
+      // every scalar is enough to show that nothing is compiled again. this saves a
       // second complete check (about 24 s alone, 40-60 s under ctest -j2).
       std::vector<std::string> again_argv = argv;
       again_argv.insert(again_argv.end(), {"--property", "hat_is_cross_product"});
@@ -490,7 +490,7 @@ int run_class(const std::string& class_dir, const std::string& geomech) {
   return failures ? 1 : 0;
 }
 
-// `check-class --shard K/N` and `merge-class` (issue 17): the class in two shards, merged, gives
+// `check-class --shard K/N` and `merge-class`: the class in two shards, merged, gives
 // the same summary table and the same verdicts as one unsharded run.
 int run_class_shards(const std::string& class_dir, const std::string& geomech) {
   const std::string dir = temp_dir("class-shards");

@@ -1,4 +1,4 @@
-// Certified golden trajectories (issue 35, golden/certify.hpp): the enclosures prove the
+// Certified golden trajectories (golden/certify.hpp): the enclosures prove the
 // committed fixtures' digits, and the certificate is known to be able to fail.
 #include "golden/certify.hpp"
 #include "golden/fixture.hpp"

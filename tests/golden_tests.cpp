@@ -487,7 +487,7 @@ TEST(golden_format, VersionOneWithoutCertificateIsStillRead) {
   EXPECT_FALSE(f.certified);
   EXPECT_EQ(f.rows, load_fixture(committed_path("free_rigid_body_stable")).rows);
 }
-// Version 2: the certificate's radii, one per row, in order (issue 35).
+// Version 2: the certificate's radii, one per row, in order.
 TEST(golden_bad_input, CertifiedRadiusForAnotherTime) {
   const int at = index_of("#: certified_radius");
   expect_rejected(edited([&](auto& l) { l[at] = "#: certified_radius 0.25 5e-51"; }), at + 1, "certified_radius for t = '0.25'");

@@ -200,7 +200,7 @@ TEST(Gradebook, FeedbackIsOneShortLine) {
   EXPECT_LE(score.feedback.size(), 400u);
   EXPECT_EQ(score.feedback.find_first_of("\r\n\t"), std::string::npos);
   EXPECT_NE(score.feedback.find("+35 more"), std::string::npos) << score.feedback;
-  // Cut in the middle (issue 49): the grade at the start, the first fix's beginning and end, the
+  // Cut in the middle: the grade at the start, the first fix's beginning and end, the
   // report's path at the end.
   EXPECT_EQ(score.feedback.rfind("0.00 of 100: 0 of 40 slots correct; wrong: ", 0), 0u) << score.feedback;
   EXPECT_NE(score.feedback.find("fix first: xxx"), std::string::npos) << score.feedback;
@@ -209,7 +209,7 @@ TEST(Gradebook, FeedbackIsOneShortLine) {
   EXPECT_EQ(score.feedback.substr(score.feedback.size() - end.size()), end) << score.feedback;
 }
 
-// The cut never splits a quoted name (issue 57: "'manakov ..." lost the function's name): wherever
+// The cut never splits a quoted name ("'manakov ..." lost the function's name): wherever
 // the cut falls in a first fix, its quotes stay paired, and a name cut into is kept whole.
 TEST(Gradebook, TheFeedbackCutKeepsAFunctionsName) {
   const std::vector<std::string> slots = {"manakov_Omega"};
@@ -227,7 +227,7 @@ TEST(Gradebook, TheFeedbackCutKeepsAFunctionsName) {
   EXPECT_GT(whole, 0);  // the name is kept where the cut reaches it
 }
 
-// Issue 49: "slots 11/12" beside a weighted 92.31 read as a mistake. The feedback says the grade, the
+// "slots 11/12" beside a weighted 92.31 read as a mistake. The feedback says the grade, the
 // count and the weight together, and the weight of what is wrong.
 TEST(Gradebook, FeedbackSaysCountsAndWeightsTogether) {
   const Rubric r = parse_rubric(R"({"assignment": ["hat", "vee", "casimir", "euler_3_8"], "slots": {"euler_3_8": 2}})",
@@ -337,7 +337,7 @@ TEST(Gradebook, RubricErrorsNameTheFileAndTheKey) {
   EXPECT_FALSE(ok.assignment.has_value());
 }
 
-// Issue 49: a misspelt slot in the assignment was accepted, and every correct student lost its share
+// A misspelt slot in the assignment was accepted, and every correct student lost its share
 // (92.31 for 12 of 13). Every name written by hand is checked against the slot table and the claim
 // names, with the closest names offered.
 TEST(Gradebook, UnknownSlotOrClaimInARubricIsRefusedWithDidYouMean) {

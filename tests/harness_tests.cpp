@@ -489,7 +489,7 @@ TEST(Reports, VerdictsSurviveJsonWithNonFiniteNumbersAndBadBytes) {
   EXPECT_FALSE(back[0].claims[0].holds);
 }
 
-// Issue 18: the count of discarded cases crosses the JSON, and a verdict written before it was
+// The count of discarded cases crosses the JSON, and a verdict written before it was
 // counted (no "discarded" field) still reads, as 0.
 TEST(Reports, DiscardedCasesSurviveJson) {
   Verdict v;
@@ -788,7 +788,7 @@ TEST(TrajectoryFiles, TheExamplesAreJudgedAsTheirAuthorsShouldExpect) {
     }
 }
 
-// Issue 36: Lie-Euler on a spherical body is exact (its Omega never changes), so every error is at
+// Lie-Euler on a spherical body is exact (its Omega never changes), so every error is at
 // round-off. Its order-1 claim holds as "exact for this problem", not "not measurable"; the same
 // files claimed at order 2 also pass (an exact step satisfies any order). Control: the midpoint
 // files at a false order 4 still fail (above).
@@ -831,7 +831,7 @@ std::vector<std::string> labels(const std::string& suite, const std::string&) {
   return {"meta", "harness"};
 }
 
-// Issue 32: a check left to --thorough is not run, and every report says so (never a silent skip);
+// A check left to --thorough is not run, and every report says so (never a silent skip);
 // one whose slots are missing stays NOT PROVIDED, which says more.
 TEST(CheckEngine, ARunLeftToThoroughIsListedNotRun) {
   CheckConfig cfg = quick({"hat_is_cross_product", "vee_inverts_hat"});

@@ -236,7 +236,7 @@ def main():
     base_summary = open(os.path.join(base, "reports", "summary.md"), encoding="utf-8").read()
     base_rows, base_grades = summary_rows(base_summary), grade_rows(os.path.join(base, "book", "grades.csv"))
     # alice writes hat only, of the rubric's two slots: INCOMPLETE, every check of hers passing
-    # (issue 49: the assignment decides a PASS).
+    # (the assignment decides a PASS).
     for name, result in (("honest", "PASS"), ("alice", "**INCOMPLETE**")):
         if base_rows.get(name, [None, None])[1] != result:
             fail("the honest class: %s is not %s" % (name, result), base_summary)

@@ -1,4 +1,4 @@
-// Reports as HTML pages (issue 49): report.md as a page that loads nothing and runs nothing of the
+// Reports as HTML pages: report.md as a page that loads nothing and runs nothing of the
 // student's, its structure kept.
 #include "harness/reports/html_page.hpp"
 
@@ -47,7 +47,7 @@ TEST(HtmlPage, ReportMarkdownBecomesEscapedHtmlWithItsStructure) {
   EXPECT_EQ(base64("M"), "TQ==");
 }
 
-// Escaped once (issue 57): report.md writes "<" as "&lt;" (md_inline), which the page shows as "<",
+// Escaped once: report.md writes "<" as "&lt;" (md_inline), which the page shows as "<",
 // not as "&lt;" ("&amp;lt;ad*_xi mu, eta&amp;gt;" in 22 cells of one report). The control: text that
 // is not an entity is still escaped.
 TEST(HtmlPage, AnEntityOfTheMarkdownIsEscapedOnce) {

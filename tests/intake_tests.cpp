@@ -1,4 +1,4 @@
-// Reading a stranger's folder (issue 46; harness/isolation/submission_intake.hpp), the inert and bounded
+// Reading a stranger's folder (harness/isolation/submission_intake.hpp), the inert and bounded
 // texts (harness/isolation/inert_text.hpp), the gradebook's cells and the children's input and output
 // (harness/isolation/process.hpp). Each refusal test has its control: the naive read the harness used to do
 // (std::ifstream, following everything) shows the attack is real on the same folder.

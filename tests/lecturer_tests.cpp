@@ -1,4 +1,4 @@
-// Tests of what a lecturer reads and uploads (issue 49): the class decided once (PASS by the
+// Tests of what a lecturer reads and uploads: the class decided once (PASS by the
 // assignment, "not written" apart from "double only", a roster student without a submission), and
 // the Gradescope and PrairieLearn results rendered from that decision.
 #include "harness/class/autograder.hpp"
@@ -50,7 +50,7 @@ ClassRow checked_row(const std::string& name, const std::vector<std::string>& pr
 
 }  // namespace
 
-// Issue 49: one slot of eleven, right, read as PASS; "n/p" mixed what was not written with what the
+// One slot of eleven, right, read as PASS; "n/p" mixed what was not written with what the
 // language cannot compute. The assignment decides PASS, and the cells count the two apart.
 TEST(ClassRecord, TheAssignmentDecidesPassAndNotProvidedIsSplit) {
   std::vector<ClassRow> rows{checked_row("frank", {"hat", "vee", "casimir"}), checked_row("alice", {"hat", "vee", "casimir", "euler_3_8"})};
@@ -120,7 +120,7 @@ TEST(Autograder, ResultsRenderTheDecidedStudentInEachFormat) {
   EXPECT_EQ(gs2["tests"].back()["name"], "it compiles");
 }
 
-// Hidden tests (issue 57): the rubric's visibility reaches each platform's tests, and nothing the
+// Hidden tests: the rubric's visibility reaches each platform's tests, and nothing the
 // student sees now names a hidden slot: not a test, not the overall words, not the whole report.
 TEST(Autograder, HiddenTestsAreNotShownAndTheirPointsCount) {
   std::vector<ClassRow> rows{checked_row("bob", {"hat", "vee", "casimir"}, 1)};
@@ -211,7 +211,7 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
   fs::remove_all(root);
 }
 
-// Issue 49: `check-class week3` and `check-class week3/` wrote to different folders (without the
+// `check-class week3` and `check-class week3/` wrote to different folders (without the
 // slash nothing resumed; with it, classes overwrote each other's summary). One class folder, one
 // report folder, however it is written; the control: another class, another folder.
 // A class run resumes a submission only if what its check depends on is unchanged: for a C++ file
@@ -245,7 +245,7 @@ TEST(ClassRecord, OneClassFolderIsOneReportFolder) {
   EXPECT_NE(default_class_report_dir("week4/"), a);
 }
 
-// Issue 57: what the class got wrong, decided once: per slot and per claim, how many of the students
+// What the class got wrong, decided once: per slot and per claim, how many of the students
 // checked, who, and the most common first fix, grouped across the students' own names and numbers.
 // The control: a class with nothing wrong has no mistake, and a student not checked counts in neither.
 TEST(ClassRecord, WhatTheClassGotWrongCountsStudentsAndTheCommonFix) {
@@ -289,7 +289,7 @@ TEST(ClassRecord, WhatTheClassGotWrongCountsStudentsAndTheCommonFix) {
             std::string::npos);
 }
 
-// Issue 57: feedback where students read it. A class folder unzipped from Moodle's download has a
+// Feedback where students read it. A class folder unzipped from Moodle's download has a
 // folder per student named "Full Name_12345_assignsubmission_file_": the page goes into a folder of
 // that name; from Canvas's, files named "lastfirst_12345_67890_...": the page keeps that prefix. Any
 // other name: NAME.html, said to be no LMS's. A roster student with nothing handed in gets no page.

@@ -1,4 +1,4 @@
-// The libraries of a C++ file (harness/program/library_flags.hpp, issue 48): the file's own `// geomech:`
+// The libraries of a C++ file (harness/program/library_flags.hpp): the file's own `// geomech:`
 // lines, pkg-config, the vetting of a stranger's flags (and its control: your own file's flags pass
 // unvetted), and the hint for a missing header.
 #include "harness/program/library_flags.hpp"

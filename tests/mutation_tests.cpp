@@ -75,7 +75,7 @@ TEST(Mutation, EquivalentMutantIsNotCounted) {
 
 }  // namespace
 
-// Issue 32: the 50-digit runs left to --thorough never lose a kill. Of two costly 50-digit checks
+// The 50-digit runs left to --thorough never lose a kill. Of two costly 50-digit checks
 // killing the same mutant, the costlier waits and the cheaper is kept; one killing a mutant no
 // other check kills is kept; a cheap one is never a candidate.
 TEST(Mutation, RunsLeftToThoroughKeepEveryKill) {

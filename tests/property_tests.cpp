@@ -92,7 +92,7 @@ class NegativeControlTest : public ::testing::Test {
         failed = true;
         std::cout << "as it should, '" << p_->id << "' fails on '" << mutant_ << "' (" << m->description << "):\n"
                   << format_verdict(v) << "\n";
-        // Issue 33: a failure shows its inputs by the notes' names, never as RapidCheck's list of
+        // A failure shows its inputs by the notes' names, never as RapidCheck's list of
         // C++ types ("double = 0.5"): named in the message (showing_inputs) or drawn with a name.
         if (!v.counterexample.empty() && !inputs_in_message(v) && !counterexample_by_name(v))
           ADD_FAILURE() << "the counterexample of '" << p_->id << "' has values without a name (draw them with "

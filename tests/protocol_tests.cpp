@@ -177,7 +177,7 @@ TEST(RemoteSubject, AForkOutsideTheWorkerPoolStartsItsOwnServer) {
   EXPECT_EQ(s.d->hamiltonian_3_4(Vec3<double>(2, 1, 1), Vec3<double>(0, 0, 2)), 2.0);
 }
 
-// Issue 15: sessions. Every check sees the implementation as its handshake left it (a module-level
+// Sessions. Every check sees the implementation as its handshake left it (a module-level
 // counter starts at 0 in each), and all checks of a worker reach the same server (one interpreter
 // start per worker, not per check). The control: without the hooks each forked check starts its own
 // server, a different process each time.
@@ -241,7 +241,7 @@ TEST(RemoteSubject, ACrashInACheckFailsThatCheckAloneAndSaysHowItDied) {
   EXPECT_EQ(r[4].payload, "0");
 }
 
-// Issue 32: a call repeated with the same arguments is answered from memory, without a round trip
+// A call repeated with the same arguments is answered from memory, without a round trip
 // (the server's counter does not move), and one repeat in CallMemo::kRecheckEvery is asked again:
 // a slot that answers differently (here a counter, as a persistent variable would) is an error
 // naming the slot, the arguments and both answers. The control: a slot that is a function of its

@@ -61,7 +61,7 @@ function(grade name expect_score expect_text)
   foreach(f IN LISTS ARGN)
     file(COPY ${examples}/submissions/${f} DESTINATION ${sub})
   endforeach()
-  # Its scratch folder in a TMPDIR of the test's own, which it must leave as it found it (issue 57).
+  # Its scratch folder in a TMPDIR of the test's own, which it must leave as it found it.
   set(tmp ${OUT}/tmp-${name})
   file(MAKE_DIRECTORY ${tmp})
   execute_process(COMMAND ${CMAKE_COMMAND} -E env ${env} GEOMECH=${GEOMECH} TMPDIR=${tmp} ${script}
@@ -96,7 +96,7 @@ function(grade name expect_score expect_text)
       message(FATAL_ERROR "${name}: expected not gradable:\n${json}")
     endif()
     set(score "not gradable")
-    # Not graded has no score: the message never says one ("0.00 of 20" was said, issue 57).
+    # Not graded has no score: the message never says one ("0.00 of 20" was said).
     string(JSON said GET "${json}" message)
     if(said MATCHES "[0-9]+\\.[0-9][0-9] of [0-9]")
       message(FATAL_ERROR "${name}: a submission that is not gradable is given a score in its message: ${said}")

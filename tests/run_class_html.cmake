@@ -1,4 +1,4 @@
-# The class report as a page (issue 49), opened in a real browser: Debian's chromium, headless, as a
+# The class report as a page, opened in a real browser: Debian's chromium, headless, as a
 # lecturer opens summary.html from the report folder (file://, no server, no network).
 #   cmake -DGEOMECH=... -DSOURCE=<repo> -DOUT=dir [-DCONTROL=ON] -P run_class_html.cmake
 # A small class from examples/class (narrowed checks) is checked; then summary.html, opened as

@@ -1,4 +1,4 @@
-# A lecturer's class run that nothing stops from finishing (issue 34), in untrusted mode:
+# A lecturer's class run that nothing stops from finishing, in untrusted mode:
 #  - the class lies in a private folder (mode 0700, as `mktemp -d` makes it); run as root (as CI
 #    runs), the sandbox runs as nobody, who cannot enter it: every Python and Octave submission
 #    must still be checked (each from a private read-only copy), with its verdict;
@@ -55,7 +55,7 @@ string(FIND "${full}" "NOT CHECKED" not_checked)
 if(NOT not_checked EQUAL -1)
   message(FATAL_ERROR "a submission in the private folder was not checked:\n${full}")
 endif()
-# Issue 49: the console gives each student a line as their check ends: result, grade, time.
+# The console gives each student a line as their check ends: result, grade, time.
 if(NOT out MATCHES "\\[[1-4]/4\\] wrong_vee: FAIL, [0-9]+\\.[0-9][0-9] of 100, [0-9]+ s\n")
   message(FATAL_ERROR "no console line with wrong_vee's result, grade and time:\n${out}")
 endif()
@@ -79,7 +79,7 @@ file(READ ${OUT}/stopped/summary.md partial)
 if(NOT partial MATCHES "In progress: 1 of 4 implementations checked")
   message(FATAL_ERROR "after SIGINT the summary does not say what is done:\n${partial}")
 endif()
-# Issue 49: Ctrl-C says what was kept and the command that resumes (without --fresh), and the
+# Ctrl-C says what was kept and the command that resumes (without --fresh), and the
 # gradebook says what the summary says: the three not checked yet have no grade, and say why.
 if(NOT out MATCHES "interrupted\\. 1 of 4 results are kept in [^\n]*The same command resumes, checking only those:\n  [^\n]*check-class")
   message(FATAL_ERROR "Ctrl-C did not say what was kept and how to resume:\n${out}")
@@ -125,7 +125,7 @@ run_class(${OUT}/stopped "GEOMECH_UNUSED=1" 1 --fresh)
 if(out MATCHES "unchanged")
   message(FATAL_ERROR "control: --fresh resumed something:\n${out}")
 endif()
-# Issue 49: a --fresh run stopped after one leaves a summary and a gradebook of this run (one
+# A --fresh run stopped after one leaves a summary and a gradebook of this run (one
 # checked, three not yet), not the previous run's complete ones beside deleted results.
 run_class(${OUT}/stopped "GEOMECH_TEST_STOP_AFTER=1:INT" signal --fresh)
 file(READ ${OUT}/stopped/summary.md partial)
@@ -137,7 +137,7 @@ if(NOT out MATCHES "resumes, checking only those:\n  [^\n]*check-class" OR out M
   message(FATAL_ERROR "the resume command of a --fresh run must not repeat --fresh:\n${out}")
 endif()
 
-# A lecturer's term (issue 57): --regrade NAME checks that student again and resumes the rest, the
+# A lecturer's term: --regrade NAME checks that student again and resumes the rest, the
 # summary the same; a name not in the class is refused before anything runs, with the closest one.
 run_class(${OUT}/full "GEOMECH_UNUSED=1" 1)  # up to date with numpy_double_only.py changed above
 file(READ ${OUT}/full/summary.md full)

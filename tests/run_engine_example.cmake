@@ -34,7 +34,7 @@ else()
 endif()
 message("${out}")
 # Nothing is claimed (ODE's documentation claims nothing the suite can verify), so no claim can be
-# false; but the order is asked of every step (issue 47: it must converge to the notes' motion), and
+# false; but the order is asked of every step (it must converge to the notes' motion), and
 # with the gyroscopic term off ODE's steps do not: those two rows FAIL, and nothing else.
 if(NOT status EQUAL 1)
   message(FATAL_ERROR "exit status ${status}, expected 1 (the gyroscopic-off steps do not converge)\n${err}")

@@ -1,4 +1,4 @@
-# ctest (issue 34): examples/hostile/peek_environ.py reads /proc/*/environ and /proc/*/cmdline and
+# ctest: examples/hostile/peek_environ.py reads /proc/*/environ and /proc/*/cmdline and
 # raises what it found. The test's environment holds GEOMECH_TEST_CANARY (ctest's ENVIRONMENT);
 # checked untrusted, neither the canary nor the folder the submission lies in (a path of this
 # machine, which the command lines of the harness and of bubblewrap name) may be in what it found,

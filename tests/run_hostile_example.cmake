@@ -1,4 +1,4 @@
-# ctest: one hostile submission (examples/hostile) checked in untrusted mode (issue 14).
+# ctest: one hostile submission (examples/hostile) checked in untrusted mode.
 #   cmake -DGEOMECH=<geomech> -DFILE=<file> -DSTATUS=<exit status> -DREGEX=<regex the report must match> [-DREGEX2=<another>]
 #         -DSOURCE=<suite source dir> -DOUT=<scratch dir> [-DARGS=<check options, ;-separated>]
 #         [-DCONTROL=ON -DEXPECT_FILES=<;-separated paths>] -P run_hostile_example.cmake

@@ -1,4 +1,4 @@
-# The user's interpreter (issue 48): `geomech check mine.py` runs the python3 first on PATH, not
+# The user's interpreter: `geomech check mine.py` runs the python3 first on PATH, not
 # Debian's, when GEOMECH_PYTHON does not say otherwise. A venv made from Debian's Python (with its
 # packages: --system-site-packages) is put first on PATH, GEOMECH_PYTHON is unset, and the report
 # must name the venv's interpreter; in untrusted mode the sandbox must show the venv (read-only). The

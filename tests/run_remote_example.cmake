@@ -28,7 +28,7 @@ if(NOT EXISTS ${OUT}/report.md)
   message(FATAL_ERROR "no report was written in ${OUT}\n${err}")
 endif()
 file(READ ${OUT}/report.md report)
-# -DINERT=ON: nothing the submission wrote may reach the report as a control character (issue 34).
+# -DINERT=ON: nothing the submission wrote may reach the report as a control character.
 if(INERT)
   string(ASCII 27 esc)
   string(FIND "${report}" "${esc}" raw)

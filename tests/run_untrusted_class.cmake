@@ -1,4 +1,4 @@
-# ctest: `geomech check-class` checks in untrusted mode by default (issue 14).
+# ctest: `geomech check-class` checks in untrusted mode by default.
 #   cmake -DGEOMECH=<geomech> -DSOURCE=<suite source dir> -DOUT=<scratch dir> -P run_untrusted_class.cmake
 # A class of three: alice (correct), mallory (a wrong hat that forges a PASS verdict and exits)
 # and carol (does not compile). The summary must show alice passing, mallory failing and carol not
@@ -11,7 +11,7 @@ configure_file(${SOURCE}/examples/hostile/forged_verdict.cpp ${OUT}/class/mallor
 file(WRITE ${OUT}/class/carol.cpp "#include <geomech/student.hpp>\nstruct Carol { int hat( };\n")
 # Run from OUT with relative folders, as a lecturer would type them.
 # alice.cpp includes correct.hpp, beside it in the flat folder: a header shared with every C++
-# submission only when the lecturer says so (issue 46).
+# submission only when the lecturer says so.
 execute_process(COMMAND ${GEOMECH} check-class class --report reports --cache-dir cache --shared class/correct.hpp
                         --parallel 2 --scalar double --property hat_is_cross_product
                 WORKING_DIRECTORY ${OUT}

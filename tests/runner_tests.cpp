@@ -1,4 +1,4 @@
-// The property runner's own bookkeeping (properties/runner.cpp). Issue 18: a discarded case is not
+// The property runner's own bookkeeping (properties/runner.cpp). a discarded case is not
 // a check, so a verdict counts its discarded cases and keeps the first reason (the verdict's JSON
 // carries them: tests/harness_tests.cpp).
 #include "impl/reference_subject.hpp"
@@ -14,7 +14,7 @@
 namespace gm {
 namespace {
 
-// The case and shrink budgets count the code's CPU time (issue 47: a loaded machine does not spend
+// The case and shrink budgets count the code's CPU time (a loaded machine does not spend
 // them), so a slow case here computes for its time rather than sleeps.
 void burn_cpu(double seconds) {
   const double start = code_cpu_seconds();
@@ -101,7 +101,7 @@ TEST(Runner, WithoutShrinkingAFailureStaysAFailure) {
   EXPECT_NE(unshrunk.message, shrunk.message) << "the first failing draw of 0..999 is not the smallest one";
 }
 
-// Issue 33: a value drawn with a name (gen.as("k")) is shown by that name, and the heading says
+// A value drawn with a name (gen.as("k")) is shown by that name, and the heading says
 // the inputs are by the notes' names; the control: the same draw without a name is shown by its
 // type, and the heading does not say so (tests/property_tests.cpp requires every negative control's
 // failure to be of the first kind).
@@ -131,7 +131,7 @@ TEST(Runner, ACounterexampleDrawnWithNamesIsShownByThem) {
       << format_verdict(typed);
 }
 
-// Issue 15: the case budget. A property whose cases take 20 ms of CPU each, with 40 planned and a budget of
+// The case budget. A property whose cases take 20 ms of CPU each, with 40 planned and a budget of
 // 0.1 s, passes on the cases it had time for (at least one), and says how many of how many. The
 // control: without a budget all 40 run.
 TEST(Runner, TheCaseBudgetStopsStartingCasesAndSaysHowMany) {
@@ -206,7 +206,7 @@ TEST(Runner, TheShrinkBudgetKeepsTheSmallestFailureFoundSoFar) {
   EXPECT_EQ(again.message, v.message);
 }
 
-// Issue 33: a failure that depends on what the implementation kept from earlier calls (here a call
+// A failure that depends on what the implementation kept from earlier calls (here a call
 // counter: right for the first 5 calls of a process, wrong after) fails in a check, and its replay
 // alone, in a fresh process (the counter reset), passes. The replay is then not an ERROR ("Reproduced
 // result is not a failure") but runs the whole sequence again and fails, saying so; its replay is

@@ -1,4 +1,4 @@
-// Who calls whom in a submission, read from its source (issue 49): the first fix is the function
+// Who calls whom in a submission, read from its source: the first fix is the function
 // whose own check fails, not one that calls it.
 #include "harness/reports/report.hpp"
 #include "harness/reports/source_calls.hpp"
@@ -48,7 +48,7 @@ TEST(SourceCalls, ACallerIsReadFromPythonOctaveAndCpp) {
   fs::remove_all(dir);
 }
 
-// Issue 49: "first fix: manakov_2_34", which is right and calls the wrong manakov_Omega (a folder
+// "first fix: manakov_2_34", which is right and calls the wrong manakov_Omega (a folder
 // submission). Both own checks fail; the callee comes first, and the caller says why it fails.
 TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
   const fs::path dir = scratch("first-fix");

@@ -52,7 +52,7 @@ TEST(Spec, GeneratedTableIsCurrent) {
                                  << "  build/bin/geomech catalogue --markdown > spec/CATALOGUE.md";
 }
 
-// Issue 50: the catalogue points at the files. Every property records the file that registers it,
+// The catalogue points at the files. Every property records the file that registers it,
 // a file of a part of the notes (properties/<part>/, not support/) that exists and names the
 // property's id; spec/CATALOGUE.md prints it.
 TEST(Spec, EveryPropertyNamesItsFile) {

@@ -1,4 +1,4 @@
-// The vector field Manakov's step and the Clebsch steps follow (issue 33,
+// The vector field Manakov's step and the Clebsch steps follow (
 // properties/integrators/support/step_field_matrix.hpp): a step of the right equation is said right, each
 // mistake the diagnosis names is recognised from a step that makes it, and a false order claim of
 // a step that follows the wrong equation leads with that equation, in the verdict and in the claim's

@@ -80,7 +80,7 @@ TEST(StudentDetection, IntegratorsAndTheirClaims) {
   EXPECT_TRUE(static_cast<bool>(d.integrators[0].rigid_body_step));
   EXPECT_FALSE(static_cast<bool>(d.integrators[0].manakov_step));
   // A step that cannot be called leaves the claims unchecked: that is recorded as unchecked (which
-  // fails the check), not as a warning (issue 13).
+  // fails the check), not as a warning.
   EXPECT_TRUE(info.warnings.empty());
   ASSERT_EQ(info.unchecked.size(), 1u);
   EXPECT_NE(info.unchecked[0].find("integrator 'no_step' has none of rigid_body_step("), std::string::npos);

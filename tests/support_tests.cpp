@@ -194,7 +194,7 @@ TEST(LongTime, TellsOscillationLossGrowthAndRoundoffApart) {
   EXPECT_EQ(longtime::classify_energy_error(t, hidden, budget, step).kind, EnergyKind::Oscillating);
 }
 
-// Issue 36: errors at round-off at every step size are an exact step: any claimed order holds,
+// Errors at round-off at every step size are an exact step: any claimed order holds,
 // with a note saying so. Controls: one error above its floor with two below is "not measurable"
 // (an incomplete finding: the claim is not verified by it), and a clean slope of 1 against a claim of 2 is false.
 TEST(OrderClaim, AnExactStepHoldsAnyClaimedOrder) {
@@ -210,7 +210,7 @@ TEST(OrderClaim, AnExactStepHoldsAnyClaimedOrder) {
   EXPECT_NE(recorded_claims()[0].evidence.find("exact for this problem (error at round-off for every step size"),
             std::string::npos) << recorded_claims()[0].evidence;
 
-  // Issue 47: not measurable is an incomplete finding: it refutes nothing and verifies nothing (the
+  // Not measurable is an incomplete finding: it refutes nothing and verifies nothing (the
   // claims block then says NOT VERIFIED, with this reason).
   judge({1e-3, 5e-14, 2e-15, 5e-14}, 2);
   ASSERT_EQ(recorded_claims().size(), 1u);

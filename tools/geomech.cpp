@@ -60,7 +60,7 @@ namespace gm {
 namespace {
 
 // The command a report prints for replaying a check, when the caller names it (--reproduce-prefix:
-// a class run gives the student's own command, "geomech check bob.py", issue 49).
+// a class run gives the student's own command, "geomech check bob.py").
 std::string g_reproduce_prefix;
 
 // How the user called us, for the commands we print: the front-door script sets GEOMECH_FRONT_DOOR.
@@ -101,7 +101,7 @@ int run_student_check(const std::string& file, harness::CheckCliOptions o, const
   const harness::Toolchain tc = harness::load_toolchain(harness::default_toolchain_path());
   const bool narrowed_run = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" ||
                             !o.integrator.empty() || !o.reproduce.empty() || o.definitions_only;
-  // The first look (issue 32): from an empty cache the three instantiations take 11-20 s to
+  // The first look: from an empty cache the three instantiations take 11-20 s to
   // compile. The double one alone compiles first and its program checks every slot's own
   // definition in double, its failures printed as they come, while the 50-digit and exact ones
   // compile; the full check follows. When the double program is up to date there is nothing to wait
@@ -181,11 +181,11 @@ int run_protocol_check(const std::string& file, const std::vector<std::string>& 
   try {
     s = protocol::remote_subject(conn, name, info);
   } catch (const std::exception& e) {
-    // What the implementation said when it could not start is a stranger's text (issue 46).
+    // What the implementation said when it could not start is a stranger's text.
     std::cerr << "geomech check: " << file << ": " << harness::inert_text(harness::bounded_text(e.what())) << "\n";
     return 2;
   }
-  if (language == "c++") {  // functions named like a slot but not one (issue 13)
+  if (language == "c++") {  // functions named like a slot but not one
     try {
       for (const auto& advice : harness::slot_name_advice(harness::cpp_function_names(harness::read_stranger_file(file))))
         info.warnings.push_back(advice);
@@ -217,7 +217,7 @@ int run_remote_check(const std::string& file, harness::CheckCliOptions o) {
   return run_protocol_check(file, cmd, language, o, nlohmann::json(), "", t0);
 }
 
-// Untrusted mode (issue 14): the implementation runs as its own process in the sandbox, behind the
+// Untrusted mode: the implementation runs as its own process in the sandbox, behind the
 // protocol; a C++ file is compiled (sandboxed too) into a protocol server that links the student's
 // code and nothing of the judge. Verdicts are computed here alone.
 int run_untrusted_check(const std::string& file, harness::CheckCliOptions o, harness::BuildOptions bo) {
@@ -470,7 +470,7 @@ std::string other_language_signature(const SlotInfo& s, bool python) {
   return "function r = " + std::string(s.name) + "(" + out + ")  % r: " + describe(result);
 }
 
-// Issue 36: each slot's convention (fixed by the notes, or free and learned from the student's own
+// Each slot's convention (fixed by the notes, or free and learned from the student's own
 // hat), after its meaning; then the integrators' interface. `prefix` starts each line of text.
 // `text` wrapped at 100 columns after `prefix`, continuation lines indented under it.
 void print_wrapped(const std::string& text, const std::string& prefix) {
@@ -802,7 +802,7 @@ int main(int argc, char** argv) {
       if (!tr_inertia.empty()) tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
       if (!tr_step.empty()) tro.params.step = tr_step;
       tro.preserves.insert(tr_preserves.begin(), tr_preserves.end());
-      // A report by default, as `geomech check` writes one (issue 13): named after the first file.
+      // A report by default, as `geomech check` writes one: named after the first file.
       if (tr_report.empty())
         tr_report = "geomech-reports/trajectory-" + std::filesystem::path(trajectory_files.front()).stem().string();
       return gm::run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);

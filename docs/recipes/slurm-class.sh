@@ -1,5 +1,5 @@
 #!/bin/bash
-# A class as a Slurm job array (issue 17): one task per shard, then a merge job that waits for
+# A class as a Slurm job array: one task per shard, then a merge job that waits for
 # the whole array and writes the class's summary and gradebook. Submit with:
 #   jobid=$(sbatch --parsable --array=1-16 docs/recipes/slurm-class.sh submissions reports [OPTIONS...])
 #   sbatch --dependency=afterany:$jobid --wrap "geomech merge-class reports/class reports/shard-* \

@@ -1,4 +1,4 @@
-// Hostile (issue 14): code that reaches outside its sandbox. On every call of hat it tries to
+// Hostile: code that reaches outside its sandbox. On every call of hat it tries to
 // write into the suite's source tree (golden/, found from where it was compiled), into
 // /tmp/geomech-hostile-victim (created by the test) and into its working directory's parent; it
 // reads /etc/shadow and looks for a network interface (sending nothing). Each attempt that is

@@ -3,7 +3,7 @@
 // geomech: ldflags -L/root -Wl,--script=/tmp/evil.ld -l/etc/shadow
 //
 // A submission whose own `// geomech:` lines ask for compiler and linker flags that would read this
-// machine's files or run its programs from inside the sandboxed compile (issue 48). In untrusted and
+// machine's files or run its programs from inside the sandboxed compile. In untrusted and
 // class mode each is refused, with its reason, and the file is not compiled; the same lines in your own
 // file, checked in-process, would be passed on (harness/program/library_flags.hpp).
 #include <geomech/student.hpp>

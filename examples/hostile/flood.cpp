@@ -1,4 +1,4 @@
-// Hostile (issue 14): hat prints without end to stdout and stderr; Euler's equations (3.8) fill
+// Hostile: hat prints without end to stdout and stderr; Euler's equations (3.8) fill
 // the scratch disk with one ever-growing file. In untrusted mode the printing goes to a pipe the
 // harness does not drain (it blocks: hat's properties end in TIMEOUT), the file stops at the
 // sandbox's file-size limit (the server is killed by SIGXFSZ: FAIL, saying so), and vee, which is

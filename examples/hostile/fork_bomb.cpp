@@ -1,4 +1,4 @@
-// Hostile (issue 14): Euler's equations (3.8) with a fork bomb inside. In untrusted mode the
+// Hostile: Euler's equations (3.8) with a fork bomb inside. In untrusted mode the
 // sandbox's process limit stops the forking, the property ends in TIMEOUT when the bomb's
 // processes keep spinning, and all of them die with the sandbox; vee, which is correct, still
 // passes.

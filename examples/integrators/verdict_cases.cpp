@@ -1,4 +1,4 @@
-// Integrators whose true behaviour is known by theory (issue 47); see verdict_cases.hpp.
+// Integrators whose true behaviour is known by theory; see verdict_cases.hpp.
 //   ./geomech check examples/integrators/verdict_cases.cpp --integrator backward_euler
 #include "verdict_cases.hpp"
 

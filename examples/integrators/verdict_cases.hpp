@@ -1,4 +1,4 @@
-// Integrators whose true behaviour is known by theory (issue 47): each is a step a researcher or an
+// Integrators whose true behaviour is known by theory: each is a step a researcher or an
 // engine writes, with the claims it makes, and the verdict theory gives is what the suite must say.
 // tests/integrator_verdict_tests.py checks each, confirming the verdict by a computation of its own.
 #pragma once

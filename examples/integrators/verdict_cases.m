@@ -1,4 +1,4 @@
-% Integrators whose true behaviour is known by theory (issue 47), in Octave: explicit Euler under
+% Integrators whose true behaviour is known by theory, in Octave: explicit Euler under
 % two names (the same step, so the same verdicts, here as in C++ and Python), and an engine that
 % refuses fast states, once with its domain declared. See verdict_cases.hpp.
 %   ./geomech check examples/integrators/verdict_cases.m

@@ -1,6 +1,6 @@
 // Buggy claims: the explicit Euler method, Pi <- Pi + h Pi x Omega, O <- O + h O hat(Omega), is
 // first order and preserves neither |Pi|^2 (|Pi|^2 grows by h^2 |Pi x Omega|^2 every step) nor
-// the orthogonality of O, yet it claims both. The integrator-claim properties (issue 4) report the
+// the orthogonality of O, yet it claims both. The integrator-claim properties report the
 // Casimir and orthogonality claims as FALSE CLAIM; the order claim (1) holds.
 #include <geomech/student.hpp>
 

@@ -1,4 +1,4 @@
-// Buggy claims about structure (issue 16): three integrators that each claim a property of
+// Buggy claims about structure: three integrators that each claim a property of
 // geometric integrators they do not have. The claims table reports each as FALSE CLAIM:
 //
 //   rk4_rows_normalised   classical RK4 on (Pi, O), then each row of O scaled to length 1 "to keep

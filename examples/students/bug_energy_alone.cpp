@@ -1,6 +1,6 @@
 // Buggy, and alone: a student who writes only the energy (3.4) and forgets its 1/2. No other
 // slot is provided, so only a property that needs hamiltonian_3_4 alone can catch it:
-// definition_hamiltonian_3_4 (issue 13: every slot is checked on its own).
+// definition_hamiltonian_3_4 (every slot is checked on its own).
 #include <geomech/student.hpp>
 
 using namespace gm;

@@ -1,6 +1,6 @@
 // Buggy claims: a Lie-Trotter splitting (the three exact rotations of Pi_i^2 / (2 I_i), one
 // after the other, each for the full step) is a first-order, non-symmetric Poisson integrator;
-// it claims order 2 and symmetry. The integrator-claim properties (issue 4) report the order and
+// it claims order 2 and symmetry. The integrator-claim properties report the order and
 // symmetry claims as FALSE CLAIM; the Casimir, orthogonality and Poisson claims hold.
 #include <geomech/student.hpp>
 

@@ -126,7 +126,7 @@ if __name__ == "__main__":
     write("explicit_euler_h0.01.txt", explicit_euler_step, 0.01, "explicit Euler")
     write("sign_error_h0.01.txt", midpoint_step, 0.01, "implicit midpoint with dPi/dt = Omega x Pi", sign=-1.0)
     # A spherical body: Lie-Euler is exact for it, so its error is at round-off at every step size
-    # and an order claim is judged "exact for this problem" (issue 36), not "not measurable".
+    # and an order claim is judged "exact for this problem", not "not measurable".
     I = (1.5, 1.5, 1.5)
     for h in (0.1, 0.05, 0.025):
         write("spherical_lie_euler_h%s.txt" % h, lie_euler_step, h, "Lie-Euler (exact rotations), spherical body")

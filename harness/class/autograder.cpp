@@ -367,7 +367,7 @@ int grade_submission(const GradeSubmissionOptions& o) {
     throw std::runtime_error(o.config + ": not an autograder configuration written by `geomech autograder`");
   const Rubric rubric = parse_rubric(config.at("rubric").get<std::string>(), config.value("rubric_source", "rubric.json"));
   std::string work = o.work;
-  struct Scratch {  // a work folder of its own is removed at the end, whatever happens (issue 57)
+  struct Scratch {  // a work folder of its own is removed at the end, whatever happens
     std::string path;
     ~Scratch() {
       std::error_code ec;
@@ -404,7 +404,7 @@ int grade_submission(const GradeSubmissionOptions& o) {
                                   "--parallel", "1", "--timeout-per-implementation",
                                   std::to_string(config.value("timeout", 540.0))};
     if (config.value("trusted", false)) argv.push_back("--trusted");
-    // With the rubric, so that the instructor's log says the grade results.json gives (issue 57).
+    // With the rubric, so that the instructor's log says the grade results.json gives.
     const fs::path rubric_file = fs::path(work) / "rubric.json";
     write_file_atomically(rubric_file.string(), config.at("rubric").get<std::string>());
     argv.insert(argv.end(), {"--rubric", rubric_file.string()});

@@ -1,4 +1,4 @@
-// Autograders for the platforms where courses grade (issue 49): Gradescope and PrairieLearn.
+// Autograders for the platforms where courses grade: Gradescope and PrairieLearn.
 //
 // `geomech autograder gradescope DIR` writes what Gradescope's autograder zip holds (setup.sh,
 // run_autograder, the suite's source and the assignment's rubric) and the zip itself;

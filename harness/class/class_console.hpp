@@ -1,4 +1,4 @@
-// What a class run says on the console while it runs (issue 49: "nothing for 6.5 minutes after the
+// What a class run says on the console while it runs ("nothing for 6.5 minutes after the
 // banner"): a line for each student as their check ends (verdict, grade, time), a progress line
 // naming who is being checked and for how long (redrawn in place on a terminal, a line every 30 s
 // in a log), and, on Ctrl-C (SIGINT) or SIGTERM, what was kept and the command that resumes.

@@ -1,4 +1,4 @@
-// summary.html: a class run as one page to read (issue 49), beside summary.md, rendered from the same
+// summary.html: a class run as one page to read, beside summary.md, rendered from the same
 // decided ClassView (harness/class/class_record.hpp). Self-contained: no network, inline style and script;
 // the class table (student x area of the notes, with the result, the grade and the first fix) sorts
 // by any column (click a heading, or open the page as summary.html#sort=COLUMN or #sort=-COLUMN);

@@ -38,7 +38,7 @@ using nlohmann::json;
 
 namespace {
 
-// The problem of a submission refused before anything of it was checked (issue 46).
+// The problem of a submission refused before anything of it was checked.
 const std::string kNotRead = "the submission was not read: ";
 
 struct Row {
@@ -312,7 +312,7 @@ std::string md_cell_of(const std::string& text) { return md_inline(text); }
 
 }  // namespace
 
-// Every view of a class, from one decision (harness/class/class_record.hpp, issue 49): summary.md,
+// Every view of a class, from one decision (harness/class/class_record.hpp): summary.md,
 // summary.html and the gradebook, rewritten together (each atomically) as each implementation
 // finishes, so that they always agree, an interrupted run included: the students not checked yet
 // are listed in the summaries and have no grade in the gradebook, which says why. When `final`,
@@ -541,7 +541,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
                      pr.output.substr(0, 2000);
     return j.dump(-1, ' ', false, json::error_handler_t::replace);
   };
-  // Resuming (issue 34): what each check depends on, and the implementations whose complete result
+  // Resuming: what each check depends on, and the implementations whose complete result
   // from an earlier run (class-row.json beside the report, written once the check has ended) has
   // the same fingerprint. A check cut off by an interruption left no class-row.json: it runs again.
   std::vector<std::string> prints(impls.size());
@@ -644,7 +644,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     std::cerr << "\n";
   }
 
-  // The command a student runs on their own file, as the reports print it (issue 49): their file's
+  // The command a student runs on their own file, as the reports print it: their file's
   // name, no folder of the lecturer's, no lecturer's option ("geomech check bob.py", "geomech check
   // dave/" for a folder of Octave files).
   auto student_command = [](const Implementation& impl) {
@@ -706,7 +706,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
         const auto args = to_args(co);
         argv.insert(argv.end(), args.begin(), args.end());
         if (fs::path(impl.source).extension() == ".cpp" || fs::path(impl.source).extension() == ".cc") {
-          const auto libs = library_args(o.build.libraries);  // --pkg, --cxxflags, --ldflags (issue 48)
+          const auto libs = library_args(o.build.libraries);  // --pkg, --cxxflags, --ldflags
           argv.insert(argv.end(), libs.begin(), libs.end());
         }
         j["built"] = true;

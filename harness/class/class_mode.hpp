@@ -9,7 +9,7 @@
 // built and checked in its own process, `jobs` at a time; a student whose code does not compile,
 // crashes or hangs gets a row saying so, and the others are unaffected.
 //
-// The class folder is a stranger's (issue 46; harness/isolation/submission_intake.hpp): it is read without
+// The class folder is a stranger's (harness/isolation/submission_intake.hpp): it is read without
 // following a link or opening a FIFO or device, each submission is copied (a snapshot, within
 // limits) into the compilers' cache (<cache>/class-<id>/submissions/<name>/) and what is checked,
 // fingerprinted and compiled is that copy. A C++ file in a flat class folder sees only itself and the headers the lecturer shares on
@@ -43,14 +43,14 @@ struct ClassOptions {
   std::string command;             // this run's command line without --fresh: what resumes it (said on Ctrl-C)
   CheckCliOptions check;           // forwarded to every implementation's check
   BuildOptions build;              // how each implementation is compiled (jobs is set to 1)
-  // Untrusted mode (the default, issue 14): every implementation is compiled and run in the
+  // Untrusted mode (the default): every implementation is compiled and run in the
   // sandbox as its own process behind the slot protocol (`geomech check FILE --untrusted`).
   bool untrusted = true;
   // --shard K/N: only the K-th of N deterministic shares of the class (the implementations sorted
   // by name, every N-th from the K-th on); `merge_class` combines the shards' report folders.
   int shard_k = 1;
   int shard_n = 1;
-  // Resuming (issue 34): an implementation whose report is complete and whose source, options and
+  // Resuming: an implementation whose report is complete and whose source, options and
   // suite are unchanged since (class-row.json beside its report holds their fingerprint) is not
   // checked again; --fresh checks everyone.
   bool fresh = false;
@@ -62,7 +62,7 @@ struct ClassOptions {
   bool not_checked = false;
   GradeOptions grades;
   // --shared FILE: headers (or other files) given to every C++ submission of the class, on
-  // purpose; nothing else of the class folder is shared (issue 46).
+  // purpose; nothing else of the class folder is shared.
   std::vector<std::string> shared;
 };
 

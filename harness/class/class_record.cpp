@@ -286,7 +286,7 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
       if (out == "PASS") ++c.passed;
       else ++c.bad;
     }
-    // The assignment decides a PASS (issue 49: one slot of twelve, right, read as PASS): every
+    // The assignment decides a PASS (one slot of twelve, right, read as PASS): every
     // check that ran passed, and every slot the rubric's assignment weights is provided, exercised
     // and right. Without an assignment in the rubric, the class's own union of slots is a guess at
     // one (docs/GRADEBOOK.md), and a PASS is every check passing; the grade still counts the slots.

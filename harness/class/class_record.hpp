@@ -1,5 +1,5 @@
 // A class run as it is recorded on disk, and what every view of it says about each student,
-// decided here once (issue 49, "a verdict is decided once"). A class run keeps, for each
+// decided here once ("a verdict is decided once"). A class run keeps, for each
 // implementation, <report>/<name>/class-row.json (how its build and check ended) beside the
 // check's own verdicts.json; the shard's rows are also in <report>/class-shard.json. summary.md,
 // summary.html, the gradebook CSV and the Gradescope and PrairieLearn results all render the

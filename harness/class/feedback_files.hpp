@@ -1,4 +1,4 @@
-// Feedback where students read it (issue 57): `--feedback-dir DIR` writes one file per student of a
+// Feedback where students read it: `--feedback-dir DIR` writes one file per student of a
 // class run, named so that the LMS's bulk upload takes DIR as it is (zip its content):
 //   - Moodle ("Upload multiple feedback files in a zip"): a folder per student, named as Moodle's
 //     "Download all submissions" names it, "Full Name_12345_assignsubmission_file_", holding

@@ -31,7 +31,7 @@ double read_weight(const Rubric& r, const json& v, const std::string& key) {
 }
 
 // A slot name written by hand: a misspelt one would be a slot nobody provides, and every student
-// would lose its share without a word (issue 49: "casimr" cost every correct student 7.7 points).
+// would lose its share without a word ("casimr" cost every correct student 7.7 points).
 void check_slot_name(const Rubric& r, const std::string& key, const std::string& name) {
   static const std::vector<std::string> slots = slot_name_list();
   if (std::find(slots.begin(), slots.end(), name) != slots.end()) return;
@@ -126,7 +126,7 @@ std::string utf8_suffix(const std::string& text, std::size_t n) {
 
 // "head; middle; tail" in at most `max_bytes`: the head (the grade and its counts) and the tail (the
 // pointer to the report) are kept whole, and the middle loses its own middle ("... "), so that the
-// first fix keeps its beginning and its end (issue 49: a cut at 400 bytes lost the report's path).
+// first fix keeps its beginning and its end (a cut at 400 bytes lost the report's path).
 std::string feedback_line(const std::string& head, const std::string& middle, const std::string& tail,
                           std::size_t max_bytes = 400) {
   auto join = [](const std::string& a, const std::string& b) { return a.empty() ? b : b.empty() ? a : a + "; " + b; };
@@ -138,7 +138,7 @@ std::string feedback_line(const std::string& head, const std::string& middle, co
     return join(utf8_prefix(head, max_bytes - std::min(max_bytes, tail.size() + 2 + mark.size())) + mark, tail);
   const std::size_t room = max_bytes - (ends.size() - 1) - mark.size();
   // The cut falls between words, never inside a quoted name: a cut in 'manakov_Omega' read as a
-  // function 'manakov (issue 57). A name the cut would split is kept whole if it ends near, else
+  // function 'manakov. A name the cut would split is kept whole if it ends near, else
   // the cut moves back to the word before it.
   const std::size_t near = 64;
   std::string first = utf8_prefix(middle, room - room / 3);
@@ -427,7 +427,7 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
     i.visibility = v == r.visibility.end() ? r.visibility_default : v->second;
   }
 
-  // The feedback in words (issue 49): the grade first, then what it rests on, counts and weights
+  // The feedback in words: the grade first, then what it rests on, counts and weights
   // together ("11 of 12 slots correct (weight 12 of 13)", "casimir (weight 1)"), the first fix, and
   // the report; clipped in the middle, never at its ends.
   bool uniform = true;
@@ -477,7 +477,7 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
                    "your code); it will be checked again";
   }
   if (st.status == kNotCheckedYet) {
-    // A class run stopped before this submission (issue 49): no grade, and the row says why, as
+    // A class run stopped before this submission: no grade, and the row says why, as
     // the summary does; an empty grade cell is "no grade" to both importers.
     out.headline = "no grade yet: " + kNotCheckedYet;
     out.feedback = "no grade yet: the class run stopped before checking this submission; the same command again resumes it";

@@ -149,7 +149,7 @@ std::string write_gradebook_csv(const std::vector<StudentResult>& cls, const Rub
 std::string csv_field(std::string_view value);  // quotes only when needed
 // A cell that a spreadsheet would read as a formula (it starts with =, +, -, @, a tab or a carriage
 // return: OWASP's "CSV injection" guidance) made text by a leading apostrophe; a number such as
-// "-1.5" stays a number. Every cell of the gradebook goes through it (issue 46: a file named
+// "-1.5" stays a number. Every cell of the gradebook goes through it (a file named
 // "=1+1.py" is a student named "=1+1").
 std::string spreadsheet_safe(const std::string& cell);
 // Strict parser: accepts CRLF or LF; throws std::runtime_error (with a line

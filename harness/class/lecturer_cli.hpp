@@ -1,4 +1,4 @@
-// The geomech tool's commands for where courses grade (issue 49):
+// The geomech tool's commands for where courses grade:
 //   geomech autograder gradescope|prairielearn DIR --rubric FILE.json [check options] [--trusted]
 //       writes an autograder (harness/class/autograder.hpp); the check options (--scalar, -p, --quick,
 //       --timeout, ...) are those of `geomech check` and apply to every submission

@@ -99,7 +99,7 @@ Verdict base_verdict(const SubjectSet& s, const Item& item) {
   return v;
 }
 
-// A verdict's texts, each of a bounded size (issue 46): a message of a property may quote a
+// A verdict's texts, each of a bounded size: a message of a property may quote a
 // submission's message (bounded already where a remote one is read, not an in-process exception's),
 // and its counterexample, notes and evidence values the submission returned.
 void bound_texts(Verdict& v) {
@@ -110,7 +110,7 @@ void bound_texts(Verdict& v) {
   v.discard_reason = bounded_text(v.discard_reason);
 }
 
-// All of a report's texts together stay under kReportTextBudget (issue 46: every slot of a
+// All of a report's texts together stay under kReportTextBudget (every slot of a
 // submission may raise a message as long as it is allowed): the longest messages are cut to 1 KiB
 // until they fit, and the report says how many were.
 void keep_within_budget(CheckResult& r) {
@@ -200,7 +200,7 @@ Verdict abnormal_verdict(const SubjectSet& s, const Item& item, const TaskResult
 
 // The verdicts a child returns must be those of the check it ran. Anything else was written on the
 // result channel by someone other than the property: in-process, the code under test shares the
-// child with its judge and can write there (issue 14). This catches a forgery that does not know
+// child with its judge and can write there. This catches a forgery that does not know
 // which check it interrupts; one that does can only be stopped by untrusted mode. (A verdict with
 // no integrator is the runner's "not provided" for an integrator check: it belongs.)
 struct ForeignResult : std::runtime_error {
@@ -291,7 +291,7 @@ std::vector<IntegratorInfo> integrator_info(const SubjectSet& s) {
 }
 
 // Which property exercised which provided slot and integrator; what nothing exercised; what
-// could not be checked at all (issue 13: a check that ran nothing is not a pass).
+// could not be checked at all (a check that ran nothing is not a pass).
 void account_for_slots(CheckResult& result, const SubjectSet& s, const CheckConfig& cfg) {
   result.narrowed = !cfg.properties.empty() || !cfg.spec_prefix.empty() || cfg.scalars.size() < 3 ||
                     !cfg.integrator.empty() || !cfg.run.reproduce.empty() || !cfg.only_checks.empty();
@@ -369,8 +369,8 @@ std::vector<Verdict> verdicts_of(const SubjectSet& s, const SubjectInfo& info, c
   }
   for (auto& v : vs) {
     explain_not_provided(v, *item.property, s, info);
-    // What the code under test wrote or raised reaches the reports as inert text (issue 34), each
-    // text of a bounded size (issue 46).
+    // What the code under test wrote or raised reaches the reports as inert text, each
+    // text of a bounded size.
     bound_texts(v);
     v.message = inert_text(v.message);
     for (auto& [type, value] : v.counterexample) value = inert_text(value);
@@ -394,7 +394,7 @@ std::tuple<int, int, int, int> schedule_key(const Item& item, bool replayed, boo
   // Exact first where a property runs in rationals: its counterexample is the clearest (no
   // tolerance) and its cases are cheap; then double; 50 digits cost most.
   const int scalar = item.kind == ScalarKind::Exact ? 0 : item.kind == ScalarKind::Double ? 1 : 2;
-  // An integrator's claimed checks before its unclaimed ones (issue 47): a false claim leads the
+  // An integrator's claimed checks before its unclaimed ones: a false claim leads the
   // output, what nobody claimed is characterised after.
   if (p.scope == Scope::Integrator) return {replayed ? 0 : 1, group, claimed ? 0 : 1, scalar};
   return {replayed ? 0 : 1, group, scalar, 0};
@@ -538,7 +538,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     result.thorough_only_note = result.left_to_thorough.empty() ? "" : cfg.thorough_only_note;
   }
 
-  // The order that finds the likely mistake first (issue 32): what failed last time; then every
+  // The order that finds the likely mistake first: what failed last time; then every
   // slot's own definition check, in every scalar; then the other properties, algebraic identities
   // before flows; then the integrators' claims after the slots their steps call; the long runs
   // (bounded energy, the pictures and the work-precision diagram) start as the flows begin, so
@@ -572,7 +572,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
       std::vector<Verdict> vs = item.integrator.empty()
                                     ? run_property(*item.property, s, item.kind, run)
                                     : run_property(*item.property, only_integrator(s, item.kind, item.integrator), item.kind, run);
-      for (auto& v : vs) bound_texts(v);  // before they cross to the harness (issue 46)
+      for (auto& v : vs) bound_texts(v);  // before they cross to the harness
       return verdicts_to_string(vs);
     });
   }
@@ -663,7 +663,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   });
   keep_within_budget(result);
   account_for_slots(result, s, cfg);
-  decide_integrator_verdicts(result);  // once; every view renders it (issue 47)
+  decide_integrator_verdicts(result);  // once; every view renders it
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (CheckListener* l : cfg.listeners) l->ended(result);
   return result;

@@ -85,7 +85,7 @@ struct CheckConfig {
   std::vector<CheckListener*> listeners;
   // The checks that failed in the previous run of the same report ("property/scalar" or
   // "property/scalar/integrator", check_key): they run first, so that a re-run says within about
-  // a second whether each is fixed (issue 32, like Hypothesis's example database).
+  // a second whether each is fixed (like Hypothesis's example database).
   std::set<std::string> failed_before;
 };
 
@@ -97,7 +97,7 @@ std::string check_key(const Verdict& v);
 std::set<std::string> failed_checks_in_report(const std::string& dir);
 
 // What a claim of an integrator is found to be, decided once from the verdicts of the checks that
-// judge it (harness/engine/integrator_verdicts.hpp, issue 47); every view (the console's claims block,
+// judge it (harness/engine/integrator_verdicts.hpp); every view (the console's claims block,
 // report.md, verdicts.json, the class summary, the gradebook) shows this record.
 enum class ClaimStatus {
   Verified,        // claimed: every check that judges it ran all its cases and passed

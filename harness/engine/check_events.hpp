@@ -1,4 +1,4 @@
-// A check is a stream of results (issue 32, DESIGN.md "A check is a stream of results"): run_check
+// A check is a stream of results (DESIGN.md "A check is a stream of results"): run_check
 // tells its listeners as each (property, scalar, integrator) check starts and ends, in the order
 // it schedules them, so that a failure reaches the student the moment its check ends rather than
 // when the last one does. The console (harness/reports/console_stream.hpp) prints failures and a progress

@@ -1,4 +1,4 @@
-// One verdict per integrator, claim and scalar, decided once (issue 47; DESIGN.md "A verdict is
+// One verdict per integrator, claim and scalar, decided once (DESIGN.md "A verdict is
 // decided once"): a claims block, a table row, a JUnit case, a verdicts.json entry, a class summary
 // and a gradebook cell are views of these records, never decisions of their own.
 //

@@ -1,4 +1,4 @@
-// `geomech check --quick` (issue 32): the checks of the quick profile, the small set chosen from
+// `geomech check --quick`: the checks of the quick profile, the small set chosen from
 // the kill matrix of `geomech mutants --matrix` (mutation/kill_matrix.hpp) that still kills every
 // mutant the whole suite kills. The profile is a file, spec/quick_profile.json, made by that
 // command and committed with its provenance.

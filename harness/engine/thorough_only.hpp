@@ -1,5 +1,5 @@
 // The 50-digit runs an implementation behind the protocol (Python, untrusted C++) leaves to
-// `geomech check --thorough` (issue 32, item 4). They are chosen from the kill matrix of
+// `geomech check --thorough` (item 4). They are chosen from the kill matrix of
 // `geomech mutants --matrix` (mutation/kill_matrix.hpp, choose_thorough_only): the costly 50-digit
 // runs of properties whose every kill another check kept also makes. Every statement is still
 // checked (in double, and in rationals where it is exact); what is left out is repeating a costly

@@ -329,7 +329,7 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
       m << "\n  h = " << sci(pts[i].first) << ": error " << sci(pts[i].second) << (used[i] ? "" : " (left out)");
     const bool claimed = o.order > 0;
     const bool measurable = !std::isnan(slope) && n_used >= 2;
-    // Exact for this problem (issue 36): every error at round-off, so no slope, and none needed.
+    // Exact for this problem: every error at round-off, so no slope, and none needed.
     const bool exact = std::all_of(pts.begin(), pts.end(),
                                    [&](const auto& p) { return std::isfinite(p.second) && p.second <= plateau; });
     const bool holds = exact || (measurable && std::abs(slope - o.order) <= 0.2);
@@ -371,7 +371,7 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
     r.info.warnings.push_back("--order needs runs at several step sizes (give two or more files); it was not checked");
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  decide_integrator_verdicts(r);  // once, as a check of code does (issue 47)
+  decide_integrator_verdicts(r);  // once, as a check of code does
   return r;
 }
 

@@ -1,4 +1,4 @@
-// The work-precision diagram and the long-time energy curve of a subject's integrators (issue 16),
+// The work-precision diagram and the long-time energy curve of a subject's integrators,
 // drawn against the suite's own methods in the same run: the picture a paper on an integrator
 // shows. One problem per kind of step the subject has:
 //   rigid body      (Pi, O), the motion of the portraits (portrait.hpp), against the 50-digit

@@ -1,5 +1,5 @@
 // Text that came from the code under test (an exception's message, its output, a description) as it
-// may be shown (issue 34): whatever a submission prints or raises reaches the console and the
+// may be shown: whatever a submission prints or raises reaches the console and the
 // reports as inert text. Invalid UTF-8 becomes U+FFFD, and control characters other than newline
 // and tab are made visible as \xNN (an escape sequence such as "\x1b[2K\r\x1b[32mPASS" would
 // otherwise erase a line of a terminal showing report.md and print a false PASS in its place).
@@ -12,7 +12,7 @@ namespace gm::harness {
 
 std::string inert_text(const std::string& text);
 
-// At most `cap` bytes of `text` (issue 46: a submission may raise a message of any size): its
+// At most `cap` bytes of `text` (a submission may raise a message of any size): its
 // beginning and its end, with the cut said in between ("[... 20971040 bytes cut: ...]"). Cut on
 // UTF-8 boundaries. The caps the harness uses:
 inline constexpr std::size_t kMessageCap = 8192;       // one message, traceback, compiler output

@@ -37,13 +37,13 @@ struct IsolationOptions {
   long memory_limit_mb = 4096;   // address-space limit of a child (not applied under AddressSanitizer)
   bool isolate = true;           // false: run the tasks in this process, one after the other (debugging)
   // Called in the parent as each task starts (index), and as it finishes (index, its result): a
-  // check reports each result the moment it is known (issue 32, harness/engine/check_events.hpp).
+  // check reports each result the moment it is known (harness/engine/check_events.hpp).
   std::function<void(std::size_t)> on_started;
   std::function<void(std::size_t, const TaskResult&)> on_finished;
   // Called in the parent while tasks run, between looks at them (about 50 times a second): a
-  // progress line that names what is running and for how long (issue 49, class mode).
+  // progress line that names what is running and for how long (class mode).
   std::function<void()> on_idle;
-  // Worker slots (issue 15): a running task occupies one of `jobs` slots, numbered from 0; in the
+  // Worker slots: a running task occupies one of `jobs` slots, numbered from 0; in the
   // task, current_worker() is its slot. prepare_worker(w) runs in this process before a task is
   // started in slot w (an implementation running out of process keeps one server per slot, started
   // here so that the children share it); if it throws, the task is not run and ends as Threw with

@@ -71,7 +71,7 @@ std::string PrivateCopy::add(const std::string& path, const std::string& area, s
     areas_.push_back(area);
   }
   if (area == "submission") {
-    // A stranger's file or folder (issue 46): read without following a link at any depth, never a
+    // A stranger's file or folder: read without following a link at any depth, never a
     // FIFO or device opened, within limits (harness/isolation/submission_intake.hpp); a refusal names the entry.
     const std::string parent = from.has_parent_path() ? from.parent_path().string() : ".";
     const StrangerFolder folder(parent);

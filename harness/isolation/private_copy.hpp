@@ -1,4 +1,4 @@
-// A submission's private read-only copy for the sandbox (issue 34).
+// A submission's private read-only copy for the sandbox.
 //
 // Untrusted mode shows a submission to its sandbox under neutral names: its file (or its folder of
 // .m files) as /submission/<name>, and the suite's files it needs (the protocol server) as

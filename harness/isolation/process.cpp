@@ -28,7 +28,7 @@ struct Child {
   std::string capture;  // temporary file holding the output
 };
 
-// A child's output, as much of it as a caller can use (issue 46: a compiler, or a program under
+// A child's output, as much of it as a caller can use (a compiler, or a program under
 // test, may write gigabytes): its first kOutputHead bytes and its last kOutputTail, with the cut said.
 constexpr std::size_t kOutputHead = 1u << 20, kOutputTail = 64u << 10;
 std::string read_bounded(const std::string& path) {
@@ -89,7 +89,7 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
       posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
     }
     // Nothing a child runs (a compiler told to #include "/dev/stdin", a submission's program)
-    // reads this process's input, which may be the lecturer's terminal (issue 46). A child whose
+    // reads this process's input, which may be the lecturer's terminal. A child whose
     // output passes through (the user's own check) keeps the terminal.
     if (!spec.pass_through) posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawnattr_t attr;

@@ -1,4 +1,4 @@
-// CPU time of processes (issue 47: slow is judged by the work done, not by the clock of a busy
+// CPU time of processes (slow is judged by the work done, not by the clock of a busy
 // machine). A check's budget of cases and its "too slow or hangs" verdict count the CPU time of the
 // code under test: the check's own process tree, and the tree of the implementation's server when
 // the code runs behind the protocol (a Python session runs in a fork of its server). A generous

@@ -123,7 +123,7 @@ std::string sandbox_tag() {
 
 std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const SandboxSpec& spec) {
   // The sandbox's own processes (setpriv, bubblewrap, its init in the new PID namespace) start from
-  // an empty environment (issue 34): inside, /proc/1/environ is bubblewrap's, and it must hold
+  // an empty environment: inside, /proc/1/environ is bubblewrap's, and it must hold
   // nothing of the harness's (the lecturer's or CI's tokens and paths). --clearenv below does the
   // same for the submission itself.
   std::vector<std::string> cmd{which("env"), "-i", "PATH=/usr/bin:/bin"};
@@ -135,12 +135,12 @@ std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const S
     cmd.insert(cmd.end(), {which("setpriv"), "--reuid=" + std::to_string(kNobody), "--regid=" + std::to_string(kNobody),
                            "--clear-groups", "--"});
   // Inside, /proc/1/cmdline is this command line: what it binds is a private copy under a fresh
-  // temporary name (harness/isolation/private_copy.hpp), not the lecturer's folders (issue 34). bubblewrap
+  // temporary name (harness/isolation/private_copy.hpp), not the lecturer's folders. bubblewrap
   // stays PID 1 (--as-pid-1 was tried: a server that is PID 1 ignores the signals the kernel sends
   // it, SIGXFSZ at the file-size limit among them, and reaps no orphan).
   cmd.insert(cmd.end(), {bwrap_program(), "--unshare-all", "--die-with-parent", "--new-session", "--clearenv",
                          "--hostname", "geomech-sandbox"});
-  // The visible system, minimised (issue 46): /usr without /usr/local (what was installed on this
+  // The visible system, minimised: /usr without /usr/local (what was installed on this
   // machine by hand: tools, tokens in scripts), and of /etc only what the dynamic linker, the
   // compiler's alternatives, Python and Octave read, with an account file naming root and nobody.
   cmd.insert(cmd.end(), {"--ro-bind", "/usr", "/usr", "--tmpfs", "/usr/local"});

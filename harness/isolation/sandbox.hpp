@@ -1,4 +1,4 @@
-// Untrusted mode's sandbox (issue 14): the command line that runs a program (a submission's
+// Untrusted mode's sandbox: the command line that runs a program (a submission's
 // protocol server, or the compiler on a submission's source) inside bubblewrap, a maintained
 // Debian tool (package bubblewrap), with limits set by prlimit (util-linux).
 //
@@ -13,7 +13,7 @@
 //     nobody (so the process limit applies: root is exempt from RLIMIT_NPROC);
 //   - no environment but the documented one, in its own processes and in the sandbox's (bubblewrap
 //     is its PID 1: /proc/1/environ is empty but for PATH, /proc/1/cmdline names only the private
-//     copy's temporary folder, harness/isolation/private_copy.hpp) (issue 34);
+//     copy's temporary folder, harness/isolation/private_copy.hpp);
 //   - limits: address space, CPU time, processes, size of any file written, open files.
 #pragma once
 
@@ -37,7 +37,7 @@ struct SandboxSpec {
   std::vector<std::string> read_only;  // visible read-only, at the same path
   // Visible read-only at another path (path here, path inside): a submission and the suite's files
   // it needs are shown under neutral names (/submission, /geomech), so that nothing inside, not
-  // even the program's own command line, names a folder of the machine (issue 34).
+  // even the program's own command line, names a folder of the machine.
   std::vector<std::pair<std::string, std::string>> mounts;
   std::string writable;                // a directory visible read-write at the same path (or empty)
   std::string chdir;                   // working directory inside (default /tmp)

@@ -1,4 +1,4 @@
-// The user's interpreter inside untrusted mode's sandbox (issue 48). The sandbox shows the system
+// The user's interpreter inside untrusted mode's sandbox. The sandbox shows the system
 // (/usr) and nothing else of this machine; an interpreter outside it (a venv, pyenv, an Octave of
 // one's own) is shown read-only at its own path, and nothing more: Python's sys.prefix and
 // sys.base_prefix (a venv: both, its own folder and the installation it was made from), the folder

@@ -1,4 +1,4 @@
-// Reading a stranger's folder (issue 46): a class folder, a submission handed in by someone else.
+// Reading a stranger's folder: a class folder, a submission handed in by someone else.
 //
 // The harness runs outside the sandbox, often as root, and a class folder comes from archives that
 // restore symbolic links, FIFOs and hard links. So every read of a submission goes through here:

@@ -387,7 +387,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     r.message = "cannot create the build directory " + dir.string() + ": " + ec.message();
     return r;
   }
-  // Sandboxed (untrusted mode, issue 14): the compiler sees a copy of the one source file, the
+  // Sandboxed (untrusted mode): the compiler sees a copy of the one source file, the
   // suite's headers and the prebuilt files, and writes only into `dir` (harness/isolation/sandbox.hpp).
   fs::path compiled_source = source;
   SandboxSpec sandbox;
@@ -398,7 +398,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     }
     // The file and the headers beside it: in a class, the submission's snapshot holds only the
     // student's own files and the headers the lecturer shares (harness/class/class_mode.hpp); for one file,
-    // the headers of its folder. Read as a stranger's (issue 46): a link, FIFO or device among them
+    // the headers of its folder. Read as a stranger's: a link, FIFO or device among them
     // is refused by name, never followed or opened; not the other sources of the folder.
     fs::create_directories(dir / "src", ec);
     compiled_source = dir / "src" / source.filename();
@@ -441,7 +441,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   }
   auto run_argv = [&](const std::vector<std::string>& argv) { return o.sandbox ? sandboxed(argv, sandbox) : argv; };
 
-  // The libraries it uses (issue 48, harness/program/library_flags.hpp): the command line's and the file's
+  // The libraries it uses (harness/program/library_flags.hpp): the command line's and the file's
   // own `// geomech:` lines; a stranger's (sandboxed) are vetted before the compiler sees them.
   LibraryFlags libs;
   std::vector<std::string> trusted_roots;  // GEOMECH_LIBRARY_ROOTS

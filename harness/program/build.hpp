@@ -62,7 +62,7 @@ struct BuildOptions {
   bool server = false;          // link the protocol server (untrusted mode) instead of the check program
   bool sandbox = false;         // compile and link inside the sandbox, from a copy of the source
   std::string program_name;     // the linked program's file name (default "check", or "server")
-  // Every compile and link stops after this long (issue 46: a file may include /dev/zero, or a
+  // Every compile and link stops after this long (a file may include /dev/zero, or a
   // template recursion may not end); the message says so.
   double compile_timeout_seconds = 900;
   // Libraries from the command line (--pkg, --cxxflags, --ldflags, -I, -L, -l); the file's own

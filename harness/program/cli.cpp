@@ -183,11 +183,11 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
     std::cerr << "geomech: warning: " << e.what() << " (places in the notes will not be shown)\n";
   }
   const Catalogue* c = cat ? &*cat : nullptr;
-  // Results as they happen (issue 32): the console listens to the run; the checks that failed in
+  // Results as they happen: the console listens to the run; the checks that failed in
   // the previous run of this report run first.
   CheckConfig streaming = cfg;
   streaming.failed_before = failed_checks_in_report(o.report_dir);
-  // Issue 32: behind the protocol, the whole check leaves its costliest 50-digit runs to --thorough
+  // Behind the protocol, the whole check leaves its costliest 50-digit runs to --thorough
   // (a selection by name, a replay or --quick runs what it names).
   if (info.out_of_process && !o.thorough && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty() && !o.quick &&
       !o.definitions_only) {

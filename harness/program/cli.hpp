@@ -35,7 +35,7 @@ struct CheckCliOptions {
   bool no_portraits = false;
   bool quiet = false;      // only the summary line and the report's path
   // Only every slot's own definition check, in double, no report, no pictures: the first look
-  // `geomech check FILE.cpp` takes while the other scalars compile (issue 32).
+  // `geomech check FILE.cpp` takes while the other scalars compile.
   bool definitions_only = false;
   // The quick profile (harness/engine/quick_profile.hpp): only its checks.
   bool quick = false;

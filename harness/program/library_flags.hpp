@@ -1,5 +1,5 @@
 // The libraries a student's (or a researcher's) C++ file uses, and the compile and link flags they
-// need (issue 48): from the command line (`--pkg NAME`, `--cxxflags`, `--ldflags`, `-I`, `-l`,
+// need: from the command line (`--pkg NAME`, `--cxxflags`, `--ldflags`, `-I`, `-l`,
 // `-L`) and from the file itself, one comment line per request:
 //
 //   // geomech: pkg ode

@@ -54,7 +54,7 @@ int student_main(int argc, char** argv) {
   }
   info.reproduce_prefix = prefix;
   const SubjectSet s = assemble(name, info, notes);
-  if (!source.empty()) {  // functions named like a slot but not one (issue 13): say which slot they mean
+  if (!source.empty()) {  // functions named like a slot but not one: say which slot they mean
     std::ifstream in(source);
     std::ostringstream text;
     text << in.rdbuf();

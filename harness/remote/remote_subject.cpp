@@ -67,7 +67,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr std::size_t kMaxReplyBytes = 32u << 20;  // one reply line (issue 46)
+constexpr std::size_t kMaxReplyBytes = 32u << 20;  // one reply line
 
 double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
@@ -255,7 +255,7 @@ std::string Connection::read_reply(ServerProcess& s, const std::string& what, do
     }
     s.buffer.append(buf, static_cast<std::size_t>(n));
     // A reply is one line; one longer than any the protocol needs (the longest, a run of 512 steps of
-    // Manakov's n = 6 in 50 digits, is about 2 MiB) is a flood, not a reply (issue 46): the
+    // Manakov's n = 6 in 50 digits, is about 2 MiB) is a flood, not a reply: the
     // implementation's process is not read further.
     if (s.buffer.size() > kMaxReplyBytes && s.buffer.find('\n') == std::string::npos) {
       s.buffer.clear();
@@ -441,7 +441,7 @@ std::vector<Reply> Connection::exchange(const std::vector<Call>& calls, const st
       x.ok = true;
       x.result = std::move(r["ok"]);
     } else {
-      // A message and a traceback of any size are shown up to kMessageCap bytes each (issue 46).
+      // A message and a traceback of any size are shown up to kMessageCap bytes each.
       x.error = harness::bounded_text(r.is_object() && r.contains("error") && r["error"].is_string()
                                           ? r["error"].get<std::string>()
                                           : r.dump(-1, ' ', false, json::error_handler_t::replace));
@@ -531,7 +531,7 @@ RemoteDescription parse_hello(const json& h) {
       RemoteDescription::Integrator x;
       x.name = i.at("name").get<std::string>();
       // An integrator's name names figures and report sections and is typed in --integrator:
-      // letters, digits and "_.-", at most 64 (issue 46: it is the submission's text).
+      // letters, digits and "_.-", at most 64 (it is the submission's text).
       if (x.name.empty() || x.name.size() > 64 ||
           x.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") != std::string::npos)
         throw bad("an integrator's name must be 1 to 64 letters, digits, '_', '.' or '-'; got '" +
@@ -548,7 +548,7 @@ RemoteDescription parse_hello(const json& h) {
           x.claims.*bc.member = c.value(bc.name, false);
           known.insert(bc.name);
         }
-        // Issue 33: a claim the suite does not know is not verified, so it fails the check (UNCHECKED)
+        // A claim the suite does not know is not verified, so it fails the check (UNCHECKED)
         // instead of passing with a warning, naming the claim it probably means and every known one.
         for (const auto& [k, v] : c.items())
           if (!known.count(k)) {
@@ -561,7 +561,7 @@ RemoteDescription parse_hello(const json& h) {
                                   " The claims are: " + list);
           }
       }
-      // Issue 48: the form its rigid-body step keeps the state in, and the precision it states.
+      // The form its rigid-body step keeps the state in, and the precision it states.
       if (i.contains("state")) {
         try {
           x.form = parse_state_form(i["state"].is_string() ? i["state"].get<std::string>() : i["state"].dump());
@@ -578,7 +578,7 @@ RemoteDescription parse_hello(const json& h) {
       }
       if (i.contains("precision_reason") && i["precision_reason"].is_string())
         x.claims.precision_reason = i["precision_reason"].get<std::string>();
-      // Where the step is meant to work (issue 47): positive numbers, each optional.
+      // Where the step is meant to work: positive numbers, each optional.
       if (i.contains("domain") && i["domain"].is_object() && !i["domain"].empty()) {
         x.has_claims = true;
         x.claims.integrator = x.name;
@@ -599,7 +599,7 @@ RemoteDescription parse_hello(const json& h) {
       }
       d.integrators.push_back(std::move(x));
     }
-  // What the implementation says of itself is its own text (issue 46): each bounded, notes only on
+  // What the implementation says of itself is its own text: each bounded, notes only on
   // slots and scalars there are, at most kMaxRemarks warnings and unchecked items (the rest counted).
   auto text = [](const json& j) { return harness::bounded_text(j.is_string() ? j.get<std::string>() : j.dump()); };
   constexpr std::size_t kMaxRemarks = 64;
@@ -760,7 +760,7 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   info.worker_done = [conn](int w, bool normally) { conn->worker_done(w, normally); };
   info.worker_times = [conn](int w) { return conn->server_times(w); };
   // In a check's own process, its case budget counts the CPU of the code under test: this
-  // process's and its server's (issue 47).
+  // process's and its server's.
   // The server's CPU is read from /proc for its whole tree (a session is a fork of it), which scans
   // every process of the machine: sampled at most every 20 ms (the budgets are seconds; a sample per
   // case made /proc the suite's largest cost after the JSON, docs/PERFORMANCE.md).
@@ -797,7 +797,7 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
     for (const auto& [slot, why] : slots) info.slot_notes[scalar][slot] = harness::inert_text(why);
   for (const auto& w : d.warnings) info.warnings.push_back(harness::inert_text(w));
   if (d.language == "python" || d.language == "octave") info.language = d.language;
-  // Which interpreter ran it, and its version (issue 48), as the server says.
+  // Which interpreter ran it, and its version, as the server says.
   if (!d.interpreter.empty())
     info.interpreter = harness::inert_text(d.interpreter) +
                        (d.language_version.empty() ? std::string()
@@ -850,7 +850,7 @@ std::string on_path(const std::string& program) {
 }
 
 std::string python_interpreter() {
-  // The user's interpreter (issue 48): $GEOMECH_PYTHON, else the python3 that comes first on PATH (a
+  // The user's interpreter: $GEOMECH_PYTHON, else the python3 that comes first on PATH (a
   // venv's or pyenv's), else Debian's.
   if (const char* py = std::getenv("GEOMECH_PYTHON"); py && *py) {
     const std::string found = on_path(py);

@@ -194,7 +194,7 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
 // server. Both answer alike; the linked one costs a half to a quarter of the time per call.
 std::string octave_server_program();
 
-// The interpreters a .py or .m file runs in (issue 48): $GEOMECH_PYTHON, else the python3 first on
+// The interpreters a .py or .m file runs in: $GEOMECH_PYTHON, else the python3 first on
 // PATH (a venv or pyenv works), else /usr/bin/python3; $GEOMECH_OCTAVE, else octave-cli from PATH.
 // Absolute paths where found.
 std::string python_interpreter();

@@ -1,4 +1,4 @@
-// The convention each slot is checked in, as `geomech slots` prints it (issue 36): what the notes
+// The convention each slot is checked in, as `geomech slots` prints it: what the notes
 // fix (the hat map (2.11), the pairing (2.15), the sign of (3.8), ...) and what they leave to the
 // student (the order and signs of the coordinates of so(n), the basis of sl(2, R)), which the
 // suite then learns from the student's own hat (properties/support/coordinates.hpp). Also the

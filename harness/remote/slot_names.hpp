@@ -1,4 +1,4 @@
-// Names students write instead of slot names (issue 13). Slot names are equation numbers
+// Names students write instead of slot names. Slot names are equation numbers
 // (euler_3_8, hamiltonian_3_4); students write `energy`, `euler`, `casimir_function`. A function
 // whose name is a known alias of a slot, or within a small edit distance of one, is reported with
 // the slot it probably means, so that it is not silently left unchecked.

@@ -102,7 +102,7 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
     if (!is_problem(v.outcome)) continue;
     ++failures_;
     if (replayed) text << "still failing (as in the previous run): " << check_name(v) << "\n";
-    // One finding per cause (issue 47): a step that raises says so once, in full; the other checks it
+    // One finding per cause: a step that raises says so once, in full; the other checks it
     // kept from running say only that.
     if (!v.step_raised.empty() && !raises_seen_.insert(v.integrator + '\n' + v.step_raised).second) {
       if (!quiet_) text << outcome_name(v.outcome) << "  " << check_name(v) << ": your step raised, as above\n";
@@ -119,7 +119,7 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
     std::string lead;
     const std::string slot = slot_of_direct_check(v);
     if (!slot.empty() && first_fixes_.insert(slot).second) {
-      // A slot that calls one already named wrong most likely fails through it (issue 49).
+      // A slot that calls one already named wrong most likely fails through it.
       if (!calls_) calls_ = stub_.info.source.empty() ? std::map<std::string, std::set<std::string>>{}
                                                       : slot_calls(stub_.info.source, stub_.info.language);
       std::string callee;

@@ -1,4 +1,4 @@
-// The console as a listener of a running check (issue 32): each failure is printed the moment its
+// The console as a listener of a running check: each failure is printed the moment its
 // check ends, led by what to fix first (the slot whose own definition check fails, or the
 // integrator's false claim), and a progress line names the checks running and estimates what is
 // left: in a terminal one line kept up to date on stderr, in a CI log a line every 30 seconds. The

@@ -1,4 +1,4 @@
-// Reports as HTML pages that need nothing but themselves (issue 49): the Markdown the reports write,
+// Reports as HTML pages that need nothing but themselves: the Markdown the reports write,
 // turned into HTML, and a page around it. A page loads nothing (its Content-Security-Policy allows
 // no network at all), its figures are inline (data: URIs), and every text is escaped: raw HTML in the
 // Markdown is shown as text, but for the two forms the reports write themselves (`<br>` in a table

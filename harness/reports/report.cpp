@@ -79,7 +79,7 @@ bool nothing_ran(const std::map<std::string, const Verdict*>& by_scalar) {
   return true;
 }
 
-// The table cell of a verdict: its word, decided once (harness/engine/integrator_verdicts.hpp, issue 47),
+// The table cell of a verdict: its word, decided once (harness/engine/integrator_verdicts.hpp),
 // with what a pass measured: the order where one was measured, the cases run of those planned when
 // the time budget was spent, the worst residual.
 std::string verdict_cell(const Verdict& v, bool exact_column) {
@@ -125,7 +125,7 @@ Missing missing_of(const CheckResult& r) {
   return m;
 }
 
-// Why a NOT PROVIDED check did not run (issue 49): "not written" when a slot or integrator it needs
+// Why a NOT PROVIDED check did not run: "not written" when a slot or integrator it needs
 // is not in the implementation at all, "double only" when it is there but not in this scalar
 // (Octave computes in double, numpy code does, a C++ slot written for double). A summary counts the
 // two apart: the second is the language's or the code's precision, not missing work.
@@ -157,10 +157,10 @@ std::string not_provided_kind(const CheckResult& r, const Verdict& v) {
   return other_scalar || r.info.scalar_unavailable.count(v.scalar) ? "double only" : "not written";
 }
 
-// A table cell or a list item: inert, on one line, nothing Markdown or HTML would act on (issue 46).
+// A table cell or a list item: inert, on one line, nothing Markdown or HTML would act on.
 std::string md_cell(const std::string& s) { return md_inline(s); }
 
-// A code block that no text inside can close (issue 46).
+// A code block that no text inside can close.
 std::string fence(const std::string& s) { return md_fenced(s); }
 
 // " (declared domain: |Omega| <= 1e+06, h >= 1e-09; nothing outside it is checked)", or empty.
@@ -283,7 +283,7 @@ bool is_problem(Outcome o) {
   return o == Outcome::Fail || o == Outcome::Crash || o == Outcome::Timeout || o == Outcome::Error;
 }
 
-// Which of two failures of a slot's own check shows it more clearly (issue 33): an exact
+// Which of two failures of a slot's own check shows it more clearly: an exact
 // counterexample (it fails in rationals, no tolerance involved) before a float one, and among float
 // ones the residual farthest above its allowance; a marginal case (a few eps over) comes last.
 bool clearer(const Verdict& a, const Verdict& b) {
@@ -314,7 +314,7 @@ RootCauses root_causes(const CheckResult& r) {
       }
   }
   rc.explained.insert(rc.caused.begin(), rc.caused.end());
-  // Issue 49: a wrong slot that calls another wrong slot (read from the student's source, across the
+  // A wrong slot that calls another wrong slot (read from the student's source, across the
   // files of a folder too) most likely fails through it: the callee is the first fix.
   if (rc.broken.size() > 1 && !r.info.source.empty()) {
     const auto calls = slot_calls(r.info.source, r.info.language);
@@ -383,7 +383,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     os << "\n";
   }
   if (!not_run.empty()) {
-    // Issue 33: a partial file reads as what was written and how it fared, not as a list of what
+    // A partial file reads as what was written and how it fared, not as a list of what
     // was not: the properties that need other slots are counted here and listed in report.md.
     std::set<std::string> provided;
     for (const auto& [scalar, slots] : r.provided) provided.insert(slots.begin(), slots.end());
@@ -427,7 +427,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
        << (r.narrowed ? " with this selection" : "") << "; a check that ran nothing is not a pass (exit status 1)\n";
   for (const auto& u : r.unchecked) os << "UNCHECKED: " << u << "\n";
   if (!r.unchecked.empty()) os << "(what could not be checked fails the check: exit status 1)\n";
-  {  // issue 18: a discarded case checked nothing; say how many there were
+  {  // A discarded case checked nothing; say how many there were
     int checks = 0, cases = 0;
     for (const auto& v : r.verdicts)
       if (v.discarded > 0) ++checks, cases += v.discarded;
@@ -435,7 +435,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
       os << "discarded: " << cases << " drawn cases in " << checks
          << " checks could not test their statement and checked nothing (report.md lists them)\n";
   }
-  {  // issue 15: a slow implementation is checked on fewer cases rather than timed out; say so
+  {  // A slow implementation is checked on fewer cases rather than timed out; say so
     int checks = 0, run = 0, planned = 0;
     for (const auto& v : r.verdicts)
       if (v.outcome == Outcome::Pass && v.cases_planned > v.cases) ++checks, run += v.cases, planned += v.cases_planned;
@@ -473,7 +473,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
   }
   if (details) {
     bool header = false;
-    std::set<std::string> raised;  // one step raise in full per integrator and message (issue 47)
+    std::set<std::string> raised;  // one step raise in full per integrator and message
     std::vector<const Verdict*> ordered;
     for (const auto& v : r.verdicts)
       if (is_problem(v.outcome)) ordered.push_back(&v);
@@ -532,7 +532,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   md << "# geomech report: " << md_inline(r.subject) << "\n\n";
   if (!r.description.empty()) md << md_inline(r.description) << "\n\n";
   if (!r.info.source.empty()) {
-    // The file's own name (issue 49): a report handed back to a student names their file, not the
+    // The file's own name: a report handed back to a student names their file, not the
     // folders of the machine that checked it.
     fs::path src = fs::path(r.info.source).lexically_normal();
     if (!src.has_filename()) src = src.parent_path();
@@ -564,7 +564,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     if (is_problem(v.outcome)) problems.push_back(&v);
   if (!problems.empty()) {
     // One line per property (and integrator) and outcome, naming the scalars it happened in;
-    // ordered by root cause (issue 13): a slot whose own direct property fails comes first, with
+    // ordered by root cause: a slot whose own direct property fails comes first, with
     // the properties that fail only because they call it grouped under it.
     md << "## What to fix\n\n";
     const RootCauses rc = root_causes(r);
@@ -584,7 +584,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
         md << "\n";
       }
     }
-    // A step that raises: one line per integrator and message, with the checks it stopped (issue 47).
+    // A step that raises: one line per integrator and message, with the checks it stopped.
     std::vector<std::pair<std::string, std::vector<const Verdict*>>> raises;
     for (const Verdict* v : problems) {
       if (v->step_raised.empty()) continue;
@@ -740,7 +740,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     for (const auto& f : other_figures) md << "![" << f << "](" << f << ")\n\n";
   }
 
-  // Issue 49: what did not run, short for a short submission. The checks of what is not written at
+  // What did not run, short for a short submission. The checks of what is not written at
   // all are one count per missing slot (a three-slot file's report was 223 lines, mostly these);
   // the checks that what is written cannot run in a scalar (double only) keep their reason, as
   // they say something about the code.
@@ -821,7 +821,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     md << "\n";
   }
   md << "\n";
-  // Issue 13: for each provided slot, the properties that exercised it; a provided slot that
+  // For each provided slot, the properties that exercised it; a provided slot that
   // nothing exercised is a warning, never silence.
   if (!r.exercised.empty() || !r.unexercised.empty()) {
     md << "## What exercised each slot\n\n| slot or integrator | properties that ran on it |\n|---|---|\n";
@@ -835,7 +835,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     if (!r.unexercised.empty()) md << "\n";
   }
 
-  // Issue 18: a discarded case is not a check. Every verdict that discarded some says how many.
+  // A discarded case is not a check. Every verdict that discarded some says how many.
   std::vector<const Verdict*> discarding;
   for (const auto& v : r.verdicts)
     if (v.discarded > 0) discarding.push_back(&v);
@@ -850,7 +850,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     md << "\n";
   }
 
-  // Issue 15: checks whose time budget ran out before all planned cases (a slow implementation).
+  // Checks whose time budget ran out before all planned cases (a slow implementation).
   std::vector<const Verdict*> short_runs;
   for (const auto& v : r.verdicts)
     if (v.outcome == Outcome::Pass && v.cases_planned > v.cases) short_runs.push_back(&v);
@@ -949,7 +949,7 @@ std::string junit_report(const CheckResult& r) {
       case Outcome::Pass:
         break;
     }
-    // The verdict's word (issue 47: "holds (not claimed)", "does not hold (not claimed)", ...), as
+    // The verdict's word ("holds (not claimed)", "does not hold (not claimed)", ...), as
     // every other view shows it.
     if (!v.integrator.empty() && !v.word.empty())
       x << "      <properties><property name=\"verdict\" value=\"" << xml_escape(v.word) << "\"/></properties>\n";
@@ -1006,7 +1006,7 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   }
   j["integrators"] = integrators;
   // The slots wrong by their own check, the one most other failures call first, each with the line
-  // the console's FIRST FIX prints (a class summary says them in words, issue 34).
+  // the console's FIRST FIX prints (a class summary says them in words).
   j["language"] = r.info.language.empty() ? "c++" : r.info.language;
   if (!r.info.interpreter.empty()) j["interpreter"] = r.info.interpreter;
   json first_fix = json::array();
@@ -1096,7 +1096,7 @@ void write_report_dir(const CheckResult& r, const std::string& dir, const Catalo
     const std::string md = markdown_report(r, c);
     const auto figures = report_figures(r);
     put("report.md", md);
-    // The same report as a page (issue 49): report.md in HTML, its figures inline.
+    // The same report as a page: report.md in HTML, its figures inline.
     MarkdownHtml to_html;
     to_html.image = [&](const std::string& path) {
       for (const auto& f : figures)

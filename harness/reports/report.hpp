@@ -30,7 +30,7 @@ struct Figure {
 };
 std::vector<Figure> report_figures(const CheckResult& r);
 
-// Root causes (issue 13): slots whose own direct property (one that needs that slot alone) has a
+// Root causes: slots whose own direct property (one that needs that slot alone) has a
 // problem, and for each the other failing properties that call it.
 struct RootCauses {
   std::map<std::string, const Verdict*> broken;                   // slot -> its failing direct verdict
@@ -39,7 +39,7 @@ struct RootCauses {
   std::set<std::string> explained;                                 // direct + caused
   std::vector<std::string> order;  // broken slots: callees before their callers, then the one most other failures call
   // A broken slot whose source calls another broken slot (harness/reports/source_calls.hpp) -> that slot: it
-  // most likely fails through it, and the callee is the fix (issue 49).
+  // most likely fails through it, and the callee is the fix.
   std::map<std::string, std::string> calls_broken;
 };
 RootCauses root_causes(const CheckResult& r);

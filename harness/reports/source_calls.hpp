@@ -1,4 +1,4 @@
-// Which slots each slot of a submission calls, read from its source (issue 49): when a slot's own
+// Which slots each slot of a submission calls, read from its source: when a slot's own
 // check fails and it calls another slot whose own check fails too, the callee is the first fix
 // (`manakov_2_34` is right and fails only through the `manakov_Omega` it calls). A lexical scan of
 // Python (`def` bodies), Octave (a file of functions, or a folder with one function per file) and

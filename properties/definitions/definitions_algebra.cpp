@@ -1,4 +1,4 @@
-// Every algebraic slot checked on its own (issue 13): each property below needs exactly one slot
+// Every algebraic slot checked on its own: each property below needs exactly one slot
 // and compares it with the notes' formula, written here from the definition (support/truth.hpp),
 // never with another slot of the same subject. So a subject that provides any subset of slots
 // has each of them checked, and an error shared by two slots cannot cancel out. Inputs come from
@@ -51,7 +51,7 @@ void definition_pairing(const Subject<T>& s) {
   });
 }
 
-// The coordinates of so(n) and of the generic algebras are the student's (issue 36,
+// The coordinates of so(n) and of the generic algebras are the student's (
 // support/coordinates.hpp): hat_n and lie_hat define them, every coordinate slot is checked in
 // them, and a slot without its hat in the documented ones (`geomech slots`).
 

@@ -1,4 +1,4 @@
-// Every slot of the rigid body itself checked on its own (issue 13): Euler's equations in their
+// Every slot of the rigid body itself checked on its own: Euler's equations in their
 // four forms, the Lagrangian, the Legendre transform, the Hamiltonian, the system (3.16), Clebsch,
 // reconstruction, the spatial momentum and the inertia of (2.3). Each property needs exactly one
 // slot and compares it with the notes' formula written here from the definition. Inputs come

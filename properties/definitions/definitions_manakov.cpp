@@ -1,5 +1,5 @@
-// Manakov's slots checked on their own (issue 13), for n = 3..6 and for non-diagonal
-// A = R D R^T with exact rational rotations R (issue 12: code right only for a diagonal A used to
+// Manakov's slots checked on their own, for n = 3..6 and for non-diagonal
+// A = R D R^T with exact rational rotations R (code right only for a diagonal A used to
 // pass, since all but one Manakov property drew diagonal A). Each property needs one slot and
 // compares it with (2.34), Proposition 2.4 or (3.23) written here from the definition.
 //

@@ -1,4 +1,4 @@
-// Claims of integrators written in the canonical variables of the Clebsch formulations (issue 16):
+// Claims of integrators written in the canonical variables of the Clebsch formulations:
 // clebsch_step on (Q, P) of (3.21) and manakov_clebsch_step on (Q, P) of (3.23), both canonical
 // Hamiltonian systems (impl/canonical_integrators.hpp derives H). Verified like the claims of
 // integrator_claims.cpp, measured whether or not claimed:
@@ -170,7 +170,7 @@ MatX<T> run(const CanonicalCase<T>& c, MatX<T> Z, const T& h, int steps) {
   return Z;
 }
 
-// A false claim leads with the step's own equation at the case's start (issue 33).
+// A false claim leads with the step's own equation at the case's start.
 template <class T, class Judge>
 void explained(const CanonicalCase<T>& c, Judge&& judge) {
   stepfield::explaining_claims([&] { return "the step's own equation: " + c.diagnose(c.Z0).text + scalar_tag<T>(); },

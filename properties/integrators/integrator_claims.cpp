@@ -81,7 +81,7 @@ RigidBodyState<T> run(const Integrator<T>& in, const Vec3<T>& I, RigidBodyState<
   return x;
 }
 
-// A rigid-body case by the notes' names (issue 33).
+// A rigid-body case by the notes' names.
 template <class T>
 std::string rigid_body_inputs(const Vec3<T>& I, const RigidBodyState<T>& x) {
   return named("I", I) + named("Pi", x.Pi) + named("O", x.O);
@@ -119,7 +119,7 @@ void integrator_order(const Subject<T>&, const Integrator<T>& in, const Integrat
     ser.points.emplace_back(hs.back(), errs.back());
   }
   record_series(ser);
-  // Each part with its own order (issue 47): a Lie-group method may be right on Pi and not on O.
+  // Each part with its own order: a Lie-group method may be right on Pi and not on O.
   const std::string parts = parts_order({"Pi", "O"}, {errs_pi, errs_O}, hs, floors);
   explaining_step(in, I, [&] { return std::vector<RigidBodyState<T>>{x0, exact}; }, hs, [&] {
     showing_inputs([&] { return rigid_body_inputs(I, x0) + "    h = 1/8, halved down to 1/128; t = 1\n"; },
@@ -221,7 +221,7 @@ void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, c
   for (int k = 0; k < kStates; ++k) {
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
     const RigidBodyState<T> drawn{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
-    // Inside the integrator's declared domain (issue 47), h = 1/8 scaled with the state.
+    // Inside the integrator's declared domain, h = 1/8 scaled with the state.
     const T lambda = within_domain<T>(claim_state_scale<T>(k), stepguard::rate_of(I, drawn), stepguard::size_of(drawn), 0.125);
     const RigidBodyState<T> x0{(drawn.Pi * lambda).eval(), drawn.O};
     const T drawn_scale = scale_of(I, drawn);
@@ -247,7 +247,7 @@ void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, c
     showing_inputs([&] { return rigid_body_inputs(I_worst, x_worst) + "    h = " + to_string_full(h_worst) +
                                 ", 64 steps (the case with the worst residual)\n"; },
                    [&] {
-                     // A cause is named on a failing row only (issue 47), and only on an experiment.
+                     // A cause is named on a failing row only, and only on an experiment.
                      const T allowed = T(T(16.0 * degree) * T(kSteps) * eps<T>());
                      const bool fails = !(is_finite(worst) && worst <= allowed);
                      T unscaled(0);
@@ -370,7 +370,7 @@ ManakovCase<T> draw_manakov_case(int lo, int hi) {
   return m;
 }
 
-// A Manakov case by the notes' names (issue 33), with the step h.
+// A Manakov case by the notes' names, with the step h.
 template <class T>
 std::string manakov_inputs(const ManakovCase<T>& m, const T& h) {
   return named("A", m.A) + named("M", m.x0.M) + named("O", m.x0.O) + named("h", h);

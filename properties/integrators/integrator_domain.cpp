@@ -1,4 +1,4 @@
-// Where an integrator's step works (issue 47). An integrator of (3.8) and (2.10) (or of Manakov's
+// Where an integrator's step works. An integrator of (3.8) and (2.10) (or of Manakov's
 // (2.36)) must return a finite state for every state and step in its domain: the whole space when
 // it declares none, or the declared one (largest |Omega| or state, smallest h; StepDomain in
 // core/subject.hpp). The step is probed at a generic state scaled by 2^j (j = -40..40, the time

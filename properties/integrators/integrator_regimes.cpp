@@ -1,4 +1,4 @@
-// Integrators outside the generic case (issue 12): the states and bodies real code has branches
+// Integrators outside the generic case: the states and bodies real code has branches
 // for, and the 50-digit floor.
 //
 // 1. Convergence in every regime. The properties of integrator_claims.cpp draw generic states
@@ -124,7 +124,7 @@ RigidBodyRegime<T> draw_rigid_body_regime() {
   r.lambda = dyn::pick<T>(gen::motion_scale<T>(1, 2), "lambda (Pi scaled by it)");
   r.x0 = RigidBodyState<T>{P, dyn::draw_attitude<T>()};
   const T rate = dyn::at_least_one(T(norm_inf(P) / r.I.minCoeff()));
-  // Inside the integrator's declared domain (issue 47): the scale halved until the state, its rate
+  // Inside the integrator's declared domain: the scale halved until the state, its rate
   // and the smallest step (t / 128) are.
   r.lambda = within_domain<T>(r.lambda, stepguard::rate_of(r.I, r.x0), to_double(T(norm_inf(P))), to_double(T(T(1) / rate / T(128))));
   r.t_end = T(1) / rate;
@@ -460,11 +460,11 @@ void integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& in, const
   const RigidBodyState<T> step = in.rigid_body_step(I, x0, h);
   const T err = relative_distance(step, exact, T(norm_inf(x0.Pi)));
   const T bound = gen::pow2<T>(-60);
-  // Issue 33: "computed in double" is said only on its evidence, the step's own vector field
+  // "computed in double" is said only on its evidence, the step's own vector field
   // agreeing with (3.8) and (2.10) to 50 digits while its error stalls; a wrong field is named instead.
   std::string cause;
   if (!(err <= bound)) {
-    // Issue 47: first what the step does on the variable that shows it (a precision below 50 digits
+    // First what the step does on the variable that shows it (a precision below 50 digits
     // measured as such, a step that does not reduce to the identity), then its field.
     const std::string seen = stepfield::explain_rigid_body_step(in, I, std::vector<RigidBodyState<T>>{x0}, {to_double(h)});
     const bool field_right = seen.find("your step's vector field is right") != std::string::npos;
@@ -479,7 +479,7 @@ void integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& in, const
                        in.name + ": one step of h = 2^-40 in 50 digits errs by " + to_string_full(err) +
                            " of the state's size (at most 2^-60 for a 50-digit step of any order)",
                        err <= bound ? std::string() : "computed below 50 digits");
-  // Failing, the cause leads (issue 47): the first line is what every summary shows.
+  // Failing, the cause leads: the first line is what every summary shows.
   require(err <= bound ? in.name + ": one step of h = 2^-40 in 50 digits is accurate far below double round-off"
                        : in.name + ": one step of h = 2^-40 in 50 digits is not accurate to 50 digits: " + cause,
           err <= bound,

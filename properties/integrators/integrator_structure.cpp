@@ -1,4 +1,4 @@
-// Structural claims of geometric integrators (issue 16), verified for any subject's integrators
+// Structural claims of geometric integrators, verified for any subject's integrators
 // like the claims of integrator_claims.cpp (measured whether or not claimed; a false claim FAILS):
 //
 //   noether         the discrete flow keeps the spatial angular momentum pi = O Pi (Theorem 2.2,
@@ -161,7 +161,7 @@ void manakov_integrator_equivariant(const Subject<T>&, const Integrator<T>& in, 
 
 // Steps of the long run: 10^5 in double; in 50 digits each step costs ~100 times more, so fewer
 // (the 50-digit run decides "conserved" against a budget thirty orders lower, and the double run
-// sees the long-time drift). A claim nobody made gets the same run (issue 47: "holds" rests on the
+// sees the long-time drift). A claim nobody made gets the same run ("holds" rests on the
 // evidence that would verify the claim), but for an implementation behind the protocol, where each
 // step is a round trip and the full run costs 100-300 s for a row nobody asked for: there it is
 // characterised over a tenth of the run (at least `floor` steps), and its finding is not complete:

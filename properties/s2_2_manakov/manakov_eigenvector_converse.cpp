@@ -29,7 +29,7 @@ namespace gm {
 namespace properties_manakov_eigenvector_converse {
 namespace {
 
-// t = 10 in 50 digits too (issue 18).
+// t = 10 in 50 digits too.
 template <class T>
 T horizon() {
   return T(10);

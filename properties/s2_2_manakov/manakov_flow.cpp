@@ -20,7 +20,7 @@ namespace gm {
 namespace properties_manakov_flow {
 namespace {
 
-// The horizon t = 10, in 50 digits too (issue 18: a 50-digit run on [0, 1] said little about a
+// The horizon t = 10, in 50 digits too (a 50-digit run on [0, 1] said little about a
 // flow's long-time accuracy).
 template <class T>
 T horizon() {

@@ -1,6 +1,6 @@
 // The exercise after Theorem 3.1: "How is the R^3 bracket related to the canonical Poisson
 // bracket? Hint: restrict to level surfaces of the function c(x)." The notes give the hint only.
-// What is checked (issue 18), for the rigid body's c = |x|^2/2, whose level surfaces are the
+// What is checked, for the rigid body's c = |x|^2/2, whose level surfaces are the
 // spheres |x| = r:
 //
 //   on every sphere, away from the poles, the coordinates (q, p) = (x_3, theta), theta the azimuth,

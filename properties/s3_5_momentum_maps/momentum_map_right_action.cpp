@@ -1,4 +1,4 @@
-// The cotangent-lift momentum map of a second action (issue 18): SO(n) acting on Q in R^{n x n}
+// The cotangent-lift momentum map of a second action: SO(n) acting on Q in R^{n x n}
 // on the right, Q -> Q g, the action behind the closing exercise's (3.23). Its cotangent lift is
 // P -> P g, and with the pairing (2.15) the definition of the momentum-map section,
 //     J^xi(Q, P) = <<P, xi_M(Q)>> = tr(P^T Q xi) = <J(Q, P), xi>,

@@ -28,7 +28,7 @@ struct ClaimFinding {
   bool claimed = false;  // whether the integrator claims it
   bool holds = true;     // whether it held in every case run
   std::string evidence;  // what was measured (from the last case where it did not hold, else the last case)
-  // The measurement is the one that would verify the claim (issue 47): false when it was shortened
+  // The measurement is the one that would verify the claim: false when it was shortened
   // (an unclaimed long run characterised over a tenth of its length) or could not be made in full;
   // a finding that is not complete never makes "holds" or "verified", it makes "not established".
   bool complete = true;

@@ -1,4 +1,4 @@
-// Coordinates on a Lie algebra are a choice the notes leave open (issue 36). The SO(4) exercise
+// Coordinates on a Lie algebra are a choice the notes leave open. The SO(4) exercise
 // asks for "the analogue of the hat map" and its R^6 representation, and section 1's generic
 // statements hold in any basis of so(3), so(4) or sl(2, R): the order and signs of so(n)
 // coordinates, and the basis of sl(2, R), are the student's. So the definition checks of the slots
@@ -275,7 +275,7 @@ std::optional<Basis<T>> basis_of_vee(int n, Vee&& vee, const std::string& origin
   return b;
 }
 
-// Issue 36: a check made in the documented coordinates, for a slot given without its hat, that
+// A check made in the documented coordinates, for a slot given without its hat, that
 // holds in the coordinates of another slot of the same file (`alternatives`: a basis and the slot
 // it comes from) is a different convention, not a wrong formula: say so, ahead of the failure.
 // `holds_in(basis)` re-runs the comparison in that basis and returns whether it holds.

@@ -1,5 +1,5 @@
 // Failure messages that show a case's inputs by the names the notes use (I, Pi, O, h, ...)
-// instead of RapidCheck's list of types (issue 13). The inputs are formatted only when a check
+// instead of RapidCheck's list of types. The inputs are formatted only when a check
 // fails, so passing cases pay nothing.
 #pragma once
 
@@ -33,7 +33,7 @@ void showing_inputs(Describe&& describe, Checks&& checks) {
 
 namespace gm {
 
-// Issue 13: when a failing slot's output is exactly what the notes print in a place recorded as
+// When a failing slot's output is exactly what the notes print in a place recorded as
 // an erratum (spec/catalogue.json), the failure says so and names the entry, so a student who
 // followed the notes is not left to wonder. `matches_printed()` is evaluated only on failure.
 template <class Matches, class Checks>

@@ -1,4 +1,4 @@
-// Input regimes (DESIGN.md, "Input regimes: where bugs hide"; issue 12): generators that mix the
+// Input regimes (DESIGN.md, "Input regimes: where bugs hide"): generators that mix the
 // generic random box with the special inputs real code has branches for.
 //
 //   generic     the box of generators.hpp (every component of moderate size)

@@ -11,7 +11,7 @@
 
 namespace gm {
 
-// Values are shown in the language of the implementation under test (issue 33): C++ (and the
+// Values are shown in the language of the implementation under test: C++ (and the
 // suite's own tests) as [a, b, c] and [a, b; c, d]; Python as lists, [a, b, c] and [[a, b], [c, d]],
 // with mpf('...') in 50 digits and Fraction(p, q) in rationals; Octave as MATLAB writes them,
 // column vectors [a; b; c] and matrices [a, b; c, d]. The harness sets it before a check's

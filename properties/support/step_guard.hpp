@@ -1,4 +1,4 @@
-// A step that raises (issue 47): an integrator's step that throws (a C++ exception, a Python or
+// A step that raises: an integrator's step that throws (a C++ exception, a Python or
 // Octave error behind the protocol) is told apart from a property that fails. The runner wraps each
 // integrator it drives (guarded(), below): an exception of the step becomes StepRaised, which says
 // where it was called (the state's size, |Omega| and h), and the runner records it with the case

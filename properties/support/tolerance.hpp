@@ -101,7 +101,7 @@ double eps_units(const T& residual, const T& scale) {
   }
 }
 
-// How a failure names the two sides of a comparison (issue 33): a definition check compares the
+// How a failure names the two sides of a comparison: a definition check compares the
 // subject's slot with the notes' formula and says "yours" and "the notes'"; the other properties
 // compare two computations and say "lhs" and "rhs". The runner sets them for each property.
 struct SideNames {
@@ -113,7 +113,7 @@ std::string describe_failure(std::string_view what, std::string_view kind, const
                              const std::string& rhs, const std::string& diff, const std::string& residual,
                              double units, const std::string& allowed);
 
-// Issue 12: a residual of the size of double round-off (relative 1e-19 .. 1e-11) in a 50-digit or
+// A residual of the size of double round-off (relative 1e-19 .. 1e-11) in a 50-digit or
 // exact run means part of the computation is done in double; the message says so. Empty otherwise.
 std::string double_precision_hint(const char* scalar, double relative_residual);
 

@@ -1,5 +1,5 @@
 // Theorem 1.1 (ii) <=> (iv), and Theorem 2.3, for a family of Lagrangians that are neither
-// quadratic nor diagonal (issue 18).
+// quadratic nor diagonal.
 //
 // (ii) says that g(t) satisfies the Euler-Lagrange equations of L(g, dg/dt) = l(g^-1 dg/dt) on G
 // itself. They are written here in a chart, as one would by hand: g = cay(X(q)) =

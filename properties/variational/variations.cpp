@@ -470,7 +470,7 @@ void manakov_variational_principle(const Subject<T>& s) {
 }
 
 // ---------------------------------------------------------------------------------------------
-// s2.hamilton-pontryagin on SO(n), n = 3..6 (3, 4 in 50 digits; issue 18): Proposition 2.3 for Manakov's body,
+// s2.hamilton-pontryagin on SO(n), n = 3..6 (3, 4 in 50 digits): Proposition 2.3 for Manakov's body,
 // l(Omega) = -tr(Omega A Omega)/2 (Proposition 2.4) with A = R D R^T not diagonal in three of the
 // four regimes of gen::manakov_body (one of them scaled by 2^s, |s| <= 20). The action (2.16),
 //     S = int l(Omega) + <M, O^-1 dO/dt - Omega> dt,

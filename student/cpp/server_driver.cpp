@@ -1,4 +1,4 @@
-// main() of the C++ protocol server (untrusted mode, issue 14): linked with the student's objects,
+// main() of the C++ protocol server (untrusted mode): linked with the student's objects,
 // the part registry and the protocol's server code only; no property, reference implementation or
 // verdict is in this program. It answers docs/PROTOCOL.md on stdin and the reply descriptor.
 #include "harness/remote/protocol_server.hpp"

@@ -80,7 +80,7 @@ struct Claims {
   bool unit_quaternion = false; // an attitude kept as a quaternion (`state`): |q| = 1 is kept to round-off
 };
 
-// Where an integrator's step is meant to work (optional; issue 47), as
+// Where an integrator's step is meant to work (optional), as
 //   static constexpr gm::student::Domain domain{.max_omega = 1e6};
 // No check draws a state or step outside it, and the report states it; 0: no limit.
 struct Domain {

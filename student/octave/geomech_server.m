@@ -423,7 +423,7 @@ if exist('geomech_integrators') == 2 || exist('geomech_integrators') == 103
     end
     c = '{}';
     if isfield(it, 'claims') && ~isempty(it.claims), c = jsonencode(it.claims); end
-    % Issue 48: a declared state form ('quaternion_wxyz omega') and a stated precision with its reason.
+    % A declared state form ('quaternion_wxyz omega') and a stated precision with its reason.
     extra = '';
     entry.state_keys = {};
     keys = {'state', 'precision', 'precision_reason'};
@@ -439,7 +439,7 @@ if exist('geomech_integrators') == 2 || exist('geomech_integrators') == 103
         if strcmp(words{1}, 'matrix'), entry.state_keys = {'O', words{2}}; else, entry.state_keys = {'q', words{2}}; end
       end
     end
-    dom = '{}';  % where the step is meant to work (issue 47)
+    dom = '{}';  % where the step is meant to work
     if isfield(it, 'domain') && ~isempty(it.domain), dom = jsonencode(it.domain); end
     ijson{end + 1} = sprintf('{"name":%s,"steps":[%s],"scalars":["double"],"claims":%s,"domain":%s%s}', jsonencode(it.name), ...
                              strjoin(steps, ','), c, dom, extra);
@@ -452,7 +452,7 @@ if exist('geomech_description') == 2 || exist('geomech_description') == 103
   desc = geomech_description();
 end
 quoted = cellfun(@(s) ['"' s '"'], have, 'UniformOutput', false);
-% Issue 48: the interpreter that runs the file, for the report.
+% The interpreter that runs the file, for the report.
 me = fullfile(OCTAVE_HOME(), 'bin', 'octave-cli');
 gm_send(out, sprintf(['{"protocol":"geomech-slots","version":2,"language":"octave","language_version":%s,"interpreter":%s,' ...
                       '"description":%s,"slots":{"double":[%s]},"integrators":[%s],"notes":{},"warnings":[],' ...

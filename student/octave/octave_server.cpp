@@ -572,7 +572,7 @@ struct Server {
           }
           std::string claims = "{}";
           if (it.isfield("claims") && !it.getfield("claims").isempty()) claims = jsonencode(it.getfield("claims"));
-          // Issue 48: a declared state form ('quaternion_wxyz omega') and a stated precision with its reason.
+          // A declared state form ('quaternion_wxyz omega') and a stated precision with its reason.
           std::string extra;
           for (const char* key : {"state", "precision", "precision_reason"})
             if (it.isfield(key) && it.getfield(key).is_string() && !it.getfield(key).isempty())
@@ -584,7 +584,7 @@ struct Server {
             std::string att, ang;
             if (ws >> att >> ang) in.state_a = att == "matrix" ? "O" : "q", in.state_w = ang;
           }
-          std::string domain = "{}";  // where the step is meant to work (issue 47)
+          std::string domain = "{}";  // where the step is meant to work
           if (it.isfield("domain") && !it.getfield("domain").isempty()) domain = jsonencode(it.getfield("domain"));
           ijson += std::string(ijson.empty() ? "" : ",") + "{\"name\":" + json(in.name).dump() + ",\"steps\":[" + steps +
                    "],\"scalars\":[\"double\"],\"claims\":" + claims + ",\"domain\":" + domain + extra + "}";

@@ -508,7 +508,7 @@ def main():
     warnings = []
     unavailable = {}
     if mpmath is None:
-        # Issue 48: say which interpreter lacks it, and how to choose another.
+        # Say which interpreter lacks it, and how to choose another.
         why = ("mpmath cannot be imported by %s (Python %s), the interpreter that runs your file, so nothing is "
                "checked in 50 digits: install mpmath for that interpreter (Debian's /usr/bin/python3: apt-get install "
                "python3-mpmath; a venv: its pip), or set GEOMECH_PYTHON to an interpreter that has it"
@@ -516,7 +516,7 @@ def main():
         warnings.append(why)
         unavailable["mp50"] = why
     elif getattr(mpmath.libmp, "BACKEND", "gmpy") != "gmpy":
-        # Issue 56: mpmath without gmpy2 computes with Python's own integers: said, with what it cost
+        # Mpmath without gmpy2 computes with Python's own integers: said, with what it cost
         # where it was measured and the one command that fixes it.
         warnings.append(
             "mpmath in %s (Python %s) runs without gmpy2, on its pure-Python backend: the 50-digit checks take "
@@ -528,7 +528,7 @@ def main():
         mod = load(sys.argv[1])
     except BaseException as e:
         hint = ""
-        if isinstance(e, ImportError):  # issue 48: which interpreter, and how to choose another
+        if isinstance(e, ImportError):  # Which interpreter, and how to choose another
             hint = ("\n(the interpreter running it is %s, Python %s: a module the file imports is not installed for it; "
                     "install it there, or set GEOMECH_PYTHON to an interpreter that has it)"
                     % (sys.executable, sys.version.split()[0]))
@@ -578,7 +578,7 @@ def main():
             ok = True
             precision = get(obj, "precision", None)
             if precision is not None and str(precision) == "double" and scalar != "double":
-                # A stated precision (issue 48): run in double only, and say why in the report.
+                # A stated precision: run in double only, and say why in the report.
                 why = get(obj, "precision_reason", None)
                 for s in isteps:
                     notes.setdefault(scalar, {})["%s.%s" % (iname, s)] = "computes in double (%s)" % (
@@ -601,7 +601,7 @@ def main():
         for key in ("precision", "precision_reason"):
             if get(obj, key, None) is not None:
                 entry[key] = inert(str(get(obj, key)))
-        domain = get(obj, "domain", None)  # where the step is meant to work (issue 47)
+        domain = get(obj, "domain", None)  # where the step is meant to work
         if domain:
             entry["domain"] = {k: float(v) for k, v in dict(domain).items()}
         integrators.append(entry)

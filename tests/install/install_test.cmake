@@ -1,4 +1,4 @@
-# ctest: the installed suite used from outside its source tree (issue 17).
+# ctest: the installed suite used from outside its source tree.
 #   cmake -DBUILD=<suite build dir> -DSOURCE=<suite source dir> -DWORK=<scratch dir> -DMODE=install|deb -P install_test.cmake
 # install: cmake --install to a temporary prefix, configure tests/install/consumer against it with
 #          find_package(GeomechSpec), build it, run its ctest (JUnit written), and run the installed

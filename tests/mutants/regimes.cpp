@@ -1,4 +1,4 @@
-// Negative controls for the bugs that live outside the generic case (issue 12): code that is
+// Negative controls for the bugs that live outside the generic case: code that is
 // right on a random box of moderate, generic inputs and wrong on the special inputs the notes and
 // real code care about. Each is caught by a direct property drawing from that regime
 // (properties/definitions_*.cpp, support/regimes.hpp).

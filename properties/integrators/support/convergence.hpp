@@ -21,7 +21,7 @@ struct SlopeFit {
 // points whose error is at most their floor (or not finite and positive) are excluded, and so is
 // every point at a smaller h than the first excluded one (once on the plateau, smaller steps only
 // add round-off). `h` must be decreasing. `label` names the step column as it is measured: "h", or
-// "h |Omega|" where the steps are relative to the motion's time scale (issue 47: a table must say
+// "h |Omega|" where the steps are relative to the motion's time scale (a table must say
 // which).
 inline SlopeFit loglog_slope(const std::vector<double>& h, const std::vector<double>& err,
                              const std::vector<double>& floor, const char* label = "h") {

@@ -1,4 +1,4 @@
-// Long-time behaviour of an energy error (issue 47; DESIGN.md "A verdict is decided once"): the
+// Long-time behaviour of an energy error (DESIGN.md "A verdict is decided once"): the
 // trend and sign of H(t) - H0 tell apart
 //   conserved    max |e| within the round-off budget of the run;
 //   losing       the energy falls: at (nearly) every step that changes it beyond round-off, or by a

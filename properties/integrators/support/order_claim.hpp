@@ -2,10 +2,10 @@
 // (integrator_claims.cpp, integrator_canonical.cpp): one rule for every kind of step.
 //   - an error that is not finite at some step fails a claimed order (a blow-up is not a plateau);
 //   - an error at round-off at every step size is an exact step for this problem: any claimed
-//     order holds (issue 36), and the note says so;
+//     order holds, and the note says so;
 //   - the log-log slope over the points above the round-off floors (conv::loglog_slope) must be
 //     within 0.1 of the claim; with fewer than 3 such points the order is not measurable (noted);
-//   - the measured order is always a finding, claimed or not (issue 47), and without a claim the
+//   - the measured order is always a finding, claimed or not, and without a claim the
 //     slope must still be at least 1 - 0.1: a step that does not converge integrates nothing.
 #pragma once
 
@@ -43,7 +43,7 @@ inline std::string parts_order(const std::vector<std::string>& names, const std:
 }
 
 // `parts`, when given, is each part of the state with its own measured order ("Pi: order 3.99, O:
-// order 2.00", parts_order below): an order that fails names the part that is off (issue 47).
+// order 2.00", parts_order below): an order that fails names the part that is off.
 inline void judge_order_claim(const std::string& integrator, int claimed, const std::string& where,
                               const std::string& scalar, const std::vector<double>& hs, const std::vector<double>& errs,
                               const std::vector<double>& floors, const std::string& parts = {}) {
@@ -58,7 +58,7 @@ inline void judge_order_claim(const std::string& integrator, int claimed, const 
   }
   const auto fit = conv::loglog_slope(hs, errs, floors);
   if (conv::at_roundoff_everywhere(errs, floors)) {
-    // Exact for this problem (issue 36): an error at round-off at every step size contradicts no
+    // Exact for this problem: an error at round-off at every step size contradicts no
     // order; a claimed one holds, and the note says why no slope was measured.
     const std::string exact = integrator + ": exact for this problem (error at round-off for every step size" +
                               where + "); any claimed order holds" + scalar;
@@ -67,7 +67,7 @@ inline void judge_order_claim(const std::string& integrator, int claimed, const 
     return;
   }
   if (fit.used < 3) {
-    // Not measurable: the finding is incomplete, a claim is not verified by it (issue 47).
+    // Not measurable: the finding is incomplete, a claim is not verified by it.
     const std::string why = integrator + ": fewer than three step sizes above round-off" + where + "; order not measurable" + scalar;
     judge_claim("order", claimed > 0, true, why, "not measurable (fewer than three step sizes above round-off)", false);
     record_note(why);
@@ -80,7 +80,7 @@ inline void judge_order_claim(const std::string& integrator, int claimed, const 
   std::snprintf(buf, sizeof buf, " (claimed %d)", claimed);
   record_note(measured + (claimed > 0 ? std::string(buf) : std::string(" (no order claimed)")) + scalar);
   if (claimed <= 0) {
-    // Measured and shown whether or not it was claimed (issue 47); and whatever is claimed, a step
+    // Measured and shown whether or not it was claimed; and whatever is claimed, a step
     // whose error does not shrink with h integrates nothing: order at least 1 - 0.1.
     const bool converges = fit.slope >= 0.9;
     judge_claim("order", false, converges, measured + " (no order claimed)" + scalar,

@@ -1,4 +1,4 @@
-// The vector field a step follows (issue 33, DESIGN.md "An integrator explains itself"): a
+// The vector field a step follows (DESIGN.md "An integrator explains itself"): a
 // consistent one-step method satisfies step(x, h) = x + h F(x) + O(h^2), and F is the equation it
 // integrates. D(h) = (step(x, h) - x) / h is computed at h = 2^-k, k = kFirst..kFirst + 5, and
 // extrapolated to h = 0 (Neville, in powers of h), for the body part (dPi/dt) and for the attitude
@@ -84,7 +84,7 @@ template <class T, class Difference>
 MatX<T> rate_at_zero(Difference&& difference, T* spread, const T& rate = T(1)) {
   std::vector<T> hs;
   std::vector<MatX<T>> d;
-  // The six steps stay at or above a declared smallest step (issue 47): less accurate, never outside.
+  // The six steps stay at or above a declared smallest step: less accurate, never outside.
   T h = at_least_min_h<T>(T(first_step<T>(rate) / T(32))) * T(32);
   for (int k = 0; k < 6; ++k, h /= T(2)) {
     hs.push_back(h);
@@ -100,7 +100,7 @@ Field<T> rigid_body_field(const Integrator<T>& in, const Vec3<T>& I, const Rigid
       [&](const T& h) {
         const RigidBodyState<T> y = in.rigid_body_step(I, x, h);
         // h O^-1 dO/dt: h Omega_hat for (2.10). O^-1, not O^T: a step that lets O drift off SO(3)
-        // (explicit Euler after 64 steps) still turns it with (2.10) exactly (issue 47).
+        // (explicit Euler after 64 steps) still turns it with (2.10) exactly.
         const Mat3<T> W = (x.O.inverse() * (y.O - x.O)).eval();
         MatX<T> d(6, 1);
         d.topRows(3) = y.Pi - x.Pi;
@@ -217,7 +217,7 @@ void explaining_claims(Explain&& explanation, Judge&& judge) {
   }
 }
 
-// A false claim explains itself (issue 33): the vector field the step follows at the state where
+// A false claim explains itself: the vector field the step follows at the state where
 // the claim was judged, against (3.8) and (2.10) (above), leads the failure and the
 // claims table's evidence.
 // The field is looked at in each of the states `states()` returns (only once the claim failed) and
@@ -242,7 +242,7 @@ void explaining_at(States&& states, Diagnose&& diagnose_at, Judge&& judge) {
 template <class T>
 Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x, const Diagnosis& notes);
 
-// What the rigid-body step does at the states `xs` (the first is the case's), in words (issue 47):
+// What the rigid-body step does at the states `xs` (the first is the case's), in words:
 // a precision below the scalar's, a step that does not reduce to the identity, one that returns its
 // input below some h, a capped field (support/step_probe.hpp); only when none of these is found,
 // its vector field against (3.8) and (2.10). Each is named only when its experiment at the failing
@@ -280,7 +280,7 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
     const auto& x = probed[k];
     const auto small = stepprobe::small_steps(in, I, x, precision);
     if (small.not_identity) {
-      // In the integrator's own variables too, for a step kept in a declared form (issue 48).
+      // In the integrator's own variables too, for a step kept in a declared form.
       const std::string own =
           in.form.is_notes() ? std::string() : "; " + in_declared_form(in, I, x, diagnose(rigid_body_field(in, I, x), I, x)).text;
       return small.not_identity_text + own + scalar_tag<T>();

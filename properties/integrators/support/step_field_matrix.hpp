@@ -1,4 +1,4 @@
-// The vector field Manakov's step and the Clebsch steps follow (issue 33; step_field.hpp does the
+// The vector field Manakov's step and the Clebsch steps follow (step_field.hpp does the
 // rigid body): the extrapolated (step(x, h) - x) / h, compared at the failing state with
 //   manakov_step          dM/dt = [M, Omega] (2.36), M = A Omega + Omega A (2.34), and the
 //                         attitude dO/dt = O Omega ((2.10) on SO(n)): Omega_step = O^T dO/dt;

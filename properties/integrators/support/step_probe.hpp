@@ -1,4 +1,4 @@
-// What a failing step does, measured on the variable that shows it (issue 47), before its vector
+// What a failing step does, measured on the variable that shows it, before its vector
 // field is read (step_field.hpp): the causes a field made of round-off or of a wrong wrapper would
 // hide. At one state x of the rigid body, each on its own evidence:
 //   1. precision: step(x + delta, h) - step(x, h) follows delta (the step is near the identity)
@@ -220,7 +220,7 @@ std::string cap_of(const Vec3<T>& I, const RigidBodyState<T>& x, Field&& field) 
     const T lambda = pow2<T>(j);
     RigidBodyState<T> xl = x;
     xl.Pi *= lambda;
-    // Not beyond a declared domain: a cap there is the integrator's own business (issue 47).
+    // Not beyond a declared domain: a cap there is the integrator's own business.
     if ((domain.max_omega > 0 && to_double(rate_of(I, xl.Pi)) > domain.max_omega) ||
         (domain.max_pi > 0 && to_double(T(max_abs(xl.Pi))) > domain.max_pi))
       break;

@@ -1,5 +1,5 @@
 // A family of reduced Lagrangians that are neither quadratic nor diagonal, for the statements of
-// the notes that hold "for any Lagrangian" (Theorems 1.1 and 2.3; issue 18):
+// the notes that hold "for any Lagrangian" (Theorems 1.1 and 2.3):
 //
 //   l(xi) = a . xi + s / 2 + c s^2 / 8,   s = xi . K xi,
 //

@@ -1,4 +1,4 @@
-// Negative controls for integrators that are wrong only outside the generic case (issue 12):
+// Negative controls for integrators that are wrong only outside the generic case:
 // each wraps a reference integrator and keeps its claims, the way a real mistake sits in an
 // otherwise working step.
 #include "impl/integrators.hpp"

@@ -76,7 +76,7 @@ GM_MUTANT(lie_hat_sl2_transposed, "lie_hat for sl(2, R) building [[a, c], [b, -a
 });
 
 // sl(2, R) with the sign of the last diagonal entry lost: [[a, b], [c, a]] is not traceless, so
-// not in sl(2, R) whatever the basis (issue 36: the basis itself is the student's choice, and the
+// not in sl(2, R) whatever the basis (the basis itself is the student's choice, and the
 // transposed one above is a basis; it fails only beside a lie_vee that reads the documented one).
 GM_MUTANT(lie_hat_sl2_not_traceless, "lie_hat for sl(2, R) building [[a, b], [c, a]] (not traceless)", [](auto& s) {
   using T = scalar_of<decltype(s)>;
