@@ -82,6 +82,7 @@ templates_dir=$examples/submissions
 rubric=$examples/rubric.json
 one_node=$source_dir/tests/scale/slurm_one_node.sh
 recipe=$source_dir/docs/recipes/slurm-class.sh
+source "$source_dir/tests/scale/slurm_recipe.sh"
 [ -d "$templates_dir" ] || fail "no ready class $templates_dir"
 [ -f "$rubric" ] || fail "no rubric $rubric"
 export GEOMECH_PYTHON=${GEOMECH_PYTHON:-/usr/bin/python3}
@@ -245,47 +246,15 @@ if [ $slurm = yes ]; then
 
   # The same cache path as the single run's, emptied (see the top of this file).
   mv "$out/cache-single" "$out/cache-single.kept" || fail "cannot set the single run's cache aside"
-  cpus=()
-  [ -n "${CLASS_OF_N_CPUS_PER_TASK:-}" ] && cpus=(--cpus-per-task="$CLASS_OF_N_CPUS_PER_TASK")
-  t0=$(now)
-  array=$(sbatch --parsable --export=ALL --array=1-2 "${cpus[@]}" --chdir="$out" --output="$out/logs/shard-%a.out" \
-    "$recipe" "$out/class" "$out/sharded" "${checks[@]}" --cache-dir "$out/cache-single" 2> "$out/logs/sbatch.err") ||
-    { cat "$out/logs/sbatch.err" >&2; fail "sbatch of the job array failed"; }
-  merge_cmd="$(printf '%q ' geomech merge-class "$out/sharded/class")$(printf '%q' "$out/sharded")/shard-* $(printf '%q ' --rubric "$rubric" --grades "$out/sharded.csv")"
-  merge=$(sbatch --parsable --export=ALL --dependency=afterany:"$array" --chdir="$out" --output="$out/logs/merge.out" \
-    --job-name=geomech-merge --wrap "$merge_cmd" 2> "$out/logs/sbatch.err") ||
-    { cat "$out/logs/sbatch.err" >&2; fail "sbatch of the merge job failed"; }
+  slurm_cpus=()
+  [ -n "${CLASS_OF_N_CPUS_PER_TASK:-}" ] && slurm_cpus=(--cpus-per-task="$CLASS_OF_N_CPUS_PER_TASK")
   recipe_cpus=$(sed -n "s/^#SBATCH --cpus-per-task=\([0-9]*\).*/\1/p" "$recipe" | head -n1)
-  if [ -n "${CLASS_OF_N_CPUS_PER_TASK:-}" ]; then
-    cpus_said=$CLASS_OF_N_CPUS_PER_TASK
-  else
-    cpus_said="${recipe_cpus:-?}, the recipe's"
-  fi
-  say "slurm: job array $array (2 shards, --cpus-per-task $cpus_said), merge job $merge; waiting up to $timeout s"
-
-  deadline=$((SECONDS + timeout))
-  while :; do
-    left=$(squeue -h --jobs="$array,$merge" -o %i 2>&1) || fail "squeue failed: $left"
-    [ -z "$left" ] && break
-    [ $SECONDS -lt $deadline ] || { squeue --jobs="$array,$merge" >&2; fail "the Slurm jobs did not finish in $timeout s (CLASS_OF_N_TIMEOUT)"; }
-    sleep 0.5
-  done
-  slurm_seconds=$(seconds_since "$t0")
-
-  job_states() {  # JOBID: one line per job (array task): id, state, exit code
-    scontrol show job -o "$1" | while read -r line; do
-      tr ' ' '\n' <<< "$line" | awk -F= '
-        $1 == "JobId" { id = $2 } $1 == "ArrayJobId" { id = $2 } $1 == "ArrayTaskId" { id = id "_" $2 }
-        { v[$1] = $2 } END { print id, v["JobState"], v["ExitCode"] }'
-    done | sort
-  }
-  states=$( { job_states "$array"; job_states "$merge"; } 2>&1)
-  echo "$states" | sed "s/^/  slurm job /"
+  cpus_said="${recipe_cpus:-?} (the recipe's)"
+  [ -n "${CLASS_OF_N_CPUS_PER_TASK:-}" ] && cpus_said=$CLASS_OF_N_CPUS_PER_TASK
+  say "slurm: --cpus-per-task $cpus_said; waiting up to $timeout s"
+  slurm_run_recipe "$recipe" "$out" "$out/class" "$out/sharded" "$out/cache-single" "$timeout" "$single_rc" "${checks[@]}" \
+    -- --rubric "$rubric" --grades "$out/sharded.csv"
   echo "  (the merge job exits 1, FAILED 1:0 to Slurm, when a student did not pass, as check-class does; the single run exited $single_rc)"
-  bad_shards=$(job_states "$array" | awk '$2 != "COMPLETED" || $3 != "0:0"')
-  [ -z "$bad_shards" ] || { tail -n 30 "$out"/logs/shard-*.out >&2; fail "a shard did not complete: $bad_shards"; }
-  merge_exit=$(job_states "$merge" | awk '{ split($3, e, ":"); print e[1] }')
-  [ "$merge_exit" = "$single_rc" ] || { cat "$out/logs/merge.out" >&2; fail "the merge job exited ${merge_exit:-?}, the single-machine run $single_rc (log: $out/logs/merge.out)"; }
   [ -s "$out/sharded.csv" ] || fail "the merge job wrote no gradebook $out/sharded.csv"
   slurm_results=$(python_count "$out/sharded.csv" "$out/sharded/class/summary.md" 2>/dev/null) ||
     fail "cannot read the results of $out/sharded.csv and $out/sharded/class/summary.md"

@@ -54,6 +54,7 @@ for p in slurmctld slurmd munged sbatch squeue sinfo scontrol scancel; do
   }
 done
 recipe=$source_dir/docs/recipes/slurm-class.sh
+source "$(dirname "${BASH_SOURCE[0]}")/slurm_recipe.sh"
 [ -f "$recipe" ] || fail "no recipe $recipe"
 examples=$source_dir/examples/class
 # Both runs must use the same program: a rebuild during the run (a developer's) is said, not compared.
@@ -101,42 +102,10 @@ mv "$out/cache" "$out/cache-single"
 # The jobs find geomech on PATH (the recipe calls `geomech`): its folder goes first, and sbatch
 # hands this environment (PATH, GEOMECH_PYTHON) to the jobs with --export=ALL.
 export PATH="$(dirname "$geomech"):$PATH"
-t0=$(now)
-cpus=()
-[ -n "${SLURM_CLASS_CPUS_PER_TASK:-}" ] && cpus=(--cpus-per-task="$SLURM_CLASS_CPUS_PER_TASK")
-array=$(sbatch --parsable --export=ALL --array=1-2 "${cpus[@]}" --chdir="$out" --output="$out/logs/shard-%a.out" \
-  "$recipe" "$out/class" "$out/sharded" "${checks[@]}" --cache-dir "$out/cache") ||
-  fail "sbatch of the job array failed"
-merge_cmd="$(printf '%q ' geomech merge-class "$out/sharded/class")$(printf '%q' "$out/sharded")/shard-* $(printf '%q ' "${grading[@]}" --grades "$out/sharded.csv")"
-merge=$(sbatch --parsable --export=ALL --dependency=afterany:"$array" --chdir="$out" --output="$out/logs/merge.out" \
-  --job-name=geomech-merge --wrap "$merge_cmd") || fail "sbatch of the merge job failed"
-echo "slurm: job array $array (2 shards), merge job $merge: $merge_cmd"
-
-# Until no job of the two is pending, running or completing (squeue lists none of those states then).
-deadline=$((SECONDS + timeout))
-while :; do
-  left=$(squeue -h --jobs="$array,$merge" -o %i 2>&1) || fail "squeue failed: $left"
-  [ -z "$left" ] && break
-  [ $SECONDS -lt $deadline ] || { squeue --jobs="$array,$merge"; fail "the jobs did not finish in $timeout s"; }
-  sleep 0.5
-done
-slurm_seconds=$(seconds_since "$t0")
-
-# How each job ended (kept by slurmctld for MinJobAge, 5 min: no accounting database here).
-job_states() {  # JOBID: one line per job (array task): id, state, exit code, start and end
-  scontrol show job -o "$1" | while read -r line; do
-    tr ' ' '\n' <<< "$line" | awk -F= '
-      $1 == "JobId" { id = $2 } $1 == "ArrayJobId" { id = $2 } $1 == "ArrayTaskId" { id = id "_" $2 }
-      { v[$1] = $2 } END { print id, v["JobState"], v["ExitCode"], v["StartTime"], v["EndTime"] }'
-  done | sort
-}
-echo "slurm: the jobs ended in $slurm_seconds s (submission to the last job's end):"
-job_states "$array" | sed 's/^/  /'
-job_states "$merge" | sed 's/^/  /'
-bad_shards=$(job_states "$array" | awk '$2 != "COMPLETED" || $3 != "0:0"')
-[ -z "$bad_shards" ] || { tail -n 30 "$out"/logs/shard-*.out; fail "a shard did not complete: $bad_shards"; }
-merge_exit=$(job_states "$merge" | awk '{ split($3, e, ":"); print e[1] }')
-[ "$merge_exit" = "$single_rc" ] || { cat "$out/logs/merge.out"; fail "the merge job exited ${merge_exit:-?}, the single-machine run $single_rc"; }
+slurm_cpus=()
+[ -n "${SLURM_CLASS_CPUS_PER_TASK:-}" ] && slurm_cpus=(--cpus-per-task="$SLURM_CLASS_CPUS_PER_TASK")
+slurm_run_recipe "$recipe" "$out" "$out/class" "$out/sharded" "$out/cache" "$timeout" "$single_rc" "${checks[@]}" \
+  -- "${grading[@]}" --grades "$out/sharded.csv"
 
 echo "wall time: single machine $single_seconds s; Slurm, 2 shards and the merge $slurm_seconds s"
 [ "$(program_print)" = "$program_at_start" ] || fail "$geomech changed (was rebuilt) during the run: the runs are not comparable; run again"
