@@ -12,6 +12,7 @@
 #include "harness/reports/svg.hpp"
 #include "harness/engine/thorough_only.hpp"
 #include "harness/engine/trajectory.hpp"
+#include "properties/support/loglog_fit.hpp"
 #include "harness/engine/verdict_io.hpp"
 #include "impl/reference_subject.hpp"
 #include "properties/support/claims.hpp"
@@ -813,13 +814,26 @@ TEST(TrajectoryFiles, AnExactStepPassesAnyOrderClaim) {
 }
 
 TEST(TrajectoryFiles, ConvergenceSlopeLeavesOutTheRoundoffPlateau) {
-  std::vector<std::pair<double, double>> pts;
-  for (double h = 0.1; h > 1e-6; h /= 2) pts.emplace_back(h, std::max(3 * h * h, 1e-9));
-  std::vector<bool> used;
-  const double slope = convergence_slope(pts, 1e-8, &used);
-  EXPECT_NEAR(slope, 2.0, 1e-9);
-  EXPECT_FALSE(used.back());
-  EXPECT_TRUE(std::isnan(convergence_slope({{0.1, 1e-12}}, 1e-8)));
+  // The suite's one log-log fit (properties/support/loglog_fit.hpp), which check-trajectory uses.
+  std::vector<double> hs, errs;
+  for (double h = 0.1; h > 1e-6; h /= 2) hs.push_back(h), errs.push_back(std::max(3 * h * h, 1e-9));
+  const std::vector<double> floors(hs.size(), 1e-8);
+  const conv::SlopeFit fit = conv::loglog_slope(hs, errs, floors);
+  ASSERT_TRUE(fit.measured());
+  EXPECT_NEAR(fit.slope, 2.0, 1e-9);
+  EXPECT_FALSE(fit.point.back());
+  EXPECT_FALSE(conv::loglog_slope({0.1}, {1e-12}, {1e-8}).measured());
+  // One plateau rule: round-off noise that rises above the floor again at a smaller step is still
+  // the plateau. The control: fitted point by point, that noise would drag the slope far from 2.
+  errs.back() = 1e-3;
+  const conv::SlopeFit noisy = conv::loglog_slope(hs, errs, floors);
+  EXPECT_NEAR(noisy.slope, 2.0, 1e-9);
+  EXPECT_FALSE(noisy.point.back());
+  std::vector<double> kept_h, kept_e;
+  for (std::size_t i = 0; i < hs.size(); ++i)
+    if (errs[i] > floors[i]) kept_h.push_back(hs[i]), kept_e.push_back(errs[i]);
+  const conv::SlopeFit pointwise = conv::loglog_slope(kept_h, kept_e, std::vector<double>(kept_h.size(), 0.0));
+  EXPECT_GT(std::abs(pointwise.slope - 2.0), 0.5) << "the control: a fit that keeps every point above the floor";
 }
 
 std::vector<std::string> labels(const std::string& suite, const std::string&) {

@@ -4,6 +4,8 @@
 
 #include "harness/trajectories/reference_flow.hpp"
 
+#include "properties/support/loglog_fit.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <chrono>
@@ -22,27 +24,6 @@ namespace fs = std::filesystem;
 namespace {
 double norm2(const std::array<double, 3>& v) { return v[0] * v[0] + v[1] * v[1] + v[2] * v[2]; }
 }  // namespace
-
-double convergence_slope(const std::vector<std::pair<double, double>>& pts, double plateau, std::vector<bool>* used) {
-  if (used) used->assign(pts.size(), false);
-  double sx = 0, sy = 0, sxx = 0, sxy = 0;
-  int n = 0;
-  for (std::size_t i = 0; i < pts.size(); ++i) {
-    const auto [h, e] = pts[i];
-    if (!(h > 0) || !(e > plateau) || !std::isfinite(e)) continue;
-    const double x = std::log(h), y = std::log(e);
-    sx += x;
-    sy += y;
-    sxx += x * x;
-    sxy += x * y;
-    ++n;
-    if (used) (*used)[i] = true;
-  }
-  if (n < 2) return std::nan("");
-  const double d = n * sxx - sx * sx;
-  if (d == 0) return std::nan("");
-  return (n * sxy - sx * sy) / d;
-}
 
 namespace {
 
@@ -310,8 +291,12 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
       plateau = std::max(plateau, 16 * a.roundoff);
     }
     std::sort(pts.begin(), pts.end());
-    std::vector<bool> used;
-    const double slope = convergence_slope(pts, plateau, &used);
+    // The suite's one log-log fit takes the steps from the largest down.
+    std::vector<double> hs, errs;
+    for (auto p = pts.rbegin(); p != pts.rend(); ++p) hs.push_back(p->first), errs.push_back(p->second);
+    const conv::SlopeFit fit = conv::loglog_slope(hs, errs, std::vector<double>(hs.size(), plateau));
+    std::vector<bool> used(fit.point.rbegin(), fit.point.rend());
+    const double slope = fit.measured() ? fit.slope : std::nan("");
     Verdict v;
     v.subject = r.subject;
     v.property = "trajectory_order";
@@ -324,7 +309,8 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
     for (bool u : used) n_used += u;
     std::ostringstream m;
     m << "measured slope " << (std::isnan(slope) ? std::string("(not measurable)") : sci(slope)) << " from " << n_used << " of "
-      << pts.size() << " step sizes (errors below the round-off plateau " << sci(plateau) << " left out):";
+      << pts.size() << " step sizes (errors at or below the round-off plateau " << sci(plateau)
+      << " left out, and every smaller step after one):";
     for (std::size_t i = 0; i < pts.size(); ++i)
       m << "\n  h = " << sci(pts[i].first) << ": error " << sci(pts[i].second) << (used[i] ? "" : " (left out)");
     const bool claimed = o.order > 0;

@@ -26,10 +26,4 @@ struct TrajectoryCheckOptions {
 // Throws TrajectoryError for unreadable or inconsistent input.
 CheckResult check_trajectories(const std::vector<std::string>& files, const TrajectoryCheckOptions& options);
 
-// Least-squares slope of log(error) against log(step), leaving out the round-off plateau (errors
-// below `plateau`) and non-positive errors; `used` says which points entered. NaN when fewer than
-// two points remain.
-double convergence_slope(const std::vector<std::pair<double, double>>& step_error, double plateau,
-                         std::vector<bool>* used = nullptr);
-
 }  // namespace gm::harness
