@@ -1,7 +1,7 @@
 // Who calls whom in a submission, read from its source: the first fix is the function
 // whose own check fails, not one that calls it.
 #include "harness/reports/report.hpp"
-#include "harness/reports/source_calls.hpp"
+#include "harness/engine/source_calls.hpp"
 
 #include "tests/support/scratch.hpp"
 

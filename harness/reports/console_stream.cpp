@@ -1,6 +1,6 @@
 #include "harness/reports/console_stream.hpp"
 
-#include "harness/reports/source_calls.hpp"
+#include "harness/engine/source_calls.hpp"
 
 #include "harness/reports/report.hpp"
 

@@ -43,7 +43,7 @@ class ConsoleStream : public CheckListener {
   bool line_shown_ = false;
   std::chrono::steady_clock::time_point last_line_;
   std::set<std::string> first_fixes_;  // slots already named in a FIRST FIX line
-  // Which slots each slot of the source calls (harness/reports/source_calls.hpp), read at the first failure.
+  // Which slots each slot of the source calls (harness/engine/source_calls.hpp), read at the first failure.
   std::optional<std::map<std::string, std::set<std::string>>> calls_;
   std::set<std::string> raises_seen_;  // integrator and message of each step raise already shown
   int failures_ = 0;

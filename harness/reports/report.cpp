@@ -3,7 +3,7 @@
 #include "harness/reports/html_page.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
-#include "harness/reports/source_calls.hpp"
+#include "harness/engine/source_calls.hpp"
 
 #include "harness/reports/svg.hpp"
 #include "harness/engine/verdict_io.hpp"

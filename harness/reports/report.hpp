@@ -38,7 +38,7 @@ struct RootCauses {
   std::set<std::string> caused;                                    // those properties
   std::set<std::string> explained;                                 // direct + caused
   std::vector<std::string> order;  // broken slots: callees before their callers, then the one most other failures call
-  // A broken slot whose source calls another broken slot (harness/reports/source_calls.hpp) -> that slot: it
+  // A broken slot whose source calls another broken slot (harness/engine/source_calls.hpp) -> that slot: it
   // most likely fails through it, and the callee is the fix.
   std::map<std::string, std::string> calls_broken;
 };

@@ -1,4 +1,4 @@
-#include "harness/reports/source_calls.hpp"
+#include "harness/engine/source_calls.hpp"
 
 #include "core/subject.hpp"
 
