@@ -1,6 +1,7 @@
 #include "harness/engine/check.hpp"
 
 #include "harness/isolation/inert_text.hpp"
+#include "harness/engine/first_fix.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
 #include "harness/isolation/isolate.hpp"
 #include "harness/engine/portrait.hpp"
@@ -664,6 +665,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   keep_within_budget(result);
   account_for_slots(result, s, cfg);
   decide_integrator_verdicts(result);  // once; every view renders it
+  decide_first_fixes(result);         // once, from the complete verdicts
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (CheckListener* l : cfg.listeners) l->ended(result);
   return result;

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "harness/engine/check_events.hpp"
+#include "harness/engine/first_fix.hpp"
 #include "harness/isolation/process_cpu.hpp"
 #include "properties/runner.hpp"
 
@@ -157,6 +158,9 @@ struct CheckResult {
   // Everything that could not be checked: SubjectInfo::unchecked, plus claims no property checked
   // in a full run. Non-empty means the check fails.
   std::vector<std::string> unchecked;
+  // The slots to fix first, decided once when the verdicts are complete (decide_first_fixes,
+  // harness/engine/first_fix.hpp); every view renders them.
+  RootCauses first_fixes;
 
   int count(Outcome o) const;
   int ran() const;            // verdicts that are not NOT PROVIDED

@@ -1,5 +1,6 @@
 #include "harness/engine/trajectory.hpp"
 
+#include "harness/engine/first_fix.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
 
 #include "harness/trajectories/reference_flow.hpp"
@@ -358,6 +359,7 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
   }
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   decide_integrator_verdicts(r);  // once, as a check of code does
+  decide_first_fixes(r);
   return r;
 }
 

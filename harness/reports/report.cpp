@@ -3,7 +3,6 @@
 #include "harness/reports/html_page.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
-#include "harness/engine/source_calls.hpp"
 
 #include "harness/reports/svg.hpp"
 #include "harness/engine/verdict_io.hpp"
@@ -49,8 +48,6 @@ std::string file_safe(const std::string& s) {
   for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '-';
   return out;
 }
-
-std::string row_name(const Verdict& v) { return v.property + (v.integrator.empty() ? "" : " [" + v.integrator + "]"); }
 
 std::string place_of(const Verdict& v, const Catalogue* c) {
   if (c)
@@ -279,67 +276,6 @@ std::string first_line(const std::string& s) {
   }
 }
 
-bool is_problem(Outcome o) {
-  return o == Outcome::Fail || o == Outcome::Crash || o == Outcome::Timeout || o == Outcome::Error;
-}
-
-// Which of two failures of a slot's own check shows it more clearly: an exact
-// counterexample (it fails in rationals, no tolerance involved) before a float one, and among float
-// ones the residual farthest above its allowance; a marginal case (a few eps over) comes last.
-bool clearer(const Verdict& a, const Verdict& b) {
-  const bool ea = a.scalar == "exact" && a.outcome == Outcome::Fail, eb = b.scalar == "exact" && b.outcome == Outcome::Fail;
-  if (ea != eb) return ea;
-  return a.worst_eps_units > b.worst_eps_units;
-}
-
-RootCauses root_causes(const CheckResult& r) {
-  RootCauses rc;
-  for (const auto& v : r.verdicts) {
-    if (!is_problem(v.outcome) || !v.machine_fault.empty()) continue;  // the machine's: names no slot
-    const Property* p = property_of(v);
-    if (!p || p->needs.size() != 1 || p->scope != Scope::Subject) continue;
-    auto it = rc.broken.find(p->needs.front());
-    if (it == rc.broken.end() || clearer(v, *it->second)) rc.broken[p->needs.front()] = &v;
-  }
-  for (const auto& [slot, direct] : rc.broken) rc.explained.insert(direct->property);
-  std::set<std::string> listed;
-  for (const auto& v : r.verdicts) {
-    if (!is_problem(v.outcome) || !v.machine_fault.empty() || rc.explained.count(v.property)) continue;
-    const Property* p = property_of(v);
-    if (!p) continue;
-    for (const auto& need : p->needs)
-      if (rc.broken.count(need)) {
-        if (listed.insert(need + "/" + v.property).second) rc.downstream[need].push_back(row_name(v));
-        rc.caused.insert(v.property);
-      }
-  }
-  rc.explained.insert(rc.caused.begin(), rc.caused.end());
-  // A wrong slot that calls another wrong slot (read from the student's source, across the
-  // files of a folder too) most likely fails through it: the callee is the first fix.
-  if (rc.broken.size() > 1 && !r.info.source.empty()) {
-    const auto calls = slot_calls(r.info.source, r.info.language);
-    for (const auto& [slot, direct] : rc.broken)
-      if (auto it = calls.find(slot); it != calls.end())
-        for (const auto& callee : it->second)
-          if (rc.broken.count(callee)) {
-            rc.calls_broken[slot] = callee;
-            break;
-          }
-  }
-  auto depth = [&](std::string s) {  // how many wrong callees stand before it (a cycle stops)
-    int d = 0;
-    for (auto it = rc.calls_broken.find(s); it != rc.calls_broken.end() && d < 64; it = rc.calls_broken.find(s))
-      s = it->second, ++d;
-    return d;
-  };
-  for (const auto& [slot, direct] : rc.broken) rc.order.push_back(slot);
-  std::stable_sort(rc.order.begin(), rc.order.end(), [&](const std::string& a, const std::string& b) {
-    auto n = [&](const std::string& s) { auto it = rc.downstream.find(s); return it == rc.downstream.end() ? 0 : it->second.size(); };
-    if (depth(a) != depth(b)) return depth(a) < depth(b);
-    return n(a) > n(b);
-  });
-  return rc;
-}
 
 std::string console_report(const CheckResult& r, const Catalogue* c, bool details) {
   std::ostringstream os;
@@ -387,7 +323,7 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     // was not: the properties that need other slots are counted here and listed in report.md.
     std::set<std::string> provided;
     for (const auto& [scalar, slots] : r.provided) provided.insert(slots.begin(), slots.end());
-    const RootCauses rc = root_causes(r);
+    const RootCauses& rc = r.first_fixes;
     std::size_t unexercised = 0;
     for (const auto& slot : provided) unexercised += r.exercised.count(slot) == 0;
     os << "(" << provided.size() << " of " << subject_slots().size() << " slots provided";
@@ -407,9 +343,9 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
   }
   os << "\nsummary: " << summary_counts(r) << "  (" << seconds_text(r.seconds) << ")\n";
   {
-    const RootCauses rc = root_causes(r);
+    const RootCauses& rc = r.first_fixes;
     for (const auto& slot : rc.order) {
-      const Verdict* direct = rc.broken.at(slot);
+      const Verdict* direct = &rc.broken.at(slot);
       if (auto c = rc.calls_broken.find(slot); c != rc.calls_broken.end()) {
         os << "THEN:      " << slot_named(r, slot, "'") << " fails its own check " << direct->property << " in "
            << direct->scalar << ", and it calls '" << c->second << "', which is wrong: fix that first\n";
@@ -567,9 +503,9 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     // ordered by root cause: a slot whose own direct property fails comes first, with
     // the properties that fail only because they call it grouped under it.
     md << "## What to fix\n\n";
-    const RootCauses rc = root_causes(r);
+    const RootCauses& rc = r.first_fixes;
     for (const auto& slot : rc.order) {
-      const Verdict* direct = rc.broken.at(slot);
+      const Verdict* direct = &rc.broken.at(slot);
       if (auto c = rc.calls_broken.find(slot); c != rc.calls_broken.end())
         md << "- **" << slot_named(r, slot, "`") << " fails too**, and it calls `" << c->second
            << "`, which is wrong (above): fix that first. Its own check `" << direct->property << "` fails in ["
@@ -1011,9 +947,9 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   if (!r.info.interpreter.empty()) j["interpreter"] = r.info.interpreter;
   json first_fix = json::array();
   {
-    const RootCauses rc = root_causes(r);
+    const RootCauses& rc = r.first_fixes;
     for (const auto& slot : rc.order) {
-      const Verdict* direct = rc.broken.at(slot);
+      const Verdict* direct = &rc.broken.at(slot);
       json entry = {{"slot", slot}, {"property", direct->property}, {"scalar", direct->scalar}};
       if (auto c = rc.calls_broken.find(slot); c != rc.calls_broken.end()) {
         entry["calls"] = c->second;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "harness/engine/check.hpp"
+#include "harness/engine/first_fix.hpp"
 #include "spec/catalogue.hpp"
 
 #include <nlohmann/json.hpp>
@@ -30,19 +31,8 @@ struct Figure {
 };
 std::vector<Figure> report_figures(const CheckResult& r);
 
-// Root causes: slots whose own direct property (one that needs that slot alone) has a
-// problem, and for each the other failing properties that call it.
-struct RootCauses {
-  std::map<std::string, const Verdict*> broken;                   // slot -> its failing direct verdict
-  std::map<std::string, std::vector<std::string>> downstream;     // slot -> failing properties that need it
-  std::set<std::string> caused;                                    // those properties
-  std::set<std::string> explained;                                 // direct + caused
-  std::vector<std::string> order;  // broken slots: callees before their callers, then the one most other failures call
-  // A broken slot whose source calls another broken slot (harness/engine/source_calls.hpp) -> that slot: it
-  // most likely fails through it, and the callee is the fix.
-  std::map<std::string, std::string> calls_broken;
-};
-RootCauses root_causes(const CheckResult& r);
+// The first fixes (RootCauses, root_causes) are decided by the engine (harness/engine/first_fix.hpp)
+// and kept on the CheckResult (r.first_fixes); every view here renders them.
 
 // How a report names a slot to fix: "slot 'x'" for C++; for another language, the function in the
 // student's file ("Python function 'casimir' in mine.py").
@@ -50,7 +40,6 @@ std::string slot_named(const SubjectInfo& info, const std::string& slot, const c
 // The first line of a message that says something (RapidCheck's "Exception thrown with message:"
 // skipped).
 std::string first_line(const std::string& s);
-bool is_problem(Outcome o);  // FAIL, CRASH, TIMEOUT or ERROR
 bool is_engine_wrapper(const CheckResult& r);  // integrators, and no slot of the notes
 
 std::string console_report(const CheckResult& r, const Catalogue* catalogue, bool details = true);

@@ -1,0 +1,43 @@
+// The first fixes of a check, decided once by the engine (run_check, check_trajectories) and kept on
+// the CheckResult; the console, report.md, verdicts.json's `first_fix` and the class views render
+// them and decide nothing.
+//
+// A slot is wrong when its own direct property (one that needs that slot alone) has a problem; the
+// other failing properties that need it are its downstream. A wrong slot whose source calls another
+// wrong slot (harness/engine/source_calls.hpp) most likely fails through it: the callee is the fix.
+// Order: callees before their callers, then the slot most other failures call.
+#pragma once
+
+#include "properties/verdict.hpp"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace gm::harness {
+
+struct CheckResult;
+
+bool is_problem(Outcome o);  // FAIL, CRASH, TIMEOUT or ERROR
+
+// A verdict's row: "property" or "property [integrator]".
+std::string row_name(const Verdict& v);
+
+struct RootCauses {
+  std::map<std::string, Verdict> broken;                       // slot -> its clearest failing direct verdict
+  std::map<std::string, std::vector<std::string>> downstream;  // slot -> failing rows that need it
+  std::set<std::string> caused;                                // those properties
+  std::set<std::string> explained;                             // direct + caused
+  std::vector<std::string> order;  // broken slots: callees before their callers, then the one most other failures call
+  // A broken slot whose source calls another broken slot -> that slot: fix the callee first.
+  std::map<std::string, std::string> calls_broken;
+};
+
+// The rule, from the verdicts and the source the result names. A machine's fault names no slot.
+RootCauses root_causes(const CheckResult& r);
+
+// r.first_fixes = root_causes(r): once, when the verdicts are complete.
+void decide_first_fixes(CheckResult& r);
+
+}  // namespace gm::harness
