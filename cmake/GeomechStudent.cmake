@@ -1,15 +1,15 @@
 # Student implementations.
 #
-# 1. The prebuilt main() of a student check program (student/driver.cpp), compiled once.
+# 1. The prebuilt main() of a student check program (tools/student_check_main.cpp), compiled once.
 # 2. student/toolchain.json in the build tree: the compiler, flags and prebuilt files with which
 #    `geomech check FILE.cpp` compiles only the student's file and links it (harness/program/build.cpp).
 # 3. geomech_add_student(<target> <source>...): the same program as a CMake target, used for the
 #    examples (examples/students) and usable by anyone building inside this tree.
 
-add_library(geomech_student_driver OBJECT ${PROJECT_SOURCE_DIR}/student/driver.cpp)
+add_library(geomech_student_driver OBJECT ${PROJECT_SOURCE_DIR}/tools/student_check_main.cpp)
 target_link_libraries(geomech_student_driver PRIVATE geomech_harness)
-# 1b. The main() of the C++ protocol server of untrusted mode (student/cpp/server_driver.cpp).
-add_library(geomech_server_driver OBJECT ${PROJECT_SOURCE_DIR}/student/cpp/server_driver.cpp)
+# 1b. The main() of the C++ protocol server of untrusted mode (tools/student_server_main.cpp).
+add_library(geomech_server_driver OBJECT ${PROJECT_SOURCE_DIR}/tools/student_server_main.cpp)
 target_link_libraries(geomech_server_driver PRIVATE geomech_harness)
 # Both read the suite's precompiled headers (the same flags as the suite's libraries).
 target_precompile_headers(geomech_student_driver REUSE_FROM ${GM_PCH_OWNER})

@@ -23,7 +23,7 @@ int serve_mutant_command(const std::string& name) {
   for (const auto& m : all_mutants(ref)) {
     if (m.name != name) continue;
     // Replies go to the descriptor the harness names, as in the untrusted C++ server
-    // (student/cpp/server_driver.cpp); the reference prints nothing.
+    // (tools/student_server_main.cpp); the reference prints nothing.
     const char* reply_fd = std::getenv("GEOMECH_REPLY_FD");
     const int out = reply_fd && *reply_fd ? std::atoi(reply_fd) : ::dup(1);
     harness::SubjectInfo info;

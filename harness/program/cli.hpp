@@ -1,5 +1,5 @@
 // The options of a check, shared by `geomech check` (built-in subjects) and by the program that
-// checks a student's implementation (student/driver.cpp), so both accept the same flags and a
+// checks a student's implementation (tools/student_check_main.cpp), so both accept the same flags and a
 // reproduce command printed by one works with the other.
 #pragma once
 

@@ -1,6 +1,6 @@
 // The parts a student's translation units registered through GEOMECH_STUDENT (one per scalar),
 // assembled into one subject. Shared by the check program (harness/program/student_parts.cpp) and the C++
-// protocol server of untrusted mode (student/server_driver.cpp), which links nothing else of the
+// protocol server of untrusted mode (tools/student_server_main.cpp), which links nothing else of the
 // harness.
 #include "harness/program/student_registry.hpp"
 

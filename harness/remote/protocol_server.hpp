@@ -1,6 +1,6 @@
 // The server side of the slot protocol (docs/PROTOCOL.md) for a SubjectSet: the handshake that
 // describes it, and the answers to batches of calls. The C++ protocol server of untrusted mode
-// (student/cpp/server_driver.cpp) is this, linked with the student's code alone: the
+// (tools/student_server_main.cpp) is this, linked with the student's code alone: the
 // properties, the reference implementation and the verdicts stay in the harness's process.
 #pragma once
 
