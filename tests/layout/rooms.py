@@ -13,6 +13,17 @@ is the base they stand on and may include none of them. The rooms' lists must no
 circle, and every folder of a tree that holds rooms (harness/*, properties/*, tests/mutants/*, but
 support/) must be a room, so a new folder cannot escape the check.
 
+The top level is held the same way, one floor up: every folder of ROOT that holds C++ sources (but a
+build tree) is a top-level room whose README.md has a line
+
+    Top level may include: core, impl, properties
+
+and an include that crosses from one top-level room into another must name a room on that list; the
+lists must not go round in a circle either. tests/mutants/ is a top-level room of its own, with the
+same line (the negative controls, built into the suite's library and read by mutation/ and tools/,
+stand apart from tests/, which may include everything). Inside one
+top-level room, the rooms above apply.
+
 Usage: rooms.py ROOT   Prints `FILE:LINE: what is wrong` per problem, then a summary; exit 1 if any.
 """
 import os
@@ -22,6 +33,9 @@ import sys
 TREES = ("harness", "properties", "tests/mutants")
 INCLUDE = re.compile(r'\s*#\s*include\s+"([^"]+)"')
 MAY = re.compile(r"^May include:\s*(.*)$")
+NESTED_TOPS = ("tests/mutants",)  # top-level rooms that lie inside another one
+TOP = re.compile(r"^Top level may include:\s*(.*)$")
+SOURCE = (".cpp", ".hpp")
 
 
 def read_rooms(root):
@@ -97,6 +111,63 @@ def sources(root):
                     yield os.path.relpath(os.path.join(folder, name), root).replace(os.sep, "/")
 
 
+def holds_sources(folder):
+    for _, dirs, files in os.walk(folder):
+        if any(name.endswith(SOURCE) for name in files):
+            return True
+    return False
+
+
+def top_line(readme):
+    if os.path.isfile(readme):
+        with open(readme, encoding="utf-8") as f:
+            for line in f:
+                m = TOP.match(line.strip())
+                if m:
+                    words = {w.strip().rstrip(".") for w in m.group(1).split(",")}
+                    return {w for w in words if w and " " not in w}
+    return None
+
+
+def read_top_rooms(root):
+    """{top-level room: set of top-level rooms it may include}, and problems with the declarations."""
+    tops, problems = {}, []
+    for name in sorted(os.listdir(root)):
+        folder = os.path.join(root, name)
+        if name.startswith(".") or not os.path.isdir(folder) or os.path.exists(os.path.join(folder, "CMakeCache.txt")):
+            continue
+        if not holds_sources(folder):
+            continue
+        allowed = top_line(os.path.join(folder, "README.md"))
+        if allowed is None:
+            problems.append((f"{name}/README.md", 1, "no `Top level may include:` line: every top-level folder "
+                             "holding C++ sources is a room that says which others it may include"))
+            continue
+        tops[name] = allowed
+    for nested in NESTED_TOPS:
+        found = top_line(os.path.join(root, nested, "README.md"))
+        if found is not None:
+            tops[nested] = found
+        elif os.path.isdir(os.path.join(root, nested)):
+            problems.append((f"{nested}/README.md", 1, "no `Top level may include:` line: it is a top-level room "
+                             "of its own"))
+    for room, allowed in tops.items():
+        for other in sorted(allowed):
+            if other not in tops:
+                problems.append((f"{room}/README.md", 1, f"`Top level may include:` names {other}, which is not a "
+                                 "top-level room"))
+    return tops, problems
+
+
+def top_sources(root, tops):
+    for room in sorted(t for t in tops if "/" not in t):
+        for folder, dirs, files in os.walk(os.path.join(root, room)):
+            dirs.sort()
+            for name in sorted(files):
+                if name.endswith(SOURCE):
+                    yield os.path.relpath(os.path.join(folder, name), root).replace(os.sep, "/")
+
+
 def main(argv):
     if len(argv) != 1:
         print("usage: rooms.py ROOT", file=sys.stderr)
@@ -107,17 +178,35 @@ def main(argv):
     if found:
         problems.append((f"{found[0]}/README.md", 1, "the rooms include each other round a circle: "
                          + " -> ".join(found)))
-    files = includes = 0
-    for path in sources(root):
-        files += 1
+    tops, top_problems = read_top_rooms(root)
+    problems += top_problems
+    found = circle(tops)
+    if found:
+        problems.append((f"{found[0]}/README.md", 1, "the top-level rooms include each other round a circle: "
+                         + " -> ".join(found)))
+    files = includes = crossing = 0
+    inner = set(sources(root))
+    for path in sorted(inner | set(top_sources(root, tops))):
+        files += path in inner
         mine = room_of(path, rooms)
+        mine_top = room_of(path, tops)
         with open(os.path.join(root, path), encoding="utf-8") as f:
             for line_no, line in enumerate(f, 1):
                 m = INCLUDE.match(line)
                 if not m:
                     continue
-                includes += 1
                 target = m.group(1)
+                theirs_top = room_of(target, tops)
+                if mine_top is not None and theirs_top is not None and theirs_top != mine_top:
+                    crossing += 1
+                    if theirs_top not in tops[mine_top]:
+                        allowed = ", ".join(sorted(tops[mine_top])) or "no other room"
+                        problems.append((path, line_no, f"includes {target} of the top-level room {theirs_top}, "
+                                         f"which {mine_top}/README.md does not list (Top level may include: {allowed})"))
+                    continue
+                if path not in inner:
+                    continue
+                includes += 1
                 theirs = room_of(target, rooms)
                 if theirs is None or theirs == mine:
                     continue
@@ -132,7 +221,8 @@ def main(argv):
                                      f"{mine}/README.md does not list (May include: {allowed})"))
     for path, line_no, what in problems:
         print(f"{path}:{line_no}: {what}")
-    print(f"layout: {len(rooms)} rooms, {files} files, {includes} includes, {len(problems)} problems")
+    print(f"layout: {len(rooms)} rooms, {files} files, {includes} includes, {len(problems)} problems; "
+          f"top level: {len(tops)} rooms, {crossing} includes between them")
     return 1 if problems else 0
 
 
