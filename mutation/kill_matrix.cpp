@@ -192,6 +192,9 @@ json thorough_only_json(const ThoroughOnly& t, const MutantsRun& run) {
   j["rule"] = "the 50-digit checks costing at least min_seconds per mutant in the matrix, most costly first, each left "
               "out when every mutant it kills is still killed by a check that is kept";
   j["min_seconds"] = t.min_seconds;
+  // The factor the matrix ran at: an implementation behind the protocol runs that share of each
+  // property's cases by default (harness/engine/thorough_only.hpp).
+  j["case_factor"] = run.options.case_factor;
   j["candidates"] = t.candidates;
   j["killable"] = t.killable;
   j["killed_by_kept"] = t.killed_by_kept;

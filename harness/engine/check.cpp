@@ -535,6 +535,11 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
     if (!cfg.only_checks.empty()) sel.str(cfg.selection_note);
     if (!result.left_to_thorough.empty())
       sel << "; " << result.left_to_thorough.size() << " costly 50-digit runs left to --thorough";
+    if (!cfg.case_factor_note.empty()) {
+      result.case_factor = cfg.run.case_factor;
+      result.case_factor_note = cfg.case_factor_note;
+      sel << "; " << cfg.run.case_factor << " of each property's cases (--thorough: all)";
+    }
     result.selection = sel.str();
     result.thorough_only_note = result.left_to_thorough.empty() ? "" : cfg.thorough_only_note;
   }
@@ -580,7 +585,12 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   const std::size_t n_items = tasks.size();
   auto portrait_tasks = cfg.portraits ? portrait_task_list(s, cfg) : std::vector<PortraitTask>{};
   if (cfg.portraits)
-    if (auto wp = work_precision_task(s, cfg)) portrait_tasks.push_back(std::move(*wp));
+    if (auto wp = work_precision_task(s, cfg)) {
+      if (cfg.work_precision_left_out.empty())
+        portrait_tasks.push_back(std::move(*wp));
+      else
+        result.work_precision_left_out = cfg.work_precision_left_out;
+    }
   for (const auto& pt : portrait_tasks) tasks.push_back(pt.run);
 
   IsolationOptions io;

@@ -75,6 +75,9 @@ struct CheckConfig {
   // behind the protocol leaves to --thorough (harness/engine/thorough_only.hpp), and why.
   std::set<std::string> thorough_only;
   std::string thorough_only_note;
+  // Why run.case_factor is below 1 when the user did not choose it (the matrix's factor, for an
+  // implementation behind the protocol); empty otherwise.
+  std::string case_factor_note;
   RunOptions run;                       // seed, case counts, reproduce string
   double timeout_seconds = 60;          // per (property, scalar, integrator)
   bool timeout_given = false;           // --timeout was given: timeout_factor() does not apply
@@ -82,6 +85,9 @@ struct CheckConfig {
   bool isolate = true;                  // fork per property (false: in-process, for a debugger)
   long memory_limit_mb = 4096;
   bool portraits = true;                // integrator pictures (convergence, invariants) besides the verdicts
+  // Non-empty: the work-precision diagram is not drawn, and this says why (behind the protocol its
+  // cost axis would time the round trips; --thorough draws it).
+  std::string work_precision_left_out;
   // Told as each check starts and ends (check_events.hpp); not owned.
   std::vector<CheckListener*> listeners;
   // The checks that failed in the previous run of the same report ("property/scalar" or
@@ -149,6 +155,11 @@ struct CheckResult {
   // Checks this run left to --thorough ("property [mp50]"), and why (CheckConfig::thorough_only).
   std::vector<std::string> left_to_thorough;
   std::string thorough_only_note;
+  // The share of each property's cases this run made when it is below 1 because of
+  // CheckConfig::case_factor_note (0: every case), and why.
+  double case_factor = 0;
+  std::string case_factor_note;
+  std::string work_precision_left_out;  // CheckConfig::work_precision_left_out, when it applied
 
   // Which properties exercised each provided slot ("integrator NAME" for an integrator's step):
   // the properties that ran (not NOT PROVIDED) and need it.

@@ -25,7 +25,15 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_option("--integrator", o.integrator, "only this integrator, for integrator properties");
   app.add_option("--seed", o.seed, "base seed (default 0: runs are reproducible)");
   app.add_option("--cases", o.cases, "cases per property (default: each property's own)")->check(CLI::NonNegativeNumber);
-  app.add_option("--case-factor", o.case_factor, "multiply every default case count")->check(CLI::PositiveNumber);
+  app.add_option_function<double>(
+         "--case-factor",
+         [&o](double f) {
+           o.case_factor = f;
+           o.case_factor_given = true;
+         },
+         "multiply every default case count (default 1; for an implementation behind the protocol, the factor the "
+         "kill matrix ran at, spec/thorough_only.json, unless --thorough)")
+      ->check(CLI::PositiveNumber);
   app.add_option("--reproduce", o.reproduce, "RapidCheck reproduce string printed with a failure");
   app.add_option_function<double>(
          "--timeout",
@@ -157,7 +165,7 @@ std::vector<std::string> to_args(const CheckCliOptions& o) {
   if (!o.integrator.empty()) a.insert(a.end(), {"--integrator", o.integrator});
   a.insert(a.end(), {"--seed", std::to_string(o.seed)});
   if (o.cases > 0) a.insert(a.end(), {"--cases", std::to_string(o.cases)});
-  if (o.case_factor != 1.0) a.insert(a.end(), {"--case-factor", num(o.case_factor)});
+  if (o.case_factor_given || o.case_factor != 1.0) a.insert(a.end(), {"--case-factor", num(o.case_factor)});
   if (!o.reproduce.empty()) a.insert(a.end(), {"--reproduce", o.reproduce});
   if (o.timeout_given) a.insert(a.end(), {"--timeout", num(o.timeout)});
   if (o.case_budget >= 0) a.insert(a.end(), {"--case-budget", num(o.case_budget)});
@@ -195,6 +203,16 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
       const ThoroughOnlySelection t = load_thorough_only(default_thorough_only_path());
       streaming.thorough_only = t.checks;
       streaming.thorough_only_note = t.provenance;
+      // Every call is a round trip: the share of each property's cases at which the kill matrix
+      // kills every mutant, unless the user chose a factor.
+      if (!o.case_factor_given && t.case_factor < 1) {
+        streaming.run.case_factor = t.case_factor;
+        streaming.case_factor_note = t.case_factor_note;
+      }
+      // A picture, not a check: its axis of cost would time the round trips, not the integrator.
+      streaming.work_precision_left_out =
+          "the work-precision diagram is drawn with --thorough: behind the protocol its cost axis would time the "
+          "round trips of the calls, not the integrators";
     } catch (const std::exception& e) {
       std::cerr << "geomech: warning: " << e.what() << " (every 50-digit run is done)\n";
     }

@@ -23,6 +23,7 @@ struct CheckCliOptions {
   std::uint64_t seed = 0;
   int cases = 0;
   double case_factor = 1.0;
+  bool case_factor_given = false;  // --case-factor was given (else an implementation behind the protocol gets the matrix's)
   std::string reproduce;
   double timeout = 60;
   bool timeout_given = false;  // set by the parser: the replay command repeats --timeout only then

@@ -743,6 +743,12 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     }
     md << ".\n\n";
   }
+  if (r.case_factor > 0) {
+    md << "## Cases\n\n"
+       << "Every check ran " << r.case_factor << " of its property's cases: an implementation behind the protocol "
+          "makes every call a round trip, and " << md_cell(r.case_factor_note) << ". `--thorough` runs every case.\n\n";
+  }
+  if (!r.work_precision_left_out.empty()) md << "Not drawn: " << md_cell(r.work_precision_left_out) << ".\n\n";
   md << "Slots provided:\n\n";
   for (const char* s : {"double", "mp50", "exact"}) {
     auto it = r.provided.find(s);
@@ -924,6 +930,8 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   j["counts"] = counts;
   j["left_to_thorough"] = r.left_to_thorough;
   if (!r.left_to_thorough.empty()) j["left_to_thorough_why"] = r.thorough_only_note;
+  if (r.case_factor > 0) j["case_factor"] = {{"factor", r.case_factor}, {"why", r.case_factor_note}};
+  if (!r.work_precision_left_out.empty()) j["work_precision_left_out"] = r.work_precision_left_out;
   json integrators = json::array();
   for (const auto& i : r.integrators) {
     json claims = json::array();
