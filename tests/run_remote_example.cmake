@@ -1,7 +1,7 @@
 # One Python or Octave example checked end to end: `geomech check FILE --quiet` (plus ARGS), its exit
 # status, and literal lines its report must contain (its own reason for failing, the function named).
 #   cmake -DGEOMECH=... -DFILE=... -DSTATUS=0|1 -DEXPECT="text 1|text 2" -DNEED=python3|octave-cli
-#         -DOUT=dir [-DARGS="--seed 7"] [-DREPLAY=ON] -P run_remote_example.cmake
+#         -DOUT=dir [-DARGS="--seed 7"] [-DREPLAY=ON] [-DABSENT="text|text"] -P run_remote_example.cmake
 # EXPECT holds literal strings separated by '|', each looked for in report.md (no regex: the texts
 # are the report's own words, brackets and all). A missing interpreter fails the test, naming the
 # Debian package: the project's front door (./geomech) installs it, so its absence is a broken set-up,
@@ -43,6 +43,16 @@ foreach(text IN LISTS wanted)
     message(FATAL_ERROR "the report (${OUT}/report.md) does not contain: ${text}\n${err}")
   endif()
 endforeach()
+# -DABSENT="text 1|text 2": literal strings report.md must not contain (a control of EXPECT's).
+if(ABSENT)
+  string(REPLACE "|" ";" unwanted "${ABSENT}")
+  foreach(text IN LISTS unwanted)
+    string(FIND "${report}" "${text}" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "the report (${OUT}/report.md) contains, and must not: ${text}\n${err}")
+    endif()
+  endforeach()
+endif()
 # -DREPLAY=ON: every replay command printed for a failing row, run, fails again the same way.
 if(REPLAY)
   set(REPLAY_VERDICTS ${OUT}/verdicts.json)
