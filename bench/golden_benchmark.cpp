@@ -154,9 +154,10 @@ class RatioReporter : public benchmark::ConsoleReporter {
   void print_ratio() const {
     const std::string t = "BM_FreeRigidBody40Digits_Taylor", o = "BM_FreeRigidBody40Digits_OdeintBulirschStoer";
     if (!real_.count(t) || !real_.count(o) || real_.at(t) <= 0 || cpu_.at(t) <= 0) return;
-    std::printf("\nTaylor oracle vs odeint bulirsch_stoer (Real50, same trajectory):\n"
-                "  real time %.3g ms vs %.3g ms: %.1fx faster\n  CPU time  %.3g ms vs %.3g ms: %.1fx faster\n",
-                real_.at(t), real_.at(o), real_.at(o) / real_.at(t), cpu_.at(t), cpu_.at(o), cpu_.at(o) / cpu_.at(t));
+    std::printf(
+        "\nTaylor oracle vs odeint bulirsch_stoer (Real50, same trajectory):\n"
+        "  real time %.3g ms vs %.3g ms: %.1fx faster\n  CPU time  %.3g ms vs %.3g ms: %.1fx faster\n",
+        real_.at(t), real_.at(o), real_.at(o) / real_.at(t), cpu_.at(t), cpu_.at(o), cpu_.at(o) / cpu_.at(t));
     const std::string a = "BM_FreeRigidBody40Digits_TaylorAllReal50";
     if (cpu_.count(a))
       std::printf("  mixed precision vs every order in Real50: CPU time %.3g ms vs %.3g ms: %.2fx faster\n", cpu_.at(t),

@@ -35,8 +35,8 @@ void run_cases(benchmark::State& state, const char* property, gm::ScalarKind k) 
   state.counters["cases_per_s"] = benchmark::Counter(static_cast<double>(total), benchmark::Counter::kIsRate);
 }
 
-#define GM_THROUGHPUT(name, property, kind, cases)                                              \
-  void name(benchmark::State& s) { run_cases(s, property, gm::ScalarKind::kind); }           \
+#define GM_THROUGHPUT(name, property, kind, cases)                                 \
+  void name(benchmark::State& s) { run_cases(s, property, gm::ScalarKind::kind); } \
   BENCHMARK(name)->Arg(cases)->Unit(benchmark::kMillisecond)->MinTime(1.0)
 
 GM_THROUGHPUT(hat_isomorphism_double, "hat_is_lie_algebra_isomorphism", Double, 1000);

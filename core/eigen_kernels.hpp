@@ -31,45 +31,43 @@ using Dense = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>;
 }  // namespace gm::eigen_kernels
 
 // GM_EIGEN_KERNELS(extern, T) declares, GM_EIGEN_KERNELS(, T) defines, the instantiations for T.
-#define GM_EIGEN_KERNELS(EXTERN, T)                                                                      \
-  EXTERN template void Eigen::PartialPivLU<gm::eigen_kernels::Dense<T>>::compute();                      \
-  EXTERN template void Eigen::FullPivLU<gm::eigen_kernels::Dense<T>>::computeInPlace();                  \
-  EXTERN template struct Eigen::internal::gebp_kernel<T, T, Eigen::Index, gm::eigen_kernels::Mapper<T>,  \
-                                                      gm::eigen_kernels::Traits<T>::mr,                  \
-                                                      gm::eigen_kernels::Traits<T>::nr, false, false>;   \
-  EXTERN template struct Eigen::internal::gemm_pack_lhs<                                                 \
-      T, Eigen::Index, gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, gm::eigen_kernels::Traits<T>::mr, \
-      gm::eigen_kernels::Traits<T>::LhsProgress, typename gm::eigen_kernels::Traits<T>::LhsPacket4Packing, \
-      Eigen::ColMajor>;                                                                                  \
-  EXTERN template struct Eigen::internal::gemm_pack_lhs<                                                 \
-      T, Eigen::Index, gm::eigen_kernels::ConstMapper<T, Eigen::RowMajor>, gm::eigen_kernels::Traits<T>::mr, \
-      gm::eigen_kernels::Traits<T>::LhsProgress, typename gm::eigen_kernels::Traits<T>::LhsPacket4Packing, \
-      Eigen::RowMajor>;                                                                                  \
-  EXTERN template struct Eigen::internal::gemm_pack_rhs<T, Eigen::Index,                                 \
-                                                        gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, \
-                                                        gm::eigen_kernels::Traits<T>::nr, Eigen::ColMajor>; \
-  EXTERN template struct Eigen::internal::gemm_pack_rhs<T, Eigen::Index, gm::eigen_kernels::Mapper<T>,   \
-                                                        gm::eigen_kernels::Traits<T>::nr, Eigen::ColMajor, \
-                                                        false, true>;                                    \
-  EXTERN template struct Eigen::internal::general_matrix_vector_product<                                 \
-      Eigen::Index, T, gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, Eigen::ColMajor, false, T,    \
-      gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, false, 0>;                                     \
-  EXTERN template struct Eigen::internal::general_matrix_vector_product<                                 \
-      Eigen::Index, T, gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, Eigen::ColMajor, false, T,    \
-      gm::eigen_kernels::ConstMapper<T, Eigen::RowMajor>, false, 0>;                                     \
-  EXTERN template struct Eigen::internal::general_matrix_vector_product<                                 \
-      Eigen::Index, T, gm::eigen_kernels::ConstMapper<T, Eigen::RowMajor>, Eigen::RowMajor, false, T,    \
-      gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, false, 0>;                                     \
-  EXTERN template struct Eigen::internal::triangular_solve_matrix<T, Eigen::Index, Eigen::OnTheLeft,     \
-                                                                  Eigen::UnitLower, false, Eigen::ColMajor, \
-                                                                  Eigen::ColMajor, 1>;                   \
-  EXTERN template struct Eigen::internal::triangular_solve_matrix<T, Eigen::Index, Eigen::OnTheLeft,     \
-                                                                  Eigen::Upper, false, Eigen::ColMajor,  \
-                                                                  Eigen::ColMajor, 1>
+#define GM_EIGEN_KERNELS(EXTERN, T)                                                                                    \
+  EXTERN template void Eigen::PartialPivLU<gm::eigen_kernels::Dense<T>>::compute();                                    \
+  EXTERN template void Eigen::FullPivLU<gm::eigen_kernels::Dense<T>>::computeInPlace();                                \
+  EXTERN template struct Eigen::internal::gebp_kernel<T, T, Eigen::Index, gm::eigen_kernels::Mapper<T>,                \
+                                                      gm::eigen_kernels::Traits<T>::mr,                                \
+                                                      gm::eigen_kernels::Traits<T>::nr, false, false>;                 \
+  EXTERN template struct Eigen::internal::gemm_pack_lhs<                                                               \
+      T, Eigen::Index, gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, gm::eigen_kernels::Traits<T>::mr,           \
+      gm::eigen_kernels::Traits<T>::LhsProgress, typename gm::eigen_kernels::Traits<T>::LhsPacket4Packing,             \
+      Eigen::ColMajor>;                                                                                                \
+  EXTERN template struct Eigen::internal::gemm_pack_lhs<                                                               \
+      T, Eigen::Index, gm::eigen_kernels::ConstMapper<T, Eigen::RowMajor>, gm::eigen_kernels::Traits<T>::mr,           \
+      gm::eigen_kernels::Traits<T>::LhsProgress, typename gm::eigen_kernels::Traits<T>::LhsPacket4Packing,             \
+      Eigen::RowMajor>;                                                                                                \
+  EXTERN template struct Eigen::internal::gemm_pack_rhs<T, Eigen::Index,                                               \
+                                                        gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>,            \
+                                                        gm::eigen_kernels::Traits<T>::nr, Eigen::ColMajor>;            \
+  EXTERN template struct Eigen::internal::gemm_pack_rhs<                                                               \
+      T, Eigen::Index, gm::eigen_kernels::Mapper<T>, gm::eigen_kernels::Traits<T>::nr, Eigen::ColMajor, false, true>;  \
+  EXTERN template struct Eigen::internal::general_matrix_vector_product<                                               \
+      Eigen::Index, T, gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, Eigen::ColMajor, false, T,                  \
+      gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, false, 0>;                                                   \
+  EXTERN template struct Eigen::internal::general_matrix_vector_product<                                               \
+      Eigen::Index, T, gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, Eigen::ColMajor, false, T,                  \
+      gm::eigen_kernels::ConstMapper<T, Eigen::RowMajor>, false, 0>;                                                   \
+  EXTERN template struct Eigen::internal::general_matrix_vector_product<                                               \
+      Eigen::Index, T, gm::eigen_kernels::ConstMapper<T, Eigen::RowMajor>, Eigen::RowMajor, false, T,                  \
+      gm::eigen_kernels::ConstMapper<T, Eigen::ColMajor>, false, 0>;                                                   \
+  EXTERN template struct Eigen::internal::triangular_solve_matrix<T, Eigen::Index, Eigen::OnTheLeft, Eigen::UnitLower, \
+                                                                  false, Eigen::ColMajor, Eigen::ColMajor, 1>;         \
+  EXTERN template struct Eigen::internal::triangular_solve_matrix<T, Eigen::Index, Eigen::OnTheLeft, Eigen::Upper,     \
+                                                                  false, Eigen::ColMajor, Eigen::ColMajor, 1>
 
 // Naming Eigen's packet types (__m128d) as template arguments makes GCC warn that their
 // alignment attributes are ignored; Eigen silences the same warning inside its own headers.
-#define GM_EIGEN_KERNELS_QUIET_BEGIN _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wignored-attributes\"")
+#define GM_EIGEN_KERNELS_QUIET_BEGIN \
+  _Pragma("GCC diagnostic push") _Pragma("GCC diagnostic ignored \"-Wignored-attributes\"")
 #define GM_EIGEN_KERNELS_QUIET_END _Pragma("GCC diagnostic pop")
 
 #ifdef GEOMECH_EIGEN_KERNELS_PREBUILT

@@ -8,9 +8,12 @@ enum class LieAlgebraId { so3, so4, sl2 };
 
 inline const char* lie_algebra_name(LieAlgebraId a) {
   switch (a) {
-    case LieAlgebraId::so3: return "so(3)";
-    case LieAlgebraId::so4: return "so(4)";
-    case LieAlgebraId::sl2: return "sl(2,R)";
+    case LieAlgebraId::so3:
+      return "so(3)";
+    case LieAlgebraId::so4:
+      return "so(4)";
+    case LieAlgebraId::sl2:
+      return "sl(2,R)";
   }
   return "?";
 }

@@ -10,9 +10,12 @@ namespace gm {
 
 const char* scalar_name(ScalarKind k) {
   switch (k) {
-    case ScalarKind::Double: return "double";
-    case ScalarKind::MP50: return "mp50";
-    case ScalarKind::Exact: return "exact";
+    case ScalarKind::Double:
+      return "double";
+    case ScalarKind::MP50:
+      return "mp50";
+    case ScalarKind::Exact:
+      return "exact";
   }
   return "?";
 }
@@ -43,8 +46,7 @@ std::string to_string_full(const Rational& x) {
 
 Rational parse_decimal_rational(std::string_view text) {
   auto bad = [&](const char* why) {
-    return std::invalid_argument("not a finite decimal number (" + std::string(why) + "): '" +
-                                 std::string(text) + "'");
+    return std::invalid_argument("not a finite decimal number (" + std::string(why) + "): '" + std::string(text) + "'");
   };
   std::size_t i = 0;
   const std::size_t n = text.size();
@@ -112,8 +114,7 @@ double from_decimal<double>(std::string_view text) {
   std::string s(text);
   char* endp = nullptr;
   double v = std::strtod(s.c_str(), &endp);
-  if (!std::isfinite(v))
-    throw std::invalid_argument("decimal number out of double range: '" + s + "'");
+  if (!std::isfinite(v)) throw std::invalid_argument("decimal number out of double range: '" + s + "'");
   return v;
 }
 template <>

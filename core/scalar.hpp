@@ -27,14 +27,17 @@
 // constrained specialisation covers them all (TOOLCHAIN.md, pitfall 1).
 namespace gm::detail {
 template <class C>
-concept eigen_object = requires(const C& c) { c.derived(); } &&
-                       std::is_base_of_v<Eigen::EigenBase<std::decay_t<decltype(std::declval<const C&>().derived())>>, C>;
+concept eigen_object = requires(const C& c) {
+  c.derived();
+}
+&&std::is_base_of_v<Eigen::EigenBase<std::decay_t<decltype(std::declval<const C&>().derived())>>, C>;
 }  // namespace gm::detail
 
 namespace boost::multiprecision::detail {
 template <class C>
-  requires gm::detail::eigen_object<C>
-struct is_byte_container<C> : boost::false_type {};
+requires gm::detail::eigen_object<C>
+struct is_byte_container<C> : boost::false_type {
+};
 }  // namespace boost::multiprecision::detail
 
 namespace gm {
@@ -111,8 +114,8 @@ bool is_finite(const T& x) {
   if constexpr (is_exact_v<T>)
     return true;
   else {
-    using std::isfinite;
     using boost::multiprecision::isfinite;
+    using std::isfinite;
     return isfinite(x);
   }
 }

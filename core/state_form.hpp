@@ -73,10 +73,14 @@ struct EngineState {
 
   Vec3<T>& angular() {
     switch (form.angular) {
-      case Angular::Omega: return Omega;
-      case Angular::omega: return omega;
-      case Angular::pi: return pi;
-      case Angular::Pi: break;
+      case Angular::Omega:
+        return Omega;
+      case Angular::omega:
+        return omega;
+      case Angular::pi:
+        return pi;
+      case Angular::Pi:
+        break;
     }
     return Pi;
   }
@@ -110,7 +114,7 @@ Mat3<T> rotation_of(const Vec4<T>& q) {
   const T n2 = w * w + x * x + y * y + z * z;
   Mat3<T> R;
   R << w * w + x * x - y * y - z * z, T(2) * (x * y - w * z), T(2) * (x * z + w * y),  //
-      T(2) * (x * y + w * z), w * w - x * x + y * y - z * z, T(2) * (y * z - w * x),    //
+      T(2) * (x * y + w * z), w * w - x * x + y * y - z * z, T(2) * (y * z - w * x),   //
       T(2) * (x * z - w * y), T(2) * (y * z + w * x), w * w - x * x - y * y + z * z;
   return R / n2;
 }
@@ -187,10 +191,18 @@ EngineState<T> to_declared(const StateForm& f, const Vec3<T>& I, const Mat3<T>& 
     u.O = O;
   }
   switch (f.angular) {
-    case Angular::Pi: u.Pi = Pi; break;
-    case Angular::Omega: u.Omega = Pi.cwiseQuotient(I); break;                 // (3.5)
-    case Angular::omega: u.omega = O * Vec3<T>(Pi.cwiseQuotient(I)); break;    // omega = O Omega
-    case Angular::pi: u.pi = O * Pi; break;                                    // (2.30): pi = O Pi
+    case Angular::Pi:
+      u.Pi = Pi;
+      break;
+    case Angular::Omega:
+      u.Omega = Pi.cwiseQuotient(I);
+      break;  // (3.5)
+    case Angular::omega:
+      u.omega = O * Vec3<T>(Pi.cwiseQuotient(I));
+      break;  // omega = O Omega
+    case Angular::pi:
+      u.pi = O * Pi;
+      break;  // (2.30): pi = O Pi
   }
   return u;
 }
@@ -219,10 +231,14 @@ Mat3<T> attitude_of(const EngineState<T>& u) {
 template <class T>
 Vec3<T> body_momentum_of(const EngineState<T>& u, const Vec3<T>& I, const Mat3<T>& O) {
   switch (u.form.angular) {
-    case Angular::Omega: return I.cwiseProduct(u.Omega);                                                   // (3.1)
-    case Angular::omega: return I.cwiseProduct(Vec3<T>(state_form::inverse_of<T>(O, u.form) * u.omega));  // Omega = O^-1 omega
-    case Angular::pi: return state_form::inverse_of<T>(O, u.form) * u.pi;                                  // Pi = O^-1 pi
-    case Angular::Pi: break;
+    case Angular::Omega:
+      return I.cwiseProduct(u.Omega);  // (3.1)
+    case Angular::omega:
+      return I.cwiseProduct(Vec3<T>(state_form::inverse_of<T>(O, u.form) * u.omega));  // Omega = O^-1 omega
+    case Angular::pi:
+      return state_form::inverse_of<T>(O, u.form) * u.pi;  // Pi = O^-1 pi
+    case Angular::Pi:
+      break;
   }
   return u.Pi;
 }

@@ -89,67 +89,67 @@ class ProcessFailure : public std::runtime_error {
 
 // SLOT(name, signature, place in the notes, meaning)
 // Signatures use T, the scalar. Arguments are in the notes' order and notation.
-#define GM_SUBJECT_SLOTS(SLOT)                                                                          \
-  /* so(3) and so(n) */                                                                              \
-  SLOT(hat, Mat3<T>(const Vec3<T>& v), "(2.11)", "so(3) hat map: hat(v) w = v x w")                     \
-  SLOT(vee, Vec3<T>(const Mat3<T>& m), "(2.11)", "inverse of the hat map on skew 3x3 matrices")         \
-  SLOT(pairing, T(const MatX<T>& a, const MatX<T>& b), "(2.15)", "trace pairing <A, B> = tr(A^T B)/2")  \
-  SLOT(hat_n, MatX<T>(const VecX<T>& v, int n), "sec. 1, SO(4) exercise", "so(n) hat map from R^{n(n-1)/2}") \
-  SLOT(vee_n, VecX<T>(const MatX<T>& m), "sec. 1, SO(4) exercise", "inverse of hat_n")                  \
-  /* matrix Lie algebras in coordinates */                                                           \
-  SLOT(lie_hat, MatX<T>(LieAlgebraId g, const VecX<T>& x), "sec. 1", "coordinates -> matrix in g")      \
-  SLOT(lie_vee, VecX<T>(LieAlgebraId g, const MatX<T>& m), "sec. 1", "matrix in g -> coordinates")      \
-  SLOT(ad_star, VecX<T>(LieAlgebraId g, const VecX<T>& xi, const VecX<T>& mu), "sec. 1, exercise",     \
-    "(ad*_xi mu)_k = xi^j mu_i c^i_jk")                                                              \
-  SLOT(so4_bracket_R6, Vec6<T>(const Vec6<T>& a, const Vec6<T>& b), "sec. 1, SO(4) exercise",          \
-    "Lie bracket of so(4) in R^6 coordinates")                                                       \
-  SLOT(ad_star_so4_R6, Vec6<T>(const Vec6<T>& xi, const Vec6<T>& mu), "sec. 1, SO(4) exercise",        \
-    "ad* of so(4) in R^6 coordinates")                                                               \
-  /* Euler's equations */                                                                            \
-  SLOT(euler_2_1, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Omega), "(2.1)", "dOmega/dt, componentwise") \
-  SLOT(euler_2_2, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Omega), "(2.2)", "dOmega/dt from I dOmega/dt = I Omega x Omega") \
-  SLOT(euler_3_7, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Pi), "(3.7)", "dPi/dt, componentwise")       \
-  SLOT(euler_3_8, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Pi), "(3.8)", "dPi/dt = Pi x I^-1 Pi")       \
-  SLOT(euler_matrix_2_12, Mat3<T>(const Vec3<T>& I, const Mat3<T>& Pi_hat), "(2.12), (2.20)",           \
-    "dPi/dt = -[Omega_hat, Pi] for skew Pi")                                                         \
-  /* Lagrangian, Legendre transform, Hamiltonian */                                                  \
-  SLOT(lagrangian_2_5, T(const Vec3<T>& I, const Vec3<T>& Omega), "(2.5)", "l = I Omega . Omega / 2")   \
+#define GM_SUBJECT_SLOTS(SLOT)                                                                                     \
+  /* so(3) and so(n) */                                                                                            \
+  SLOT(hat, Mat3<T>(const Vec3<T>& v), "(2.11)", "so(3) hat map: hat(v) w = v x w")                                \
+  SLOT(vee, Vec3<T>(const Mat3<T>& m), "(2.11)", "inverse of the hat map on skew 3x3 matrices")                    \
+  SLOT(pairing, T(const MatX<T>& a, const MatX<T>& b), "(2.15)", "trace pairing <A, B> = tr(A^T B)/2")             \
+  SLOT(hat_n, MatX<T>(const VecX<T>& v, int n), "sec. 1, SO(4) exercise", "so(n) hat map from R^{n(n-1)/2}")       \
+  SLOT(vee_n, VecX<T>(const MatX<T>& m), "sec. 1, SO(4) exercise", "inverse of hat_n")                             \
+  /* matrix Lie algebras in coordinates */                                                                         \
+  SLOT(lie_hat, MatX<T>(LieAlgebraId g, const VecX<T>& x), "sec. 1", "coordinates -> matrix in g")                 \
+  SLOT(lie_vee, VecX<T>(LieAlgebraId g, const MatX<T>& m), "sec. 1", "matrix in g -> coordinates")                 \
+  SLOT(ad_star, VecX<T>(LieAlgebraId g, const VecX<T>& xi, const VecX<T>& mu), "sec. 1, exercise",                 \
+       "(ad*_xi mu)_k = xi^j mu_i c^i_jk")                                                                         \
+  SLOT(so4_bracket_R6, Vec6<T>(const Vec6<T>& a, const Vec6<T>& b), "sec. 1, SO(4) exercise",                      \
+       "Lie bracket of so(4) in R^6 coordinates")                                                                  \
+  SLOT(ad_star_so4_R6, Vec6<T>(const Vec6<T>& xi, const Vec6<T>& mu), "sec. 1, SO(4) exercise",                    \
+       "ad* of so(4) in R^6 coordinates")                                                                          \
+  /* Euler's equations */                                                                                          \
+  SLOT(euler_2_1, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Omega), "(2.1)", "dOmega/dt, componentwise")            \
+  SLOT(euler_2_2, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Omega), "(2.2)",                                        \
+       "dOmega/dt from I dOmega/dt = I Omega x Omega")                                                             \
+  SLOT(euler_3_7, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Pi), "(3.7)", "dPi/dt, componentwise")                  \
+  SLOT(euler_3_8, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Pi), "(3.8)", "dPi/dt = Pi x I^-1 Pi")                  \
+  SLOT(euler_matrix_2_12, Mat3<T>(const Vec3<T>& I, const Mat3<T>& Pi_hat), "(2.12), (2.20)",                      \
+       "dPi/dt = -[Omega_hat, Pi] for skew Pi")                                                                    \
+  /* Lagrangian, Legendre transform, Hamiltonian */                                                                \
+  SLOT(lagrangian_2_5, T(const Vec3<T>& I, const Vec3<T>& Omega), "(2.5)", "l = I Omega . Omega / 2")              \
   SLOT(lagrangian_2_13, T(const Vec3<T>& I, const Mat3<T>& Omega_hat), "(2.13)", "l = <I Omega_hat, Omega_hat>/2") \
-  SLOT(legendre_3_1, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Omega), "(3.1)", "Pi = dl/dOmega = I Omega") \
-  SLOT(omega_3_5, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Pi), "(3.5)", "Omega = dh/dPi = I^-1 Pi")    \
-  SLOT(hamiltonian_3_3, T(const Vec3<T>& I, const Vec3<T>& Pi), "(3.3)", "h = Pi . Omega - l(Omega)")   \
-  SLOT(hamiltonian_3_4, T(const Vec3<T>& I, const Vec3<T>& Pi), "(3.4)", "h = Pi . I^-1 Pi / 2")        \
-  SLOT(hamiltonian_2_21, T(const Vec3<T>& I, const Mat3<T>& Pi_hat), "(2.21)", "h = <Pi, Omega_hat> - l") \
-  SLOT(casimir, T(const Vec3<T>& Pi), "(2.27), sec. 3.3", "c(Pi) = |Pi|^2/2, a Casimir of the bracket (3.6)")       \
-  /* Poisson brackets (evaluated from gradients at a point) */                                       \
-  SLOT(lie_poisson_2_23, T(const Mat3<T>& Pi_hat, const Mat3<T>& df_hat, const Mat3<T>& dh_hat),       \
-    "(2.23), (3.10)", "{f,h} = -<Pi, [df, dh]>, gradients as skew matrices")                         \
-  SLOT(lie_poisson_3_6, T(const Vec3<T>& Pi, const Vec3<T>& df, const Vec3<T>& dh), "(3.6), (2.25)",   \
-    "{f,h} = -Pi . df x dh")                                                                         \
-  SLOT(nambu_3_13, T(const Vec3<T>& dc, const Vec3<T>& df, const Vec3<T>& dh), "(3.13)",               \
-    "{f,h} = -grad c . grad f x grad h")                                                             \
-  SLOT(nambu_motion_3_14, Vec3<T>(const Vec3<T>& dc, const Vec3<T>& dh), "(3.14)", "dx/dt = grad c x grad h") \
-  SLOT(canonical_bracket, T(const Vec3<T>& dfdq, const Vec3<T>& dfdp, const Vec3<T>& dhdq,             \
-                         const Vec3<T>& dhdp),                                                       \
-    "sec. 3.5", "canonical bracket on T*R^3, {q_i, p_j} = delta_ij")                                 \
-  SLOT(nambu_3_16, Vec3<T>(const Vec3<T>& a, const Vec3<T>& x), "(3.16)", "the system (3.16)")          \
-  /* momentum map, Clebsch, reconstruction */                                                        \
-  SLOT(momentum_map, Vec3<T>(const Vec3<T>& q, const Vec3<T>& p), "momentum-map section", "J = p x q")  \
-  SLOT(clebsch_3_21, Vec3Pair<T>(const Vec3<T>& I, const Vec3<T>& Q, const Vec3<T>& P), "(3.21)",      \
-    "(dQ/dt, dP/dt) with Pi = P x Q")                                                                \
-  SLOT(reconstruction_2_10, Mat3<T>(const Mat3<T>& O, const Vec3<T>& Omega), "(2.10)", "dO/dt = O Omega_hat") \
-  SLOT(spatial_momentum, Vec3<T>(const Mat3<T>& O, const Vec3<T>& Pi), "(2.30)", "pi = Ad*_{O^-1} Pi") \
-  SLOT(inertia_space, Mat3<T>(const Mat3<T>& O, const Vec3<T>& I), "Remark 2.1", "I_space = O I O^-1")  \
-  SLOT(inertia_tensor_2_3, Mat3<T>(const VecX<T>& m, const MatX<T>& X), "(2.3)", "inertia of point masses") \
-  SLOT(inertia_bilinear_2_3, T(const VecX<T>& m, const MatX<T>& X, const Vec3<T>& a, const Vec3<T>& b), \
-    "(2.3)", "(a, b) = sum m (a x X).(b x X)")                                                       \
-  /* Manakov on so(n) */                                                                             \
-  SLOT(manakov_M, MatX<T>(const MatX<T>& A, const MatX<T>& Omega), "(2.34)", "M = A Omega + Omega A")   \
-  SLOT(manakov_Omega, MatX<T>(const MatX<T>& A, const MatX<T>& M), "(2.34)", "Omega recovered from M")  \
-  SLOT(manakov_2_34, MatX<T>(const MatX<T>& A, const MatX<T>& M), "(2.34), (2.36)", "dM/dt = [M, Omega]") \
-  SLOT(manakov_lagrangian, T(const MatX<T>& A, const MatX<T>& Omega), "Prop. 2.4", "l = -tr(Omega A Omega)/2") \
-  SLOT(manakov_clebsch_3_23, MatXPair<T>(const MatX<T>& A, const MatX<T>& Q, const MatX<T>& P),        \
-    "(3.23)", "(dQ/dt, dP/dt) = (Q Omega, P Omega)")
+  SLOT(legendre_3_1, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Omega), "(3.1)", "Pi = dl/dOmega = I Omega")         \
+  SLOT(omega_3_5, Vec3<T>(const Vec3<T>& I, const Vec3<T>& Pi), "(3.5)", "Omega = dh/dPi = I^-1 Pi")               \
+  SLOT(hamiltonian_3_3, T(const Vec3<T>& I, const Vec3<T>& Pi), "(3.3)", "h = Pi . Omega - l(Omega)")              \
+  SLOT(hamiltonian_3_4, T(const Vec3<T>& I, const Vec3<T>& Pi), "(3.4)", "h = Pi . I^-1 Pi / 2")                   \
+  SLOT(hamiltonian_2_21, T(const Vec3<T>& I, const Mat3<T>& Pi_hat), "(2.21)", "h = <Pi, Omega_hat> - l")          \
+  SLOT(casimir, T(const Vec3<T>& Pi), "(2.27), sec. 3.3", "c(Pi) = |Pi|^2/2, a Casimir of the bracket (3.6)")      \
+  /* Poisson brackets (evaluated from gradients at a point) */                                                     \
+  SLOT(lie_poisson_2_23, T(const Mat3<T>& Pi_hat, const Mat3<T>& df_hat, const Mat3<T>& dh_hat), "(2.23), (3.10)", \
+       "{f,h} = -<Pi, [df, dh]>, gradients as skew matrices")                                                      \
+  SLOT(lie_poisson_3_6, T(const Vec3<T>& Pi, const Vec3<T>& df, const Vec3<T>& dh), "(3.6), (2.25)",               \
+       "{f,h} = -Pi . df x dh")                                                                                    \
+  SLOT(nambu_3_13, T(const Vec3<T>& dc, const Vec3<T>& df, const Vec3<T>& dh), "(3.13)",                           \
+       "{f,h} = -grad c . grad f x grad h")                                                                        \
+  SLOT(nambu_motion_3_14, Vec3<T>(const Vec3<T>& dc, const Vec3<T>& dh), "(3.14)", "dx/dt = grad c x grad h")      \
+  SLOT(canonical_bracket, T(const Vec3<T>& dfdq, const Vec3<T>& dfdp, const Vec3<T>& dhdq, const Vec3<T>& dhdp),   \
+       "sec. 3.5", "canonical bracket on T*R^3, {q_i, p_j} = delta_ij")                                            \
+  SLOT(nambu_3_16, Vec3<T>(const Vec3<T>& a, const Vec3<T>& x), "(3.16)", "the system (3.16)")                     \
+  /* momentum map, Clebsch, reconstruction */                                                                      \
+  SLOT(momentum_map, Vec3<T>(const Vec3<T>& q, const Vec3<T>& p), "momentum-map section", "J = p x q")             \
+  SLOT(clebsch_3_21, Vec3Pair<T>(const Vec3<T>& I, const Vec3<T>& Q, const Vec3<T>& P), "(3.21)",                  \
+       "(dQ/dt, dP/dt) with Pi = P x Q")                                                                           \
+  SLOT(reconstruction_2_10, Mat3<T>(const Mat3<T>& O, const Vec3<T>& Omega), "(2.10)", "dO/dt = O Omega_hat")      \
+  SLOT(spatial_momentum, Vec3<T>(const Mat3<T>& O, const Vec3<T>& Pi), "(2.30)", "pi = Ad*_{O^-1} Pi")             \
+  SLOT(inertia_space, Mat3<T>(const Mat3<T>& O, const Vec3<T>& I), "Remark 2.1", "I_space = O I O^-1")             \
+  SLOT(inertia_tensor_2_3, Mat3<T>(const VecX<T>& m, const MatX<T>& X), "(2.3)", "inertia of point masses")        \
+  SLOT(inertia_bilinear_2_3, T(const VecX<T>& m, const MatX<T>& X, const Vec3<T>& a, const Vec3<T>& b), "(2.3)",   \
+       "(a, b) = sum m (a x X).(b x X)")                                                                           \
+  /* Manakov on so(n) */                                                                                           \
+  SLOT(manakov_M, MatX<T>(const MatX<T>& A, const MatX<T>& Omega), "(2.34)", "M = A Omega + Omega A")              \
+  SLOT(manakov_Omega, MatX<T>(const MatX<T>& A, const MatX<T>& M), "(2.34)", "Omega recovered from M")             \
+  SLOT(manakov_2_34, MatX<T>(const MatX<T>& A, const MatX<T>& M), "(2.34), (2.36)", "dM/dt = [M, Omega]")          \
+  SLOT(manakov_lagrangian, T(const MatX<T>& A, const MatX<T>& Omega), "Prop. 2.4", "l = -tr(Omega A Omega)/2")     \
+  SLOT(manakov_clebsch_3_23, MatXPair<T>(const MatX<T>& A, const MatX<T>& Q, const MatX<T>& P), "(3.23)",          \
+       "(dQ/dt, dP/dt) = (Q Omega, P Omega)")
 
 // One step of an integrator for the rigid body with attitude (Pi, O), or for Manakov's (M, O); or,
 // in the canonical variables of the Clebsch formulations, for (3.21) on T*R^3 (Q, P) with
@@ -158,8 +158,7 @@ class ProcessFailure : public std::runtime_error {
 template <class T>
 struct Integrator {
   std::string name;
-  Slot<RigidBodyState<T>(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h)> rigid_body_step{
-      "rigid_body_step"};
+  Slot<RigidBodyState<T>(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h)> rigid_body_step{"rigid_body_step"};
   Slot<ManakovState<T>(const MatX<T>& A, const ManakovState<T>& x, const T& h)> manakov_step{"manakov_step"};
   Slot<Vec3Pair<T>(const Vec3<T>& I, const Vec3Pair<T>& QP, const T& h)> clebsch_step{"clebsch_step"};
   Slot<MatXPair<T>(const MatX<T>& A, const MatXPair<T>& QP, const T& h)> manakov_clebsch_step{"manakov_clebsch_step"};
@@ -169,7 +168,8 @@ struct Integrator {
   // through properties/integrators/support/step_runs.hpp, which calls the step n times when they are empty.
   std::function<std::vector<RigidBodyState<T>>(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h, int n)>
       rigid_body_run;
-  std::function<std::vector<ManakovState<T>>(const MatX<T>& A, const ManakovState<T>& x, const T& h, int n)> manakov_run;
+  std::function<std::vector<ManakovState<T>>(const MatX<T>& A, const ManakovState<T>& x, const T& h, int n)>
+      manakov_run;
   // The form the integrator keeps the rigid body's state in (core/state_form.hpp): the notes' (Pi, O)
   // unless it declares another (a quaternion, omega, ...). Then its own step is `declared_step` (and
   // `declared_run`), and core/declared_step.hpp makes rigid_body_step of it: the properties see
@@ -242,7 +242,7 @@ struct IntegratorClaims {
   // shown in the report beside the claims.
   std::string precision = {};
   std::string precision_reason = {};
-  StepDomain domain{};           // where the step is meant to work (not a claim: a statement of scope)
+  StepDomain domain{};  // where the step is meant to work (not a claim: a statement of scope)
 };
 
 // The yes/no claims by name, in the order reports list them (`order`, a number, comes before them):
@@ -251,13 +251,17 @@ struct BooleanClaim {
   const char* name;
   bool IntegratorClaims::*member;
 };
-inline constexpr BooleanClaim kBooleanClaims[] = {
-    {"symmetric", &IntegratorClaims::symmetric},   {"casimir", &IntegratorClaims::casimir},
-    {"energy", &IntegratorClaims::energy},         {"orthogonality", &IntegratorClaims::orthogonality},
-    {"spectrum", &IntegratorClaims::spectrum},     {"poisson", &IntegratorClaims::poisson},
-    {"noether", &IntegratorClaims::noether},       {"equivariant", &IntegratorClaims::equivariant},
-    {"bounded_energy", &IntegratorClaims::bounded_energy}, {"symplectic", &IntegratorClaims::symplectic},
-    {"unit_quaternion", &IntegratorClaims::unit_quaternion}};
+inline constexpr BooleanClaim kBooleanClaims[] = {{"symmetric", &IntegratorClaims::symmetric},
+                                                  {"casimir", &IntegratorClaims::casimir},
+                                                  {"energy", &IntegratorClaims::energy},
+                                                  {"orthogonality", &IntegratorClaims::orthogonality},
+                                                  {"spectrum", &IntegratorClaims::spectrum},
+                                                  {"poisson", &IntegratorClaims::poisson},
+                                                  {"noether", &IntegratorClaims::noether},
+                                                  {"equivariant", &IntegratorClaims::equivariant},
+                                                  {"bounded_energy", &IntegratorClaims::bounded_energy},
+                                                  {"symplectic", &IntegratorClaims::symplectic},
+                                                  {"unit_quaternion", &IntegratorClaims::unit_quaternion}};
 
 // A subject in every scalar it supports. A subject written only for double has mp and q empty
 // and is told which checks it therefore misses.

@@ -21,7 +21,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     for (std::string line; std::getline(in, line);) {
       const auto space = line.find(' ');
-      const std::string option = line.substr(0, space), value = space == std::string::npos ? "" : line.substr(space + 1);
+      const std::string option = line.substr(0, space),
+                        value = space == std::string::npos ? "" : line.substr(space + 1);
       if (option == "--param") {
         params.push_back(gm::golden::parse_block_argument(option, value));
       } else if (option == "--initial") {

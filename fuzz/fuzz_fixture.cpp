@@ -22,7 +22,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       std::fprintf(stderr, "write_fixture/parse_fixture round trip changed the rows\n");
       std::abort();
     }
-  } catch (const gm::golden::InputError&) {
-  }
+  } catch (const gm::golden::InputError&) {}
   return 0;
 }

@@ -43,7 +43,6 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const auto& p = tr.rows.front().Pi;
     require(p[0] != 0 || p[1] != 0 || p[2] != 0, "starts at rest");
     require(tr.step > 0, "has a step that is not positive");
-  } catch (const gm::harness::TrajectoryError&) {
-  }
+  } catch (const gm::harness::TrajectoryError&) {}
   return 0;
 }

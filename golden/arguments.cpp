@@ -75,7 +75,8 @@ std::vector<Rational> parse_times_argument(const std::string& text) {
     const auto values = split_values(text);
     if (values.size() > kMaxSamples)
       throw InputError(where, 0, "more than " + std::to_string(kMaxSamples) + " sample times");
-    for (std::size_t i = 0; i < values.size(); ++i) times.push_back(number(values[i], ("time " + std::to_string(i + 1)).c_str()));
+    for (std::size_t i = 0; i < values.size(); ++i)
+      times.push_back(number(values[i], ("time " + std::to_string(i + 1)).c_str()));
   }
   validate_times(times, where);
   return times;
@@ -92,7 +93,8 @@ void validate_times(const std::vector<Rational>& times, const std::string& where
     if (t > kMaxRequestTime)
       throw InputError(where, 0, "time " + format_exact(t) + " is beyond " + std::to_string(kMaxRequestTime));
     if (i > 0 && !(t > times[i - 1]))
-      throw InputError(where, 0, "sample times must increase: " + format_exact(t) + " after " + format_exact(times[i - 1]));
+      throw InputError(where, 0,
+                       "sample times must increase: " + format_exact(t) + " after " + format_exact(times[i - 1]));
   }
 }
 

@@ -88,13 +88,14 @@ std::vector<FixtureDefinition> make_definitions() {
     std::vector<Rational> M(n * n, Rational(0));
     for (int i = 0, k = 0; i < n; ++i)
       for (int j = i + 1; j < n; ++j, ++k) M[i * n + j] = m[k], M[j * n + i] = -m[k];
-    d.push_back({"manakov_so5",
-                 "Manakov's rigid body on SO(5) with its attitude, A = diag(1/2, 1, 3/2, 2, 3)",
-                 "manakov",
-                 {block("a", qs({"1/2", "1", "3/2", "2", "3"}))},
-                 {block("M", M),
-                  block("O", cayley_rotation(n, qs({"1/4", "-1/3", "0", "1/2", "1/5", "0", "-1/4", "1/3", "1/6", "-1/2"})))},
-                 kTimes});
+    d.push_back(
+        {"manakov_so5",
+         "Manakov's rigid body on SO(5) with its attitude, A = diag(1/2, 1, 3/2, 2, 3)",
+         "manakov",
+         {block("a", qs({"1/2", "1", "3/2", "2", "3"}))},
+         {block("M", M),
+          block("O", cayley_rotation(n, qs({"1/4", "-1/3", "0", "1/2", "1/5", "0", "-1/4", "1/3", "1/6", "-1/2"})))},
+         kTimes});
   }
   // 1/a1 + 1/a2 = 1 + 1/2 = 3/2 = 1/a3: a rigid body, so |x|^2 is conserved as well.
   d.push_back({"nambu_3_16",

@@ -41,12 +41,23 @@ class Sweep {
         const auto& nd = nodes[n];
         Ball& c = coef_[n][k];
         switch (nd.op) {
-          case Op::Var: break;
-          case Op::Const: c = k == 0 ? nd.c : Ball(0L); break;
-          case Op::Add: c = coef_[nd.a][k] + coef_[nd.b][k]; break;
-          case Op::Sub: c = coef_[nd.a][k] - coef_[nd.b][k]; break;
-          case Op::Neg: c = -coef_[nd.a][k]; break;
-          case Op::Scale: c = coef_[nd.a][k] * nd.c; break;
+          case Op::Var:
+            break;
+          case Op::Const:
+            c = k == 0 ? nd.c : Ball(0L);
+            break;
+          case Op::Add:
+            c = coef_[nd.a][k] + coef_[nd.b][k];
+            break;
+          case Op::Sub:
+            c = coef_[nd.a][k] - coef_[nd.b][k];
+            break;
+          case Op::Neg:
+            c = -coef_[nd.a][k];
+            break;
+          case Op::Scale:
+            c = coef_[nd.a][k] * nd.c;
+            break;
           case Op::Mul: {
             const auto& a = coef_[nd.a];
             const auto& b = coef_[nd.b];

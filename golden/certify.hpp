@@ -41,7 +41,7 @@ struct EnclosureOptions {
   // Clebsch fixture: 1e-66 left 6e-46, 1e-72 left 1.5e-51, 1e-80 leaves < 1e-52; 320 or 400
   // bits give the same radii, measured).
   double tolerance = 1e-80;
-  int order = 0;              // 0: from the tolerance, as the oracle
+  int order = 0;  // 0: from the tolerance, as the oracle
 };
 
 // The enclosures of the solution at each sample time.
@@ -61,8 +61,8 @@ Enclosure enclose_problem(const Problem& problem, const std::vector<Rational>& t
 // printed value and the exact solution (rounded up to one significant digit, as written), and
 // the certified digits: min over rows of -log10(radius / max(1, |row|_inf)).
 struct Certificate {
-  MethodRecord record;                    // "#: certificate arb ..." line
-  std::vector<std::string> row_radius;    // per row, as written ("4e-51")
+  MethodRecord record;                  // "#: certificate arb ..." line
+  std::vector<std::string> row_radius;  // per row, as written ("4e-51")
   double certified_digits = 0;
   Enclosure enclosure;
 };
@@ -81,8 +81,8 @@ std::vector<std::string> verify_certificate(const Fixture& f, const Enclosure& e
 // The enclosure computed with any field of oracle/fields.hpp instantiated on Ball (a test uses
 // it with a wrong field: its certificate must fail).
 template <class Field>
-Enclosure enclose_field(const Field& field, int dim, const std::vector<Rational>& x0, const std::vector<Rational>& times,
-                        const EnclosureOptions& o);
+Enclosure enclose_field(const Field& field, int dim, const std::vector<Rational>& x0,
+                        const std::vector<Rational>& times, const EnclosureOptions& o);
 
 }  // namespace gm::golden
 

@@ -10,8 +10,8 @@ Enclosure enclose_tape(const oracle::Tape<Ball>& tape, const std::vector<int>& o
                        const std::vector<Rational>& x0, const std::vector<Rational>& times, const EnclosureOptions& o);
 
 template <class Field>
-Enclosure enclose_field(const Field& field, int dim, const std::vector<Rational>& x0, const std::vector<Rational>& times,
-                        const EnclosureOptions& o) {
+Enclosure enclose_field(const Field& field, int dim, const std::vector<Rational>& x0,
+                        const std::vector<Rational>& times, const EnclosureOptions& o) {
   const Ball::Precision precision(o.precision_bits);
   oracle::Tape<Ball> tape;
   std::vector<oracle::Recorder<Ball>> x(dim), dx(dim);
@@ -19,7 +19,8 @@ Enclosure enclose_field(const Field& field, int dim, const std::vector<Rational>
   field(x.data(), dx.data());
   std::vector<int> out;
   for (int i = 0; i < dim; ++i) {
-    if (dx[i].tape != &tape) dx[i] = oracle::Recorder<Ball>{&tape, tape.push(oracle::Tape<Ball>::Op::Const, -1, -1, Ball(0L))};
+    if (dx[i].tape != &tape)
+      dx[i] = oracle::Recorder<Ball>{&tape, tape.push(oracle::Tape<Ball>::Op::Const, -1, -1, Ball(0L))};
     out.push_back(dx[i].id);
   }
   return enclose_tape(tape, out, dim, x0, times, o);

@@ -59,8 +59,9 @@ int run_trajectory(const TrajectoryOptions& o) {
     if (const std::string note = nonphysical_inertia(rq.problem); !note.empty()) {
       if (!o.allow_nonphysical)
         throw InputError("--param I", 0,
-                         note + ". Pass --allow-nonphysical to integrate them anyway (as for the notes' "
-                                "example I = diag(1, 1/2, 1/3))");
+                         note +
+                             ". Pass --allow-nonphysical to integrate them anyway (as for the notes' "
+                             "example I = diag(1, 1/2, 1/3))");
       std::cerr << "geomech golden trajectory: note: " << note << "\n";
     }
     GenerationReport rep;
@@ -128,8 +129,10 @@ void add_commands(CLI::App& app) {
   golden->require_subcommand(1);
 
   auto regen = std::make_shared<RegenerateOptions>();
-  auto* r = golden->add_subcommand("regenerate", "regenerate every fixture in golden/fixtures (byte-identical re-runs)");
-  r->add_flag("--check", regen->check, "write nothing; fail, listing every differing value, if a committed fixture differs");
+  auto* r =
+      golden->add_subcommand("regenerate", "regenerate every fixture in golden/fixtures (byte-identical re-runs)");
+  r->add_flag("--check", regen->check,
+              "write nothing; fail, listing every differing value, if a committed fixture differs");
   r->add_option("--only", regen->only, "only this fixture (repeatable; see `geomech golden list`)");
   r->add_option("--dir", regen->dir, "fixture directory (default: the source tree's golden/fixtures)");
   r->add_flag("--quiet", regen->quiet, "no per-fixture timing lines");
@@ -145,7 +148,8 @@ void add_commands(CLI::App& app) {
   auto* t = golden->add_subcommand("trajectory", "print a verified trajectory of any system in the fixture format");
   t->add_option("--system", traj->system, "free_rigid_body, rigid_body_attitude, clebsch, manakov or nambu_3_16")
       ->required();
-  t->add_option("--param", traj->params, "a parameter, NAME=v1,v2,... with exact numbers (2, 0.5, 2/3), e.g. I=2,1,2/3");
+  t->add_option("--param", traj->params,
+                "a parameter, NAME=v1,v2,... with exact numbers (2, 0.5, 2/3), e.g. I=2,1,2/3");
   t->add_option("--initial", traj->initial, "an initial block, NAME=v1,v2,..., e.g. Pi=1,0.1,0.05 (O defaults to Id)");
   t->add_option("--times", traj->times, "sample times: t1,t2,... or start:step:stop (decimals, from 0)")->required();
   t->add_option("--digits", traj->digits, "significant digits of the values, 17..55 (default 50)");
@@ -155,10 +159,12 @@ void add_commands(CLI::App& app) {
   t->add_flag("--certify", traj->certify,
               "prove the printed digits by a validated Taylor method in ball arithmetic (Arb) and write each row's "
               "certified radius; refused, naming the time, where fewer digits than --certified-digits can be proved");
-  t->add_option("--certified-digits", traj->certified_digits, "digits --certify must prove (default 45, at most --digits - 1)")
+  t->add_option("--certified-digits", traj->certified_digits,
+                "digits --certify must prove (default 45, at most --digits - 1)")
       ->check(CLI::Range(1, 55));
-  t->add_flag("--allow-nonphysical", traj->allow_nonphysical,
-              "accept moments of inertia that violate the triangle inequality (no body has them; the notes' examples do)");
+  t->add_flag(
+      "--allow-nonphysical", traj->allow_nonphysical,
+      "accept moments of inertia that violate the triangle inequality (no body has them; the notes' examples do)");
   t->callback([traj] {
     const int s = run_trajectory(*traj);
     if (s != 0) exit_with(s);

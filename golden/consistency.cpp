@@ -14,7 +14,8 @@ ConsistencyReport check_consistency(const Fixture& f, const Problem& pr) {
       const std::string expect = format_significant(pr.x0[k], f.digits);
       if (f.rows[0][k] != expect)
         rep.problems.push_back(f.source + ":" + std::to_string(f.row_lines.empty() ? 0 : f.row_lines[0]) + ": column " +
-                               f.columns[k] + " at t = 0 is " + f.rows[0][k] + ", the initial data rounded is " + expect);
+                               f.columns[k] + " at t = 0 is " + f.rows[0][k] + ", the initial data rounded is " +
+                               expect);
     }
   }
   std::vector<R> x0;
@@ -43,8 +44,9 @@ ConsistencyReport check_consistency(const Fixture& f, const Problem& pr) {
       }
       if (!(dd <= d.allowed))
         rep.problems.push_back(f.source + ":" + std::to_string(i < f.row_lines.size() ? f.row_lines[i] : 0) +
-                               ": invariant " + d.name + " drifts by " + format_significant(convert<Rational>(drift), 2) +
-                               " at t = " + f.times[i] + " (allowed " + format_significant(Rational(d.allowed), 2) + ")");
+                               ": invariant " + d.name + " drifts by " +
+                               format_significant(convert<Rational>(drift), 2) + " at t = " + f.times[i] +
+                               " (allowed " + format_significant(Rational(d.allowed), 2) + ")");
     }
   }
   for (const auto& d : rep.invariants)

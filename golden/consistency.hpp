@@ -13,8 +13,8 @@ namespace gm::golden {
 
 struct InvariantDrift {
   std::string name;
-  std::string value;      // at t = 0, from the exact initial data (6 digits)
-  double max_drift = 0;   // max over samples of |I(x(t_i)) - I(x(0))|
+  std::string value;     // at t = 0, from the exact initial data (6 digits)
+  double max_drift = 0;  // max over samples of |I(x(t_i)) - I(x(0))|
   double allowed = 0;
   std::string worst_time;
 };

@@ -15,9 +15,9 @@
 namespace gm::golden {
 
 struct ExactSamples {
-  std::string method;                          // e.g. "elliptic"
+  std::string method;                                         // e.g. "elliptic"
   std::vector<std::pair<std::string, std::string>> settings;  // written to the check line
-  std::vector<std::vector<Real70>> values;     // Pi(t) at each sample time
+  std::vector<std::vector<Real70>> values;                    // Pi(t) at each sample time
 };
 
 // Pi(t) at `times` for dPi/dt = Pi x I^-1 Pi, Pi(0) = Pi0, in 70 digits. oracle/elliptic.hpp has a

@@ -38,11 +38,11 @@ struct ExtrapolationStats {
 
 template <class T>
 struct ExtrapolationSettings {
-  int columns = 12;            // K: the accepted value has order 2K
-  T tolerance = T(0);          // local error target per step, relative to max(1, |x|_inf)
-  T initial_step = T(0);       // 0: chosen from the field at the initial point
-  long max_steps = 1000000;    // a hard stop (accepted + rejected) against runaway step control
-  T max_norm = T(0);           // > 0: stop when |x|_inf exceeds it (a solution escaping to infinity)
+  int columns = 12;          // K: the accepted value has order 2K
+  T tolerance = T(0);        // local error target per step, relative to max(1, |x|_inf)
+  T initial_step = T(0);     // 0: chosen from the field at the initial point
+  long max_steps = 1000000;  // a hard stop (accepted + rejected) against runaway step control
+  T max_norm = T(0);         // > 0: stop when |x|_inf exceeds it (a solution escaping to infinity)
 };
 
 // Field: callable as f(const std::vector<T>& x, std::vector<T>& dxdt).
@@ -97,7 +97,8 @@ class ExtrapolationSolver {
           last = true;
         }
         const T err = try_step(x, step, x_new);
-        if (!finite(err)) throw std::runtime_error("ExtrapolationSolver: the solution is not finite at t = " + to_text(t));
+        if (!finite(err))
+          throw std::runtime_error("ExtrapolationSolver: the solution is not finite at t = " + to_text(t));
         if (err <= T(1)) {
           x.swap(x_new);
           t = last ? target : T(t + step);
@@ -122,14 +123,14 @@ class ExtrapolationSolver {
 
  private:
   static bool finite(const T& v) {
-    using std::isfinite;
     using boost::multiprecision::isfinite;
+    using std::isfinite;
     return isfinite(v);
   }
   static T abs_real(const T& v) { return v < T(0) ? T(-v) : v; }
   static T pow_real(const T& a, const T& b) {
-    using std::pow;
     using boost::multiprecision::pow;
+    using std::pow;
     return pow(a, b);
   }
   static std::string to_text(const T& v) {
@@ -185,13 +186,12 @@ class ExtrapolationSolver {
       }
       // Aitken-Neville in place: row j of the tableau overwrites table_ from column 1 up.
       // table_[k] holds T_{j-1,k} on entry (k < j) and T_{j,k} on exit.
-      std::vector<T>& cur = zc_;  // T_{j,0}
+      std::vector<T>& cur = zc_;                             // T_{j,0}
       prev_row_.assign(table_.begin(), table_.begin() + j);  // T_{j-1,0..j-1}
       table_[0] = cur;
       for (int k = 1; k <= j; ++k) {
         const T c = coeff_[j][k];
-        for (int i = 0; i < dim_; ++i)
-          table_[k][i] = table_[k - 1][i] + (table_[k - 1][i] - prev_row_[k - 1][i]) * c;
+        for (int i = 0; i < dim_; ++i) table_[k][i] = table_[k - 1][i] + (table_[k - 1][i] - prev_row_[k - 1][i]) * c;
       }
     }
     out = table_[K - 1];

@@ -54,7 +54,8 @@ std::string quote(std::string_view s) {
 
 bool is_identifier(std::string_view s, std::size_t max_len) {
   if (s.empty() || s.size() > max_len || !std::isalpha(static_cast<unsigned char>(s[0]))) return false;
-  return std::all_of(s.begin(), s.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+  return std::all_of(s.begin(), s.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 bool parse_int(std::string_view s, long long lo, long long hi, long long& out) {
@@ -298,7 +299,8 @@ std::string round_up_1digit(const Rational& x) {
     m = 1;
     ++exponent;
   }
-  return m.str() + "e" + (exponent < 0 ? "-" : "+") + (std::abs(exponent) < 10 ? "0" : "") + std::to_string(std::abs(exponent));
+  return m.str() + "e" + (exponent < 0 ? "-" : "+") + (std::abs(exponent) < 10 ? "0" : "") +
+         std::to_string(std::abs(exponent));
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -319,7 +321,8 @@ class Reader {
     Fixture f;
     f.source = source_;
     if (std::none_of(lines_.begin(), lines_.end(), [](const Line& l) { return l.text[0] != '#' || is_field(l.text); }))
-      throw error(0, "empty file (nothing but comments or blank lines): not a " + std::string(kFormatName) + " fixture");
+      throw error(0,
+                  "empty file (nothing but comments or blank lines): not a " + std::string(kFormatName) + " fixture");
 
     // format
     {
@@ -393,9 +396,8 @@ class Reader {
     while (true) {
       skip_comments();
       if (pos_ >= lines_.size())
-        throw error(lines_.back().number,
-                    "truncated: the file ends after " + std::to_string(f.rows.size()) + " of " + std::to_string(samples) +
-                        " data rows, without its '#: end' line");
+        throw error(lines_.back().number, "truncated: the file ends after " + std::to_string(f.rows.size()) + " of " +
+                                              std::to_string(samples) + " data rows, without its '#: end' line");
       const Line& l = lines_[pos_];
       if (is_field(l.text) && f.certified && field_key(l.text) == "certified_radius") {
         // "#: certified_radius T R" after the data rows, one per row in order (version 2).
@@ -415,8 +417,9 @@ class Reader {
         const std::string key = field_key(l.text);
         if (key != "end") throw error(l.number, "unexpected header field '" + key + "' among the data rows");
         if (f.certified && f.certified_radius.size() != f.rows.size())
-          throw error(l.number, "the certificate gives a certified_radius for " + std::to_string(f.certified_radius.size()) +
-                                    " of the " + std::to_string(f.rows.size()) + " rows");
+          throw error(l.number, "the certificate gives a certified_radius for " +
+                                    std::to_string(f.certified_radius.size()) + " of the " +
+                                    std::to_string(f.rows.size()) + " rows");
         if (f.rows.size() != samples)
           throw error(l.number, "truncated: " + std::to_string(f.rows.size()) + " data rows, the header says samples " +
                                     std::to_string(samples));
@@ -430,8 +433,8 @@ class Reader {
       const auto tok = split(l.text);
       if (tok.size() != f.columns.size() + 1)
         throw error(l.number, "wrong number of columns: " + std::to_string(tok.size()) + " values, expected " +
-                                  std::to_string(f.columns.size() + 1) + " (t and " +
-                                  std::to_string(f.columns.size()) + " state columns)");
+                                  std::to_string(f.columns.size() + 1) + " (t and " + std::to_string(f.columns.size()) +
+                                  " state columns)");
       Rational t;
       try {
         t = parse_decimal(tok[0]);
@@ -526,9 +529,11 @@ class Reader {
       throw error(l.number, "expected the header field '#: " + key + "', found data or text " + quote(l.text));
     const std::string found = field_key(l.text);
     if (found != key) {
-      static const char* known[] = {"format", "name", "system", "title", "equations", "parameter", "initial",
-                                    "working_precision", "generator", "check", "certificate", "accuracy", "condition",
-                                    "digits", "samples", "columns", "certified_radius", "end"};
+      static const char* known[] = {"format",           "name",      "system",      "title",
+                                    "equations",        "parameter", "initial",     "working_precision",
+                                    "generator",        "check",     "certificate", "accuracy",
+                                    "condition",        "digits",    "samples",     "columns",
+                                    "certified_radius", "end"};
       const bool is_known = std::find(std::begin(known), std::end(known), found) != std::end(known);
       throw error(l.number, std::string(is_known ? "header field '" : "unknown header field '") + found +
                                 "' where '#: " + key + "' was expected (fields come in the order of golden/README.md)");
@@ -693,7 +698,8 @@ std::string write_fixture(const Fixture& f) {
     o << "\n";
   }
   if (f.certified)
-    for (std::size_t i = 0; i < f.rows.size(); ++i) o << "#: certified_radius " << f.times[i] << " " << f.certified_radius[i] << "\n";
+    for (std::size_t i = 0; i < f.rows.size(); ++i)
+      o << "#: certified_radius " << f.times[i] << " " << f.certified_radius[i] << "\n";
   o << "#: end\n";
   return o.str();
 }

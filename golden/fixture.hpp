@@ -79,24 +79,24 @@ struct MethodRecord {
 };
 
 struct Fixture {
-  std::string name;        // identifier, also the file's base name
-  std::string system;      // a name known to golden/systems.hpp
-  std::string title;       // one line of free text
-  std::string equations;   // one line of free text: the equations and their numbers in the notes
+  std::string name;       // identifier, also the file's base name
+  std::string system;     // a name known to golden/systems.hpp
+  std::string title;      // one line of free text
+  std::string equations;  // one line of free text: the equations and their numbers in the notes
   std::vector<NamedValues> parameters;
   std::vector<NamedValues> initial;
   std::vector<std::string> columns;  // the state columns (without "t")
   int digits = 0;                    // significant digits of every state value
   int working_precision = 0;         // decimal digits of the generating arithmetic
   MethodRecord generator;
-  std::vector<MethodRecord> checks;  // independent reproductions, each with max_abs_diff
-  bool certified = false;            // version 2 with a certificate
-  MethodRecord certificate;          // how the enclosures were computed (golden/certify.hpp)
+  std::vector<MethodRecord> checks;           // independent reproductions, each with max_abs_diff
+  bool certified = false;                     // version 2 with a certificate
+  MethodRecord certificate;                   // how the enclosures were computed (golden/certify.hpp)
   std::vector<std::string> certified_radius;  // per row: a proved bound on |value - exact| (decimal)
   int format_version = kFormatVersion;
-  std::string accuracy;              // bound on |value - exact| for every value (decimal)
-  std::string condition;             // max over samples of |dx(t)/dx(0)|_inf (decimal)
-  std::vector<std::string> times;    // sample times, canonical decimals
+  std::string accuracy;                        // bound on |value - exact| for every value (decimal)
+  std::string condition;                       // max over samples of |dx(t)/dx(0)|_inf (decimal)
+  std::vector<std::string> times;              // sample times, canonical decimals
   std::vector<std::vector<std::string>> rows;  // rows[i][j]: column j at times[i], as in the file
 
   // Where the fixture was read from (empty when built in memory) and the line of each row.

@@ -85,7 +85,8 @@ MethodRun run_extrapolation(const Field& f, const std::vector<R>& x0, const std:
 // A free rigid body with two equal moments, I_i = I_j with j = i + 1 (mod 3), k the third axis:
 // Pi_k is constant and (Pi_i, Pi_j) rotates with nu = (1/I_k - 1/I_i) Pi_k:
 //   Pi_i(t) = Pi_i cos(nu t) + Pi_j sin(nu t),  Pi_j(t) = Pi_j cos(nu t) - Pi_i sin(nu t).
-std::optional<MethodRun> symmetric_top(const std::vector<Rational>& I, const std::vector<R>& x0, const std::vector<R>& times) {
+std::optional<MethodRun> symmetric_top(const std::vector<Rational>& I, const std::vector<R>& x0,
+                                       const std::vector<R>& times) {
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     if (I[i] != I[j]) continue;
@@ -131,8 +132,9 @@ Fixture generate(const Request& rq, GenerationReport* report) {
   const Problem& pr = rq.problem;
   if (!pr.info) throw std::logic_error("generate: request without a validated problem");
   if (rq.digits < kMinDigits || rq.digits > kMaxDigits)
-    throw InputError("digits", 0, "digits " + std::to_string(rq.digits) + " outside [" + std::to_string(kMinDigits) +
-                                      ", " + std::to_string(kMaxDigits) + "]");
+    throw InputError("digits", 0,
+                     "digits " + std::to_string(rq.digits) + " outside [" + std::to_string(kMinDigits) + ", " +
+                         std::to_string(kMaxDigits) + "]");
   validate_times(rq.times, "times");
 
   std::vector<R> x0, times, p;
@@ -153,47 +155,50 @@ Fixture generate(const Request& rq, GenerationReport* report) {
   };
 
   try {
-  switch (pr.info->id) {
-    case SystemId::FreeRigidBody: {
-      generator = run_taylor(oracle::FreeRigidBodyField<R>(p[0], p[1], p[2]), dim, x0, times);
-      checks.push_back(run_extrapolation(geometric::FreeRigidBody<R>{3, {p[0], p[1], p[2]}}, x0, times));
-      if (auto top = symmetric_top(pr.p, x0, times)) checks.push_back(std::move(*top));
-      if (auto exact = exact_free_rigid_body({p[0], p[1], p[2]}, {x0[0], x0[1], x0[2]}, times)) {
-        MethodRun run;
-        run.record.method = exact->method;
-        run.record.settings = exact->settings;
-        run.values = std::move(exact->values);
-        if (run.values.size() != times.size()) throw std::logic_error("exact_free_rigid_body: wrong number of samples");
-        checks.push_back(std::move(run));
+    switch (pr.info->id) {
+      case SystemId::FreeRigidBody: {
+        generator = run_taylor(oracle::FreeRigidBodyField<R>(p[0], p[1], p[2]), dim, x0, times);
+        checks.push_back(run_extrapolation(geometric::FreeRigidBody<R>{3, {p[0], p[1], p[2]}}, x0, times));
+        if (auto top = symmetric_top(pr.p, x0, times)) checks.push_back(std::move(*top));
+        if (auto exact = exact_free_rigid_body({p[0], p[1], p[2]}, {x0[0], x0[1], x0[2]}, times)) {
+          MethodRun run;
+          run.record.method = exact->method;
+          run.record.settings = exact->settings;
+          run.values = std::move(exact->values);
+          if (run.values.size() != times.size())
+            throw std::logic_error("exact_free_rigid_body: wrong number of samples");
+          checks.push_back(std::move(run));
+        }
+        timed_condition([&] {
+          return trajectory_condition(oracle::FreeRigidBodyField<double>(pd[0], pd[1], pd[2]), dim, x0d, timesd);
+        });
+        break;
       }
-      timed_condition([&] {
-        return trajectory_condition(oracle::FreeRigidBodyField<double>(pd[0], pd[1], pd[2]), dim, x0d, timesd);
-      });
-      break;
+      case SystemId::RigidBodyAttitude:
+        generator = run_taylor(oracle::RigidBodyAttitudeField<R>(p[0], p[1], p[2]), dim, x0, times);
+        checks.push_back(run_extrapolation(geometric::RigidBodyAttitude<R>{12, {p[0], p[1], p[2]}}, x0, times));
+        timed_condition([&] {
+          return trajectory_condition(oracle::RigidBodyAttitudeField<double>(pd[0], pd[1], pd[2]), dim, x0d, timesd);
+        });
+        break;
+      case SystemId::Clebsch:
+        generator = run_taylor(oracle::ClebschField<R>(p[0], p[1], p[2]), dim, x0, times);
+        checks.push_back(run_extrapolation(geometric::Clebsch<R>{6, {p[0], p[1], p[2]}}, x0, times));
+        timed_condition(
+            [&] { return trajectory_condition(oracle::ClebschField<double>(pd[0], pd[1], pd[2]), dim, x0d, timesd); });
+        break;
+      case SystemId::Manakov:
+        generator = run_taylor(oracle::ManakovField<R>(p), dim, x0, times);
+        checks.push_back(run_extrapolation(geometric::Manakov<R>(p), x0, times));
+        timed_condition([&] { return trajectory_condition(oracle::ManakovField<double>(pd), dim, x0d, timesd); });
+        break;
+      case SystemId::Nambu316:
+        generator = run_taylor(oracle::Nambu316Field<R>(p[0], p[1], p[2]), dim, x0, times);
+        checks.push_back(run_extrapolation(geometric::Nambu316<R>{3, {p[0], p[1], p[2]}}, x0, times));
+        timed_condition(
+            [&] { return trajectory_condition(oracle::Nambu316Field<double>(pd[0], pd[1], pd[2]), dim, x0d, timesd); });
+        break;
     }
-    case SystemId::RigidBodyAttitude:
-      generator = run_taylor(oracle::RigidBodyAttitudeField<R>(p[0], p[1], p[2]), dim, x0, times);
-      checks.push_back(run_extrapolation(geometric::RigidBodyAttitude<R>{12, {p[0], p[1], p[2]}}, x0, times));
-      timed_condition([&] {
-        return trajectory_condition(oracle::RigidBodyAttitudeField<double>(pd[0], pd[1], pd[2]), dim, x0d, timesd);
-      });
-      break;
-    case SystemId::Clebsch:
-      generator = run_taylor(oracle::ClebschField<R>(p[0], p[1], p[2]), dim, x0, times);
-      checks.push_back(run_extrapolation(geometric::Clebsch<R>{6, {p[0], p[1], p[2]}}, x0, times));
-      timed_condition([&] { return trajectory_condition(oracle::ClebschField<double>(pd[0], pd[1], pd[2]), dim, x0d, timesd); });
-      break;
-    case SystemId::Manakov:
-      generator = run_taylor(oracle::ManakovField<R>(p), dim, x0, times);
-      checks.push_back(run_extrapolation(geometric::Manakov<R>(p), x0, times));
-      timed_condition([&] { return trajectory_condition(oracle::ManakovField<double>(pd), dim, x0d, timesd); });
-      break;
-    case SystemId::Nambu316:
-      generator = run_taylor(oracle::Nambu316Field<R>(p[0], p[1], p[2]), dim, x0, times);
-      checks.push_back(run_extrapolation(geometric::Nambu316<R>{3, {p[0], p[1], p[2]}}, x0, times));
-      timed_condition([&] { return trajectory_condition(oracle::Nambu316Field<double>(pd[0], pd[1], pd[2]), dim, x0d, timesd); });
-      break;
-  }
   } catch (const std::runtime_error& e) {
     throw VerificationError("trajectory '" + rq.name + "' cannot be generated: " + e.what());
   }

@@ -116,9 +116,9 @@ std::vector<std::string> fixture_differences(const std::string& path, const std:
   for (std::size_t i = 0; i < std::max(ch.size(), gh.size()); ++i) {
     if (i < ch.size() && i < gh.size() && ch[i].second == gh[i].second) continue;
     const int line = i < ch.size() ? ch[i].first : (cl.empty() ? 0 : static_cast<int>(cl.size()));
-    out.push_back(path + ":" + std::to_string(line) + ": header differs\n    committed:   " +
-                  (i < ch.size() ? ch[i].second : std::string("(missing)")) + "\n    regenerated: " +
-                  (i < gh.size() ? gh[i].second : std::string("(missing)")));
+    out.push_back(path + ":" + std::to_string(line) +
+                  ": header differs\n    committed:   " + (i < ch.size() ? ch[i].second : std::string("(missing)")) +
+                  "\n    regenerated: " + (i < gh.size() ? gh[i].second : std::string("(missing)")));
   }
   // Values, matched by sample time and column name.
   for (std::size_t i = 0; i < g.times.size(); ++i) {
@@ -242,7 +242,8 @@ int regenerate(const RegenerateOptions& o, std::ostream& out, std::ostream& err)
     }
     out << "geomech golden regenerate --check: " << texts.size() << " fixture" << (texts.size() == 1 ? "" : "s")
         << " identical to their regeneration, certificates included: every printed value proved within its "
-           "certified radius (" << static_cast<int>(secs * 100 + 0.5) / 100.0 << " s)\n";
+           "certified radius ("
+        << static_cast<int>(secs * 100 + 0.5) / 100.0 << " s)\n";
     return 0;
   }
 

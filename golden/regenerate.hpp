@@ -14,9 +14,9 @@
 namespace gm::golden {
 
 struct RegenerateOptions {
-  std::string dir;                 // default: the source tree's golden/fixtures
+  std::string dir;  // default: the source tree's golden/fixtures
   bool check = false;
-  std::vector<std::string> only;   // fixture names; empty: all
+  std::vector<std::string> only;  // fixture names; empty: all
   bool quiet = false;
   // Without the certificates (golden/certify.hpp): for timing them against the rest, and for a
   // directory other than the committed fixtures (which carry theirs: --check would then differ).

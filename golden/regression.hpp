@@ -32,12 +32,12 @@ struct RegressionResult {
   std::string scalar;
   std::vector<std::string> missing_slots;  // not empty: NOT PROVIDED, nothing was run
   bool pass = false;
-  std::string failure;                     // why it failed (a thrown error, a non-finite value, ...)
-  double max_error = 0;                    // absolute
-  double tolerance = 0;                    // absolute
+  std::string failure;   // why it failed (a thrown error, a non-finite value, ...)
+  double max_error = 0;  // absolute
+  double tolerance = 0;  // absolute
   std::string tolerance_rule;
   double max_eps_units = 0, rms_eps_units = 0;  // |error| / (eps * scale)
-  std::string worst;                       // "t = 20, column Pi2: subject ..., fixture ..."
+  std::string worst;                            // "t = 20, column Pi2: subject ..., fixture ..."
   long steps = 0, evaluations = 0;
 };
 

@@ -145,8 +145,8 @@ RegressionResult regress(const Fixture& f, const Problem& pr, const Subject<T>& 
         worst = err;
         r.max_error = e;
         r.max_eps_units = units;
-        r.worst = "t = " + f.times[i] + ", column " + f.columns[k] + ": subject " +
-                  regression_detail::show(got[i][k]) + ", fixture " + f.rows[i][k];
+        r.worst = "t = " + f.times[i] + ", column " + f.columns[k] + ": subject " + regression_detail::show(got[i][k]) +
+                  ", fixture " + f.rows[i][k];
       }
     }
   r.rms_eps_units = count ? std::sqrt(sum_sq / static_cast<double>(count)) : 0.0;

@@ -6,28 +6,38 @@ namespace gm::golden {
 
 const std::vector<SystemInfo>& systems() {
   static const std::vector<SystemInfo> list = {
-      {SystemId::FreeRigidBody, "free_rigid_body", "the free rigid body",
+      {SystemId::FreeRigidBody,
+       "free_rigid_body",
+       "the free rigid body",
        "dPi/dt = Pi x Omega, Omega = I^-1 Pi, I = diag(I1, I2, I3)  (3.7), (3.8)",
        {{"I", "principal moments of inertia I1 I2 I3 (positive, each at most the sum of the others)"}},
        {{"Pi", "body angular momentum Pi1 Pi2 Pi3"}},
        {"euler_3_8"}},
-      {SystemId::RigidBodyAttitude, "rigid_body_attitude", "the free rigid body with its attitude",
+      {SystemId::RigidBodyAttitude,
+       "rigid_body_attitude",
+       "the free rigid body with its attitude",
        "dPi/dt = Pi x Omega, dO/dt = O hat(Omega), Omega = I^-1 Pi  (2.20), (2.10), (3.8)",
        {{"I", "principal moments of inertia I1 I2 I3"}},
        {{"Pi", "body angular momentum"}, {"O", "attitude in SO(3), row-major O11 O12 ... O33 (default: identity)"}},
        {"euler_3_8", "omega_3_5", "reconstruction_2_10"}},
-      {SystemId::Clebsch, "clebsch", "the Clebsch form of the rigid body",
+      {SystemId::Clebsch,
+       "clebsch",
+       "the Clebsch form of the rigid body",
        "dQ/dt = -Omega x Q, dP/dt = -Omega x P, Omega = I^-1 Pi, Pi = P x Q  (3.21)",
        {{"I", "principal moments of inertia I1 I2 I3"}},
        {{"Q", "Clebsch variable Q"}, {"P", "Clebsch variable P"}},
        {"clebsch_3_21"}},
-      {SystemId::Manakov, "manakov", "Manakov's rigid body on SO(n) with its attitude",
+      {SystemId::Manakov,
+       "manakov",
+       "Manakov's rigid body on SO(n) with its attitude",
        "dM/dt = [M, Omega], dO/dt = O Omega, M = A Omega + Omega A, A = diag(a)  (2.34), sec. 2.4",
        {{"a", "diagonal of A: n positive numbers, 2 <= n <= 9"}},
        {{"M", "body momentum in so(n), n x n row-major, skew"},
         {"O", "attitude in SO(n), n x n row-major (default: identity)"}},
        {"manakov_2_34", "manakov_Omega"}},
-      {SystemId::Nambu316, "nambu_3_16", "the system (3.16)",
+      {SystemId::Nambu316,
+       "nambu_3_16",
+       "the system (3.16)",
        "dx1/dt = -a1 a3 x2 x3, dx2/dt = -a2 a3 x3 x1, dx3/dt = a1 a2 x1 x2  (3.16)",
        {{"a", "nonzero constants a1 a2 a3 (a rigid body when 1/a1 + 1/a2 = 1/a3)"}},
        {{"x", "x1 x2 x3"}},
@@ -50,7 +60,9 @@ std::string system_names() {
 
 namespace {
 
-InputError error_at(const NamedValues& nv, const std::string& message) { return InputError(nv.where, nv.line, message); }
+InputError error_at(const NamedValues& nv, const std::string& message) {
+  return InputError(nv.where, nv.line, message);
+}
 
 Rational abs_q(const Rational& x) { return x < 0 ? Rational(-x) : x; }
 
@@ -96,8 +108,7 @@ void require_parameter_range(const NamedValues& nv, bool positive) {
   for (std::size_t i = 0; i < nv.values.size(); ++i) {
     const Rational& v = nv.values[i];
     const std::string which = nv.name + std::to_string(i + 1);
-    if (positive && v <= 0)
-      throw error_at(nv, "degenerate: " + which + " = " + format_exact(v) + " must be positive");
+    if (positive && v <= 0) throw error_at(nv, "degenerate: " + which + " = " + format_exact(v) + " must be positive");
     if (!positive && v == 0) throw error_at(nv, "degenerate: " + which + " = 0 must be nonzero");
     if (abs_q(v) < lo) throw error_at(nv, which + " = " + format_exact(v) + ": absurd magnitude (below 1e-6)");
   }
@@ -149,8 +160,8 @@ void require_rotation(const NamedValues& nv, int n) {
       for (int k = 0; k < n; ++k) s += O[k * n + i] * O[k * n + j];
       if (i == j) s -= 1;
       if (abs_q(s) > tol)
-        throw error_at(nv, "O is not a rotation: (O^T O - Id)_" + std::to_string(i + 1) + std::to_string(j + 1) + " = " +
-                               format_significant(s, 3) + " (allowed: |.| <= 1e-40)");
+        throw error_at(nv, "O is not a rotation: (O^T O - Id)_" + std::to_string(i + 1) + std::to_string(j + 1) +
+                               " = " + format_significant(s, 3) + " (allowed: |.| <= 1e-40)");
     }
   if (determinant(O, n) <= 0) throw error_at(nv, "O is not a rotation: det O < 0 (a reflection)");
 }
@@ -184,8 +195,9 @@ Problem make_problem(std::string_view system, const std::string& where, int line
   auto init = arrange(*sys, "initial block", sys->initial, std::move(initial));
   for (std::size_t i = 0; i < params.size(); ++i)
     if (params[i].name.empty())
-      throw InputError(where, line, "system " + sys->name + ": missing parameter '" + sys->parameters[i].name + "' (" +
-                                        sys->parameters[i].meaning + ")");
+      throw InputError(where, line,
+                       "system " + sys->name + ": missing parameter '" + sys->parameters[i].name + "' (" +
+                           sys->parameters[i].meaning + ")");
   const NamedValues& p = params[0];
   switch (sys->id) {
     case SystemId::FreeRigidBody:
@@ -215,21 +227,26 @@ Problem make_problem(std::string_view system, const std::string& where, int line
       init[i] = identity_block("O", n, where);
       continue;
     }
-    throw InputError(where, line, "system " + sys->name + ": missing initial block '" + sys->initial[i].name + "' (" +
-                                      sys->initial[i].meaning + ")");
+    throw InputError(where, line,
+                     "system " + sys->name + ": missing initial block '" + sys->initial[i].name + "' (" +
+                         sys->initial[i].meaning + ")");
   }
   for (auto& b : init) require_magnitudes(b);
-  auto zero = [](const std::vector<Rational>& v) { return std::all_of(v.begin(), v.end(), [](const Rational& x) { return x == 0; }); };
+  auto zero = [](const std::vector<Rational>& v) {
+    return std::all_of(v.begin(), v.end(), [](const Rational& x) { return x == 0; });
+  };
   switch (sys->id) {
     case SystemId::FreeRigidBody:
       require_size(init[0], 3, "Pi1 Pi2 Pi3");
-      if (zero(init[0].values)) throw error_at(init[0], "zero angular momentum Pi = 0: the body is at rest, nothing moves");
+      if (zero(init[0].values))
+        throw error_at(init[0], "zero angular momentum Pi = 0: the body is at rest, nothing moves");
       pr.columns = {"Pi1", "Pi2", "Pi3"};
       break;
     case SystemId::RigidBodyAttitude:
       require_size(init[0], 3, "Pi1 Pi2 Pi3");
       require_size(init[1], 9, "O11 ... O33, row-major");
-      if (zero(init[0].values)) throw error_at(init[0], "zero angular momentum Pi = 0: the body is at rest, nothing moves");
+      if (zero(init[0].values))
+        throw error_at(init[0], "zero angular momentum Pi = 0: the body is at rest, nothing moves");
       require_rotation(init[1], 3);
       pr.columns = {"Pi1", "Pi2", "Pi3"};
       for (auto& c : matrix_columns("O", 3)) pr.columns.push_back(c);
@@ -239,7 +256,8 @@ Problem make_problem(std::string_view system, const std::string& where, int line
       require_size(init[1], 3, "P1 P2 P3");
       const auto& Q = init[0].values;
       const auto& P = init[1].values;
-      const std::vector<Rational> Pi = {P[1] * Q[2] - P[2] * Q[1], P[2] * Q[0] - P[0] * Q[2], P[0] * Q[1] - P[1] * Q[0]};
+      const std::vector<Rational> Pi = {P[1] * Q[2] - P[2] * Q[1], P[2] * Q[0] - P[0] * Q[2],
+                                        P[0] * Q[1] - P[1] * Q[0]};
       if (zero(Pi)) throw error_at(init[1], "zero angular momentum Pi = P x Q = 0: Omega = 0 and nothing moves");
       pr.columns = {"Q1", "Q2", "Q3", "P1", "P2", "P3"};
       break;
@@ -295,7 +313,8 @@ Problem validate_fixture(const Fixture& f) {
   if (pr.columns != f.columns) {
     std::string expected;
     for (const auto& c : pr.columns) expected += " " + c;
-    throw InputError(f.source, f.columns_line, "the columns do not match system " + f.system + ": expected t" + expected);
+    throw InputError(f.source, f.columns_line,
+                     "the columns do not match system " + f.system + ": expected t" + expected);
   }
   return pr;
 }

@@ -36,11 +36,11 @@ std::string system_names();  // "free_rigid_body, rigid_body_attitude, ..."
 // A validated instance of a system: exact parameters, state layout and exact initial state.
 struct Problem {
   const SystemInfo* info = nullptr;
-  int n = 3;                           // Manakov: the matrices are n x n
-  std::vector<Rational> p;             // the parameter values (I, or a), flattened
-  std::vector<std::string> columns;    // state column names
-  std::vector<Rational> x0;            // the initial state, in column order
-  std::vector<NamedValues> parameters; // in the system's order, as written to a file
+  int n = 3;                            // Manakov: the matrices are n x n
+  std::vector<Rational> p;              // the parameter values (I, or a), flattened
+  std::vector<std::string> columns;     // state column names
+  std::vector<Rational> x0;             // the initial state, in column order
+  std::vector<NamedValues> parameters;  // in the system's order, as written to a file
   std::vector<NamedValues> initial;
   int dim() const { return static_cast<int>(x0.size()); }
 };
@@ -53,8 +53,8 @@ inline constexpr double kMinParameterMagnitude = 1e-6;
 // name (a file line or an argument); each block carries its own place. With `fill_defaults`, an
 // omitted attitude O is the identity (the command line); a file must list every block.
 // Throws InputError.
-Problem make_problem(std::string_view system, const std::string& where, int line,
-                     std::vector<NamedValues> parameters, std::vector<NamedValues> initial, bool fill_defaults);
+Problem make_problem(std::string_view system, const std::string& where, int line, std::vector<NamedValues> parameters,
+                     std::vector<NamedValues> initial, bool fill_defaults);
 
 // For a rigid body whose moments violate the triangle inequality (not a physical body, but a
 // well-posed system; the notes use such bodies): a note saying so; empty otherwise.

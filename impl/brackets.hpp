@@ -33,8 +33,7 @@ Vec3<T> nambu_motion_3_14(const Vec3<T>& dc, const Vec3<T>& dh) {
 // Canonical Poisson bracket on T*R^3 with {q_i, p_j} = delta_ij (section 3.5):
 // {f, h} = df/dq . dh/dp - df/dp . dh/dq.
 template <class T>
-T canonical_bracket(const Vec3<T>& dfdq, const Vec3<T>& dfdp, const Vec3<T>& dhdq,
-                    const Vec3<T>& dhdp) {
+T canonical_bracket(const Vec3<T>& dfdq, const Vec3<T>& dfdp, const Vec3<T>& dhdq, const Vec3<T>& dhdp) {
   return dfdq.dot(dhdp) - dfdp.dot(dhdq);
 }
 

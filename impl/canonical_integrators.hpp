@@ -66,8 +66,8 @@ MatX<T> manakov_clebsch_field(const MatX<T>& A, const MatX<T>& Z) {
 template <class T, class Field>
 MatX<T> canonical_midpoint(const MatX<T>& Z0, const T& h, const Field& f, const char* who) {
   const T half = h / T(2);
-  const MatX<T> mid = fixed_point<T>((Z0 + half * f(Z0)).eval(), [&](const MatX<T>& Z) { return (Z0 + half * f(Z)).eval(); },
-                                     who);
+  const MatX<T> mid =
+      fixed_point<T>((Z0 + half * f(Z0)).eval(), [&](const MatX<T>& Z) { return (Z0 + half * f(Z)).eval(); }, who);
   return (T(2) * mid - Z0).eval();
 }
 
@@ -84,14 +84,14 @@ MatX<T> canonical_rk4(const MatX<T>& Z, const T& h, const Field& f) {
 
 template <class T>
 Vec3Pair<T> clebsch_midpoint_step(const Vec3<T>& I, const Vec3Pair<T>& z, const T& h) {
-  return unstack3<T>(canonical_midpoint<T>(stack<T>(z), h, [&](const MatX<T>& Z) { return clebsch_field<T>(I, Z); },
-                                           "Clebsch (3.21) implicit midpoint"));
+  return unstack3<T>(canonical_midpoint<T>(
+      stack<T>(z), h, [&](const MatX<T>& Z) { return clebsch_field<T>(I, Z); }, "Clebsch (3.21) implicit midpoint"));
 }
 template <class T>
 MatXPair<T> manakov_clebsch_midpoint_step(const MatX<T>& A, const MatXPair<T>& z, const T& h) {
-  return unstack_n<T>(canonical_midpoint<T>(stack<T>(z), h,
-                                            [&](const MatX<T>& Z) { return manakov_clebsch_field<T>(A, Z); },
-                                            "Clebsch (3.23) implicit midpoint"));
+  return unstack_n<T>(canonical_midpoint<T>(
+      stack<T>(z), h, [&](const MatX<T>& Z) { return manakov_clebsch_field<T>(A, Z); },
+      "Clebsch (3.23) implicit midpoint"));
 }
 template <class T>
 Vec3Pair<T> clebsch_rk4_step(const Vec3<T>& I, const Vec3Pair<T>& z, const T& h) {
@@ -99,7 +99,8 @@ Vec3Pair<T> clebsch_rk4_step(const Vec3<T>& I, const Vec3Pair<T>& z, const T& h)
 }
 template <class T>
 MatXPair<T> manakov_clebsch_rk4_step(const MatX<T>& A, const MatXPair<T>& z, const T& h) {
-  return unstack_n<T>(canonical_rk4<T>(stack<T>(z), h, [&](const MatX<T>& Z) { return manakov_clebsch_field<T>(A, Z); }));
+  return unstack_n<T>(
+      canonical_rk4<T>(stack<T>(z), h, [&](const MatX<T>& Z) { return manakov_clebsch_field<T>(A, Z); }));
 }
 
 // Explicit symplectic splitting of (3.21). H = sum_i H_i with H_i = Pi_i^2 / (2 I_i), and the

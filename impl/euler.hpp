@@ -10,8 +10,7 @@ namespace gm::ref {
 // (2.1): I1 dOmega1/dt = (I2 - I3) Omega2 Omega3, and cyclically.
 template <class T>
 Vec3<T> euler_2_1(const Vec3<T>& I, const Vec3<T>& W) {
-  return Vec3<T>((I(1) - I(2)) * W(1) * W(2) / I(0),
-                 (I(2) - I(0)) * W(2) * W(0) / I(1),
+  return Vec3<T>((I(1) - I(2)) * W(1) * W(2) / I(0), (I(2) - I(0)) * W(2) * W(0) / I(1),
                  (I(0) - I(1)) * W(0) * W(1) / I(2));
 }
 
@@ -25,8 +24,7 @@ Vec3<T> euler_2_2(const Vec3<T>& I, const Vec3<T>& W) {
 // (3.7): dPi1/dt = (1/I3 - 1/I2) Pi2 Pi3, and cyclically.
 template <class T>
 Vec3<T> euler_3_7(const Vec3<T>& I, const Vec3<T>& P) {
-  return Vec3<T>((T(1) / I(2) - T(1) / I(1)) * P(1) * P(2),
-                 (T(1) / I(0) - T(1) / I(2)) * P(2) * P(0),
+  return Vec3<T>((T(1) / I(2) - T(1) / I(1)) * P(1) * P(2), (T(1) / I(0) - T(1) / I(2)) * P(2) * P(0),
                  (T(1) / I(1) - T(1) / I(0)) * P(0) * P(1));
 }
 

@@ -134,10 +134,9 @@ RigidBodyState<T> lie_poisson_splitting_step(const Vec3<T>& I, const RigidBodySt
 // (core/declared_step.hpp) and the quaternion's own claim (unit_quaternion) has a subject that makes it.
 template <class T>
 Vec4<T> quaternion_product(const Vec4<T>& a, const Vec4<T>& b) {
-  return Vec4<T>(a(0) * b(0) - a(1) * b(1) - a(2) * b(2) - a(3) * b(3),
-                 a(0) * b(1) + a(1) * b(0) + a(2) * b(3) - a(3) * b(2),
-                 a(0) * b(2) - a(1) * b(3) + a(2) * b(0) + a(3) * b(1),
-                 a(0) * b(3) + a(1) * b(2) - a(2) * b(1) + a(3) * b(0));
+  return Vec4<T>(
+      a(0) * b(0) - a(1) * b(1) - a(2) * b(2) - a(3) * b(3), a(0) * b(1) + a(1) * b(0) + a(2) * b(3) - a(3) * b(2),
+      a(0) * b(2) - a(1) * b(3) + a(2) * b(0) + a(3) * b(1), a(0) * b(3) + a(1) * b(2) - a(2) * b(1) + a(3) * b(0));
 }
 
 template <class T>
@@ -240,7 +239,9 @@ ManakovState<T> manakov_implicit_midpoint_step(const MatX<T>& A, const ManakovSt
 // M_{n+1} is found by fixed-point iteration and re-skewed (round-off only).
 template <class T>
 ManakovState<T> manakov_isospectral_step(const MatX<T>& A, const ManakovState<T>& x, const T& h) {
-  auto U_of = [&](const MatX<T>& M1) { return cayley_half<T>((h * manakov_Omega<T>(A, ((x.M + M1) / T(2)).eval())).eval()); };
+  auto U_of = [&](const MatX<T>& M1) {
+    return cayley_half<T>((h * manakov_Omega<T>(A, ((x.M + M1) / T(2)).eval())).eval());
+  };
   auto update = [&](const MatX<T>& M1) {
     const MatX<T> U = U_of(M1);
     const MatX<T> N = U.transpose() * x.M * U;

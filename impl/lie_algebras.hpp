@@ -16,18 +16,24 @@ namespace gm::ref {
 
 inline int lie_dim(LieAlgebraId a) {
   switch (a) {
-    case LieAlgebraId::so3: return 3;
-    case LieAlgebraId::so4: return 6;
-    case LieAlgebraId::sl2: return 3;
+    case LieAlgebraId::so3:
+      return 3;
+    case LieAlgebraId::so4:
+      return 6;
+    case LieAlgebraId::sl2:
+      return 3;
   }
   return 0;
 }
 
 inline int lie_matrix_size(LieAlgebraId a) {
   switch (a) {
-    case LieAlgebraId::so3: return 3;
-    case LieAlgebraId::so4: return 4;
-    case LieAlgebraId::sl2: return 2;
+    case LieAlgebraId::so3:
+      return 3;
+    case LieAlgebraId::so4:
+      return 4;
+    case LieAlgebraId::sl2:
+      return 2;
   }
   return 0;
 }
@@ -50,9 +56,12 @@ VecX<T> vee_sl2(const MatX<T>& m) {
 template <class T>
 MatX<T> lie_hat(LieAlgebraId a, const VecX<T>& x) {
   switch (a) {
-    case LieAlgebraId::so3: return hat_n<T>(x, 3);
-    case LieAlgebraId::so4: return hat_n<T>(x, 4);
-    case LieAlgebraId::sl2: return hat_sl2<T>(x);
+    case LieAlgebraId::so3:
+      return hat_n<T>(x, 3);
+    case LieAlgebraId::so4:
+      return hat_n<T>(x, 4);
+    case LieAlgebraId::sl2:
+      return hat_sl2<T>(x);
   }
   throw std::invalid_argument("lie_hat: unknown algebra");
 }
@@ -61,8 +70,10 @@ template <class T>
 VecX<T> lie_vee(LieAlgebraId a, const MatX<T>& m) {
   switch (a) {
     case LieAlgebraId::so3:
-    case LieAlgebraId::so4: return vee_n<T>(m);
-    case LieAlgebraId::sl2: return vee_sl2<T>(m);
+    case LieAlgebraId::so4:
+      return vee_n<T>(m);
+    case LieAlgebraId::sl2:
+      return vee_sl2<T>(m);
   }
   throw std::invalid_argument("lie_vee: unknown algebra");
 }

@@ -14,8 +14,7 @@ Mat3<T> reconstruction_2_10(const Mat3<T>& O, const Vec3<T>& Omega) {
 // The rigid body with its attitude, (2.20): dPi/dt = Pi x Omega, dO/dt = O Omega_hat,
 // Omega = I^-1 Pi. Returns (dPi/dt, dO/dt).
 template <class T>
-std::pair<Vec3<T>, Mat3<T>> rigid_body_with_attitude(const Vec3<T>& I, const Vec3<T>& Pi,
-                                                     const Mat3<T>& O) {
+std::pair<Vec3<T>, Mat3<T>> rigid_body_with_attitude(const Vec3<T>& I, const Vec3<T>& Pi, const Mat3<T>& O) {
   const Vec3<T> W = Pi.cwiseQuotient(I);
   return {cross<T>(Pi, W), reconstruction_2_10<T>(O, W)};
 }

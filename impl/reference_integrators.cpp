@@ -59,8 +59,16 @@ std::vector<IntegratorClaims> reference_integrator_claims() {
   // (rigid body), tr(M^2) and the energy (Manakov), O^T O. Not the quartic tr(M^4) (n >= 4), so
   // no spectrum claim. Not claimed Poisson: the midpoint rule is not a Poisson map for the
   // Lie-Poisson bracket (3.6) in general.
-  c.push_back({.integrator = "implicit_midpoint", .order = 2, .symmetric = true, .casimir = true, .energy = true,
-               .orthogonality = true, .spectrum = false, .poisson = false, .noether = false, .equivariant = true,
+  c.push_back({.integrator = "implicit_midpoint",
+               .order = 2,
+               .symmetric = true,
+               .casimir = true,
+               .energy = true,
+               .orthogonality = true,
+               .spectrum = false,
+               .poisson = false,
+               .noether = false,
+               .equivariant = true,
                .bounded_energy = true});
   // (Structure claims, properties/integrators/integrator_structure.cpp.) Every method here updates O only by
   // right multiplication, O_{n+1} = O_n U(Pi_n, h) (RK4: each stage is linear in O and multiplied
@@ -73,9 +81,18 @@ std::vector<IntegratorClaims> reference_integrator_claims() {
   // Poisson (exact Hamiltonian flows composed). Energy error O(h^2). Kept with a quaternion: its
   // norm is kept (products of unit quaternions: unit_quaternion); orthogonality is not its to claim
   // (the matrix the properties see is the suite's R(q / |q|)).
-  c.push_back({.integrator = "lie_poisson_splitting", .order = 2, .symmetric = true, .casimir = true,
-               .energy = false, .orthogonality = false, .spectrum = false, .poisson = true, .noether = true,
-               .equivariant = true, .bounded_energy = true, .unit_quaternion = true});
+  c.push_back({.integrator = "lie_poisson_splitting",
+               .order = 2,
+               .symmetric = true,
+               .casimir = true,
+               .energy = false,
+               .orthogonality = false,
+               .spectrum = false,
+               .poisson = true,
+               .noether = true,
+               .equivariant = true,
+               .bounded_energy = true,
+               .unit_quaternion = true});
   // Splitting: each sub-flow keeps O Pi (Noether). Bounded energy: on the sphere |Pi| = const the
   // step is an area-preserving (Poisson) map O(h^2)-close to the flow of a one-degree-of-freedom
   // system, so backward error analysis gives a modified energy h + O(h^2) kept up to exponentially
@@ -86,8 +103,16 @@ std::vector<IntegratorClaims> reference_integrator_claims() {
   // tr(M^2)), orthogonality of O, and the energy E(M) = -tr(Omega(M) M)/4: Omega(.) is linear and
   // self-adjoint for the trace pairing, so E(M1) - E(M0) = -tr(W (M1 - M0))/2 with W = Omega(M_*),
   // and tr(W U^T M0 U) = tr(U W U^T M0) = tr(W M0) because U = cay(h W) commutes with W.
-  c.push_back({.integrator = "isospectral_cayley", .order = 2, .symmetric = true, .casimir = true, .energy = true,
-               .orthogonality = true, .spectrum = true, .poisson = false, .noether = true, .equivariant = true,
+  c.push_back({.integrator = "isospectral_cayley",
+               .order = 2,
+               .symmetric = true,
+               .casimir = true,
+               .energy = true,
+               .orthogonality = true,
+               .spectrum = true,
+               .poisson = false,
+               .noether = true,
+               .equivariant = true,
                .bounded_energy = true});
   // Isospectral Noether: O_{n+1} M_{n+1} O_{n+1}^T = O_n U U^T M_n U U^T O_n^T = O_n M_n O_n^T.
   //

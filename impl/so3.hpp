@@ -9,9 +9,7 @@ namespace gm::ref {
 template <class T>
 Mat3<T> hat(const Vec3<T>& v) {
   Mat3<T> m;
-  m << T(0), -v(2), v(1),
-       v(2), T(0), -v(0),
-       -v(1), v(0), T(0);
+  m << T(0), -v(2), v(1), v(2), T(0), -v(0), -v(1), v(0), T(0);
   return m;
 }
 

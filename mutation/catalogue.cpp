@@ -11,23 +11,45 @@ namespace gm::mutation {
 
 const char* class_name(Class c) {
   switch (c) {
-    case Class::ResultSign: return "result_sign";
-    case Class::Factor: return "factor";
-    case Class::Transpose: return "transpose";
-    case Class::SwapArgs: return "swap_args";
-    case Class::IndexSlip: return "index_slip";
-    case Class::Constant: return "constant";
-    case Class::SpecialCase: return "special_case";
-    case Class::Precision: return "precision";
-    case Class::Integrator: return "integrator";
-    case Class::Handwritten: return "handwritten";
+    case Class::ResultSign:
+      return "result_sign";
+    case Class::Factor:
+      return "factor";
+    case Class::Transpose:
+      return "transpose";
+    case Class::SwapArgs:
+      return "swap_args";
+    case Class::IndexSlip:
+      return "index_slip";
+    case Class::Constant:
+      return "constant";
+    case Class::SpecialCase:
+      return "special_case";
+    case Class::Precision:
+      return "precision";
+    case Class::Integrator:
+      return "integrator";
+    case Class::Handwritten:
+      return "handwritten";
   }
   return "?";
 }
 
 namespace {
 
-enum class OpKind { Negate, Times2, Half, Transpose, PermuteResult, Perturb, TinyGuard, PrecisionLowered, SwapArgs, PermuteArg, AxisBranch };
+enum class OpKind {
+  Negate,
+  Times2,
+  Half,
+  Transpose,
+  PermuteResult,
+  Perturb,
+  TinyGuard,
+  PrecisionLowered,
+  SwapArgs,
+  PermuteArg,
+  AxisBranch
+};
 
 struct OpSpec {
   OpKind kind;
@@ -39,8 +61,8 @@ struct OpSpec {
 
 template <std::size_t N, class F>
 void for_index(F&& f) {
-  [&]<std::size_t... K>(std::index_sequence<K...>) { (f(std::integral_constant<std::size_t, K>{}), ...); }(
-      std::make_index_sequence<N>{});
+  [&]<std::size_t... K>(std::index_sequence<K...>) { (f(std::integral_constant<std::size_t, K>{}), ...); }
+  (std::make_index_sequence<N>{});
 }
 
 template <class T, class R, class... A>
@@ -52,8 +74,8 @@ std::vector<OpSpec> applicable(const Slot<R(A...)>&) {
     out.push_back({OpKind::Negate, -1, -1, "negate_result", "result negated (a sign error)", Class::ResultSign});
     out.push_back({OpKind::Times2, -1, -1, "double_result", "result times 2 (a factor 1/2 lost)", Class::Factor});
     out.push_back({OpKind::Half, -1, -1, "halve_result", "result times 1/2 (a factor 1/2 added)", Class::Factor});
-    out.push_back({OpKind::Perturb, -1, -1, "perturb_result",
-                   "result times (1 + 2^-30) (a constant slightly wrong)", Class::Constant});
+    out.push_back({OpKind::Perturb, -1, -1, "perturb_result", "result times (1 + 2^-30) (a constant slightly wrong)",
+                   Class::Constant});
   }
   if constexpr (is_square_matrix<R>::value)
     out.push_back({OpKind::Transpose, -1, -1, "transpose_result", "matrix result transposed", Class::Transpose});
@@ -126,9 +148,9 @@ void apply(Slot<R(A...)>& slot, const OpSpec& op) {
       break;
     case OpKind::SwapArgs:
       for_index<N>([&](auto I_) {
-    constexpr std::size_t I = decltype(I_)::value;
+        constexpr std::size_t I = decltype(I_)::value;
         for_index<N>([&](auto J_) {
-      constexpr std::size_t J = decltype(J_)::value;
+          constexpr std::size_t J = decltype(J_)::value;
           if constexpr (I < J && std::is_same_v<typename O::template Arg<I>, typename O::template Arg<J>>)
             if (op.i == int(I) && op.j == int(J)) slot = O::template swap_args<I, J>(orig);
         });
@@ -136,14 +158,14 @@ void apply(Slot<R(A...)>& slot, const OpSpec& op) {
       break;
     case OpKind::PermuteArg:
       for_index<N>([&](auto I_) {
-    constexpr std::size_t I = decltype(I_)::value;
+        constexpr std::size_t I = decltype(I_)::value;
         if constexpr (is_vec3<typename O::template Arg<I>>::value)
           if (op.i == int(I)) slot = O::template permute_arg<I>(orig);
       });
       break;
     case OpKind::AxisBranch:
       for_index<N>([&](auto I_) {
-    constexpr std::size_t I = decltype(I_)::value;
+        constexpr std::size_t I = decltype(I_)::value;
         if constexpr (is_vec3<typename O::template Arg<I>>::value && is_numeric_v<T, R>)
           if (op.i == int(I)) slot = O::template axis_branch<I>(orig);
       });
@@ -199,8 +221,8 @@ void apply_step(Integrator<T>& in, bool rigid, StepOp op) {
         case StepOp::PrecisionLowered:
           if constexpr (std::is_same_v<T, Real50>)
             in.rigid_body_step = [orig](const Vec3<T>& I, const St& x, const T& h) {
-              return round_through_double<T>(orig(round_through_double<T>(I), round_through_double<T>(x),
-                                                  round_through_double<T>(h)));
+              return round_through_double<T>(
+                  orig(round_through_double<T>(I), round_through_double<T>(x), round_through_double<T>(h)));
             };
           break;
         case StepOp::HPerturbed:
@@ -239,8 +261,8 @@ void apply_step(Integrator<T>& in, bool rigid, StepOp op) {
         case StepOp::PrecisionLowered:
           if constexpr (std::is_same_v<T, Real50>)
             in.manakov_step = [orig](const MatX<T>& A, const St& x, const T& h) {
-              return round_through_double<T>(orig(round_through_double<T>(A), round_through_double<T>(x),
-                                                  round_through_double<T>(h)));
+              return round_through_double<T>(
+                  orig(round_through_double<T>(A), round_through_double<T>(x), round_through_double<T>(h)));
             };
           break;
         case StepOp::HPerturbed:
@@ -285,8 +307,7 @@ std::shared_ptr<const Subject<T>> step_subject(const std::shared_ptr<const Subje
       if (rigid)
         in.manakov_step = std::function<ManakovState<T>(const MatX<T>&, const ManakovState<T>&, const T&)>{};
       else
-        in.rigid_body_step =
-            std::function<RigidBodyState<T>(const Vec3<T>&, const RigidBodyState<T>&, const T&)>{};
+        in.rigid_body_step = std::function<RigidBodyState<T>(const Vec3<T>&, const RigidBodyState<T>&, const T&)>{};
     }
     apply_step(in, rigid, op);
     if (alone)

@@ -14,12 +14,12 @@
 namespace gm::mutation {
 
 struct MutantDef {
-  std::string name;         // stable: "euler_3_8:negate_result", "rk4:rigid_body_step:drop_attitude"
-  std::string slot;         // the slot mutated ("rigid_body_step"/"manakov_step" for integrators; "" for handwritten)
-  std::string op;           // operator name ("negate_result", ...; "handwritten")
-  std::string op_class;     // operator class ("result_sign", "factor", ..., "handwritten")
+  std::string name;      // stable: "euler_3_8:negate_result", "rk4:rigid_body_step:drop_attitude"
+  std::string slot;      // the slot mutated ("rigid_body_step"/"manakov_step" for integrators; "" for handwritten)
+  std::string op;        // operator name ("negate_result", ...; "handwritten")
+  std::string op_class;  // operator class ("result_sign", "factor", ..., "handwritten")
   std::string description;
-  std::string integrator;   // integrator mutants: the integrator's name
+  std::string integrator;  // integrator mutants: the integrator's name
   StepKind step = StepKind::None;
   // The reference with this one mistake.
   std::function<SubjectSet(const SubjectSet&)> full;

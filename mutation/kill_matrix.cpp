@@ -75,7 +75,8 @@ std::vector<MatrixRow> kill_matrix(const MutantsRun& run) {
     }
     rows.push_back(r);
   }
-  std::stable_sort(rows.begin(), rows.end(), [](const MatrixRow& a, const MatrixRow& b) { return a.killed > b.killed; });
+  std::stable_sort(rows.begin(), rows.end(),
+                   [](const MatrixRow& a, const MatrixRow& b) { return a.killed > b.killed; });
   return rows;
 }
 
@@ -115,8 +116,9 @@ QuickProfile choose_quick_profile(const MutantsRun& run) {
 std::string quick_profile_summary(const QuickProfile& q) {
   std::ostringstream os;
   os << "quick profile: " << q.checks.size() << " of " << q.checks_all << " checks kill " << q.killed << " of the "
-     << q.killable << " mutants the whole matrix kills (" << q.mutants << " not equivalent); their mean cost per mutant "
-     << secs(q.seconds) << " s against " << secs(q.seconds_all) << " s for every check";
+     << q.killable << " mutants the whole matrix kills (" << q.mutants
+     << " not equivalent); their mean cost per mutant " << secs(q.seconds) << " s against " << secs(q.seconds_all)
+     << " s for every check";
   if (q.killed_by_run > 0)
     os << "; " << q.killed_by_run << " more killed only by a crash or a timeout of their whole run, which no single "
        << "check's cell records";
@@ -164,8 +166,8 @@ ThoroughOnly choose_thorough_only(const MutantsRun& run, double min_seconds) {
   t.killable = static_cast<int>(killers.size());
   for (const auto& check : candidates) {
     const auto it = c.kills.find(check);
-    const bool all_killed_elsewhere =
-        it == c.kills.end() || std::all_of(it->second.begin(), it->second.end(), [&](std::size_t m) { return killers[m] > 1; });
+    const bool all_killed_elsewhere = it == c.kills.end() || std::all_of(it->second.begin(), it->second.end(),
+                                                                         [&](std::size_t m) { return killers[m] > 1; });
     if (!all_killed_elsewhere) continue;
     if (it != c.kills.end())
       for (std::size_t m : it->second) --killers[m];
@@ -178,10 +180,11 @@ ThoroughOnly choose_thorough_only(const MutantsRun& run, double min_seconds) {
 
 std::string thorough_only_summary(const ThoroughOnly& t) {
   std::ostringstream os;
-  os << "left to --thorough for an implementation behind the protocol: " << t.checks.size() << " of the " << t.candidates
-     << " 50-digit checks costing " << secs(t.min_seconds) << " s or more per mutant (" << secs(t.seconds_left_out)
-     << " s of the " << secs(t.seconds_50_digit) << " s all 50-digit checks cost); the checks kept kill "
-     << t.killed_by_kept << " of the " << t.killable << " mutants the matrix kills\n";
+  os << "left to --thorough for an implementation behind the protocol: " << t.checks.size() << " of the "
+     << t.candidates << " 50-digit checks costing " << secs(t.min_seconds) << " s or more per mutant ("
+     << secs(t.seconds_left_out) << " s of the " << secs(t.seconds_50_digit)
+     << " s all 50-digit checks cost); the checks kept kill " << t.killed_by_kept << " of the " << t.killable
+     << " mutants the matrix kills\n";
   return os.str();
 }
 
@@ -189,8 +192,9 @@ json thorough_only_json(const ThoroughOnly& t, const MutantsRun& run) {
   json j;
   j["format"] = harness::kThoroughOnlyFormat;
   j["made_by"] = made_by(run, "--write-thorough-only");
-  j["rule"] = "the 50-digit checks costing at least min_seconds per mutant in the matrix, most costly first, each left "
-              "out when every mutant it kills is still killed by a check that is kept";
+  j["rule"] =
+      "the 50-digit checks costing at least min_seconds per mutant in the matrix, most costly first, each left "
+      "out when every mutant it kills is still killed by a check that is kept";
   j["min_seconds"] = t.min_seconds;
   // The factor the matrix ran at: an implementation behind the protocol runs that share of each
   // property's cases by default (harness/engine/thorough_only.hpp).
@@ -201,7 +205,8 @@ json thorough_only_json(const ThoroughOnly& t, const MutantsRun& run) {
   j["seconds_left_out"] = t.seconds_left_out;
   j["seconds_50_digit"] = t.seconds_50_digit;
   j["checks"] = json::array();
-  for (const auto& c : t.checks) j["checks"].push_back({{"check", c.check}, {"seconds", c.seconds}, {"killed", c.killed}});
+  for (const auto& c : t.checks)
+    j["checks"].push_back({{"check", c.check}, {"seconds", c.seconds}, {"killed", c.killed}});
   return j;
 }
 
@@ -213,7 +218,8 @@ std::string matrix_markdown(const MutantsRun& run) {
   for (const auto& r : run.results)
     if (r.full.matrix_skipped > 0) skipped += r.full.matrix_skipped, ++mutants_skipping;
   os << "## Kill matrix (full reference)\n\n"
-     << "Every property in every scalar on every mutant it applies to, without stopping at the first kill (`--matrix`). "
+     << "Every property in every scalar on every mutant it applies to, without stopping at the first kill "
+        "(`--matrix`). "
         "killed: mutants it kills (equivalent ones left out); unique: killed by it and by no other check; cost: mean "
         "seconds per mutant it ran on. A check that kills nothing unique may still be the only cheap one to kill "
         "something.\n\n"
@@ -222,14 +228,17 @@ std::string matrix_markdown(const MutantsRun& run) {
      << skipped << " cells of " << mutants_skipping << " mutants were not measured.\n\n"
      << "| check | ran on | killed | unique | cost (s) |\n|---|---|---|---|---|\n";
   for (const auto& r : rows)
-    os << "| " << r.check << " | " << r.ran << " | " << r.killed << " | " << r.unique << " | " << secs(r.seconds) << " |\n";
-  os << "\n## Quick profile\n\n" << quick_profile_summary(q) << "\n"
+    os << "| " << r.check << " | " << r.ran << " | " << r.killed << " | " << r.unique << " | " << secs(r.seconds)
+       << " |\n";
+  os << "\n## Quick profile\n\n"
+     << quick_profile_summary(q) << "\n"
      << "Chosen greedily (most new kills per second of cost first); `geomech check --quick` runs these checks "
         "(spec/quick_profile.json):\n\n| # | check | mutants killed so far |\n|---|---|---|\n";
   for (std::size_t i = 0; i < q.checks.size(); ++i)
     os << "| " << i + 1 << " | " << q.checks[i] << " | " << q.cumulative[i] << " |\n";
   const ThoroughOnly t = choose_thorough_only(run);
-  os << "\n## 50-digit runs left to --thorough\n\n" << thorough_only_summary(t) << "\n"
+  os << "\n## 50-digit runs left to --thorough\n\n"
+     << thorough_only_summary(t) << "\n"
      << "An implementation behind the protocol (Python, untrusted C++) skips these unless checked with --thorough "
         "(spec/thorough_only.json); every mutant each one kills is killed by a check that is kept:\n\n"
      << "| check | killed | cost (s) |\n|---|---|---|\n";

@@ -15,11 +15,11 @@
 namespace gm::mutation {
 
 struct MatrixRow {
-  std::string check;    // "property/scalar"
-  int ran = 0;          // mutants it ran on (the slot it needs was mutated, or an integrator's step)
-  int killed = 0;       // of those, killed (not counting equivalent mutants)
-  int unique = 0;       // killed by this check and no other
-  double seconds = 0;   // mean seconds per mutant it ran on
+  std::string check;   // "property/scalar"
+  int ran = 0;         // mutants it ran on (the slot it needs was mutated, or an integrator's step)
+  int killed = 0;      // of those, killed (not counting equivalent mutants)
+  int unique = 0;      // killed by this check and no other
+  double seconds = 0;  // mean seconds per mutant it ran on
 };
 
 // Rows for every check that ran on some mutant, the ones that kill most first.
@@ -52,17 +52,17 @@ std::string matrix_markdown(const MutantsRun& run);
 // first, each left out when every mutant it kills is still killed by a check that is kept.
 struct ThoroughOnly {
   struct Check {
-    std::string check;  // "property/mp50"
-    double seconds = 0; // mean cost per mutant in the matrix
-    int killed = 0;     // mutants it kills, every one killed by a kept check too
+    std::string check;   // "property/mp50"
+    double seconds = 0;  // mean cost per mutant in the matrix
+    int killed = 0;      // mutants it kills, every one killed by a kept check too
   };
   std::vector<Check> checks;
   double min_seconds = 0;
-  int candidates = 0;          // 50-digit checks costing at least min_seconds
-  int killable = 0;            // killed by some check of the matrix
-  int killed_by_kept = 0;      // killed by the checks kept (= killable, by construction)
-  double seconds_left_out = 0; // the checks left out: their mean costs, summed
-  double seconds_50_digit = 0; // every 50-digit check's mean cost, summed
+  int candidates = 0;           // 50-digit checks costing at least min_seconds
+  int killable = 0;             // killed by some check of the matrix
+  int killed_by_kept = 0;       // killed by the checks kept (= killable, by construction)
+  double seconds_left_out = 0;  // the checks left out: their mean costs, summed
+  double seconds_50_digit = 0;  // every 50-digit check's mean cost, summed
 };
 ThoroughOnly choose_thorough_only(const MutantsRun& run, double min_seconds = 0.05);
 std::string thorough_only_summary(const ThoroughOnly& t);

@@ -94,7 +94,18 @@ bool on_axis(const X& v) {  // exactly two zero components
 // Each is a struct with `name`, `description` and a static `applies<T, R, A...>` and `wrap`.
 // wrap(orig) returns the mutated std::function<R(A...)>; `orig` is a copy of the slot.
 
-enum class Class { ResultSign, Factor, Transpose, SwapArgs, IndexSlip, Constant, SpecialCase, Precision, Integrator, Handwritten };
+enum class Class {
+  ResultSign,
+  Factor,
+  Transpose,
+  SwapArgs,
+  IndexSlip,
+  Constant,
+  SpecialCase,
+  Precision,
+  Integrator,
+  Handwritten
+};
 const char* class_name(Class c);
 
 template <class T, class Sig>

@@ -59,9 +59,8 @@ std::vector<const Property*> candidates(const MutantDef& m, const std::set<std::
     if (m.op_class == "handwritten") {
       use = true;
     } else if (!m.integrator.empty()) {
-      use = p.scope == Scope::Integrator &&
-            (p.step == m.step || p.step == StepKind::None ||
-             (m.step == StepKind::RigidBody && p.step == StepKind::RigidBodyMatrix));
+      use = p.scope == Scope::Integrator && (p.step == m.step || p.step == StepKind::None ||
+                                             (m.step == StepKind::RigidBody && p.step == StepKind::RigidBodyMatrix));
     } else {
       use = std::find(p.needs.begin(), p.needs.end(), m.slot) != p.needs.end();
     }
@@ -119,7 +118,8 @@ ModeResult run_mode(const SubjectSet& s, const std::vector<const Property*>& pro
         bool ran_here = false, killed_here = false;
         for (const Verdict& v : vs) {
           if (v.outcome == Outcome::NotProvided) continue;
-          if (v.outcome == Outcome::Error && v.message.find("without listing it in its needs") != std::string::npos) continue;
+          if (v.outcome == Outcome::Error && v.message.find("without listing it in its needs") != std::string::npos)
+            continue;
           ran_here = true;
           killed_here = killed_here || v.outcome != Outcome::Pass;
         }
@@ -127,7 +127,8 @@ ModeResult run_mode(const SubjectSet& s, const std::vector<const Property*>& pro
       }
       for (const Verdict& v : vs) {
         std::string where = p->id + " [" + v.scalar + (v.integrator.empty() ? "" : " " + v.integrator) + "]";
-        if (o.verbose) r.log.push_back(std::string(outcome_name(v.outcome)) + "  " + where + "  " + first_line(v.message));
+        if (o.verbose)
+          r.log.push_back(std::string(outcome_name(v.outcome)) + "  " + where + "  " + first_line(v.message));
         if (v.outcome == Outcome::NotProvided) continue;
         if (v.outcome == Outcome::Error && v.message.find("without listing it in its needs") != std::string::npos) {
           r.undeclared.push_back(p->id);  // a defect of the property, not a kill
@@ -149,8 +150,14 @@ ModeResult run_mode(const SubjectSet& s, const std::vector<const Property*>& pro
 json mode_json(const ModeResult& m) {
   json cells = json::object();
   for (const auto& [k, v] : m.cells) cells[k] = {v.first, v.second};
-  return json{{"ran", m.ran},         {"killed", m.killed}, {"killed_by", m.killed_by}, {"properties", m.properties},
-              {"undeclared", m.undeclared}, {"log", m.log}, {"error", m.error}, {"cells", cells},
+  return json{{"ran", m.ran},
+              {"killed", m.killed},
+              {"killed_by", m.killed_by},
+              {"properties", m.properties},
+              {"undeclared", m.undeclared},
+              {"log", m.log},
+              {"error", m.error},
+              {"cells", cells},
               {"matrix_skipped", m.matrix_skipped}};
 }
 ModeResult mode_from(const json& j) {
@@ -185,7 +192,8 @@ MutantsRun run_mutants(const MutantsOptions& o) {
   }
   std::vector<MutantDef> chosen;
   for (auto& m : all)
-    if ((o.slot.empty() || m.slot == o.slot) && (o.mutant.empty() || m.name == o.mutant)) chosen.push_back(std::move(m));
+    if ((o.slot.empty() || m.slot == o.slot) && (o.mutant.empty() || m.name == o.mutant))
+      chosen.push_back(std::move(m));
 
   harness::IsolationOptions iso;
   iso.jobs = std::max(1, o.jobs);
@@ -292,7 +300,8 @@ MutantsRun run_mutants(const MutantsOptions& o) {
       // A crash or a hang of the whole mutant run is a detection (the suite would report it).
       r.full.ran = true;
       r.full.killed = true;
-      r.full.killed_by = "the run " + std::string(tr.status == harness::TaskResult::Status::TimedOut ? "timed out" : "crashed") +
+      r.full.killed_by = "the run " +
+                         std::string(tr.status == harness::TaskResult::Status::TimedOut ? "timed out" : "crashed") +
                          ": " + tr.detail;
       r.alone = r.full;
       if (!m.alone) r.alone = ModeResult{};
@@ -309,11 +318,13 @@ namespace {
 // The tally of one mode of each mutant (full, alone or through the protocol), among those of `slot`
 // and `spec` (empty: all); `alone` says which equivalence applies.
 template <class Mode>
-Tally tally_of(const MutantsRun& run, Mode mode, bool alone, const std::string& slot = "", const std::string& spec = "") {
+Tally tally_of(const MutantsRun& run, Mode mode, bool alone, const std::string& slot = "",
+               const std::string& spec = "") {
   Tally t;
   for (const auto& r : run.results) {
     if (!slot.empty() && r.slot != slot) continue;
-    if (!spec.empty() && std::find(r.spec_entries.begin(), r.spec_entries.end(), spec) == r.spec_entries.end()) continue;
+    if (!spec.empty() && std::find(r.spec_entries.begin(), r.spec_entries.end(), spec) == r.spec_entries.end())
+      continue;
     const ModeResult& m = mode(r);
     if (!m.ran) continue;
     ++t.mutants;
@@ -330,20 +341,22 @@ Tally tally_of(const MutantsRun& run, Mode mode, bool alone, const std::string& 
 }  // namespace
 
 Tally tally(const MutantsRun& run, bool alone, const std::string& slot, const std::string& spec) {
-  return tally_of(run, [alone](const MutantResult& r) -> const ModeResult& { return alone ? r.alone : r.full; }, alone,
-                  slot, spec);
+  return tally_of(
+      run, [alone](const MutantResult& r) -> const ModeResult& { return alone ? r.alone : r.full; }, alone, slot, spec);
 }
 
 Tally tally_protocol(const MutantsRun& run) {
-  return tally_of(run, [](const MutantResult& r) -> const ModeResult& { return r.protocol; }, false);
+  return tally_of(
+      run, [](const MutantResult& r) -> const ModeResult& { return r.protocol; }, false);
 }
 
 std::vector<std::string> protocol_differences(const MutantsRun& run) {
   std::vector<std::string> out;
   for (const auto& r : run.results)
     if (r.protocol.ran && r.full.ran && r.protocol.killed != r.full.killed)
-      out.push_back(r.name + (r.full.killed ? ": killed in-process, not through the protocol"
-                                            : ": killed through the protocol, not in-process") +
+      out.push_back(r.name +
+                    (r.full.killed ? ": killed in-process, not through the protocol"
+                                   : ": killed through the protocol, not in-process") +
                     (r.protocol.killed ? " (" + r.protocol.killed_by + ")" : ""));
   return out;
 }
@@ -354,8 +367,8 @@ std::string protocol_score_line(const MutantsRun& run) {
   const Tally p = tally_protocol(run);
   if (p.mutants == 0) return "";
   std::ostringstream os;
-  os << p.killed << "/" << (p.mutants - p.equivalent) << " = "
-     << std::fixed << std::setprecision(1) << 100 * p.score() << "% (each mutant served out of process by the C++ "
+  os << p.killed << "/" << (p.mutants - p.equivalent) << " = " << std::fixed << std::setprecision(1) << 100 * p.score()
+     << "% (each mutant served out of process by the C++ "
      << "protocol server, as untrusted mode serves a submission); verdicts that differ from the in-process run: "
      << protocol_differences(run).size();
   return os.str();
@@ -399,7 +412,8 @@ std::string console_table(const MutantsRun& run) {
   auto header = [&](const std::string& what) {
     os << std::left << std::setw(34) << what << std::right << std::setw(8) << "mutants" << std::setw(8) << "killed"
        << std::setw(6) << "equiv" << std::setw(9) << "survived" << std::setw(9) << "score" << std::setw(8) << "alone:k"
-       << std::setw(9) << "survived" << std::setw(9) << "score" << "\n";
+       << std::setw(9) << "survived" << std::setw(9) << "score"
+       << "\n";
   };
   header("slot");
   for (const auto& s : slot_order(run)) row(s, tally(run, false, s), tally(run, true, s));
@@ -457,9 +471,11 @@ std::string markdown_report(const MutantsRun& run) {
   os << "Single-mistake variants of the reference implementation, run through the properties that apply to them "
         "(case factor "
      << run.options.case_factor << ", seed " << run.options.seed << "). A mutant is killed when one verdict is "
-     << "FAIL, CRASH, TIMEOUT or ERROR. Equivalent mutants (spec/equivalent_mutants.json) are not in the denominator.\n\n";
+     << "FAIL, CRASH, TIMEOUT or ERROR. Equivalent mutants (spec/equivalent_mutants.json) are not in the "
+        "denominator.\n\n";
   os << "- mutants: " << run.results.size() << " (" << f.equivalent << " equivalent)\n";
-  os << "- score in the full reference: " << f.killed << "/" << (f.mutants - f.equivalent) << " = " << pct(f.score()) << "\n";
+  os << "- score in the full reference: " << f.killed << "/" << (f.mutants - f.equivalent) << " = " << pct(f.score())
+     << "\n";
   os << "- score with the mutated slot alone: " << a.killed << "/" << (a.mutants - a.equivalent) << " = "
      << pct(a.score()) << "\n";
   if (const std::string p = protocol_score_line(run); !p.empty()) {
@@ -468,13 +484,14 @@ std::string markdown_report(const MutantsRun& run) {
   }
   os << "- time: " << std::fixed << std::setprecision(1) << run.seconds << " s\n\n";
   auto table = [&](const std::string& what, const std::vector<std::string>& keys, bool by_slot) {
-    os << "| " << what << " | mutants | killed | equivalent | survived | score | alone: killed | alone: survived | alone: score |\n";
+    os << "| " << what
+       << " | mutants | killed | equivalent | survived | score | alone: killed | alone: survived | alone: score |\n";
     os << "|---|---|---|---|---|---|---|---|---|\n";
     for (const auto& k : keys) {
       const Tally t = by_slot ? tally(run, false, k) : tally(run, false, "", k);
       const Tally u = by_slot ? tally(run, true, k) : tally(run, true, "", k);
-      os << "| " << k << " | " << t.mutants << " | " << t.killed << " | " << t.equivalent << " | " << t.survived << " | "
-         << pct(t.score()) << " | " << (u.mutants ? std::to_string(u.killed) : "-") << " | "
+      os << "| " << k << " | " << t.mutants << " | " << t.killed << " | " << t.equivalent << " | " << t.survived
+         << " | " << pct(t.score()) << " | " << (u.mutants ? std::to_string(u.killed) : "-") << " | "
          << (u.mutants ? std::to_string(u.survived) : "-") << " | " << (u.mutants ? pct(u.score()) : "-") << " |\n";
     }
     os << "\n";
@@ -492,8 +509,9 @@ std::string markdown_report(const MutantsRun& run) {
   os << "\n## Equivalent mutants\n\n";
   for (const auto& r : run.results)
     if (r.equivalent)
-      os << "- `" << r.name << "`" << (r.equivalent_alone_only ? " (with the slot alone; killed in the full reference)" : "")
-         << ": " << r.equivalence_argument << "\n";
+      os << "- `" << r.name << "`"
+         << (r.equivalent_alone_only ? " (with the slot alone; killed in the full reference)" : "") << ": "
+         << r.equivalence_argument << "\n";
   if (!run.baseline_failures.empty()) {
     os << "\n## Properties failing on the reference (left out)\n\n";
     for (const auto& b : run.baseline_failures) os << "- " << b << "\n";
@@ -509,7 +527,10 @@ std::string json_report(const MutantsRun& run) {
   j["seed"] = run.options.seed;
   j["seconds"] = run.seconds;
   auto score = [](const Tally& t) {
-    return json{{"killed", t.killed}, {"equivalent", t.equivalent}, {"survived", t.survived}, {"mutants", t.mutants},
+    return json{{"killed", t.killed},
+                {"equivalent", t.equivalent},
+                {"survived", t.survived},
+                {"mutants", t.mutants},
                 {"score", t.score()}};
   };
   j["score_full"] = score(f);

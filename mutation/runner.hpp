@@ -14,15 +14,15 @@ namespace gm::mutation {
 struct MutantsOptions {
   double case_factor = 0.3;
   std::uint64_t seed = 20261123;
-  std::string slot;            // only mutants of this slot
-  std::string mutant;          // only this mutant
-  bool verbose = false;        // every property's verdict, no early stop
+  std::string slot;      // only mutants of this slot
+  std::string mutant;    // only this mutant
+  bool verbose = false;  // every property's verdict, no early stop
   int jobs = 2;
   double timeout_seconds = 900;
   double min_score = 0.98;
   std::string report_dir;
-  std::string equivalent_file; // default: spec/equivalent_mutants.json in the source tree
-  bool alone = true;           // also run the "alone" mode
+  std::string equivalent_file;  // default: spec/equivalent_mutants.json in the source tree
+  bool alone = true;            // also run the "alone" mode
   std::string front_door = "geomech";
   // The kill matrix. Every property and scalar runs on every mutant in the full
   // reference (no stop at the first kill), timed; the report gains the matrix and the quick
@@ -86,7 +86,7 @@ struct Tally {
 
 struct MutantsRun {
   std::vector<MutantResult> results;
-  std::vector<std::string> baseline_failures;  // properties failing on the reference itself (left out)
+  std::vector<std::string> baseline_failures;     // properties failing on the reference itself (left out)
   std::map<std::string, Equivalence> equivalent;  // name -> argument
   std::vector<std::string> unknown_equivalents;   // names in the file that are no mutant
   double seconds = 0;

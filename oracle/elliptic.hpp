@@ -72,13 +72,20 @@ enum class RigidBodyRegime {
 
 inline const char* regime_name(RigidBodyRegime r) {
   switch (r) {
-    case RigidBodyRegime::Rest: return "rest";
-    case RigidBodyRegime::Sphere: return "sphere";
-    case RigidBodyRegime::SymmetricTop: return "symmetric top";
-    case RigidBodyRegime::SteadyRotation: return "steady rotation";
-    case RigidBodyRegime::MajorAxis: return "rotation about the major axis";
-    case RigidBodyRegime::MinorAxis: return "rotation about the minor axis";
-    case RigidBodyRegime::Separatrix: return "separatrix";
+    case RigidBodyRegime::Rest:
+      return "rest";
+    case RigidBodyRegime::Sphere:
+      return "sphere";
+    case RigidBodyRegime::SymmetricTop:
+      return "symmetric top";
+    case RigidBodyRegime::SteadyRotation:
+      return "steady rotation";
+    case RigidBodyRegime::MajorAxis:
+      return "rotation about the major axis";
+    case RigidBodyRegime::MinorAxis:
+      return "rotation about the minor axis";
+    case RigidBodyRegime::Separatrix:
+      return "separatrix";
   }
   return "?";
 }
@@ -94,8 +101,7 @@ class FreeRigidBodySolution {
       if (!finite(I[i]) || !(I[i] > T(0)))
         throw std::invalid_argument("FreeRigidBodySolution: moment of inertia I" + std::to_string(i + 1) +
                                     " must be positive and finite");
-      if (!finite(Pi0[i]))
-        throw std::invalid_argument("FreeRigidBodySolution: Pi(0) must be finite");
+      if (!finite(Pi0[i])) throw std::invalid_argument("FreeRigidBodySolution: Pi(0) must be finite");
     }
     if (Pi0[0] == T(0) && Pi0[1] == T(0) && Pi0[2] == T(0)) {
       regime_ = RigidBodyRegime::Rest;
@@ -133,7 +139,8 @@ class FreeRigidBodySolution {
     switch (regime_) {
       case RigidBodyRegime::Rest:
       case RigidBodyRegime::Sphere:
-      case RigidBodyRegime::SteadyRotation: return Pi0_;
+      case RigidBodyRegime::SteadyRotation:
+        return Pi0_;
       case RigidBodyRegime::SymmetricTop: {
         using std::cos;
         using std::sin;
@@ -171,8 +178,8 @@ class FreeRigidBodySolution {
 
  private:
   static bool finite(const T& x) {
-    using std::isfinite;
     using boost::multiprecision::isfinite;
+    using std::isfinite;
     return isfinite(x);
   }
   static T abs_(const T& x) { return x < T(0) ? T(-x) : x; }
@@ -203,10 +210,18 @@ class FreeRigidBodySolution {
     long long m = to_integer(m_real) % 4;
     if (m < 0) m += 4;
     switch (m) {
-      case 0: sn = s, cn = c, dn = d; break;
-      case 1: sn = c / d, cn = -kc_ * s / d, dn = kc_ / d; break;
-      case 2: sn = -s, cn = -c, dn = d; break;
-      default: sn = -c / d, cn = kc_ * s / d, dn = kc_ / d; break;
+      case 0:
+        sn = s, cn = c, dn = d;
+        break;
+      case 1:
+        sn = c / d, cn = -kc_ * s / d, dn = kc_ / d;
+        break;
+      case 2:
+        sn = -s, cn = -c, dn = d;
+        break;
+      default:
+        sn = -c / d, cn = kc_ * s / d, dn = kc_ / d;
+        break;
     }
   }
 
@@ -220,9 +235,12 @@ class FreeRigidBodySolution {
     regime_ = RigidBodyRegime::SymmetricTop;
     // The two equal moments i, j and the distinct one k, with (i, j, k) cyclic.
     int i, j, k;
-    if (I_[0] == I_[1]) i = 0, j = 1, k = 2;
-    else if (I_[1] == I_[2]) i = 1, j = 2, k = 0;
-    else i = 2, j = 0, k = 1;
+    if (I_[0] == I_[1])
+      i = 0, j = 1, k = 2;
+    else if (I_[1] == I_[2])
+      i = 1, j = 2, k = 0;
+    else
+      i = 2, j = 0, k = 1;
     a_ = i;
     b_ = j;
     c_ = k;
@@ -230,9 +248,9 @@ class FreeRigidBodySolution {
   }
 
   void setup_triaxial() {
-    using std::sqrt;
-    using std::atan2;
     using std::asinh;
+    using std::atan2;
+    using std::sqrt;
     // s, m, l: smallest, middle, largest moment.
     int s = 0, l = 0;
     for (int i = 1; i < 3; ++i) {

@@ -78,11 +78,19 @@ struct Recorder {
   Tape<T>* tape = nullptr;
   int id = -1;
 
-  friend Recorder operator+(const Recorder& x, const Recorder& y) { return {x.tape, x.tape->push(Tape<T>::Op::Add, x.id, y.id)}; }
-  friend Recorder operator-(const Recorder& x, const Recorder& y) { return {x.tape, x.tape->push(Tape<T>::Op::Sub, x.id, y.id)}; }
-  friend Recorder operator*(const Recorder& x, const Recorder& y) { return {x.tape, x.tape->push(Tape<T>::Op::Mul, x.id, y.id)}; }
+  friend Recorder operator+(const Recorder& x, const Recorder& y) {
+    return {x.tape, x.tape->push(Tape<T>::Op::Add, x.id, y.id)};
+  }
+  friend Recorder operator-(const Recorder& x, const Recorder& y) {
+    return {x.tape, x.tape->push(Tape<T>::Op::Sub, x.id, y.id)};
+  }
+  friend Recorder operator*(const Recorder& x, const Recorder& y) {
+    return {x.tape, x.tape->push(Tape<T>::Op::Mul, x.id, y.id)};
+  }
   friend Recorder operator-(const Recorder& x) { return {x.tape, x.tape->push(Tape<T>::Op::Neg, x.id)}; }
-  friend Recorder operator*(const Recorder& x, const T& c) { return {x.tape, x.tape->push(Tape<T>::Op::Scale, x.id, -1, c)}; }
+  friend Recorder operator*(const Recorder& x, const T& c) {
+    return {x.tape, x.tape->push(Tape<T>::Op::Scale, x.id, -1, c)};
+  }
   friend Recorder operator*(const T& c, const Recorder& x) { return x * c; }
   Recorder& operator+=(const Recorder& y) { return *this = *this + y; }
   Recorder& operator-=(const Recorder& y) { return *this = *this - y; }
@@ -91,10 +99,10 @@ struct Recorder {
 struct TaylorStats {
   long steps = 0;
   int order = 0;
-  long mixed_steps = 0;   // steps whose higher orders were computed in double-double / double
-  long recomputed = 0;    // steps computed again because the predicted split broke the bound
-  int k1 = 0, k2 = 0;     // the last step's split: orders [k1, k2) in double-double, [k2, N] in double
-}; 
+  long mixed_steps = 0;  // steps whose higher orders were computed in double-double / double
+  long recomputed = 0;   // steps computed again because the predicted split broke the bound
+  int k1 = 0, k2 = 0;    // the last step's split: orders [k1, k2) in double-double, [k2, N] in double
+};
 
 template <class T>
 T taylor_abs(const T& x) {
@@ -106,8 +114,7 @@ class TaylorSolver {
  public:
   // `dim` state variables; `tolerance` is the local error target per step, relative to
   // max(1, |x|_inf); `order` 0 chooses N from the tolerance.
-  TaylorSolver(const Field& field, int dim, const T& tolerance, int order = 0)
-      : dim_(dim), tol_(tolerance) {
+  TaylorSolver(const Field& field, int dim, const T& tolerance, int order = 0) : dim_(dim), tol_(tolerance) {
     if (dim < 1) throw std::invalid_argument("TaylorSolver: dimension must be positive");
     if (!(tolerance > T(0))) throw std::invalid_argument("TaylorSolver: tolerance must be positive");
     if (order <= 0) {
@@ -196,8 +203,8 @@ class TaylorSolver {
       if (max_norm_ > T(0))
         for (const auto& v : x)
           if (!(taylor_abs(v) <= max_norm_))
-            throw std::runtime_error("TaylorSolver: the solution grows beyond " + text(to_d(max_norm_)) + " at t = " +
-                                     text(to_d(t)) + " (it leaves every bound: a blow-up?)");
+            throw std::runtime_error("TaylorSolver: the solution grows beyond " + text(to_d(max_norm_)) +
+                                     " at t = " + text(to_d(t)) + " (it leaves every bound: a blow-up?)");
     }
     return out;
   }
@@ -248,8 +255,8 @@ class TaylorSolver {
       throw std::invalid_argument("TaylorSolver: state has " + std::to_string(x.size()) + " components, field has " +
                                   std::to_string(dim_));
     for (const auto& v : x) {
-      using std::isfinite;
       using boost::multiprecision::isfinite;
+      using std::isfinite;
       if (!isfinite(v)) throw std::invalid_argument("TaylorSolver: non-finite initial state");
     }
   }
@@ -258,7 +265,7 @@ class TaylorSolver {
   // precise than it): T itself, double-double, double.
   static constexpr int kTdigits = std::numeric_limits<T>::digits;
   static constexpr int kTierDigits[3] = {kTdigits, kTdigits > 104 + 8 ? 104 : 0, kTdigits > 53 + 8 ? 53 : 0};
-  static constexpr int kMarginBits = 4;             // the bound is tol |x| / 16
+  static constexpr int kMarginBits = 4;  // the bound is tol |x| / 16
 
   static DoubleDouble to_dd(const T& x) {
     const double hi = to_d(x);
@@ -313,9 +320,12 @@ class TaylorSolver {
   }
   int coefficient_exponent(std::size_t n, int k) const {
     switch (tier(k)) {
-      case 0: return coef_[n][k] == T(0) ? kNone : exponent_of(coef_[n][k]);
-      case 1: return std::isfinite(dd_[n][k].hi) ? (dd_[n][k].hi == 0 ? kNone : std::ilogb(dd_[n][k].hi) + 1) : kHuge;
-      default: return std::isfinite(d_[n][k]) ? (d_[n][k] == 0 ? kNone : std::ilogb(d_[n][k]) + 1) : kHuge;
+      case 0:
+        return coef_[n][k] == T(0) ? kNone : exponent_of(coef_[n][k]);
+      case 1:
+        return std::isfinite(dd_[n][k].hi) ? (dd_[n][k].hi == 0 ? kNone : std::ilogb(dd_[n][k].hi) + 1) : kHuge;
+      default:
+        return std::isfinite(d_[n][k]) ? (d_[n][k] == 0 ? kNone : std::ilogb(d_[n][k]) + 1) : kHuge;
     }
   }
   Profile profile(const T& h) const {
@@ -325,7 +335,7 @@ class TaylorSolver {
     Profile p{std::vector<int>(order_ + 1, kNone), std::vector<int>(order_ + 1, kNone)};
     int he = 0;
     const double hm = to_d(T(frexp(h, &he)));  // h = hm * 2^he, hm in [0.5, 1)
-    double pm = 1;                              // h^k = pm * 2^pe, pm in [0.5, 1]
+    double pm = 1;                             // h^k = pm * 2^pe, pm in [0.5, 1]
     int pe = 0;
     for (int k = 0; k <= order_; ++k) {
       if (k > 0) {
@@ -382,16 +392,22 @@ class TaylorSolver {
   // Coefficient k of node n as a double or a T, read from the tier it was computed in.
   double value_d(std::size_t n, int k) const {
     switch (tier(k)) {
-      case 0: return to_d(coef_[n][k]);
-      case 1: return dd_[n][k].hi;
-      default: return d_[n][k];
+      case 0:
+        return to_d(coef_[n][k]);
+      case 1:
+        return dd_[n][k].hi;
+      default:
+        return d_[n][k];
     }
   }
   T value_T(std::size_t n, int k) const {
     switch (tier(k)) {
-      case 0: return coef_[n][k];
-      case 1: return from_dd(dd_[n][k]);
-      default: return T(d_[n][k]);
+      case 0:
+        return coef_[n][k];
+      case 1:
+        return from_dd(dd_[n][k]);
+      default:
+        return T(d_[n][k]);
     }
   }
 
@@ -432,12 +448,23 @@ class TaylorSolver {
       const auto& nd = nodes[n];
       auto& c = coef_[n];
       switch (nd.op) {
-        case Op::Var: break;
-        case Op::Const: c[k] = k == 0 ? nd.c : T(0); break;
-        case Op::Add: c[k] = coef_[nd.a][k] + coef_[nd.b][k]; break;
-        case Op::Sub: c[k] = coef_[nd.a][k] - coef_[nd.b][k]; break;
-        case Op::Neg: c[k] = -coef_[nd.a][k]; break;
-        case Op::Scale: c[k] = coef_[nd.a][k] * nd.c; break;
+        case Op::Var:
+          break;
+        case Op::Const:
+          c[k] = k == 0 ? nd.c : T(0);
+          break;
+        case Op::Add:
+          c[k] = coef_[nd.a][k] + coef_[nd.b][k];
+          break;
+        case Op::Sub:
+          c[k] = coef_[nd.a][k] - coef_[nd.b][k];
+          break;
+        case Op::Neg:
+          c[k] = -coef_[nd.a][k];
+          break;
+        case Op::Scale:
+          c[k] = coef_[nd.a][k] * nd.c;
+          break;
         case Op::Mul: {
           const auto& a = coef_[nd.a];
           const auto& b = coef_[nd.b];
@@ -464,12 +491,23 @@ class TaylorSolver {
     for (std::size_t n = 0; n < nodes.size(); ++n) {
       const auto& nd = nodes[n];
       switch (nd.op) {
-        case Op::Var: break;
-        case Op::Const: c[n][k] = S{}; break;
-        case Op::Add: c[n][k] = c[nd.a][k] + c[nd.b][k]; break;
-        case Op::Sub: c[n][k] = c[nd.a][k] - c[nd.b][k]; break;
-        case Op::Neg: c[n][k] = -c[nd.a][k]; break;
-        case Op::Scale: c[n][k] = c[nd.a][k] * factors[n]; break;
+        case Op::Var:
+          break;
+        case Op::Const:
+          c[n][k] = S{};
+          break;
+        case Op::Add:
+          c[n][k] = c[nd.a][k] + c[nd.b][k];
+          break;
+        case Op::Sub:
+          c[n][k] = c[nd.a][k] - c[nd.b][k];
+          break;
+        case Op::Neg:
+          c[n][k] = -c[nd.a][k];
+          break;
+        case Op::Scale:
+          c[n][k] = c[nd.a][k] * factors[n];
+          break;
         case Op::Mul: {
           const auto& a = c[nd.a];
           const auto& b = c[nd.b];
@@ -524,7 +562,8 @@ class TaylorSolver {
       const T nm = norm_of_order(m);
       if (nm > T(0)) log_h = std::min(log_h, (log_target - log_abs(nm)) / m);
     }
-    if (log_h == std::numeric_limits<double>::infinity()) return T(1e6);  // a polynomial solution of degree < N-1: any step is exact
+    if (log_h == std::numeric_limits<double>::infinity())
+      return T(1e6);  // a polynomial solution of degree < N-1: any step is exact
     using std::exp;
     return log_h > -700 ? T(std::exp(std::min(log_h, 700.0))) : T(exp(T(log_h)));
   }

@@ -7,18 +7,24 @@ namespace gm {
 
 const char* tolerance_name(ToleranceClass t) {
   switch (t) {
-    case ToleranceClass::Exact: return "exact";
-    case ToleranceClass::Roundoff: return "roundoff";
-    case ToleranceClass::Truncation: return "truncation";
+    case ToleranceClass::Exact:
+      return "exact";
+    case ToleranceClass::Roundoff:
+      return "roundoff";
+    case ToleranceClass::Truncation:
+      return "truncation";
   }
   return "?";
 }
 
 bool Property::runs_in(ScalarKind k) const {
   switch (k) {
-    case ScalarKind::Double: return static_cast<bool>(d) || static_cast<bool>(int_d);
-    case ScalarKind::MP50: return static_cast<bool>(mp) || static_cast<bool>(int_mp);
-    case ScalarKind::Exact: return static_cast<bool>(q);
+    case ScalarKind::Double:
+      return static_cast<bool>(d) || static_cast<bool>(int_d);
+    case ScalarKind::MP50:
+      return static_cast<bool>(mp) || static_cast<bool>(int_mp);
+    case ScalarKind::Exact:
+      return static_cast<bool>(q);
   }
   return false;
 }
@@ -45,8 +51,8 @@ void register_property(Property p) {
   auto& r = mutable_registry();
   for (const auto& q : r)
     if (q.id == p.id) throw std::logic_error("property id registered twice: " + p.id);
-  auto pos = std::lower_bound(r.begin(), r.end(), p.id,
-                              [](const Property& a, const std::string& id) { return a.id < id; });
+  auto pos =
+      std::lower_bound(r.begin(), r.end(), p.id, [](const Property& a, const std::string& id) { return a.id < id; });
   r.insert(pos, std::move(p));
 }
 
@@ -60,13 +66,20 @@ const Property* find_property(std::string_view id) {
 
 const char* step_name(StepKind k) {
   switch (k) {
-    case StepKind::RigidBody: return "rigid_body_step";
-    case StepKind::RigidBodyMatrix: return "rigid_body_step keeping its attitude as a matrix";
-    case StepKind::RigidBodyQuaternion: return "rigid_body_step keeping its attitude as a quaternion";
-    case StepKind::Manakov: return "manakov_step";
-    case StepKind::Clebsch: return "clebsch_step";
-    case StepKind::ManakovClebsch: return "manakov_clebsch_step";
-    case StepKind::None: break;
+    case StepKind::RigidBody:
+      return "rigid_body_step";
+    case StepKind::RigidBodyMatrix:
+      return "rigid_body_step keeping its attitude as a matrix";
+    case StepKind::RigidBodyQuaternion:
+      return "rigid_body_step keeping its attitude as a quaternion";
+    case StepKind::Manakov:
+      return "manakov_step";
+    case StepKind::Clebsch:
+      return "clebsch_step";
+    case StepKind::ManakovClebsch:
+      return "manakov_clebsch_step";
+    case StepKind::None:
+      break;
   }
   return "step";
 }

@@ -37,13 +37,20 @@ enum class StepKind { None, RigidBody, Manakov, Clebsch, ManakovClebsch, RigidBo
 template <class I>
 bool has_step_kind(const I& i, StepKind k) {
   switch (k) {
-    case StepKind::RigidBody: return static_cast<bool>(i.rigid_body_step);
-    case StepKind::RigidBodyMatrix: return i.rigid_body_step && !i.form.has_quaternion();
-    case StepKind::RigidBodyQuaternion: return i.declared_step && i.form.has_quaternion();
-    case StepKind::Manakov: return static_cast<bool>(i.manakov_step);
-    case StepKind::Clebsch: return static_cast<bool>(i.clebsch_step);
-    case StepKind::ManakovClebsch: return static_cast<bool>(i.manakov_clebsch_step);
-    case StepKind::None: break;
+    case StepKind::RigidBody:
+      return static_cast<bool>(i.rigid_body_step);
+    case StepKind::RigidBodyMatrix:
+      return i.rigid_body_step && !i.form.has_quaternion();
+    case StepKind::RigidBodyQuaternion:
+      return i.declared_step && i.form.has_quaternion();
+    case StepKind::Manakov:
+      return static_cast<bool>(i.manakov_step);
+    case StepKind::Clebsch:
+      return static_cast<bool>(i.clebsch_step);
+    case StepKind::ManakovClebsch:
+      return static_cast<bool>(i.manakov_clebsch_step);
+    case StepKind::None:
+      break;
   }
   return true;
 }
@@ -68,15 +75,15 @@ struct Cases {
 };
 
 struct PropertyDef {
-  std::string id;                              // stable, snake_case: the test name
-  std::string spec;                            // catalogue entry id
-  std::string title;                           // the statement being checked, one line
+  std::string id;     // stable, snake_case: the test name
+  std::string spec;   // catalogue entry id
+  std::string title;  // the statement being checked, one line
   ToleranceClass tolerance = ToleranceClass::Exact;
   std::vector<std::string> needs;              // subject slots used
   std::vector<std::string> negative_controls;  // mutant names that must fail this property
   Cases cases{};
-  Scope scope = Scope::Subject;                // set by the registration tag
-  StepKind step = StepKind::None;              // Integrator scope: the step function it drives
+  Scope scope = Scope::Subject;    // set by the registration tag
+  StepKind step = StepKind::None;  // Integrator scope: the step function it drives
   // Integrator scope: the claims this property decides ("order", "casimir", ...; the
   // names of IntegratorClaims). A claim is verified only when every property that judges it ran all
   // its cases and passed (harness/engine/integrator_verdicts.hpp).
@@ -107,9 +114,9 @@ struct Property : PropertyDef {
 const std::vector<Property>& properties();
 const Property* find_property(std::string_view id);
 
-struct AllScalars {};         // double, Real50 and Rational
-struct FloatScalars {};       // double and Real50
-struct IntegratorScalars {};  // double and Real50, once per integrator of the subject
+struct AllScalars {};             // double, Real50 and Rational
+struct FloatScalars {};           // double and Real50
+struct IntegratorScalars {};      // double and Real50, once per integrator of the subject
 struct IntegratorMp50Scalars {};  // Real50 only (a check only 50 digits can make: the 50-digit floor)
 inline constexpr AllScalars all_scalars{};
 inline constexpr FloatScalars float_scalars{};
@@ -165,7 +172,8 @@ struct Registrar {
 // GM_PROPERTY(fn, all_scalars | float_scalars | integrator_scalars, {.id = ..., ...}):
 // registers the function template `fn`, taking (const Subject<T>&), or for integrator_scalars
 // (const Subject<T>&, const Integrator<T>&, const IntegratorClaims&).
-#define GM_PROPERTY(fn, scalars, ...)                                                          \
-  static const ::gm::Registrar GM_PROPERTY_CONCAT(gm_property_registrar_, fn){               \
-      ::gm::scalars, ::gm::registered_in(::gm::PropertyDef __VA_ARGS__, __FILE__),              \
-      [](const auto&... args) { fn(args...); }}
+#define GM_PROPERTY(fn, scalars, ...)                                            \
+  static const ::gm::Registrar GM_PROPERTY_CONCAT(gm_property_registrar_, fn) {  \
+    ::gm::scalars, ::gm::registered_in(::gm::PropertyDef __VA_ARGS__, __FILE__), \
+        [](const auto&... args) { fn(args...); }                                 \
+  }

@@ -46,7 +46,8 @@ std::string discard_reason(const std::string& text) {
   while (!rest.empty() && rest.back() == '\n') rest.pop_back();
   if (rest.rfind("Expands to:", 0) == 0 || rest.empty()) {
     std::string condition = macro;
-    if (condition.rfind("RC_PRE(", 0) == 0 && condition.back() == ')') condition = condition.substr(7, condition.size() - 8);
+    if (condition.rfind("RC_PRE(", 0) == 0 && condition.back() == ')')
+      condition = condition.substr(7, condition.size() - 8);
     return "the precondition " + condition + " does not hold";
   }
   return rest;
@@ -69,8 +70,11 @@ constexpr const char* kShrinkStopped = "geomech: shrinking stopped by its time b
 class SilentListener : public rc::detail::TestListener {
  public:
   SilentListener(Clock::time_point start, const RunOptions& o, int planned)
-      : start_(start), cpu_start_(code_cpu_seconds()), case_budget_(o.case_budget_seconds),
-        shrink_budget_(o.shrink_budget_seconds), planned_(planned) {}
+      : start_(start),
+        cpu_start_(code_cpu_seconds()),
+        case_budget_(o.case_budget_seconds),
+        shrink_budget_(o.shrink_budget_seconds),
+        planned_(planned) {}
 
   int discarded = 0;
   std::string first_reason;
@@ -104,7 +108,9 @@ class SilentListener : public rc::detail::TestListener {
 
   // During shrinking: whether the shrink budget is spent (each further candidate is then discarded
   // before it runs, so shrinking ends quickly with the smallest failure found).
-  bool shrink_budget_spent() const { return failed && shrink_budget_ > 0 && code_cpu_seconds() - failure_cpu_ > shrink_budget_; }
+  bool shrink_budget_spent() const {
+    return failed && shrink_budget_ > 0 && code_cpu_seconds() - failure_cpu_ > shrink_budget_;
+  }
 
  private:
   static double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
@@ -168,7 +174,8 @@ std::string in_language(const std::string& shown) {
   if (std::regex_match(shown, m, typed)) {
     const std::string kind = m[1], dims = m[2], S = scalar(m[3]);
     if (style == ShowStyle::Octave)
-      return kind == "Vec" ? (dims == "X" ? "column vector" : dims + "x1 column vector") : (dims == "XxX" ? "matrix" : dims + " matrix");
+      return kind == "Vec" ? (dims == "X" ? "column vector" : dims + "x1 column vector")
+                           : (dims == "XxX" ? "matrix" : dims + " matrix");
     return kind == "Vec" ? (dims == "X" ? "list of " : dims + "-list of ") + S
                          : (dims == "XxX" ? "list of rows of " : dims + " list of rows of ") + S;
   }
@@ -240,9 +247,7 @@ bool counterexample_by_name(const Verdict& v) {
   return true;
 }
 
-bool inputs_in_message(const Verdict& v) {
-  return v.message.find("inputs, by the notes' names:") != std::string::npos;
-}
+bool inputs_in_message(const Verdict& v) { return v.message.find("inputs, by the notes' names:") != std::string::npos; }
 
 std::string counterexample_heading(const Verdict& v) {
   std::string h = v.shrink_stopped ? "counterexample (shrinking stopped by its time budget; not minimal)"
@@ -254,9 +259,12 @@ namespace {
 
 int default_cases(const Property& p, ScalarKind k) {
   switch (k) {
-    case ScalarKind::Double: return p.cases.d;
-    case ScalarKind::MP50: return p.cases.mp;
-    case ScalarKind::Exact: return p.cases.q;
+    case ScalarKind::Double:
+      return p.cases.d;
+    case ScalarKind::MP50:
+      return p.cases.mp;
+    case ScalarKind::Exact:
+      return p.cases.q;
   }
   return 1;
 }
@@ -308,25 +316,25 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
   int budget_passed = -1;  // >= 0: the case budget stopped the run after this many passing cases
   auto attempt = [&](const std::unordered_map<std::string, rc::detail::Reproduce>& with) {
     try {
-      result = rc::detail::checkProperty(
-          rc::detail::toProperty([&] {
-            if (listener.shrink_budget_spent()) RC_DISCARD(kShrinkStopped);
-            recorded_series().clear();
-            recorded_notes().clear();
-            current_step_raise().reset();
-            quaternion_sign_given() = 1;  // an attitude regime of this case may draw the other sign
-            try {
-              fn();
-            } catch (const SlotMissing& e) {
-              missing_slot = e.slot();
-              throw;
-            } catch (const OutsideDomain& e) {
-              // A state or step outside the integrator's declared domain: not checked.
-              current_step_raise().reset();
-              RC_DISCARD(e.what());
-            }
-          }),
-          metadata, params, listener, with);
+      result = rc::detail::checkProperty(rc::detail::toProperty([&] {
+                                           if (listener.shrink_budget_spent()) RC_DISCARD(kShrinkStopped);
+                                           recorded_series().clear();
+                                           recorded_notes().clear();
+                                           current_step_raise().reset();
+                                           quaternion_sign_given() =
+                                               1;  // an attitude regime of this case may draw the other sign
+                                           try {
+                                             fn();
+                                           } catch (const SlotMissing& e) {
+                                             missing_slot = e.slot();
+                                             throw;
+                                           } catch (const OutsideDomain& e) {
+                                             // A state or step outside the integrator's declared domain: not checked.
+                                             current_step_raise().reset();
+                                             RC_DISCARD(e.what());
+                                           }
+                                         }),
+                                         metadata, params, listener, with);
     } catch (const CaseBudgetSpent& b) {
       budget_passed = b.passed;
     }
@@ -381,7 +389,8 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
                     " earlier cases of this check, not alone: the case replayed by itself passes, so the "
                     "implementation keeps state between calls (a cache, a global, a default argument changed in "
                     "place) and a later call sees what an earlier one left. The whole sequence replays with "
-                    "--seed instead of --reproduce.\n" + failure.description;
+                    "--seed instead of --reproduce.\n" +
+                    failure.description;
       auto example = failure.counterExample;
       if (listener.failed && failure.description.find(kShrinkStopped) != std::string::npos) {
         // The final run of the smallest case was discarded by the shrink budget: that case failed
@@ -503,7 +512,8 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
       }
       char range[160];
       std::snprintf(range, sizeof range, "|Omega| <= %.3g and |Pi| <= %.3g", inside.max_omega, inside.max_pi);
-      const std::string raised = "your step raised at " + v.step_raised_where + ": " + v.step_raised.substr(0, v.step_raised.find('\n'));
+      const std::string raised =
+          "your step raised at " + v.step_raised_where + ": " + v.step_raised.substr(0, v.step_raised.find('\n'));
       if (again.step_raised.empty() && again.outcome == Outcome::Fail) {
         again.message = raised + "; run again inside " + range +
                         " (where it works; declare a domain to set it), the check fails there too:\n" + again.message;
@@ -524,8 +534,7 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
     }
     // The step raised in the case reported: a claimed property FAILS (its claim could not be
     // verified); one that judges only claims nobody made, or none, could measure nothing and says so.
-    if (v.outcome == Outcome::Fail && !v.step_raised.empty() &&
-        !claims_any(claims ? *claims : none, p.judges)) {
+    if (v.outcome == Outcome::Fail && !v.step_raised.empty() && !claims_any(claims ? *claims : none, p.judges)) {
       // Cases that ran to their end before the raise keep what they measured: said, not "nothing".
       std::string before;
       for (const auto& f : v.claims)
@@ -593,9 +602,15 @@ std::vector<Verdict> run_property(const Property& p, const SubjectSet& s, Scalar
   const double self_before = self_cpu(), code_before = code_cpu_seconds();
   std::vector<Verdict> out;
   switch (k) {
-    case ScalarKind::Double: out = run_in<double>(p, s, k, o, &p.d, &p.int_d); break;
-    case ScalarKind::MP50: out = run_in<Real50>(p, s, k, o, &p.mp, &p.int_mp); break;
-    case ScalarKind::Exact: out = run_in<Rational>(p, s, k, o, &p.q, nullptr); break;
+    case ScalarKind::Double:
+      out = run_in<double>(p, s, k, o, &p.d, &p.int_d);
+      break;
+    case ScalarKind::MP50:
+      out = run_in<Real50>(p, s, k, o, &p.mp, &p.int_mp);
+      break;
+    case ScalarKind::Exact:
+      out = run_in<Rational>(p, s, k, o, &p.q, nullptr);
+      break;
   }
   // Where the time went, shared evenly among the verdicts of one run (one per integrator).
   const ProtocolCounts& after = protocol_counts();
@@ -625,8 +640,8 @@ bool is_reproduce_string(const std::string& text, std::string* why) {
 
 std::string reproduce_command(const Verdict& v) {
   std::ostringstream os;
-  os << "build/bin/geomech check --subject " << v.subject << " --property " << v.property << " --scalar "
-     << v.scalar << " --reproduce '" << v.reproduce << "'";
+  os << "build/bin/geomech check --subject " << v.subject << " --property " << v.property << " --scalar " << v.scalar
+     << " --reproduce '" << v.reproduce << "'";
   return os.str();
 }
 

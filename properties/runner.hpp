@@ -16,10 +16,10 @@
 namespace gm {
 
 struct RunOptions {
-  std::uint64_t seed = 0;     // base seed; each (property, scalar) derives its own from it
-  int cases = 0;              // 0: the property's default for the scalar
-  double case_factor = 1.0;   // multiplies the default case counts
-  std::string reproduce;      // RapidCheck reproduce string (the value after "reproduce=")
+  std::uint64_t seed = 0;        // base seed; each (property, scalar) derives its own from it
+  int cases = 0;                 // 0: the property's default for the scalar
+  double case_factor = 1.0;      // multiplies the default case counts
+  std::string reproduce;         // RapidCheck reproduce string (the value after "reproduce=")
   bool honour_rc_params = true;  // read seed / max_success / reproduce from $RC_PARAMS
   bool shrink = true;            // shrink a failure to a small case (a negative control only needs the failure)
   // Time budgets, so that a correct but slow implementation (Python in 50 digits, a solve redone

@@ -4,13 +4,20 @@ namespace gm {
 
 const char* outcome_name(Outcome o) {
   switch (o) {
-    case Outcome::Pass: return "PASS";
-    case Outcome::Fail: return "FAIL";
-    case Outcome::NotProvided: return "NOT PROVIDED";
-    case Outcome::Crash: return "CRASH";
-    case Outcome::Timeout: return "TIMEOUT";
-    case Outcome::Error: return "ERROR";
-    case Outcome::NotCharacterised: return "NOT CHARACTERISED";
+    case Outcome::Pass:
+      return "PASS";
+    case Outcome::Fail:
+      return "FAIL";
+    case Outcome::NotProvided:
+      return "NOT PROVIDED";
+    case Outcome::Crash:
+      return "CRASH";
+    case Outcome::Timeout:
+      return "TIMEOUT";
+    case Outcome::Error:
+      return "ERROR";
+    case Outcome::NotCharacterised:
+      return "NOT CHARACTERISED";
   }
   return "?";
 }

@@ -35,18 +35,18 @@ struct Verdict {
   std::string spec;
   std::string title;
   std::string scalar;
-  std::string integrator;     // for integrator-scoped properties
+  std::string integrator;  // for integrator-scoped properties
   Outcome outcome = Outcome::Error;
   std::string message;
   std::vector<std::pair<std::string, std::string>> counterexample;  // (type, value)
-  std::string reproduce;      // value for RC_PARAMS="reproduce=..."
+  std::string reproduce;                                            // value for RC_PARAMS="reproduce=..."
   std::uint64_t seed = 0;
-  int cases = 0;              // cases that passed before the verdict
-  int cases_planned = 0;      // the cases the run asked for; more than `cases` on a PASS when the case budget was spent
+  int cases = 0;          // cases that passed before the verdict
+  int cases_planned = 0;  // the cases the run asked for; more than `cases` on a PASS when the case budget was spent
   bool shrink_stopped = false;  // FAIL: shrinking was stopped by its time budget (the counterexample is not minimal)
-  int discarded = 0;          // cases RapidCheck discarded (RC_DISCARD, RC_PRE): they checked nothing
-  std::string discard_reason; // the first discarded case's reason
-  double worst_eps_units = 0; // worst residual / (eps * scale)
+  int discarded = 0;            // cases RapidCheck discarded (RC_DISCARD, RC_PRE): they checked nothing
+  std::string discard_reason;   // the first discarded case's reason
+  double worst_eps_units = 0;   // worst residual / (eps * scale)
   double worst_absolute = 0;
   std::string worst_check;
   long checks = 0;
@@ -55,8 +55,8 @@ struct Verdict {
   // the code under test (an implementation behind the protocol: its server's) and of the suite.
   ProtocolCounts protocol;
   double code_cpu_seconds = 0, suite_cpu_seconds = 0;
-  std::vector<Series> series; // data for pictures, from the last case run
-  std::vector<std::string> notes;  // remarks from the last case run (e.g. an unclaimed invariant that holds)
+  std::vector<Series> series;        // data for pictures, from the last case run
+  std::vector<std::string> notes;    // remarks from the last case run (e.g. an unclaimed invariant that holds)
   std::vector<ClaimFinding> claims;  // integrator properties: what they found about each claim
   // Integrator properties: the step raised in the case this verdict reports: its message
   // and where it was called; empty otherwise.
@@ -73,7 +73,7 @@ struct Verdict {
   // condition changes (DESIGN.md, "A cause is an experiment").
   std::string machine_fault;
 
-  std::string key() const;    // subject/property/scalar[/integrator]: RapidCheck's test id
+  std::string key() const;  // subject/property/scalar[/integrator]: RapidCheck's test id
 };
 
 }  // namespace gm

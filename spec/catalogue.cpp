@@ -12,7 +12,6 @@
 #include <sstream>
 #include <stdexcept>
 
-
 namespace gm {
 
 using nlohmann::json;
@@ -58,7 +57,8 @@ Catalogue load_catalogue(const std::string& path) {
   if (!j.is_object() || j.value("format", "") != "geomech-spec-catalogue 1")
     throw std::runtime_error(path + ": expected an object with \"format\": \"geomech-spec-catalogue 1\"");
   c.source = req_string(j, "source", path);
-  if (!j.contains("entries") || !j["entries"].is_array()) throw std::runtime_error(path + ": missing \"entries\" array");
+  if (!j.contains("entries") || !j["entries"].is_array())
+    throw std::runtime_error(path + ": missing \"entries\" array");
   std::set<std::string> ids;
   int index = 0;
   for (const auto& je : j["entries"]) {
@@ -113,13 +113,11 @@ std::vector<std::string> traceability_problems(const Catalogue& c, const std::ve
 
   // The notes: each entry's anchor text must be on its line.
   // `source` is relative to the project root, the directory holding spec/.
-  const auto notes_path =
-      (std::filesystem::absolute(c.path).parent_path().parent_path() / c.source).lexically_normal();
+  const auto notes_path = (std::filesystem::absolute(c.path).parent_path().parent_path() / c.source).lexically_normal();
   std::vector<std::string> lines;
   {
     std::ifstream in(notes_path);
-    if (!in)
-      problem("cannot read the notes at " + notes_path.string() + " to check the entries' places");
+    if (!in) problem("cannot read the notes at " + notes_path.string() + " to check the entries' places");
     for (std::string l; std::getline(in, l);) lines.push_back(l);
   }
   for (const auto& e : c.entries) {
@@ -148,8 +146,8 @@ std::vector<std::string> traceability_problems(const Catalogue& c, const std::ve
             problem(e.id + ": erratum evidence property '" + p->id + "' names entry '" + p->spec + "' instead");
           if (std::find(p->negative_controls.begin(), p->negative_controls.end(), e.erratum->literal_variant) ==
               p->negative_controls.end())
-            problem(e.id + ": the literal variant '" + e.erratum->literal_variant +
-                    "' is not a negative control of '" + p->id + "', so no test shows the literal statement failing");
+            problem(e.id + ": the literal variant '" + e.erratum->literal_variant + "' is not a negative control of '" +
+                    p->id + "', so no test shows the literal statement failing");
         }
       }
     } else {
@@ -159,11 +157,13 @@ std::vector<std::string> traceability_problems(const Catalogue& c, const std::ve
   std::set<std::string> mutants;
   if (mutant_names) mutants.insert(mutant_names->begin(), mutant_names->end());
   for (const auto& p : props) {
-    if (!c.find(p.spec)) problem("property '" + p.id + "' names spec entry '" + p.spec + "', which is not in the catalogue");
+    if (!c.find(p.spec))
+      problem("property '" + p.id + "' names spec entry '" + p.spec + "', which is not in the catalogue");
     if (p.negative_controls.empty()) problem("property '" + p.id + "' has no negative control");
     if (mutant_names)
       for (const auto& m : p.negative_controls)
-        if (!mutants.count(m)) problem("property '" + p.id + "': negative control '" + m + "' is not a registered mutant");
+        if (!mutants.count(m))
+          problem("property '" + p.id + "': negative control '" + m + "' is not a registered mutant");
     for (const auto& n : p.needs)
       if (!is_slot_name(n)) problem("property '" + p.id + "' needs '" + n + "', which is not a subject slot");
     if (p.title.empty()) problem("property '" + p.id + "' has no title");
@@ -184,10 +184,15 @@ namespace {
 std::string md_escape(const std::string& s) {
   std::string out;
   for (char ch : s) {
-    if (ch == '|') out += "\\|";
-    else if (ch == '\n') out += ' ';
-    else if (ch == '*' || ch == '_') { out += '\\'; out += ch; }
-    else out += ch;
+    if (ch == '|')
+      out += "\\|";
+    else if (ch == '\n')
+      out += ' ';
+    else if (ch == '*' || ch == '_') {
+      out += '\\';
+      out += ch;
+    } else
+      out += ch;
   }
   return out;
 }
@@ -210,13 +215,12 @@ std::string catalogue_markdown(const Catalogue& c, const std::vector<Property>& 
      << "Generated from `spec/catalogue.json` and the property registry by `build/bin/geomech catalogue "
         "--markdown`; do not edit by hand (a test fails when this file is stale).\n\n"
      << c.entries.size() << " entries: " << by_status["checked"] << " checked, " << by_status["erratum"]
-     << " erratum (the corrected statement is checked), " << by_status["pending"] << " pending; "
-     << props.size() << " properties.\n\n"
+     << " erratum (the corrected statement is checked), " << by_status["pending"] << " pending; " << props.size()
+     << " properties.\n\n"
      << "| entry | place in the notes | kind | status | properties (tolerance class; scalars; file) |\n"
      << "|---|---|---|---|---|\n";
   for (const auto& e : c.entries) {
-    os << "| `" << e.id << "` | " << md_escape(e.place) << " (line " << e.line << ") | " << e.kind << " | "
-       << e.status;
+    os << "| `" << e.id << "` | " << md_escape(e.place) << " (line " << e.line << ") | " << e.kind << " | " << e.status;
     if (e.status == "pending" && e.issue) os << " (issue " << *e.issue << ")";
     os << " | ";
     bool first = true;

@@ -20,7 +20,8 @@ using V3 = std::array<T, 3>;
 // Largest difference between the elliptic solution and the Taylor oracle (tolerance `tol` per
 // step) at 40 times in (0, t_end].
 template <class T>
-T worst_difference(const V3<T>& I, const V3<T>& P, const T& t_end, const T& tol, oracle::RigidBodyRegime* regime = nullptr) {
+T worst_difference(const V3<T>& I, const V3<T>& P, const T& t_end, const T& tol,
+                   oracle::RigidBodyRegime* regime = nullptr) {
   const oracle::FreeRigidBodySolution<T> sol(I, P);
   if (regime) *regime = sol.regime();
   oracle::FreeRigidBodyField<T> f(I[0], I[1], I[2]);
@@ -49,8 +50,10 @@ struct Case {
 const std::vector<Case>& cases() {
   using R = oracle::RigidBodyRegime;
   static const std::vector<Case> c = {
-      {"the notes' body, minor axis", {"2", "1", "0.6666666666666666666666666666666666666666666666666666666667"},
-       {"0.4535961214255773", "0", "0.8912073600614354"}, R::MinorAxis},
+      {"the notes' body, minor axis",
+       {"2", "1", "0.6666666666666666666666666666666666666666666666666666666667"},
+       {"0.4535961214255773", "0", "0.8912073600614354"},
+       R::MinorAxis},
       {"major axis, sorted moments", {"1", "2", "3"}, {"0.3", "-0.5", "0.9"}, R::MajorAxis},
       {"major axis, permuted moments, negative Pi_c", {"3", "1", "2"}, {"-0.9", "0.5", "0.3"}, R::MajorAxis},
       {"minor axis, sorted moments", {"1", "2", "3"}, {"0.9", "0.5", "-0.3"}, R::MinorAxis},
@@ -78,7 +81,8 @@ V3<T> parse(const V3<const char*>& s) {
 TEST(EllipticSolution, AgreesWithTaylorTo1e45In50DigitsOverT20InEveryRegime) {
   for (const auto& c : cases()) {
     oracle::RigidBodyRegime regime;
-    const Real50 d = worst_difference<Real50>(parse<Real50>(c.I), parse<Real50>(c.P), Real50(20), Real50("1e-49"), &regime);
+    const Real50 d =
+        worst_difference<Real50>(parse<Real50>(c.I), parse<Real50>(c.P), Real50(20), Real50("1e-49"), &regime);
     EXPECT_EQ(regime, c.regime) << c.what << ": regime " << oracle::regime_name(regime);
     EXPECT_LT(d, Real50("1e-45")) << c.what << ": " << to_string_full(d);
   }
@@ -94,8 +98,8 @@ TEST(EllipticSolution, AgreesWithTaylorInDouble) {
 }
 
 TEST(EllipticSolution, AgreesWithTaylorIn70Digits) {
-  const Real70 d = worst_difference<Real70>({Real70(1), Real70(2), Real70(3)}, {Real70("0.3"), Real70("-0.5"), Real70("0.9")},
-                                            Real70(10), Real70("1e-68"));
+  const Real70 d = worst_difference<Real70>(
+      {Real70(1), Real70(2), Real70(3)}, {Real70("0.3"), Real70("-0.5"), Real70("0.9")}, Real70(10), Real70("1e-68"));
   EXPECT_LT(d, Real70("1e-64")) << to_string_full(d);
 }
 
@@ -112,7 +116,8 @@ TEST(EllipticSolution, KeepsTheInvariantsIn50Digits) {
 }
 
 TEST(EllipticSolution, IsPeriodic) {
-  const oracle::FreeRigidBodySolution<Real50> sol({Real50(1), Real50(2), Real50(3)}, {Real50("0.3"), Real50("-0.5"), Real50("0.9")});
+  const oracle::FreeRigidBodySolution<Real50> sol({Real50(1), Real50(2), Real50(3)},
+                                                  {Real50("0.3"), Real50("-0.5"), Real50("0.9")});
   const Real50 T = sol.period();
   ASSERT_GT(T, Real50(0));
   const auto p0 = sol(Real50("0.7")), p1 = sol(Real50("0.7") + T), p2 = sol(Real50("0.7") - 3 * T);

@@ -59,7 +59,7 @@ struct Example {
   // wrong comes first); empty: not asserted.
   std::string first_fix = {};
   std::vector<std::string> report_says = {};  // lines report.md must contain
-  int exit_code = -1;                          // expected exit status when not 0/1 by the verdicts
+  int exit_code = -1;                         // expected exit status when not 0/1 by the verdicts
 };
 
 const std::vector<std::string> all3 = {"double", "mp50", "exact"};
@@ -77,7 +77,8 @@ const std::vector<Example>& examples() {
        {}},
       {"bug_euler_sign",
        "Euler's equations with the cross product reversed",
-       {{"definition_euler_3_8", all3, "FAIL", "slot euler_3_8: dPi/dt = Pi x I^-1 Pi, (3.8) does not hold"}, {"euler_form_3_8", all3, "FAIL", "euler_3_8(I, I Omega) = componentwise (2.1) does not hold"},
+       {{"definition_euler_3_8", all3, "FAIL", "slot euler_3_8: dPi/dt = Pi x I^-1 Pi, (3.8) does not hold"},
+        {"euler_form_3_8", all3, "FAIL", "euler_3_8(I, I Omega) = componentwise (2.1) does not hold"},
         {"euler_flow_is_elliptic_solution", {"double", "mp50"}, "FAIL", "= elliptic solution"}},
        {},
        false,
@@ -85,7 +86,9 @@ const std::vector<Example>& examples() {
        "slot `euler_3_8` is wrong"},
       {"bug_hat_transposed",
        "the transposed hat convention",
-       {{"definition_hat", all3, "FAIL", "slot hat: hat(v) = (-v_i eps_ijk), (2.11) does not hold"}, {"definition_vee", all3, "FAIL", "slot vee: vee(S) = (S_32, S_13, S_21) for skew S, (2.11) does not hold"}, {"hat_is_cross_product", all3, "FAIL", "does not hold"},
+       {{"definition_hat", all3, "FAIL", "slot hat: hat(v) = (-v_i eps_ijk), (2.11) does not hold"},
+        {"definition_vee", all3, "FAIL", "slot vee: vee(S) = (S_32, S_13, S_21) for skew S, (2.11) does not hold"},
+        {"hat_is_cross_product", all3, "FAIL", "does not hold"},
         {"hat_is_lie_algebra_isomorphism", all3, "FAIL", "[hat(a), hat(b)] = hat(a x b) does not hold"},
         {"restricted_variation_2_8", all3, "FAIL", "dOmega/ds - dXi/dt = Omega x Xi does not hold"}},
        {},
@@ -94,14 +97,18 @@ const std::vector<Example>& examples() {
        "slot `hat` is wrong"},
       {"bug_reconstruction",
        "reconstruction as dO/dt = hat(Omega) O",
-       {{"definition_reconstruction_2_10", all3, "FAIL", "slot reconstruction_2_10: dO/dt = O Omega_hat, (2.10) does not hold"}, {"reconstruction_is_left_invariant", all3, "FAIL", "(left-invariant) does not hold"}},
+       {{"definition_reconstruction_2_10", all3, "FAIL",
+         "slot reconstruction_2_10: dO/dt = O Omega_hat, (2.10) does not hold"},
+        {"reconstruction_is_left_invariant", all3, "FAIL", "(left-invariant) does not hold"}},
        {},
        false,
        {},
        "slot `reconstruction_2_10` is wrong"},
       {"bug_pairing_half",
        "the factor 1/2 of the trace pairing lost",
-       {{"definition_pairing", all3, "FAIL", "slot pairing: <A, B> = tr(A^T B)/2, (2.15) does not hold"}, {"definition_lagrangian_2_13", all3, "FAIL", "slot lagrangian_2_13"}, {"trace_pairing_is_dot_product", all3, "FAIL", "<hat(a), hat(b)> = a . b does not hold"},
+       {{"definition_pairing", all3, "FAIL", "slot pairing: <A, B> = tr(A^T B)/2, (2.15) does not hold"},
+        {"definition_lagrangian_2_13", all3, "FAIL", "slot lagrangian_2_13"},
+        {"trace_pairing_is_dot_product", all3, "FAIL", "<hat(a), hat(b)> = a . b does not hold"},
         {"lagrangian_2_13_is_kinetic_energy", all3, "FAIL", "does not hold"},
         {"symmetric_part_does_not_pair", all3, "FAIL", "<Pi_skew, Omega_hat> = vee(Pi_skew) . Omega does not hold"}},
        {},
@@ -110,14 +117,17 @@ const std::vector<Example>& examples() {
        "slot `pairing` is wrong"},
       {"bug_manakov_omega",
        "Manakov's Omega recovered as A^-1 M / 2",
-       {{"definition_manakov_Omega", all3, "FAIL", "slot manakov_Omega: A Omega + Omega A = M, (2.34)"}, {"manakov_omega_solves_2_34", all3, "FAIL", "A Omega + Omega A = M for Omega = manakov_Omega(A, M) does not hold"}},
+       {{"definition_manakov_Omega", all3, "FAIL", "slot manakov_Omega: A Omega + Omega A = M, (2.34)"},
+        {"manakov_omega_solves_2_34", all3, "FAIL",
+         "A Omega + Omega A = M for Omega = manakov_Omega(A, M) does not hold"}},
        {},
        false,
        {},
        "slot `manakov_Omega` is wrong"},
       {"bug_hamiltonian_inertia",
        "the Hamiltonian with I instead of I^-1",
-       {{"definition_hamiltonian_3_4", all3, "FAIL", "slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4) does not hold"}, {"hamiltonian_3_3_is_3_4", all3, "FAIL", "does not hold"},
+       {{"definition_hamiltonian_3_4", all3, "FAIL", "slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4) does not hold"},
+        {"hamiltonian_3_3_is_3_4", all3, "FAIL", "does not hold"},
         {"hamiltonian_gradient_3_5", all3, "FAIL", "does not hold"}},
        {},
        false,
@@ -125,14 +135,17 @@ const std::vector<Example>& examples() {
        "slot `hamiltonian_3_4` is wrong"},
       {"bug_euler_no_division",
        "(2.1) without the division by I",
-       {{"definition_euler_2_1", all3, "FAIL", "slot euler_2_1: dOmega/dt = I^-1 (I Omega x Omega), (2.1) does not hold"}, {"euler_form_2_1", all3, "FAIL", "I * euler_2_1(I, Omega) = componentwise (2.1) does not hold"}},
+       {{"definition_euler_2_1", all3, "FAIL",
+         "slot euler_2_1: dOmega/dt = I^-1 (I Omega x Omega), (2.1) does not hold"},
+        {"euler_form_2_1", all3, "FAIL", "I * euler_2_1(I, Omega) = componentwise (2.1) does not hold"}},
        {},
        false,
        {},
        "slot `euler_2_1` is wrong"},
       {"bug_crash",
        "an out-of-range index (the process aborts)",
-       {{"definition_vee", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"}, {"vee_inverts_hat", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"},
+       {{"definition_vee", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"},
+        {"vee_inverts_hat", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"},
         {"restricted_variation_2_8", all3, "CRASH", "Assertion `index >= 0 && index < size()' failed"}},
        {},
        false,
@@ -140,14 +153,16 @@ const std::vector<Example>& examples() {
        "slot `vee` is wrong"},
       {"bug_hang",
        "an iteration that never ends",
-       {{"definition_manakov_Omega", all3, "TIMEOUT", "did not finish within 2 s"}, {"manakov_omega_solves_2_34", all3, "TIMEOUT", "did not finish within 2 s"}},
+       {{"definition_manakov_Omega", all3, "TIMEOUT", "did not finish within 2 s"},
+        {"manakov_omega_solves_2_34", all3, "TIMEOUT", "did not finish within 2 s"}},
        {},
        false,
        {"--timeout", "2"},
        "slot `manakov_Omega` is wrong"},
       {"bug_throws",
        "a stub that throws",
-       {{"definition_lagrangian_2_13", all3, "FAIL", "lagrangian_2_13: not written yet"}, {"lagrangian_2_13_is_kinetic_energy", all3, "FAIL", "lagrangian_2_13: not written yet"}},
+       {{"definition_lagrangian_2_13", all3, "FAIL", "lagrangian_2_13: not written yet"},
+        {"lagrangian_2_13_is_kinetic_energy", all3, "FAIL", "lagrangian_2_13: not written yet"}},
        {},
        false,
        {},
@@ -164,7 +179,9 @@ const std::vector<Example>& examples() {
        "a first-order Lie-Trotter splitting claiming order 2 and symmetry",
        // Its field is right at every state drawn, fast (scaled) motions included, and the
        // false claim says so first; its inputs are by the notes' names.
-       {{"integrator_converges_in_every_regime", {"double", "mp50"}, "FAIL",
+       {{"integrator_converges_in_every_regime",
+         {"double", "mp50"},
+         "FAIL",
          "the step's own equation: your step's vector field is right"},
         {"integrator_local_order", {"double", "mp50"}, "FAIL", "inputs, by the notes' names:\n    I = "}},
        {{"lie_trotter", "order", "FALSE CLAIM"},
@@ -189,7 +206,8 @@ const std::vector<Example>& examples() {
       // A slot provided alone, wrongly, fails its own direct property.
       {"bug_energy_alone",
        "only the energy (3.4), without its 1/2",
-       {{"definition_hamiltonian_3_4", all3, "FAIL", "slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4) does not hold"}},
+       {{"definition_hamiltonian_3_4", all3, "FAIL",
+         "slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4) does not hold"}},
        {},
        false,
        {},
@@ -203,7 +221,8 @@ const std::vector<Example>& examples() {
        "slot `momentum_map` is wrong"},
       {"bug_bracket_sign_alone",
        "only the Lie-Poisson bracket (3.6), with the wrong sign (its axioms still hold)",
-       {{"definition_lie_poisson_3_6", all3, "FAIL", "slot lie_poisson_3_6: {f, h} = -Pi . (df x dh), (3.6) does not hold"}},
+       {{"definition_lie_poisson_3_6", all3, "FAIL",
+         "slot lie_poisson_3_6: {f, h} = -Pi . (df x dh), (3.6) does not hold"}},
        {},
        false,
        {},
@@ -292,20 +311,23 @@ void check_report(const Example& e, const json& report, int exit_code) {
     auto it = expected.find({prop, scalar});
     if (it != expected.end()) {
       seen[{prop, scalar}] = true;
-      check(outcome == it->second->outcome, prop + " in " + scalar + " is " + outcome + ", expected " + it->second->outcome +
-                                                "\n    message: " + message);
-      check(message.find(it->second->says) != std::string::npos,
-            prop + " in " + scalar + ": the message does not say \"" + it->second->says + "\"\n    message: " + message);
+      check(outcome == it->second->outcome, prop + " in " + scalar + " is " + outcome + ", expected " +
+                                                it->second->outcome + "\n    message: " + message);
+      check(
+          message.find(it->second->says) != std::string::npos,
+          prop + " in " + scalar + ": the message does not say \"" + it->second->says + "\"\n    message: " + message);
       if (outcome == "FAIL" || outcome == "CRASH" || outcome == "TIMEOUT")
         check(v.contains("reproduce_command") && !v.at("reproduce_command").get<std::string>().empty(),
               prop + " in " + scalar + " has no reproduce command");
       if (outcome == "FAIL" && message.find("Exception") == std::string::npos)
         check(!v.at("counterexample").empty(), prop + " in " + scalar + " has no counterexample");
     } else if (!(e.false_claims && outcome == "FAIL" && message.find("false claim") != std::string::npos)) {
-      check(outcome == "PASS" || outcome == "NOT PROVIDED",
-            prop + " in " + scalar + " is " + outcome + "; only PASS or NOT PROVIDED expected\n    message: " + message);
+      check(
+          outcome == "PASS" || outcome == "NOT PROVIDED",
+          prop + " in " + scalar + " is " + outcome + "; only PASS or NOT PROVIDED expected\n    message: " + message);
     }
-    if (outcome == "NOT PROVIDED") check(!message.empty(), prop + " in " + scalar + " is NOT PROVIDED without a reason");
+    if (outcome == "NOT PROVIDED")
+      check(!message.empty(), prop + " in " + scalar + " is NOT PROVIDED without a reason");
   }
   for (const auto& [key, x] : expected)
     check(seen.count(key) > 0, key.first + " in " + key.second + " is missing from the report");
@@ -316,8 +338,8 @@ void check_report(const Example& e, const json& report, int exit_code) {
       if (i.at("name") == c.integrator)
         for (const auto& row : i.at("claims"))
           if (row.at("claim") == c.claim) status = row.at("status");
-    check(status == c.status, "claim '" + c.claim + "' of " + c.integrator + " is '" + status + "', expected '" +
-                                  c.status + "'");
+    check(status == c.status,
+          "claim '" + c.claim + "' of " + c.integrator + " is '" + status + "', expected '" + c.status + "'");
   }
   // No claim of any integrator may be false unless expected.
   for (const auto& i : report.at("integrators"))
@@ -380,8 +402,16 @@ int run_example(const std::string& name, const std::string& program, const std::
   }
   std::cout << "example " << name << ": " << e->bug << "\n";
   const std::string dir = temp_dir(name);
-  std::vector<std::string> argv{program, "--quiet", "--jobs", "2", "--report", dir + "/report", "--source", source,
-                                "--reproduce-prefix", "geomech check " + source};
+  std::vector<std::string> argv{program,
+                                "--quiet",
+                                "--jobs",
+                                "2",
+                                "--report",
+                                dir + "/report",
+                                "--source",
+                                source,
+                                "--reproduce-prefix",
+                                "geomech check " + source};
   if (std::find(e->args.begin(), e->args.end(), "--timeout") == e->args.end())
     argv.insert(argv.end(), {"--timeout", "60"});
   argv.insert(argv.end(), e->args.begin(), e->args.end());
@@ -403,8 +433,8 @@ int run_example(const std::string& name, const std::string& program, const std::
 // here and by a CMake-built example program, 35-45 s of ctest's time for the same verdicts).
 int run_end_to_end(const std::string& name, const std::string& geomech, const std::string& source) {
   const std::string dir = temp_dir("e2e-" + name);
-  std::vector<std::string> argv{geomech, "check", source, "--cache-dir", dir + "/cache", "--report", dir + "/report",
-                                "--jobs", "2", "--quiet"};
+  std::vector<std::string> argv{geomech,    "check",         source,   "--cache-dir", dir + "/cache",
+                                "--report", dir + "/report", "--jobs", "2",           "--quiet"};
   // The examples' limit per check (run_example): every check of correct.cpp ends within 60 s.
   if (name == "correct") argv.insert(argv.end(), {"--timeout", "60"});
   const auto t0 = std::chrono::steady_clock::now();
@@ -435,8 +465,8 @@ int run_end_to_end(const std::string& name, const std::string& geomech, const st
       const double s2 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
       std::printf("the same program again (nothing to compile), one property, took %.1f s\n", s2);
       check(again.output.find("(up to date)") != std::string::npos, "the second run compiled again");
-      check(again.exit_code == 0, "the second run's one property did not pass: exit status " +
-                                      std::to_string(again.exit_code));
+      check(again.exit_code == 0,
+            "the second run's one property did not pass: exit status " + std::to_string(again.exit_code));
     } else if (name == "bug_nan") {
       // A NaN fails; the slot that needs sqrt is left out of the exact rationals, with the reason.
       check(pr.exit_code == 1, "exit status " + std::to_string(pr.exit_code) + ", expected 1");
@@ -467,12 +497,14 @@ int run_end_to_end(const std::string& name, const std::string& geomech, const st
 // `geomech check-class DIR`: one summary table, one report per implementation, the bad ones named.
 int run_class(const std::string& class_dir, const std::string& geomech) {
   const std::string dir = temp_dir("class");
-  const auto pr = gm::harness::run_process(gm::harness::ProcessSpec{
-      {geomech, "check-class", class_dir, "--report", dir + "/reports", "--parallel", "2", "--scalar", "double", "--trusted"},
-      {},
-      false});
+  const auto pr = gm::harness::run_process(
+      gm::harness::ProcessSpec{{geomech, "check-class", class_dir, "--report", dir + "/reports", "--parallel", "2",
+                                "--scalar", "double", "--trusted"},
+                               {},
+                               false});
   std::cout << pr.output;
-  check(pr.exit_code == 1, "exit status " + std::to_string(pr.exit_code) + ", expected 1 (one fails, one does not compile)");
+  check(pr.exit_code == 1,
+        "exit status " + std::to_string(pr.exit_code) + ", expected 1 (one fails, one does not compile)");
   std::ifstream f(fs::path(dir) / "reports" / "summary.md");
   std::stringstream summary;
   summary << f.rdbuf();
@@ -519,7 +551,8 @@ int run_class_shards(const std::string& class_dir, const std::string& geomech) {
     return ss.str();
   };
   const std::string a = read(fs::path(dir) / "whole" / "summary.md"), b = read(fs::path(dir) / "merged" / "summary.md");
-  check(!a.empty() && a == b, "the merged summary differs from the unsharded one:\n--- unsharded\n" + a + "\n--- merged\n" + b);
+  check(!a.empty() && a == b,
+        "the merged summary differs from the unsharded one:\n--- unsharded\n" + a + "\n--- merged\n" + b);
   const std::string s1sum = read(fs::path(dir) / "shard1" / "summary.md");
   check(s1sum.find("| alice |") != std::string::npos && s1sum.find("| bob |") == std::string::npos,
         "shard 1/2 should hold alice and carol (every second implementation from the first)");
@@ -543,8 +576,8 @@ int run_cmake_package(const std::string& cmake, const std::string& config_dir, c
                                         << "find_package(GeomechStudent REQUIRED PATHS \"" << config_dir
                                         << "\" NO_DEFAULT_PATH)\ngeomech_add_student(check student.cpp)\n";
   using gm::harness::ProcessSpec;
-  const auto configure = gm::harness::run_process(
-      ProcessSpec{{cmake, "-S", dir.string(), "-B", (dir / "build").string(), "-DCMAKE_BUILD_TYPE=Release"}, {}, false});
+  const auto configure = gm::harness::run_process(ProcessSpec{
+      {cmake, "-S", dir.string(), "-B", (dir / "build").string(), "-DCMAKE_BUILD_TYPE=Release"}, {}, false});
   check(configure.exit_code == 0, "the student's project does not configure:\n" + configure.output);
   const auto build = gm::harness::run_process(ProcessSpec{{cmake, "--build", (dir / "build").string()}, {}, false});
   check(build.exit_code == 0, "the student's project does not build:\n" + build.output);
@@ -574,7 +607,8 @@ int write_ctest_script(const std::string& out, const std::string& tsv, const std
   for (std::string line; std::getline(in, line);) {
     std::istringstream fields(line);
     std::string name, program, source;
-    if (!std::getline(fields, name, '\t') || !std::getline(fields, program, '\t') || !std::getline(fields, source, '\t'))
+    if (!std::getline(fields, name, '\t') || !std::getline(fields, program, '\t') ||
+        !std::getline(fields, source, '\t'))
       continue;
     const Example* e = find_example(name);
     if (!e) {
@@ -595,18 +629,22 @@ int write_ctest_script(const std::string& out, const std::string& tsv, const std
     const std::string test = std::string("student.end_to_end.") + e2e;
     script << "add_test(" << bracket(test) << " " << bracket(self) << " --end-to-end " << e2e << " --geomech "
            << bracket(geomech) << " --source " << bracket(source_dir + "/examples/students/" + e2e + ".cpp") << ")\n";
-    script << "set_tests_properties(" << bracket(test) << " PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers"
+    script << "set_tests_properties(" << bracket(test)
+           << " PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers"
            << (std::string(e2e) == "correct" ? " COST 90" : "") << ")\n";
   }
   script << "add_test(student.cmake_package " << bracket(self) << " --cmake-package " << bracket(cmake) << " --config "
          << bracket(config_dir) << " --source " << bracket(source_dir + "/tests/class/alice.cpp") << ")\n";
-  script << "set_tests_properties(student.cmake_package PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
+  script << "set_tests_properties(student.cmake_package PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 "
+            "RESOURCE_LOCK compilers)\n";
   script << "add_test(student.class_mode " << bracket(self) << " --class " << bracket(source_dir + "/tests/class")
          << " --geomech " << bracket(geomech) << ")\n";
-  script << "set_tests_properties(student.class_mode PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
-  script << "add_test(student.class_shards_merge " << bracket(self) << " --class-shards " << bracket(source_dir + "/tests/class")
-         << " --geomech " << bracket(geomech) << ")\n";
-  script << "set_tests_properties(student.class_shards_merge PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 900 RESOURCE_LOCK compilers)\n";
+  script << "set_tests_properties(student.class_mode PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 "
+            "RESOURCE_LOCK compilers)\n";
+  script << "add_test(student.class_shards_merge " << bracket(self) << " --class-shards "
+         << bracket(source_dir + "/tests/class") << " --geomech " << bracket(geomech) << ")\n";
+  script << "set_tests_properties(student.class_shards_merge PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 900 "
+            "RESOURCE_LOCK compilers)\n";
   const std::string tmp = out + ".tmp";
   {
     std::ofstream f(tmp, std::ios::trunc);

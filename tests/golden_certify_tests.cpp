@@ -77,7 +77,8 @@ TEST(CertifiedGolden, AWrongFieldDoesNotCertifyTheFixture) {
   const Enclosure e = enclose_field(wrong, pr.dim(), pr.x0, times_of(f), EnclosureOptions{});
   const auto problems = verify_certificate(f, e);
   EXPECT_FALSE(problems.empty());
-  if (!problems.empty()) EXPECT_NE(problems[0].find("is not within its certified radius"), std::string::npos) << problems[0];
+  if (!problems.empty())
+    EXPECT_NE(problems[0].find("is not within its certified radius"), std::string::npos) << problems[0];
 }
 
 // The enclosure is a proof, so it must contain what the 70-digit oracle computed: checked through

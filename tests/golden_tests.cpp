@@ -272,8 +272,8 @@ TEST(golden_format, SignificantDigitsAreRoundedExactlyHalfToEven) {
   EXPECT_EQ(format_significant(Rational(-2) / 3, 4), "-6.667e-01");
   EXPECT_EQ(format_significant(Rational(0), 3), "0.00e+00");
   EXPECT_EQ(format_significant(parse_decimal("9.9995"), 4), "1.000e+01");
-  EXPECT_EQ(format_significant(parse_decimal("0.125"), 2), "1.2e-01");   // tie to even
-  EXPECT_EQ(format_significant(parse_decimal("0.135"), 2), "1.4e-01");   // tie to even
+  EXPECT_EQ(format_significant(parse_decimal("0.125"), 2), "1.2e-01");  // tie to even
+  EXPECT_EQ(format_significant(parse_decimal("0.135"), 2), "1.4e-01");  // tie to even
   EXPECT_EQ(format_significant(parse_decimal("1e-120"), 2), "1.0e-120");
   EXPECT_EQ(format_significant(parse_decimal("123456"), 1), "1e+05");
   EXPECT_EQ(round_up_1digit(parse_decimal("3.2e-51")), "4e-51");
@@ -290,8 +290,8 @@ TEST(golden_format, ExactNumbersRoundTrip) {
   EXPECT_EQ(format_exact(Rational(1) / 8), "0.125");
   EXPECT_EQ(format_exact(Rational(-1) / 40), "-0.025");
   EXPECT_EQ(format_exact(Rational(150)), "150");
-  for (const char* bad : {"", "1/0", "nan", "NaN", "inf", "-inf", "1e", "0x10", "1/2/3", "--1", "1/-2", "2/3.5", " 1",
-                          "1,5", "e5", "."})
+  for (const char* bad :
+       {"", "1/0", "nan", "NaN", "inf", "-inf", "1e", "0x10", "1/2/3", "--1", "1/-2", "2/3.5", " 1", "1,5", "e5", "."})
     EXPECT_THROW(parse_exact(bad), std::invalid_argument) << "'" << bad << "'";
 }
 
@@ -386,7 +386,8 @@ TEST(golden_format, DifferencesListEveryChangedValueWithItsLine) {
   const auto diffs = fixture_differences(path, write_fixture(f), text);
   ASSERT_EQ(diffs.size(), 3u);
   EXPECT_NE(diffs[0].find("header differs"), std::string::npos) << diffs[0];
-  EXPECT_NE(diffs[1].find(":" + std::to_string(f.row_lines[row]) + ": t = 5, Pi2: committed"), std::string::npos) << diffs[1];
+  EXPECT_NE(diffs[1].find(":" + std::to_string(f.row_lines[row]) + ": t = 5, Pi2: committed"), std::string::npos)
+      << diffs[1];
   EXPECT_NE(diffs[1].find("1.0e-45"), std::string::npos) << diffs[1];
   EXPECT_NE(diffs[2].find("t = 7.5, Pi3"), std::string::npos) << diffs[2];
 }
@@ -490,7 +491,8 @@ TEST(golden_format, VersionOneWithoutCertificateIsStillRead) {
 // Version 2: the certificate's radii, one per row, in order.
 TEST(golden_bad_input, CertifiedRadiusForAnotherTime) {
   const int at = index_of("#: certified_radius");
-  expect_rejected(edited([&](auto& l) { l[at] = "#: certified_radius 0.25 5e-51"; }), at + 1, "certified_radius for t = '0.25'");
+  expect_rejected(edited([&](auto& l) { l[at] = "#: certified_radius 0.25 5e-51"; }), at + 1,
+                  "certified_radius for t = '0.25'");
 }
 TEST(golden_bad_input, CertifiedRadiusMissingForARow) {
   const int at = index_of("#: end") - 1;  // the last row's radius
@@ -512,7 +514,8 @@ TEST(golden_bad_input, NaNValue) {
   expect_rejected(edited([](auto& l) { l[kFirstRow + 1] = "0.5 nan 1 2"; }), kFirstRow + 2, "not a finite decimal");
 }
 TEST(golden_bad_input, InfValue) {
-  expect_rejected(edited([](auto& l) { l[kFirstRow + 1] = "0.5 -inf 1 2"; }), kFirstRow + 2, "column Pi1: not a finite");
+  expect_rejected(edited([](auto& l) { l[kFirstRow + 1] = "0.5 -inf 1 2"; }), kFirstRow + 2,
+                  "column Pi1: not a finite");
 }
 TEST(golden_bad_input, AbsurdMagnitudeInTheData) {
   expect_rejected(edited([](auto& l) {
@@ -579,7 +582,8 @@ TEST(golden_bad_input, HeaderFieldsOutOfOrder) {
   expect_rejected(edited([](auto& l) { std::swap(l[3], l[4]); }), 4, "header field 'system' where '#: name'");
 }
 TEST(golden_bad_input, UnknownHeaderField) {
-  expect_rejected(edited([](auto& l) { l.insert(l.begin() + 5, "#: colour blue"); }), 6, "unknown header field 'colour'");
+  expect_rejected(edited([](auto& l) { l.insert(l.begin() + 5, "#: colour blue"); }), 6,
+                  "unknown header field 'colour'");
 }
 TEST(golden_bad_input, DuplicateParameter) {
   expect_rejected(edited([](auto& l) { l.insert(l.begin() + 7, l[7]); }), 9, "appears twice");
@@ -588,7 +592,10 @@ TEST(golden_bad_input, ControlCharacter) {
   expect_rejected(edited([](auto& l) { l[5] += std::string(1, '\0'); }), 6, "control character (byte 0x00)");
 }
 TEST(golden_bad_input, BinaryGarbage) {
-  expect_rejected(std::string("\x7f" "ELF\x02\x01\x01", 7), 1, "control character");
+  expect_rejected(std::string("\x7f"
+                              "ELF\x02\x01\x01",
+                              7),
+                  1, "control character");
 }
 TEST(golden_bad_input, TimesNotIncreasing) {
   expect_rejected(edited([](auto& l) { std::swap(l[kFirstRow + 2], l[kFirstRow + 3]); }), kFirstRow + 4,
@@ -635,7 +642,8 @@ TEST(golden_bad_input, CheckWithoutItsDisagreement) {
 }
 TEST(golden_bad_input, DigitsOutOfRange) {
   const int i = index_of("#: digits");
-  expect_rejected(edited([i](auto& l) { l[i] = "#: digits 500"; }), i + 1, "digits '500' is not an integer in [17, 55]");
+  expect_rejected(edited([i](auto& l) { l[i] = "#: digits 500"; }), i + 1,
+                  "digits '500' is not an integer in [17, 55]");
 }
 TEST(golden_bad_input, SamplesNotANumber) {
   const int i = index_of("#: samples");
@@ -653,9 +661,7 @@ TEST(golden_bad_input, MissingFile) {
     EXPECT_NE(e.message().find("cannot open"), std::string::npos);
   }
 }
-TEST(golden_bad_input, DirectoryInsteadOfAFile) {
-  EXPECT_THROW(load_fixture(default_fixture_dir()), InputError);
-}
+TEST(golden_bad_input, DirectoryInsteadOfAFile) { EXPECT_THROW(load_fixture(default_fixture_dir()), InputError); }
 
 NamedValues arg(const std::string& option, const std::string& text) { return parse_block_argument(option, text); }
 
@@ -708,16 +714,19 @@ TEST(golden_bad_input, EqualMomentsAreFineTheSphereIsAtRestInTheBody) {
   // I1 = I2 = I3: nothing divides by a difference here; Pi is constant.
   Request rq;
   rq.name = "sphere";
-  rq.problem = make_problem("free_rigid_body", "test", 0, {arg("--param", "I=1,1,1")}, {arg("--initial", "Pi=0.6,0,0.8")}, true);
+  rq.problem =
+      make_problem("free_rigid_body", "test", 0, {arg("--param", "I=1,1,1")}, {arg("--initial", "Pi=0.6,0,0.8")}, true);
   rq.times = parse_times_argument("0,10");
   rq.digits = 20;
   const Fixture f = generate(rq);
   EXPECT_EQ(f.rows.back(), f.rows.front());
 }
 TEST(golden_bad_input, NonphysicalInertiaIsNotedNotRejected) {
-  const Problem pr = make_problem("free_rigid_body", "test", 0, {arg("--param", "I=2,1,2/3")}, {arg("--initial", "Pi=1,0,0")}, true);
+  const Problem pr =
+      make_problem("free_rigid_body", "test", 0, {arg("--param", "I=2,1,2/3")}, {arg("--initial", "Pi=1,0,0")}, true);
   EXPECT_NE(nonphysical_inertia(pr).find("triangle inequality"), std::string::npos);
-  const Problem ok = make_problem("free_rigid_body", "test", 0, {arg("--param", "I=3,2,1.5")}, {arg("--initial", "Pi=1,0,0")}, true);
+  const Problem ok =
+      make_problem("free_rigid_body", "test", 0, {arg("--param", "I=3,2,1.5")}, {arg("--initial", "Pi=1,0,0")}, true);
   EXPECT_EQ(nonphysical_inertia(ok), "");
 }
 TEST(golden_bad_input, BlockArguments) {
@@ -726,8 +735,8 @@ TEST(golden_bad_input, BlockArguments) {
   EXPECT_EQ(parse_block_argument("--param", "I=2, 1 ,2/3").values, (std::vector<Rational>{2, 1, Rational(2) / 3}));
 }
 TEST(golden_bad_input, TimeArguments) {
-  for (const char* bad : {"", "abc", "0,-1", "1,0.5", "0,0", "0:0:1", "0:-1:1", "1:1:0", "0:1", "0:1:2:3",
-                          "0,1/3", "0:0.000001:1000", "0,5000", "nan"})
+  for (const char* bad : {"", "abc", "0,-1", "1,0.5", "0,0", "0:0:1", "0:-1:1", "1:1:0", "0:1", "0:1:2:3", "0,1/3",
+                          "0:0.000001:1000", "0,5000", "nan"})
     EXPECT_THROW(parse_times_argument(bad), InputError) << bad;
   EXPECT_EQ(parse_times_argument("0:0.5:2").size(), 5u);
   EXPECT_EQ(parse_times_argument("0, 0.25,1").back(), Rational(1));
@@ -763,18 +772,21 @@ TEST(golden_cli, TrajectoryBadArgumentsNameTheArgument) {
                    "--initial Pi=0,0,0: zero angular momentum");
   expect_cli_error(with({"--system", "free_rigid_body", "--param", "I=2,1,1e300", "--initial", "Pi=1,0,0"}), 2,
                    "absurd magnitude");
-  expect_cli_error(with({"--system", "free_rigid_body", "--param", "I=2,1,1", "--initial", "Pi=1,0,0", "--digits", "5"}),
-                   2, "--digits 5: digits must be in [17, 55]");
-  expect_cli_error(with({"--system", "free_rigid_body", "--param", "I=2,1,1", "--initial", "Pi=1,0,0", "--digits", "x"}),
-                   -1, "--digits");
-  expect_cli_error({"golden", "trajectory", "--system", "free_rigid_body", "--param", "I=2,1,1", "--initial", "Pi=1,0,0",
-                    "--times", "0,-1"},
-                   2, "--times 0,-1: time -1 is negative");
+  expect_cli_error(
+      with({"--system", "free_rigid_body", "--param", "I=2,1,1", "--initial", "Pi=1,0,0", "--digits", "5"}), 2,
+      "--digits 5: digits must be in [17, 55]");
+  expect_cli_error(
+      with({"--system", "free_rigid_body", "--param", "I=2,1,1", "--initial", "Pi=1,0,0", "--digits", "x"}), -1,
+      "--digits");
   expect_cli_error({"golden", "trajectory", "--system", "free_rigid_body", "--param", "I=2,1,1", "--initial",
-                    "Pi=1,0,0"},
-                   -1, "--times is required");
-  expect_cli_error(with({"--system", "free_rigid_body", "--param", "I=2,1,1", "--initial", "Pi=1,0,0", "--name", "a b"}), 2,
-                   "--name a b");
+                    "Pi=1,0,0", "--times", "0,-1"},
+                   2, "--times 0,-1: time -1 is negative");
+  expect_cli_error(
+      {"golden", "trajectory", "--system", "free_rigid_body", "--param", "I=2,1,1", "--initial", "Pi=1,0,0"}, -1,
+      "--times is required");
+  expect_cli_error(
+      with({"--system", "free_rigid_body", "--param", "I=2,1,1", "--initial", "Pi=1,0,0", "--name", "a b"}), 2,
+      "--name a b");
   expect_cli_error(with({"--system", "free_rigid_body", "--param", "I=2,1,1", "--initial", "Pi=1,0,0", "--output",
                          "/nonexistent/dir/t.golden"}),
                    1, "/nonexistent/dir");
@@ -813,9 +825,21 @@ TEST(golden_cli, TrajectoryOnDemandIsAVerifiedFixture) {
   ScratchDir dir("demand");
   // The benchmark body and initial state of the issue, with Pi(0) given to 50 digits.
   const std::vector<std::string> args = {
-      "golden", "trajectory", "--system", "free_rigid_body", "--param", "I=2,1,2/3", "--initial",
+      "golden",
+      "trajectory",
+      "--system",
+      "free_rigid_body",
+      "--param",
+      "I=2,1,2/3",
+      "--initial",
       "Pi=0.45359612142557738777137005178471612212146729566,0,0.89120736006143533995180257787170353831890931945",
-      "--times", "0:2.5:10", "--digits", "45", "--name", "benchmark_body", "--allow-nonphysical"};
+      "--times",
+      "0:2.5:10",
+      "--digits",
+      "45",
+      "--name",
+      "benchmark_body",
+      "--allow-nonphysical"};
   const CliResult r = run_cli(args, dir.file("out.golden"));
   ASSERT_EQ(r.status, 0) << r.output;
   EXPECT_NE(r.output.find("note: I1 = 2 > I2 + I3"), std::string::npos) << r.output;

@@ -63,11 +63,14 @@ void ExpectWellFormedGradebook(const std::string& csv, const std::vector<std::st
 }  // namespace
 
 TEST(Gradebook, DefaultRubricGivesPartialCreditPerCorrectSlot) {
-  const std::vector<StudentResult> cls = {checked("alice", {"hamiltonian_3_4", "omega_3_5", "legendre_3_1", "reconstruction_2_10"}, {"reconstruction_2_10"}),
-                                          checked("bob", {"hamiltonian_3_4", "omega_3_5"})};
+  const std::vector<StudentResult> cls = {
+      checked("alice", {"hamiltonian_3_4", "omega_3_5", "legendre_3_1", "reconstruction_2_10"},
+              {"reconstruction_2_10"}),
+      checked("bob", {"hamiltonian_3_4", "omega_3_5"})};
   const Rubric r;  // the default rubric
   const auto assignment = resolve_assignment(r, cls);
-  EXPECT_EQ(assignment, (std::vector<std::string>{"hamiltonian_3_4", "legendre_3_1", "omega_3_5", "reconstruction_2_10"}));
+  EXPECT_EQ(assignment,
+            (std::vector<std::string>{"hamiltonian_3_4", "legendre_3_1", "omega_3_5", "reconstruction_2_10"}));
   EXPECT_EQ(format_points(score_student(cls[0], r, assignment).points), "75.00");
   EXPECT_EQ(format_points(score_student(cls[1], r, assignment).points), "50.00");
   EXPECT_EQ(score_student(cls[0], r, assignment).breakdown, (std::vector<std::string>{"slots 3/4"}));
@@ -83,20 +86,26 @@ TEST(Gradebook, SlotsOutsideTheAssignmentEarnNothing) {
 
 TEST(Gradebook, SlotWeightsChangeEachSlotsShare) {
   const Rubric r = parse_rubric(R"({"points": 10, "assignment": ["hamiltonian_3_4", "omega_3_5", "legendre_3_1"],
-                                    "slots": {"default": 1, "hamiltonian_3_4": 2}})", "w.json");
+                                    "slots": {"default": 1, "hamiltonian_3_4": 2}})",
+                                "w.json");
   // Max weight 4: H (2) correct and omega (1) correct -> 3/4 of 10 points.
-  EXPECT_EQ(format_points(score_student(checked("a", {"hamiltonian_3_4", "omega_3_5"}), r, *r.assignment).points), "7.50");
+  EXPECT_EQ(format_points(score_student(checked("a", {"hamiltonian_3_4", "omega_3_5"}), r, *r.assignment).points),
+            "7.50");
   // A wrong slot earns nothing even when provided.
-  EXPECT_EQ(format_points(score_student(checked("b", {"hamiltonian_3_4", "legendre_3_1"}, {"hamiltonian_3_4"}), r, *r.assignment).points), "2.50");
+  EXPECT_EQ(format_points(
+                score_student(checked("b", {"hamiltonian_3_4", "legendre_3_1"}, {"hamiltonian_3_4"}), r, *r.assignment)
+                    .points),
+            "2.50");
 }
 
 TEST(Gradebook, AreaWeightsPayTheFractionOfChecksPassed) {
   const Rubric r = parse_rubric(R"({"assignment": ["hamiltonian_3_4"], "slots": {"default": 0},
-                                    "areas": {"sec. 1": 3, "momentum maps": 1}})", "areas.json");
+                                    "areas": {"sec. 1": 3, "momentum maps": 1}})",
+                                "areas.json");
   auto s = checked("a", {"hamiltonian_3_4"});
-  s.areas["sec. 1"] = {5, 10};          // 3 * 0.5
-  s.areas["momentum maps"] = {4, 4};    // 1 * 1
-  s.areas["sec. 2"] = {0, 9};           // weight 0: ignored
+  s.areas["sec. 1"] = {5, 10};        // 3 * 0.5
+  s.areas["momentum maps"] = {4, 4};  // 1 * 1
+  s.areas["sec. 2"] = {0, 9};         // weight 0: ignored
   const auto score = score_student(s, r, *r.assignment);
   EXPECT_EQ(format_points(score.points), "62.50");  // 2.5 of 4
   EXPECT_EQ(score.breakdown, (std::vector<std::string>{"momentum maps 4/4", "sec. 1 5/10"}));
@@ -106,7 +115,8 @@ TEST(Gradebook, AreaWeightsPayTheFractionOfChecksPassed) {
 
 TEST(Gradebook, ClaimCreditIsVerifiedWeightOverClaimsMade) {
   const Rubric r = parse_rubric(R"({"assignment": ["hamiltonian_3_4"], "claims_weight": 1,
-                                    "claims": {"default": 1, "order": 2}})", "claims.json");
+                                    "claims": {"default": 1, "order": 2}})",
+                                "claims.json");
   auto s = checked("a", {"hamiltonian_3_4"});
   s.claims = {{"midpoint", "order", "verified"},      // 2 of 2
               {"midpoint", "energy", "FALSE CLAIM"},  // 0 of 1
@@ -131,8 +141,9 @@ TEST(Gradebook, StudentThatDoesNotCompileScoresZeroWithTheReason) {
   const std::vector<StudentResult> cls = {s, checked("dave", {"hamiltonian_3_4", "omega_3_5"})};
   const auto score = score_student(s, Rubric{}, resolve_assignment(Rubric{}, cls));
   EXPECT_EQ(format_points(score.points), "0.00");
-  EXPECT_EQ(score.feedback,
-            "0.00 of 100: does not compile; fix first: rigid_body.cpp:12: missing ';' and more; report: carol/report.md");
+  EXPECT_EQ(
+      score.feedback,
+      "0.00 of 100: does not compile; fix first: rigid_body.cpp:12: missing ';' and more; report: carol/report.md");
   const auto rows = parse_csv(write_gradebook_csv(cls, Rubric{}));
   ASSERT_EQ(rows.size(), 3u);
   EXPECT_EQ(rows[1][4], "0.00");
@@ -161,7 +172,9 @@ TEST(Gradebook, MoodleHeaderIsExact) {
 
 TEST(Gradebook, CanvasHeaderAndPointsPossibleRowAreExact) {
   const Rubric r = parse_rubric(R"j({"format": "canvas", "item": "Rigid body (4521)", "points": 20})j", "c.json");
-  const std::string csv = write_gradebook_csv({checked("bob", {"hamiltonian_3_4", "legendre_3_1"}, {"legendre_3_1"}), checked("alice", {"hamiltonian_3_4"})}, r);
+  const std::string csv = write_gradebook_csv(
+      {checked("bob", {"hamiltonian_3_4", "legendre_3_1"}, {"legendre_3_1"}), checked("alice", {"hamiltonian_3_4"})},
+      r);
   EXPECT_EQ(csv,
             "Student,ID,SIS User ID,SIS Login ID,Section,Rigid body (4521)\r\n"
             "Points Possible,,,,,20.00\r\n"
@@ -176,8 +189,8 @@ TEST(Gradebook, RowsAreSortedAndNumbersIgnoreTheLocale) {
     char do_decimal_point() const override { return ','; }
   };
   const std::locale saved = std::locale::global(std::locale(std::locale::classic(), new Comma));
-  const std::string csv =
-      write_gradebook_csv({checked("zoe", {"a", "b", "c"}, {"c"}), checked("Bea", {"a"}), checked("adam", {})}, Rubric{});
+  const std::string csv = write_gradebook_csv(
+      {checked("zoe", {"a", "b", "c"}, {"c"}), checked("Bea", {"a"}), checked("adam", {})}, Rubric{});
   std::locale::global(saved);
   const auto rows = parse_csv(csv);
   ASSERT_EQ(rows.size(), 4u);
@@ -216,8 +229,10 @@ TEST(Gradebook, TheFeedbackCutKeepsAFunctionsName) {
   int whole = 0;
   for (int pad = 0; pad < 200; pad += 3) {
     auto s = checked("dave", slots, slots);
-    s.first_fix = std::string(pad, 'w') + " Octave function 'manakov_Omega' in dave/manakov_Omega.m is wrong: at Pi = " +
-                  std::string(300, '9') + " it returns the transpose";
+    s.first_fix =
+        std::string(pad, 'w') +
+        " Octave function 'manakov_Omega' in dave/manakov_Omega.m is wrong: at Pi = " + std::string(300, '9') +
+        " it returns the transpose";
     const std::string f = score_student(s, Rubric{}, slots).feedback;
     EXPECT_LE(f.size(), 400u);
     EXPECT_EQ(std::count(f.begin(), f.end(), '\''), f.find("'manakov_Omega'") == std::string::npos ? 0 : 2)
@@ -230,15 +245,16 @@ TEST(Gradebook, TheFeedbackCutKeepsAFunctionsName) {
 // "slots 11/12" beside a weighted 92.31 read as a mistake. The feedback says the grade, the
 // count and the weight together, and the weight of what is wrong.
 TEST(Gradebook, FeedbackSaysCountsAndWeightsTogether) {
-  const Rubric r = parse_rubric(R"({"assignment": ["hat", "vee", "casimir", "euler_3_8"], "slots": {"euler_3_8": 2}})",
-                                "w.json");
+  const Rubric r =
+      parse_rubric(R"({"assignment": ["hat", "vee", "casimir", "euler_3_8"], "slots": {"euler_3_8": 2}})", "w.json");
   auto s = checked("bob", {"hat", "vee", "casimir", "euler_3_8"}, {"casimir"});
   s.first_fix = "Python function 'casimir' in bob.py is wrong: its own check definition_casimir fails";
   const auto score = score_student(s, r, *r.assignment);
   EXPECT_EQ(format_points(score.points), "80.00");
-  EXPECT_EQ(score.feedback, "80.00 of 100: 3 of 4 slots correct (weight 4 of 5); wrong: casimir (weight 1); fix first: "
-                            "Python function 'casimir' in bob.py is wrong: its own check definition_casimir fails; "
-                            "report: bob/report.md");
+  EXPECT_EQ(score.feedback,
+            "80.00 of 100: 3 of 4 slots correct (weight 4 of 5); wrong: casimir (weight 1); fix first: "
+            "Python function 'casimir' in bob.py is wrong: its own check definition_casimir fails; "
+            "report: bob/report.md");
   // Its items are the grade, part by part: each slot with its weight in points.
   ASSERT_EQ(score.items.size(), 4u);
   double sum = 0;
@@ -285,7 +301,8 @@ TEST(Gradebook, RosterErrorsNameTheFileAndTheProblem) {
             "roster \"r.csv\": name \"alice\" appears twice");
   EXPECT_EQ(error_of([] { parse_roster("name,email\nalice\n", "r.csv"); }),
             "roster \"r.csv\": row 2 has 1 fields, header has 2");
-  EXPECT_EQ(error_of([] { parse_roster("name\n\"alice\n", "r.csv"); }), "roster \"r.csv\": CSV line 2: unbalanced quote");
+  EXPECT_EQ(error_of([] { parse_roster("name\n\"alice\n", "r.csv"); }),
+            "roster \"r.csv\": CSV line 2: unbalanced quote");
 }
 
 TEST(Gradebook, RubricErrorsNameTheFileAndTheKey) {
@@ -293,7 +310,8 @@ TEST(Gradebook, RubricErrorsNameTheFileAndTheKey) {
   EXPECT_EQ(err(R"({"pionts": 10})"),
             "rubric \"rubric.json\": key \"pionts\": unknown key; expected item, points, format, feedback, slots, "
             "assignment, areas, claims_weight, claims or visibility");
-  EXPECT_EQ(err(R"({"slots": {"hamiltonian_3_4": -1}})"), "rubric \"rubric.json\": key \"slots.hamiltonian_3_4\": expected a number >= 0, got -1");
+  EXPECT_EQ(err(R"({"slots": {"hamiltonian_3_4": -1}})"),
+            "rubric \"rubric.json\": key \"slots.hamiltonian_3_4\": expected a number >= 0, got -1");
   EXPECT_EQ(err(R"({"claims": {"order": "two"}})"),
             "rubric \"rubric.json\": key \"claims.order\": expected a number >= 0, got \"two\"");
   EXPECT_EQ(err(R"({"points": true})"), "rubric \"rubric.json\": key \"points\": expected a number > 0, got true");
@@ -372,14 +390,17 @@ TEST(Gradebook, ZeroMaximumForTheClassIsAnError) {
   s.status = "does not compile";
   EXPECT_NE(error_of([&] { write_gradebook_csv({s}, Rubric{}); }).find("maximum grade is 0 for this class"),
             std::string::npos);
-  EXPECT_EQ(error_of([] { write_gradebook_csv({checked("a", {"hamiltonian_3_4"}), checked("a", {})}, Rubric{}); }),
+  EXPECT_EQ(error_of([] {
+              write_gradebook_csv({checked("a", {"hamiltonian_3_4"}), checked("a", {})}, Rubric{});
+            }),
             "gradebook: implementation name \"a\" appears twice");
 }
 
 TEST(Gradebook, OutputIsUtf8WithoutBomAndCrlfLineEnds) {
-  const std::string csv = write_gradebook_csv({checked("Åsa", {"hamiltonian_3_4"}), checked("bo", {"hamiltonian_3_4"})}, Rubric{});
+  const std::string csv =
+      write_gradebook_csv({checked("Åsa", {"hamiltonian_3_4"}), checked("bo", {"hamiltonian_3_4"})}, Rubric{});
   ExpectWellFormedGradebook(csv, gradebook_header(Rubric{}));
-  EXPECT_EQ(csv.rfind("\r\n"), csv.size() - 2);  // the last record ends with a line break too
+  EXPECT_EQ(csv.rfind("\r\n"), csv.size() - 2);     // the last record ends with a line break too
   EXPECT_EQ(csv.find(",\r\n"), std::string::npos);  // no trailing separators
 }
 
@@ -394,6 +415,9 @@ TEST(Gradebook, ShapeCheckRejectsMalformedCsv) {
   EXPECT_NONFATAL_FAILURE(ExpectWellFormedGradebook("a,b\r\n\"unbalanced,1\r\n", header), "malformed CSV");
   EXPECT_NONFATAL_FAILURE(ExpectWellFormedGradebook("a,b\r\n1,2,3\r\n", header), "ragged");
   EXPECT_NONFATAL_FAILURE(ExpectWellFormedGradebook("a,b\r\n1,2\n", header), "bare LF");
-  EXPECT_NONFATAL_FAILURE(ExpectWellFormedGradebook("\xEF\xBB\xBF" "a,b\r\n1,2\r\n", header), "BOM");
+  EXPECT_NONFATAL_FAILURE(ExpectWellFormedGradebook("\xEF\xBB\xBF"
+                                                    "a,b\r\n1,2\r\n",
+                                                    header),
+                          "BOM");
   ExpectWellFormedGradebook("a,b\r\n\"1\n2\",3\r\n", header);  // a quoted line feed is data: fine
 }

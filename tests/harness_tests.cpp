@@ -118,8 +118,7 @@ class CrowdedCore {
       const pid_t pid = ::fork();
       if (pid == 0) {
         ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-        for (volatile unsigned long x = 0;; x = x + 1) {
-        }
+        for (volatile unsigned long x = 0;; x = x + 1) {}
       }
       if (pid > 0) burners_.push_back(pid);
     }
@@ -157,7 +156,7 @@ TEST(Isolation, StarvedIsNotWaiting) {
   o.jobs = 1;
   o.timeout_seconds = 2;  // of CPU
   o.wall_factor = 1;
-  o.wall_floor = 0;       // the wall guard: 2 s
+  o.wall_floor = 0;  // the wall guard: 2 s
   auto r = run_isolated({[] { return compute_for(0.4); },
                          []() -> std::string {
                            for (;;) std::this_thread::sleep_for(std::chrono::milliseconds(10));
@@ -247,8 +246,9 @@ TEST(CheckEngine, ACrashHangNaNOrExceptionFailsThatPropertyAlone) {
   auto d = std::make_shared<Subject<double>>(*s.d);
   d->hamiltonian_3_4 = [](const Vec3<double>&, const Vec3<double>&) { return std::nan(""); };
   s.d = d;
-  const CheckResult r = run_check(s, {}, quick({"hat_is_cross_product", "euler_form_3_8", "trace_pairing_is_dot_product",
-                                                "hamiltonian_3_3_is_3_4", "euler_form_3_7"}));
+  const CheckResult r = run_check(s, {},
+                                  quick({"hat_is_cross_product", "euler_form_3_8", "trace_pairing_is_dot_product",
+                                         "hamiltonian_3_3_is_3_4", "euler_form_3_7"}));
   for (const char* scalar : {"double", "mp50", "exact"}) {
     EXPECT_EQ(find(r, "hat_is_cross_product", scalar)->outcome, Outcome::Crash);
     EXPECT_EQ(find(r, "euler_form_3_8", scalar)->outcome, Outcome::Timeout);
@@ -451,8 +451,9 @@ TEST(Reports, AMachineFaultNamesNoSlotInAnyView) {
   v.scalar = "double";
   v.outcome = gm::Outcome::Error;
   v.message = "the check could not do its work: the machine starved it";
-  v.machine_fault = "the machine's fault, not the code's: the check could not do its work. Fix: run it again on a "
-                    "less busy machine, or with fewer checks at once (--jobs).";
+  v.machine_fault =
+      "the machine's fault, not the code's: the check could not do its work. Fix: run it again on a "
+      "less busy machine, or with fewer checks at once (--jobs).";
   r.verdicts.push_back(v);
   decide_first_fixes(r);  // as the engine does, once the verdicts are complete
   EXPECT_TRUE(r.first_fixes.broken.empty());
@@ -620,7 +621,9 @@ TEST(ReferenceFlow, KeepsTheInvariantsOfATriaxialBodyAndRefusesNonsense) {
   const Vec3<R> I(R(2), R(1), R(2) / R(3));
   const RigidBodyState<R> x0{Vec3<R>(R(9) / R(20), R(1) / R(10), R(89) / R(100)), Mat3<R>::Identity()};
   const auto xs = reference_rigid_body(I, x0, R(0), {R(20)});
-  const auto h = [&](const Vec3<R>& P) { return (P(0) * P(0) / I(0) + P(1) * P(1) / I(1) + P(2) * P(2) / I(2)) / R(2); };
+  const auto h = [&](const Vec3<R>& P) {
+    return (P(0) * P(0) / I(0) + P(1) * P(1) / I(1) + P(2) * P(2) / I(2)) / R(2);
+  };
   EXPECT_LT(abs(R(xs[0].Pi.squaredNorm() - x0.Pi.squaredNorm())), R(1e-42));
   EXPECT_LT(abs(R(h(xs[0].Pi) - h(x0.Pi))), R(1e-42));
   // Noether: pi = O Pi is constant.
@@ -663,7 +666,8 @@ TEST(TrajectoryFiles, ReadsTheDocumentedFormat) {
   p.system = "rigid_body";
   p.inertia = std::array<std::string, 3>{"2", "1.5", "1"};
   p.step = "0.1";
-  const Trajectory csv = parse_trajectory("0,0.6,0,0.8,1,0,0,0,1,0,0,0,1\r\n0.1,0.6,0,0.8,1,0,0,0,1,0,0,0,1\r\n", "m.csv", p);
+  const Trajectory csv =
+      parse_trajectory("0,0.6,0,0.8,1,0,0,0,1,0,0,0,1\r\n0.1,0.6,0,0.8,1,0,0,0,1,0,0,0,1\r\n", "m.csv", p);
   EXPECT_TRUE(csv.has_O);
   EXPECT_EQ(csv.rows[1].O[8], 1.0);
 }
@@ -699,17 +703,20 @@ TEST(TrajectoryFiles, EveryMalformedInputIsRejectedWithFileLineAndColumn) {
       {"# geomech-trajectory 1\n# step: 0.1\n# step: 0.2\n", "t.txt:3:3: header field 'step' is given twice"},
       {"# geomech-trajectory 1\n# just words\n", "t.txt:2:3: a header line must be '# key: value'"},
       {"# geomech-trajectory 1\n# columns: t x y z\n", "t.txt:2:12: columns must be"},
-      {head + "# columns: t Pi1 Pi2 Pi3\n0 1 0 0 1 0 0 0 1 0 0 0 1\n", "t.txt:6: a row has 13 fields, expected 4 like the columns line"},
+      {head + "# columns: t Pi1 Pi2 Pi3\n0 1 0 0 1 0 0 0 1 0 0 0 1\n",
+       "t.txt:6: a row has 13 fields, expected 4 like the columns line"},
       {"0 1 0 0\n1 1 0 0\n", "t.txt: no system"},
       {std::string("0 1\0 0 0\n", 10), "not a text file"},
-      {"# geomech-trajectory 1\n# system: rigid_body\n# inertia: 1 0.5 0.3333333333333333\n# step: 0.1\n0 1 0 0\n1 1 0 0\n",
+      {"# geomech-trajectory 1\n# system: rigid_body\n# inertia: 1 0.5 0.3333333333333333\n# step: 0.1\n0 1 0 0\n1 1 0 "
+       "0\n",
        "t.txt:3: I1 is larger than the sum of the other two moments: no rigid body has this inertia (give "
        "--allow-nonphysical"},
       {head + "0 0 0 0\n0.1 0 0 0\n", "t.txt:5: Pi(0) = 0: zero angular momentum"},
   };
   for (const auto& [text, expected] : cases) {
     const std::string got = bad(text);
-    EXPECT_NE(got.find(expected), std::string::npos) << "input:\n" << text << "\nexpected: " << expected << "\ngot: " << got;
+    EXPECT_NE(got.find(expected), std::string::npos) << "input:\n"
+                                                     << text << "\nexpected: " << expected << "\ngot: " << got;
   }
   TrajectoryParams p;
   p.step = "0.2";
@@ -719,7 +726,8 @@ TEST(TrajectoryFiles, EveryMalformedInputIsRejectedWithFileLineAndColumn) {
 // The notes' example body (no mass distribution has it) is checked when asked to, with a warning.
 TEST(TrajectoryFiles, NonphysicalInertiaIsCheckedWhenAllowed) {
   const std::string text =
-      "# geomech-trajectory 1\n# system: rigid_body\n# inertia: 1 0.5 0.3333333333333333\n# step: 0.1\n0 1 0 0\n1 1 0 0\n";
+      "# geomech-trajectory 1\n# system: rigid_body\n# inertia: 1 0.5 0.3333333333333333\n# step: 0.1\n0 1 0 0\n1 1 0 "
+      "0\n";
   TrajectoryParams p;
   p.allow_nonphysical = true;
   const Trajectory t = parse_trajectory(text, "t.txt", p);
@@ -759,10 +767,9 @@ TEST(TrajectoryFiles, TheExamplesAreJudgedAsTheirAuthorsShouldExpect) {
   TrajectoryCheckOptions o;
   o.order = 2;
   o.preserves = {"casimir", "energy", "orthogonality", "spatial_momentum"};
-  const CheckResult good = check_trajectories(
-      {example("midpoint_h0.1.txt"), example("midpoint_h0.05.txt"), example("midpoint_h0.025.txt"),
-       example("midpoint_h0.0125.txt")},
-      o);
+  const CheckResult good = check_trajectories({example("midpoint_h0.1.txt"), example("midpoint_h0.05.txt"),
+                                               example("midpoint_h0.025.txt"), example("midpoint_h0.0125.txt")},
+                                              o);
   EXPECT_TRUE(good.ok()) << console_report(good, nullptr);
   const Verdict* order = nullptr;
   for (const auto& v : good.verdicts)
@@ -796,7 +803,8 @@ TEST(TrajectoryFiles, TheExamplesAreJudgedAsTheirAuthorsShouldExpect) {
 // files claimed at order 2 also pass (an exact step satisfies any order). Control: the midpoint
 // files at a false order 4 still fail (above).
 TEST(TrajectoryFiles, AnExactStepPassesAnyOrderClaim) {
-  const std::vector<std::string> files{example("spherical_lie_euler_h0.1.txt"), example("spherical_lie_euler_h0.05.txt"),
+  const std::vector<std::string> files{example("spherical_lie_euler_h0.1.txt"),
+                                       example("spherical_lie_euler_h0.05.txt"),
                                        example("spherical_lie_euler_h0.025.txt")};
   for (int order : {1, 2}) {
     TrajectoryCheckOptions o;
@@ -865,7 +873,8 @@ TEST(CheckEngine, ARunLeftToThoroughIsListedNotRun) {
   EXPECT_NE(md.find("## Left to --thorough"), std::string::npos);
   EXPECT_NE(md.find("`hat_is_cross_product [mp50]`"), std::string::npos);
   EXPECT_NE(xml.find("<skipped message=\"LEFT TO --thorough: a note on why\"/>"), std::string::npos) << xml;
-  EXPECT_NE(json_report(r, nullptr).dump().find("\"left_to_thorough\":[\"hat_is_cross_product [mp50]\"]"), std::string::npos);
+  EXPECT_NE(json_report(r, nullptr).dump().find("\"left_to_thorough\":[\"hat_is_cross_product [mp50]\"]"),
+            std::string::npos);
 
   SubjectSet no_hat = mutate(reference_subject(), "no_hat", "hat missing", [](auto& sub) { sub.hat = nullptr; });
   const CheckResult m = run_check(no_hat, {}, cfg);

@@ -19,7 +19,9 @@ TEST(HtmlPage, ReportMarkdownBecomesEscapedHtmlWithItsStructure) {
       "[evil](javascript:alert(1)) [far](https://example.org/x) [mine](alice/report.md) [fig](figures/a.svg)\n\n"
       "![figures/a.svg](figures/a.svg)\n\n![missing](figures/none.svg)\n";
   MarkdownHtml o;
-  o.image = [](const std::string& p) { return p == "figures/a.svg" ? "data:image/svg+xml;base64," + base64("<svg/>") : ""; };
+  o.image = [](const std::string& p) {
+    return p == "figures/a.svg" ? "data:image/svg+xml;base64," + base64("<svg/>") : "";
+  };
   const std::string h = markdown_to_html(md, o);
   // Nothing from the text is live.
   EXPECT_EQ(h.find("<script"), std::string::npos) << h;

@@ -97,9 +97,7 @@ TEST(Intake, AFifoIsRefusedWithoutBeingOpened) {
   // thread with a deadline; a writer is then opened to release it.
   auto naive = std::async(std::launch::async, [&] { return naive_read(s.dir / "fifo.py"); });
   EXPECT_EQ(naive.wait_for(std::chrono::milliseconds(300)), std::future_status::timeout);
-  {
-    std::ofstream release(s.dir / "fifo.py");
-  }
+  { std::ofstream release(s.dir / "fifo.py"); }
   naive.get();
   const auto start = std::chrono::steady_clock::now();
   const StrangerFolder folder(s.dir.string());
@@ -205,8 +203,8 @@ TEST(Intake, ASnapshotRewritesOnlyWhatChangedAndDropsWhatIsGone) {
 }
 
 TEST(Intake, ImplementationNamesThatCannotNameAReportAreRefused) {
-  for (const std::string bad : std::vector<std::string>{"", ".", "..", "a/b", "a\\b", "new\nline", "esc\x1b[31m", "-rf", "\xff\xfe",
-                                std::string(101, 'a')})
+  for (const std::string bad : std::vector<std::string>{"", ".", "..", "a/b", "a\\b", "new\nline", "esc\x1b[31m", "-rf",
+                                                        "\xff\xfe", std::string(101, 'a')})
     EXPECT_FALSE(bad_implementation_name(bad).empty()) << "accepted: " << bad;
   for (const std::string good : {"alice", "=1+1", "O'Brien", "bob.v2", "Jörg", "a b"})
     EXPECT_TRUE(bad_implementation_name(good).empty()) << good << ": " << bad_implementation_name(good);

@@ -39,7 +39,8 @@ ClassRow checked_row(const std::string& name, const std::vector<std::string>& pr
   report["verdicts"] = json::array();
   for (const auto& s : provided) {
     report["exercised"][s] = {"definition_" + s};
-    report["verdicts"].push_back({{"property", "definition_" + s}, {"scalar", "double"}, {"outcome", "PASS"}, {"area", "sec. 2"}});
+    report["verdicts"].push_back(
+        {{"property", "definition_" + s}, {"scalar", "double"}, {"outcome", "PASS"}, {"area", "sec. 2"}});
   }
   report["first_fix"] = json::array();
   report["counts"] = {{"FAIL", exit_code == 0 ? 0 : 1}};
@@ -53,11 +54,18 @@ ClassRow checked_row(const std::string& name, const std::vector<std::string>& pr
 // One slot of eleven, right, read as PASS; "n/p" mixed what was not written with what the
 // language cannot compute. The assignment decides PASS, and the cells count the two apart.
 TEST(ClassRecord, TheAssignmentDecidesPassAndNotProvidedIsSplit) {
-  std::vector<ClassRow> rows{checked_row("frank", {"hat", "vee", "casimir"}), checked_row("alice", {"hat", "vee", "casimir", "euler_3_8"})};
-  rows[0].report["verdicts"].push_back({{"property", "definition_euler_3_8"}, {"scalar", "double"}, {"outcome", "NOT PROVIDED"},
-                                        {"area", "sec. 2"}, {"not_provided", "not written"}});
-  rows[0].report["verdicts"].push_back({{"property", "definition_casimir"}, {"scalar", "exact"}, {"outcome", "NOT PROVIDED"},
-                                        {"area", "sec. 2"}, {"not_provided", "double only"}});
+  std::vector<ClassRow> rows{checked_row("frank", {"hat", "vee", "casimir"}),
+                             checked_row("alice", {"hat", "vee", "casimir", "euler_3_8"})};
+  rows[0].report["verdicts"].push_back({{"property", "definition_euler_3_8"},
+                                        {"scalar", "double"},
+                                        {"outcome", "NOT PROVIDED"},
+                                        {"area", "sec. 2"},
+                                        {"not_provided", "not written"}});
+  rows[0].report["verdicts"].push_back({{"property", "definition_casimir"},
+                                        {"scalar", "exact"},
+                                        {"outcome", "NOT PROVIDED"},
+                                        {"area", "sec. 2"},
+                                        {"not_provided", "double only"}});
   const Rubric week = parse_rubric(R"({"assignment": ["hat", "vee", "casimir", "euler_3_8"]})", "week.json");
   const ClassView v = decide_class(rows, week);
   EXPECT_EQ(v.students[0].result, "INCOMPLETE");
@@ -80,10 +88,13 @@ TEST(ClassRecord, TheAssignmentDecidesPassAndNotProvidedIsSplit) {
 
 TEST(Autograder, ResultsRenderTheDecidedStudentInEachFormat) {
   std::vector<ClassRow> rows{checked_row("bob", {"hat", "vee", "casimir"}, 1)};
-  rows[0].report["first_fix"] = json::array({{{"slot", "casimir"}, {"property", "definition_casimir"}, {"scalar", "mp50"},
+  rows[0].report["first_fix"] = json::array({{{"slot", "casimir"},
+                                              {"property", "definition_casimir"},
+                                              {"scalar", "mp50"},
                                               {"line", "Python function 'casimir' in bob.py is wrong: ..."}}});
   const Rubric r = parse_rubric(R"({"points": 20, "assignment": ["hat", "vee", "casimir", "euler_3_8"],
-                                    "slots": {"casimir": 2}})", "week.json");
+                                    "slots": {"casimir": 2}})",
+                                "week.json");
   const ClassView v = decide_class(rows, r);
   const json gs = gradescope_results(v.students[0], "# report\n");
   EXPECT_EQ(gs.at("score"), 8.0);  // hat and vee, 2 of 5 weights of 20 points
@@ -97,7 +108,8 @@ TEST(Autograder, ResultsRenderTheDecidedStudentInEachFormat) {
   EXPECT_EQ(gs["tests"][2]["status"], "failed");
   EXPECT_EQ(gs["tests"][2]["max_score"], 8.0);
   EXPECT_EQ(gs["tests"][3]["output"].get<std::string>().rfind("not provided", 0), 0u);
-  EXPECT_EQ(gs["output"].get<std::string>().rfind("FAIL, 8.00 of 20: 2 of 4 slots correct (weight 2 of 5)", 0), 0u) << gs["output"];
+  EXPECT_EQ(gs["output"].get<std::string>().rfind("FAIL, 8.00 of 20: 2 of 4 slots correct (weight 2 of 5)", 0), 0u)
+      << gs["output"];
   const json pl = prairielearn_results(v.students[0], "# report\n");
   EXPECT_EQ(pl.at("gradable"), true);
   EXPECT_NEAR(pl.at("score").get<double>(), 0.4, 1e-12);
@@ -124,11 +136,14 @@ TEST(Autograder, ResultsRenderTheDecidedStudentInEachFormat) {
 // student sees now names a hidden slot: not a test, not the overall words, not the whole report.
 TEST(Autograder, HiddenTestsAreNotShownAndTheirPointsCount) {
   std::vector<ClassRow> rows{checked_row("bob", {"hat", "vee", "casimir"}, 1)};
-  rows[0].report["first_fix"] = json::array({{{"slot", "casimir"}, {"property", "definition_casimir"}, {"scalar", "mp50"},
+  rows[0].report["first_fix"] = json::array({{{"slot", "casimir"},
+                                              {"property", "definition_casimir"},
+                                              {"scalar", "mp50"},
                                               {"line", "Python function 'casimir' in bob.py is wrong: ..."}}});
-  const std::string assignment = R"("points": 20, "assignment": ["hat", "vee", "casimir", "euler_3_8"], "slots": {"casimir": 2})";
-  const Rubric r = parse_rubric("{" + assignment + R"(, "visibility": {"casimir": "after_due_date", "euler_3_8": "hidden"}})",
-                                "week.json");
+  const std::string assignment =
+      R"("points": 20, "assignment": ["hat", "vee", "casimir", "euler_3_8"], "slots": {"casimir": 2})";
+  const Rubric r = parse_rubric(
+      "{" + assignment + R"(, "visibility": {"casimir": "after_due_date", "euler_3_8": "hidden"}})", "week.json");
   const ClassView v = decide_class(rows, r);
   const json gs = gradescope_results(v.students[0], "# report naming casimir\n");
   EXPECT_EQ(gs.at("score"), 8.0);  // the hidden tests count in the score
@@ -163,14 +178,15 @@ TEST(Autograder, HiddenTestsAreNotShownAndTheirPointsCount) {
 // A refused rubric names every error, each with its key, not only the first.
 TEST(Rubric, ARefusalNamesEveryError) {
   try {
-    parse_rubric(R"({"points": -1, "slots": {"casimr": 1, "hatt": 2}, "visibility": {"casimir": "later"}, "colour": 1})",
-                 "week.json");
+    parse_rubric(
+        R"({"points": -1, "slots": {"casimr": 1, "hatt": 2}, "visibility": {"casimir": "later"}, "colour": 1})",
+        "week.json");
     FAIL() << "the rubric was accepted";
   } catch (const std::runtime_error& e) {
     const std::string m = e.what();
     EXPECT_EQ(m.rfind("rubric \"week.json\" has 5 errors:", 0), 0u) << m;
-    for (const char* key : {"key \"points\"", "key \"slots.casimr\"", "key \"slots.hatt\"", "key \"visibility.casimir\"",
-                            "key \"colour\""})
+    for (const char* key : {"key \"points\"", "key \"slots.casimr\"", "key \"slots.hatt\"",
+                            "key \"visibility.casimir\"", "key \"colour\""})
       EXPECT_NE(m.find(key), std::string::npos) << key << " in " << m;
     EXPECT_NE(m.find("did you mean \"casimir\""), std::string::npos) << m;
   }
@@ -189,7 +205,8 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
   write_file(root / "py" / "notes.txt", "x");
   EXPECT_EQ(lay_out_submission((root / "py").string(), (root / "c1").string()), "mine");
   EXPECT_TRUE(fs::is_regular_file(root / "c1" / "mine.py"));
-  for (const char* f : {"hat.m", "vee.m"}) write_file(root / "m" / "dave" / f, "function m = f()\nend\n");  // a zipped folder
+  for (const char* f : {"hat.m", "vee.m"})
+    write_file(root / "m" / "dave" / f, "function m = f()\nend\n");  // a zipped folder
   EXPECT_EQ(lay_out_submission((root / "m").string(), (root / "c2").string()), "submission");
   EXPECT_TRUE(fs::is_regular_file(root / "c2" / "submission" / "vee.m"));
   write_file(root / "cpp" / "erin.cpp", "#include \"so3.hpp\"\nGEOMECH_STUDENT(E);\n");
@@ -239,7 +256,8 @@ TEST(ClassResume, LibraryFlagsCountForACppFileOnly) {
 TEST(ClassRecord, OneClassFolderIsOneReportFolder) {
   const std::string a = default_class_report_dir("week3");
   EXPECT_EQ(a, "geomech-reports/week3");
-  for (const std::string& same : std::vector<std::string>{"week3/", "./week3", "./week3//", (fs::current_path() / "week3").string() + "/"})
+  for (const std::string& same :
+       std::vector<std::string>{"week3/", "./week3", "./week3//", (fs::current_path() / "week3").string() + "/"})
     EXPECT_EQ(default_class_report_dir(same), a) << same;
   EXPECT_EQ(default_class_report_dir("other/week3"), a);  // the folder's name, as before
   EXPECT_NE(default_class_report_dir("week4/"), a);
@@ -258,8 +276,9 @@ TEST(ClassRecord, WhatTheClassGotWrongCountsStudentsAndTheCommonFix) {
   wrong(rows[1], "vee", "Python function 'vee' in bob.py is wrong: at m = [[0, -1, 7]] it returns 0.25");
   wrong(rows[2], "vee", "Python function 'vee' in carol.py returns a list of 2 entries");
   wrong(rows[2], "hat", "Python function 'hat' in carol.py is wrong: at v = [1, 2, 3] it returns 4");
-  rows[1].report["integrators"] = json::array({{{"name", "midpoint"},
-                                                {"claims", json::array({{{"claim", "casimir"}, {"claimed", "yes"}, {"status", "FALSE CLAIM"}}})}}});
+  rows[1].report["integrators"] =
+      json::array({{{"name", "midpoint"},
+                    {"claims", json::array({{{"claim", "casimir"}, {"claimed", "yes"}, {"status", "FALSE CLAIM"}}})}}});
   ClassRow eve = checked_row("eve", {"hat"});
   eve.problem = "the check ran out of its time";
   wrong(eve, "vee", "not counted: eve was not checked");
@@ -298,15 +317,18 @@ TEST(FeedbackFiles, NamedForTheLmsBulkUploadAndSelfContained) {
             "Ada Lovelace_657737_assignsubmission_file_/geomech-feedback.html");
   EXPECT_EQ(feedback_name("Ada Lovelace_657737_assignsubmission_file_").lms, "Moodle");
   EXPECT_EQ(feedback_name("lovelaceada_12345_67890_rigid_body").path, "lovelaceada_12345_67890_geomech-feedback.html");
-  EXPECT_EQ(feedback_name("lovelaceada_LATE_12345_67890_rigid").path, "lovelaceada_LATE_12345_67890_geomech-feedback.html");
+  EXPECT_EQ(feedback_name("lovelaceada_LATE_12345_67890_rigid").path,
+            "lovelaceada_LATE_12345_67890_geomech-feedback.html");
   EXPECT_EQ(feedback_name("lovelaceada_LATE_12345_67890_rigid").lms, "Canvas");
   EXPECT_EQ(feedback_name("wrong_vee").path, "wrong_vee.html");  // the control: no LMS's name
   EXPECT_EQ(feedback_name("wrong_vee").lms, "");
-  EXPECT_EQ(feedback_name("bob_2_3").lms, "") << "too short to be Canvas's: name, user id, submission id, then the file";
+  EXPECT_EQ(feedback_name("bob_2_3").lms, "")
+      << "too short to be Canvas's: name, user id, submission id, then the file";
 
   std::vector<ClassRow> rows{checked_row("Ada Lovelace_657737_assignsubmission_file_", {"hat", "vee"}, 1),
                              checked_row("lovelaceada_12345_67890_rigid", {"hat", "vee"}), no_submission_row("carol")};
-  rows[0].report["first_fix"].push_back({{"slot", "vee"}, {"line", "Python function 'vee' in rigid.py is wrong: at m = ..."}});
+  rows[0].report["first_fix"].push_back(
+      {{"slot", "vee"}, {"line", "Python function 'vee' in rigid.py is wrong: at m = ..."}});
   const ClassView v = decide_class(rows, Rubric{});
   const fs::path dir = scratch("feedback");
   const auto said = write_feedback_files(v, dir.string());

@@ -17,7 +17,8 @@ namespace fs = std::filesystem;
 
 TEST(LibraryFlags, AFileDeclaresItsLibrariesInCommentLines) {
   const LibraryRequest r = declared_in_source(
-      "// geomech: pkg ode\n  //geomech: cxxflags -DFAST \"-DNAME=a b\"\n// geomech: ldflags -lm\nint x;  // geomech: pkg no\n",
+      "// geomech: pkg ode\n  //geomech: cxxflags -DFAST \"-DNAME=a b\"\n// geomech: ldflags -lm\nint x;  // geomech: "
+      "pkg no\n",
       "mine.cpp");
   EXPECT_EQ(r.pkgs, (std::vector<std::string>{"ode"}));
   EXPECT_EQ(r.cxxflags, (std::vector<std::string>{"-DFAST", "-DNAME=a b"}));
@@ -26,7 +27,8 @@ TEST(LibraryFlags, AFileDeclaresItsLibrariesInCommentLines) {
     declared_in_source("\n// geomech: link ode\n", "mine.cpp");
     FAIL() << "an unknown request was accepted";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("mine.cpp:2: `// geomech: link` is not a request the suite knows"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("mine.cpp:2: `// geomech: link` is not a request the suite knows"),
+              std::string::npos)
         << e.what();
   }
 }
@@ -48,19 +50,30 @@ TEST(LibraryFlags, PkgConfigGivesAPackagesFlagsAndNamesAnUnknownOne) {
 
 TEST(LibraryFlags, AStrangersFlagsAreVettedYoursAreNot) {
   LibraryRequest r;
-  r.cxxflags = {"-DOK=1", "-I/usr/include/ode", "-Wall", "-I/root", "@/etc/os-release", "-B/tmp", "-wrapper,/bin/sh",
-                "-fplugin=/tmp/p.so", "-specs=/tmp/s", "-I/usr/include/../../etc", "-include", "/etc/passwd"};
+  r.cxxflags = {"-DOK=1",
+                "-I/usr/include/ode",
+                "-Wall",
+                "-I/root",
+                "@/etc/os-release",
+                "-B/tmp",
+                "-wrapper,/bin/sh",
+                "-fplugin=/tmp/p.so",
+                "-specs=/tmp/s",
+                "-I/usr/include/../../etc",
+                "-include",
+                "/etc/passwd"};
   r.ldflags = {"-lode", "-L/usr/lib/x86_64-linux-gnu", "-L/home", "-Wl,-T,/tmp/x.ld", "-l/etc/shadow"};
   try {
     resolve_library_flags(r, true);
     FAIL() << "a stranger's flags passed";
   } catch (const std::invalid_argument& e) {
     const std::string m = e.what();
-    for (const char* refused : {"'-I/root'", "'@/etc/os-release'", "'-B/tmp'", "'-wrapper,/bin/sh'", "'-fplugin=/tmp/p.so'",
-                                "'-specs=/tmp/s'", "'-I/usr/include/../../etc'", "'-include'", "'-L/home'",
-                                "'-Wl,-T,/tmp/x.ld'", "'-l/etc/shadow'"})
+    for (const char* refused : {"'-I/root'", "'@/etc/os-release'", "'-B/tmp'", "'-wrapper,/bin/sh'",
+                                "'-fplugin=/tmp/p.so'", "'-specs=/tmp/s'", "'-I/usr/include/../../etc'", "'-include'",
+                                "'-L/home'", "'-Wl,-T,/tmp/x.ld'", "'-l/etc/shadow'"})
       EXPECT_NE(m.find(refused), std::string::npos) << refused << " was not refused:\n" << m;
-    for (const char* passed : {"'-DOK=1'", "'-I/usr/include/ode'", "'-Wall'", "'-lode'", "'-L/usr/lib/x86_64-linux-gnu'"})
+    for (const char* passed :
+         {"'-DOK=1'", "'-I/usr/include/ode'", "'-Wall'", "'-lode'", "'-L/usr/lib/x86_64-linux-gnu'"})
       EXPECT_EQ(m.find(passed), std::string::npos) << passed << " was refused:\n" << m;
   }
   // The control: the same flags for your own file (in-process, no sandbox) are passed on as given.

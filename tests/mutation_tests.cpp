@@ -29,7 +29,7 @@ TEST(Mutation, OperatorsMakeTheExpectedMutants) {
                         "implicit_midpoint:manakov_step:h_perturbed"})
     EXPECT_NE(find(all, n), nullptr) << n;
   EXPECT_EQ(find(all, "momentum_map:transpose_result"), nullptr);  // a Vec3 result has no transpose
-  EXPECT_EQ(find(all, "pairing:permute_result"), nullptr);          // nor a scalar a permutation
+  EXPECT_EQ(find(all, "pairing:permute_result"), nullptr);         // nor a scalar a permutation
   // Every hand-written negative control is a mutant of class handwritten.
   EXPECT_TRUE(std::any_of(all.begin(), all.end(), [](const auto& m) { return m.op_class == "handwritten"; }));
 
@@ -69,7 +69,7 @@ TEST(Mutation, EquivalentMutantIsNotCounted) {
   const auto t = gm::mutation::tally(run, false);
   EXPECT_EQ(t.equivalent, 1);
   EXPECT_EQ(t.killed + t.survived, 0);
-  EXPECT_EQ(t.score(), 1.0);  // nothing left in the denominator
+  EXPECT_EQ(t.score(), 1.0);                     // nothing left in the denominator
   EXPECT_TRUE(run.unknown_equivalents.empty());  // every listed name is a real mutant
 }
 

@@ -145,8 +145,8 @@ TEST(OracleMixedPrecision, AgreesWithEveryOrderInTheWorkingPrecision) {
   }
   {
     oracle::ClebschField<Real70> f(Real70(2), Real70(1), Real70(2) / 3);
-    const std::vector<Real70> x0 = {Real70("0.5"), Real70("-1.5"), Real70("0.25"), Real70("1.25"), Real70("0.75"),
-                                    Real70("-2")};
+    const std::vector<Real70> x0 = {Real70("0.5"),  Real70("-1.5"), Real70("0.25"),
+                                    Real70("1.25"), Real70("0.75"), Real70("-2")};
     const auto r = compare_mixed_with_all_T(f, x0, dyn::times_to(Real70(5), 5), Real70("1e-62"));
     EXPECT_LE(r.difference, r.allowed) << "Clebsch, 70 digits: " << to_string_full(r.difference);
     EXPECT_GE(r.mixed_steps, r.steps - 1) << "the tiers were not used";
@@ -159,9 +159,8 @@ TEST(OracleMixedPrecision, AgreesWithEveryOrderInTheWorkingPrecision) {
 // fail on every step, and the recomputed steps must be as accurate.
 TEST(OracleMixedPrecision, RecomputesAStepWhosePredictedSplitFails) {
   oracle::FreeRigidBodyField<Real50> f(Real50(2), Real50(1), Real50(2) / 3);
-  const auto r = compare_mixed_with_all_T(f, {cos(Real50("1.1")), Real50(0), sin(Real50("1.1"))},
-                                          {Real50(10)}, Real50("1e-48"),
-                                          oracle::TaylorSolver<Real50, decltype(f)>::kGuardBits, -30);
+  const auto r = compare_mixed_with_all_T(f, {cos(Real50("1.1")), Real50(0), sin(Real50("1.1"))}, {Real50(10)},
+                                          Real50("1e-48"), oracle::TaylorSolver<Real50, decltype(f)>::kGuardBits, -30);
   EXPECT_GE(r.recomputed, r.steps - 1) << "the predictions held: the recomputation went untested";
   EXPECT_GE(r.mixed_steps, r.steps - 1);
   EXPECT_LE(r.difference, r.allowed) << to_string_full(r.difference);

@@ -20,7 +20,7 @@ namespace gm {
 namespace {
 
 const Catalogue* catalogue_or_null() {
-  static const Catalogue* c = [] () -> const Catalogue* {
+  static const Catalogue* c = []() -> const Catalogue* {
     try {
       return new Catalogue(load_catalogue(default_catalogue_path()));
     } catch (const std::exception& e) {
@@ -103,8 +103,8 @@ class NegativeControlTest : public ::testing::Test {
       }
     }
     if (!failed)
-      ADD_FAILURE() << "property '" << p_->id << "' does not fail on its negative control '" << mutant_
-                    << "' (" << m->description << "): the property checks nothing that this mistake breaks";
+      ADD_FAILURE() << "property '" << p_->id << "' does not fail on its negative control '" << mutant_ << "' ("
+                    << m->description << "): the property checks nothing that this mistake breaks";
   }
 
  private:
@@ -122,8 +122,9 @@ void register_property_tests() {
                               [&p, k]() -> ::testing::Test* { return new ReferenceTest(&p, k); });
       for (const auto& m : p.negative_controls)
         if (mutant_wrong_in(m, k))  // a precision mistake is right in double by construction
-        ::testing::RegisterTest(("negative." + scalar).c_str(), (p.id + "__" + m).c_str(), nullptr, nullptr, __FILE__,
-                                __LINE__, [&p, k, m]() -> ::testing::Test* { return new NegativeControlTest(&p, k, m); });
+          ::testing::RegisterTest(("negative." + scalar).c_str(), (p.id + "__" + m).c_str(), nullptr, nullptr, __FILE__,
+                                  __LINE__,
+                                  [&p, k, m]() -> ::testing::Test* { return new NegativeControlTest(&p, k, m); });
     }
   }
 }

@@ -114,8 +114,13 @@ TEST(ProtocolCodec, ShapesAreValidatedWithTheirPlace) {
 TEST(ProtocolCodec, EveryDoubleRoundTripsInTheShortestText) {
   EXPECT_EQ(encode_scalar(0.1), "0.1");
   EXPECT_EQ(encode_scalar(-2.0), "-2");
-  std::vector<double> xs = {0.0, -0.0, 0.1 + 0.2, 1.0 / 3.0, std::numeric_limits<double>::denorm_min(),
-                            std::numeric_limits<double>::min(), std::numeric_limits<double>::max(),
+  std::vector<double> xs = {0.0,
+                            -0.0,
+                            0.1 + 0.2,
+                            1.0 / 3.0,
+                            std::numeric_limits<double>::denorm_min(),
+                            std::numeric_limits<double>::min(),
+                            std::numeric_limits<double>::max(),
                             -std::numeric_limits<double>::max()};
   std::uint64_t bits = 0x9E3779B97F4A7C15ull;  // a fixed sequence of bit patterns (xorshift)
   while (xs.size() < 20000) {
@@ -258,7 +263,8 @@ TEST(RemoteSubject, ARepeatedCallIsAnsweredFromMemoryAndAnAnswerThatChangesIsNam
     ADD_FAILURE() << "the recheck did not notice the changed answer";
   } catch (const RemoteCallError& e) {
     const std::string m = e.what();
-    EXPECT_NE(m.find("function 'casimir' (double) answered the same arguments twice, differently"), std::string::npos) << m;
+    EXPECT_NE(m.find("function 'casimir' (double) answered the same arguments twice, differently"), std::string::npos)
+        << m;
     EXPECT_NE(m.find("persistent or global variable"), std::string::npos) << m;
     EXPECT_NE(m.find("the first time: \"" + std::to_string(static_cast<long long>(first))), std::string::npos) << m;
   }
@@ -342,27 +348,28 @@ std::vector<OctaveServer> octave_servers(const std::string& file) {
 // The Octave servers through live pipes (the client sends an empty line after each request: Octave's
 // fgetl waits for the byte after a line's end), against the Python implementation.
 TEST(RemoteSubject, OctaveCorrectMatchesPython) {
-  ASSERT_EQ(std::system("command -v octave-cli > /dev/null 2>&1"), 0) << "octave-cli is not installed: apt-get install -y octave (./geomech installs it; CI has it)";
+  ASSERT_EQ(std::system("command -v octave-cli > /dev/null 2>&1"), 0)
+      << "octave-cli is not installed: apt-get install -y octave (./geomech installs it; CI has it)";
   for (const auto& server : octave_servers("examples/students/correct.m")) {
-  SCOPED_TRACE(server.name);
-  harness::SubjectInfo oi, pi;
-  auto oc = std::make_shared<Connection>(server.command, "octave");
-  const SubjectSet o = remote_subject(oc, "correct_m", oi);
-  const SubjectSet p = remote_subject(python("correct.py"), "correct_py", pi);
-  ASSERT_TRUE(o.d);
-  EXPECT_FALSE(o.mp);
-  EXPECT_FALSE(o.q);
-  const Vec3<double> I(2, 1, 0.5), P(0.25, -1.5, 3), Q(1, 2, 3);
-  EXPECT_EQ(o.d->euler_3_8(I, P), p.d->euler_3_8(I, P));
-  const auto a = o.d->clebsch_3_21(I, Q, P), b = p.d->clebsch_3_21(I, Q, P);
-  EXPECT_EQ(a.first, b.first);
-  EXPECT_EQ(a.second, b.second);
-  ASSERT_EQ(o.d->integrators.size(), 1u);
-  const RigidBodyState<double> x{P, Mat3<double>::Identity()};
-  const auto y = o.d->integrators[0].rigid_body_step(I, x, 0.01);
-  const auto z = p.d->integrators[0].rigid_body_step(I, x, 0.01);
-  EXPECT_LT((y.Pi - z.Pi).norm(), 1e-14);
-  EXPECT_LT((y.O - z.O).norm(), 1e-14);
+    SCOPED_TRACE(server.name);
+    harness::SubjectInfo oi, pi;
+    auto oc = std::make_shared<Connection>(server.command, "octave");
+    const SubjectSet o = remote_subject(oc, "correct_m", oi);
+    const SubjectSet p = remote_subject(python("correct.py"), "correct_py", pi);
+    ASSERT_TRUE(o.d);
+    EXPECT_FALSE(o.mp);
+    EXPECT_FALSE(o.q);
+    const Vec3<double> I(2, 1, 0.5), P(0.25, -1.5, 3), Q(1, 2, 3);
+    EXPECT_EQ(o.d->euler_3_8(I, P), p.d->euler_3_8(I, P));
+    const auto a = o.d->clebsch_3_21(I, Q, P), b = p.d->clebsch_3_21(I, Q, P);
+    EXPECT_EQ(a.first, b.first);
+    EXPECT_EQ(a.second, b.second);
+    ASSERT_EQ(o.d->integrators.size(), 1u);
+    const RigidBodyState<double> x{P, Mat3<double>::Identity()};
+    const auto y = o.d->integrators[0].rigid_body_step(I, x, 0.01);
+    const auto z = p.d->integrators[0].rigid_body_step(I, x, 0.01);
+    EXPECT_LT((y.Pi - z.Pi).norm(), 1e-14);
+    EXPECT_LT((y.O - z.O).norm(), 1e-14);
   }
 }
 
@@ -384,10 +391,11 @@ json numbers_read(const json& j) {
 // Both Octave servers answer alike: the same handshake, the same values, and the same error texts
 // and tracebacks for every way a reply can go wrong (tests/remote/octave_faults.m).
 TEST(RemoteSubject, OctaveServersAnswerAlike) {
-  ASSERT_EQ(std::system("command -v octave-cli > /dev/null 2>&1"), 0) << "octave-cli is not installed: apt-get install -y octave (./geomech installs it; CI has it)";
+  ASSERT_EQ(std::system("command -v octave-cli > /dev/null 2>&1"), 0)
+      << "octave-cli is not installed: apt-get install -y octave (./geomech installs it; CI has it)";
   const json v3 = json::array({"0.25", "-1.5", "3"}), I = json::array({"2", "1", "0.5"});
-  const json m3 = json::array({json::array({"0", "-3", "-1.5"}), json::array({"3", "0", "-0.25"}),
-                               json::array({"1.5", "0.25", "0"})});
+  const json m3 = json::array(
+      {json::array({"0", "-3", "-1.5"}), json::array({"3", "0", "-0.25"}), json::array({"1.5", "0.25", "0"})});
   struct Case {
     std::string file;
     Call call;
@@ -404,7 +412,8 @@ TEST(RemoteSubject, OctaveServersAnswerAlike) {
       {"tests/remote/octave_faults.m", {"vee_n", "double", json::array({m3}), ""}},
       {"tests/remote/octave_faults.m", {"ad_star", "double", json::array({"so3", v3, v3}), ""}},
       {"examples/students/correct.m", {"euler_3_8", "double", json::array({I, v3}), ""}},
-      {"examples/students/correct.m", {"hat_n", "double", json::array({json::array({"1", "2", "3", "4", "5", "6"}), 4}), ""}},
+      {"examples/students/correct.m",
+       {"hat_n", "double", json::array({json::array({"1", "2", "3", "4", "5", "6"}), 4}), ""}},
       {"examples/students/correct.m", {"lie_hat", "double", json::array({"sl2", v3}), ""}},
       {"examples/students/correct.m", {"clebsch_3_21", "double", json::array({I, v3, I}), ""}},
       {"examples/students/correct.m",
@@ -416,13 +425,16 @@ TEST(RemoteSubject, OctaveServersAnswerAlike) {
       SCOPED_TRACE(server.name + " on " + file);
       Connection conn(server.command, "octave");
       json hello = conn.hello();
-      std::vector<json> got{json{{"slots", hello["slots"]}, {"integrators", hello["integrators"]},
-                                 {"description", hello["description"]}, {"language", hello["language"]}}};
+      std::vector<json> got{json{{"slots", hello["slots"]},
+                                 {"integrators", hello["integrators"]},
+                                 {"description", hello["description"]},
+                                 {"language", hello["language"]}}};
       for (const auto& c : cases) {
         if (c.file != file) continue;
         const auto r = conn.call_batch({c.call});
         ASSERT_EQ(r.size(), 1u);
-        got.push_back(json{{"slot", c.call.slot}, {"ok", r[0].ok}, {"result", numbers_read(r[0].result)}, {"error", r[0].error}});
+        got.push_back(
+            json{{"slot", c.call.slot}, {"ok", r[0].ok}, {"result", numbers_read(r[0].result)}, {"error", r[0].error}});
       }
       auto [it, first] = seen.emplace(file, got);
       if (first) continue;
@@ -444,8 +456,10 @@ TEST(RemoteSubject, OctaveServersAnswerAlike) {
   EXPECT_NE(error_of("pairing").find("expected a scalar, got a 3x3 array"), std::string::npos) << error_of("pairing");
   EXPECT_NE(error_of("lagrangian_2_5").find("expected numbers, got a value of class char"), std::string::npos)
       << error_of("lagrangian_2_5");
-  EXPECT_NE(error_of("lie_hat").find("expected numbers, got a value of class cell"), std::string::npos) << error_of("lie_hat");
-  EXPECT_NE(error_of("hat_n").find("expected a matrix, got an array of 3 dimensions"), std::string::npos) << error_of("hat_n");
+  EXPECT_NE(error_of("lie_hat").find("expected numbers, got a value of class cell"), std::string::npos)
+      << error_of("lie_hat");
+  EXPECT_NE(error_of("hat_n").find("expected a matrix, got an array of 3 dimensions"), std::string::npos)
+      << error_of("hat_n");
   EXPECT_FALSE(error_of("euler_3_8").empty());
 }
 
@@ -467,8 +481,10 @@ TEST(RemoteSubject, ARunOfStepsIsTheStepsOneByOne) {
   const Vec3<double> I(2, 1, 0.5), P(0.25, -1.5, 3);
   for (const auto& in : p.d->integrators) check(in, I, RigidBodyState<double>{P, Mat3<double>::Identity()}, 0.125);
   for (const auto& in : p.mp->integrators)
-    check(in, I.cast<Real50>().eval(), RigidBodyState<Real50>{P.cast<Real50>(), Mat3<Real50>::Identity()}, Real50(1) / 8);
-  ASSERT_EQ(std::system("command -v octave-cli > /dev/null 2>&1"), 0) << "octave-cli is not installed: apt-get install -y octave (./geomech installs it; CI has it)";
+    check(in, I.cast<Real50>().eval(), RigidBodyState<Real50>{P.cast<Real50>(), Mat3<Real50>::Identity()},
+          Real50(1) / 8);
+  ASSERT_EQ(std::system("command -v octave-cli > /dev/null 2>&1"), 0)
+      << "octave-cli is not installed: apt-get install -y octave (./geomech installs it; CI has it)";
   for (const auto& server : octave_servers("examples/students/correct.m")) {
     SCOPED_TRACE(server.name);
     harness::SubjectInfo oi;
@@ -482,7 +498,8 @@ TEST(RemoteSubject, ARunOfStepsIsTheStepsOneByOne) {
 TEST(RemoteSubject, RoundTripCost) {
   auto conn = python("correct.py");
   conn->hello();
-  const Call c{"euler_3_8", "double", json::array({json::array({"2", "1", "0.5"}), json::array({"0.25", "-1.5", "3"})}), ""};
+  const Call c{"euler_3_8", "double", json::array({json::array({"2", "1", "0.5"}), json::array({"0.25", "-1.5", "3"})}),
+               ""};
   const int n = 200;
   auto t0 = std::chrono::steady_clock::now();
   for (int i = 0; i < n; ++i) conn->call_batch({c});  // call() would answer the repeats from memory

@@ -191,7 +191,8 @@ TEST(Runner, TheShrinkBudgetKeepsTheSmallestFailureFoundSoFar) {
   ASSERT_EQ(v.outcome, Outcome::Fail) << format_verdict(v);
   EXPECT_TRUE(v.shrink_stopped);
   EXPECT_NE(v.message.find("k = "), std::string::npos) << v.message;
-  EXPECT_EQ(v.message.find("RC_DISCARD"), std::string::npos) << "the failure's own text, not the budget's: " << v.message;
+  EXPECT_EQ(v.message.find("RC_DISCARD"), std::string::npos)
+      << "the failure's own text, not the budget's: " << v.message;
   ASSERT_FALSE(v.counterexample.empty()) << "the inputs of the failing case";
   const int k = std::stoi(v.counterexample.front().second);
   EXPECT_GE(k, 10) << "a failing input";

@@ -21,23 +21,30 @@ using gm::testing_support::write_file;
 
 TEST(SourceCalls, ACallerIsReadFromPythonOctaveAndCpp) {
   const std::string py =
-      "def manakov_Omega(A, M):\n    \"\"\"not manakov_M(A, W) in a docstring\"\"\"\n    return solve(A, M)  # manakov_M( here\n\n"
+      "def manakov_Omega(A, M):\n    \"\"\"not manakov_M(A, W) in a docstring\"\"\"\n    return solve(A, M)  # "
+      "manakov_M( here\n\n"
       "def manakov_2_34(A, M):\n    W = manakov_Omega(A, M)\n    return madd(matmul(M, W), matmul(W, M), -1)\n";
   const auto p = slot_calls_in_text(py, "python");
   EXPECT_EQ(p.count("manakov_Omega"), 0u);  // neither the docstring nor the comment is a call
   ASSERT_EQ(p.count("manakov_2_34"), 1u);
   EXPECT_EQ(p.at("manakov_2_34"), (std::set<std::string>{"manakov_Omega"}));
-  const std::string m = "function W = manakov_Omega(A, M)\n  W = A';  % manakov_M(A, W)\nend\n"
-                        "function d = euler_3_8(I, P)\n  d = cross(P, omega_3_5(I, P));\nend\n";
-  EXPECT_EQ(slot_calls_in_text(m, "octave"), (std::map<std::string, std::set<std::string>>{{"euler_3_8", {"omega_3_5"}}}));
-  const std::string cpp = "struct S {\n  template <class T>\n  static Vec3<T> omega_3_5(const Vec3<T>& I, const Vec3<T>& P) {\n"
-                          "    return P.cwiseQuotient(I);\n  }\n  template <class T>\n"
-                          "  static Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& P) {\n    return P.cross(omega_3_5<T>(I, P));\n  }\n};\n";
-  EXPECT_EQ(slot_calls_in_text(cpp, "c++"), (std::map<std::string, std::set<std::string>>{{"euler_3_8", {"omega_3_5"}}}));
+  const std::string m =
+      "function W = manakov_Omega(A, M)\n  W = A';  % manakov_M(A, W)\nend\n"
+      "function d = euler_3_8(I, P)\n  d = cross(P, omega_3_5(I, P));\nend\n";
+  EXPECT_EQ(slot_calls_in_text(m, "octave"),
+            (std::map<std::string, std::set<std::string>>{{"euler_3_8", {"omega_3_5"}}}));
+  const std::string cpp =
+      "struct S {\n  template <class T>\n  static Vec3<T> omega_3_5(const Vec3<T>& I, const Vec3<T>& P) {\n"
+      "    return P.cwiseQuotient(I);\n  }\n  template <class T>\n"
+      "  static Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& P) {\n    return P.cross(omega_3_5<T>(I, P));\n  "
+      "}\n};\n";
+  EXPECT_EQ(slot_calls_in_text(cpp, "c++"),
+            (std::map<std::string, std::set<std::string>>{{"euler_3_8", {"omega_3_5"}}}));
   // A folder of Octave function files: calls across files; a link is not read (the control: the
   // same file as a regular file is).
   const fs::path dir = scratch("calls");
-  write_file(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
+  write_file(dir / "manakov_2_34.m",
+             "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
   write_file(dir / "elsewhere" / "euler.m", "function d = euler_3_8(I, P)\n  d = cross(P, omega_3_5(I, P));\nend\n");
   fs::create_symlink(dir / "elsewhere" / "euler.m", dir / "euler_3_8.m");
   const auto f = slot_calls(dir.string(), "octave");
@@ -53,7 +60,8 @@ TEST(SourceCalls, ACallerIsReadFromPythonOctaveAndCpp) {
 TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
   const fs::path dir = scratch("first-fix");
   write_file(dir / "manakov_Omega.m", "function W = manakov_Omega(A, M)\n  W = -M;\nend\n");
-  write_file(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
+  write_file(dir / "manakov_2_34.m",
+             "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
   CheckResult r;
   r.info.source = dir.string();
   r.info.language = "octave";
@@ -70,8 +78,12 @@ TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
   EXPECT_EQ(rc.order, (std::vector<std::string>{"manakov_Omega", "manakov_2_34"}));
   EXPECT_EQ(rc.calls_broken, (std::map<std::string, std::string>{{"manakov_2_34", "manakov_Omega"}}));
   const std::string md = markdown_report(r, nullptr);
-  EXPECT_NE(md.find("- **Octave function `manakov_Omega` in " + dir.filename().string() + " is wrong**"), std::string::npos) << md;
-  EXPECT_NE(md.find("fails too**, and it calls `manakov_Omega`, which is wrong (above): fix that first"), std::string::npos) << md;
+  EXPECT_NE(md.find("- **Octave function `manakov_Omega` in " + dir.filename().string() + " is wrong**"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("fails too**, and it calls `manakov_Omega`, which is wrong (above): fix that first"),
+            std::string::npos)
+      << md;
   // The control: a manakov_2_34 that does not call it is wrong on its own, and sorts as before.
   write_file(dir / "manakov_2_34.m", "function d = manakov_2_34(A, M)\n  d = M;\nend\n");
   const RootCauses alone = root_causes(r);

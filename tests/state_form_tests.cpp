@@ -11,9 +11,9 @@
 namespace gm {
 namespace {
 
-const char* kForms[] = {"matrix Pi",           "matrix Omega",           "matrix omega",           "matrix pi",
-                        "quaternion_wxyz Pi",  "quaternion_wxyz Omega",  "quaternion_wxyz omega",  "quaternion_wxyz pi",
-                        "quaternion_xyzw Pi",  "quaternion_xyzw Omega",  "quaternion_xyzw omega",  "quaternion_xyzw pi"};
+const char* kForms[] = {"matrix Pi",          "matrix Omega",          "matrix omega",          "matrix pi",
+                        "quaternion_wxyz Pi", "quaternion_wxyz Omega", "quaternion_wxyz omega", "quaternion_wxyz pi",
+                        "quaternion_xyzw Pi", "quaternion_xyzw Omega", "quaternion_xyzw omega", "quaternion_xyzw pi"};
 
 // A rotation made without the suite's conversions: the Cayley transform of hat(c) (rational in c).
 template <class T>
@@ -56,8 +56,8 @@ void conversions_round_trip_and_mean_what_they_say() {
   const T tol = T(64) * eps<T>();
   const Vec3<T> I(T(5) / T(4), T(3) / T(4), T(1) / T(2));
   const Vec3<T> Pi(T(3) / T(8), T(-5) / T(16), T(7) / T(32));
-  for (const Vec3<T>& c : {Vec3<T>(T(1) / T(3), T(-1) / T(5), T(2) / T(7)), Vec3<T>(T(3), T(-2), T(5)),
-                           Vec3<T>(T(0), T(0), T(0))}) {
+  for (const Vec3<T>& c :
+       {Vec3<T>(T(1) / T(3), T(-1) / T(5), T(2) / T(7)), Vec3<T>(T(3), T(-2), T(5)), Vec3<T>(T(0), T(0), T(0))}) {
     const Mat3<T> O = cayley<T>(c);
     for (const char* words : kForms) {
       SCOPED_TRACE(words);
@@ -65,10 +65,18 @@ void conversions_round_trip_and_mean_what_they_say() {
       const EngineState<T> u = to_declared<T>(f, I, O, Pi);
       // What each part is: the notes' formulas, written here.
       switch (f.angular) {
-        case Angular::Pi: EXPECT_LE(max_abs(Vec3<T>(u.Pi - Pi)), tol); break;
-        case Angular::Omega: EXPECT_LE(max_abs(Vec3<T>(u.Omega.cwiseProduct(I) - Pi)), tol); break;
-        case Angular::omega: EXPECT_LE(max_abs(Vec3<T>(u.omega - O * Pi.cwiseQuotient(I))), tol); break;
-        case Angular::pi: EXPECT_LE(max_abs(Vec3<T>(u.pi - O * Pi)), tol); break;
+        case Angular::Pi:
+          EXPECT_LE(max_abs(Vec3<T>(u.Pi - Pi)), tol);
+          break;
+        case Angular::Omega:
+          EXPECT_LE(max_abs(Vec3<T>(u.Omega.cwiseProduct(I) - Pi)), tol);
+          break;
+        case Angular::omega:
+          EXPECT_LE(max_abs(Vec3<T>(u.omega - O * Pi.cwiseQuotient(I))), tol);
+          break;
+        case Angular::pi:
+          EXPECT_LE(max_abs(Vec3<T>(u.pi - O * Pi)), tol);
+          break;
       }
       if (f.has_quaternion()) {
         const Vec4<T> q = state_form::wxyz<T>(u.q, f.attitude);
@@ -93,8 +101,12 @@ void conversions_round_trip_and_mean_what_they_say() {
   }
 }
 
-TEST(StateForm, ConversionsRoundTripAndMeanWhatTheySayInDouble) { conversions_round_trip_and_mean_what_they_say<double>(); }
-TEST(StateForm, ConversionsRoundTripAndMeanWhatTheySayIn50Digits) { conversions_round_trip_and_mean_what_they_say<Real50>(); }
+TEST(StateForm, ConversionsRoundTripAndMeanWhatTheySayInDouble) {
+  conversions_round_trip_and_mean_what_they_say<double>();
+}
+TEST(StateForm, ConversionsRoundTripAndMeanWhatTheySayIn50Digits) {
+  conversions_round_trip_and_mean_what_they_say<Real50>();
+}
 
 // The negative control of the test above: a quaternion taken as (x, y, z, w) where it is (w, x, y, z)
 // does not rotate as O does.
@@ -159,8 +171,9 @@ TEST(DeclaredStep, ARunThroughTheNotesStateIsTheUsersOwnRun) {
   const DeclaredStates<double> states(in.form);
   const RigidBodyState<double> z = states.notes(I, u);
   EXPECT_EQ(states.of(I, z).q, u.q);
-  EXPECT_LE(std::abs(states.of(I, RigidBodyState<double>{z.Pi, z.O * cayley<double>(Vec3<double>(0, 0, 0.5))}).q.norm() - 1),
-            1e-15)
+  EXPECT_LE(
+      std::abs(states.of(I, RigidBodyState<double>{z.Pi, z.O * cayley<double>(Vec3<double>(0, 0, 0.5))}).q.norm() - 1),
+      1e-15)
       << "a state the user's step did not return is converted";
 }
 
@@ -214,7 +227,8 @@ TEST(DeclaredStep, ARaiseInTheDeclaredFormIsToldAsARaise) {
   };
   adapt_declared_step(in);
   const Integrator<double> g = guarded(in);
-  const EngineState<double> u = to_declared<double>(in.form, Vec3<double>(2, 1, 1), Mat3<double>::Identity(), Vec3<double>(2, 0, 0));
+  const EngineState<double> u =
+      to_declared<double>(in.form, Vec3<double>(2, 1, 1), Mat3<double>::Identity(), Vec3<double>(2, 0, 0));
   try {
     g.declared_step(Vec3<double>(2, 1, 1), u, 0.125);
     FAIL() << "the raise passed";
@@ -226,7 +240,9 @@ TEST(DeclaredStep, ARaiseInTheDeclaredFormIsToldAsARaise) {
   current_step_raise().reset();
   // The control: without the guard it is a plain exception, which a check reports as its own failure.
   EXPECT_THROW(
-      try { in.declared_step(Vec3<double>(2, 1, 1), u, 0.125); } catch (const StepRaised&) { FAIL() << "guarded already"; },
+      try { in.declared_step(Vec3<double>(2, 1, 1), u, 0.125); } catch (const StepRaised&) {
+        FAIL() << "guarded already";
+      },
       std::runtime_error);
 }
 
@@ -243,8 +259,8 @@ Integrator<double> semi_implicit_world_omega(Slip slip) {
     Vec3<double> W = slip == Slip::Transpose ? Vec3<double>(R * x.omega) : Vec3<double>(R.transpose() * x.omega);
     W += h * Vec3<double>(I.cwiseProduct(W).cross(W)).cwiseQuotient(I);
     const Vec4<double> pure(0, W(0), W(1), W(2));
-    const Vec4<double> rate =
-        slip == Slip::WorldSide ? ref::quaternion_product<double>(pure, x.q) : ref::quaternion_product<double>(x.q, pure);
+    const Vec4<double> rate = slip == Slip::WorldSide ? ref::quaternion_product<double>(pure, x.q)
+                                                      : ref::quaternion_product<double>(x.q, pure);
     EngineState<double> y = x;
     y.q = (x.q + h / 2 * rate).normalized();
     y.omega = state_form::rotation_of<double>(y.q) * W;
@@ -266,7 +282,8 @@ std::string reading(Slip slip) {
 TEST(DeclaredStepField, ARightStepFollowsTheNotesInItsOwnForm) {
   const std::string r = reading(Slip::None);
   EXPECT_NE(r.find("your state is a unit quaternion q = (w, x, y, z) and the spatial angular velocity omega"),
-            std::string::npos) << r;
+            std::string::npos)
+      << r;
   EXPECT_NE(r.find("follow the notes"), std::string::npos) << r;
   EXPECT_NE(r.find("[field right]"), std::string::npos) << r;
 }

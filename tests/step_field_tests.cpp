@@ -75,22 +75,28 @@ TEST(StepField, AManakovStepOfTheRightEquationIsSaidRight) {
 
 TEST(StepField, EachManakovMistakeIsNamed) {
   auto text = [](auto M_dot, auto O_dot) { return manakov_diagnosis(manakov_euler(M_dot, O_dot)).text; };
-  EXPECT_NE(text([](const MatX<double>& A, const MatX<double>& M) { return stepfield::bracket(Omega_of(A, M), M); }, right_O)
-                .find("your step follows dM/dt = [Omega, M]"),
-            std::string::npos);
-  const std::string commuting = text(
-      [](const MatX<double>& A, const MatX<double>& M) { return stepfield::bracket(M, MatX<double>(A.inverse() * M / 2)); },
-      right_O);
+  EXPECT_NE(
+      text([](const MatX<double>& A, const MatX<double>& M) { return stepfield::bracket(Omega_of(A, M), M); }, right_O)
+          .find("your step follows dM/dt = [Omega, M]"),
+      std::string::npos);
+  const std::string commuting =
+      text([](const MatX<double>& A,
+              const MatX<double>& M) { return stepfield::bracket(M, MatX<double>(A.inverse() * M / 2)); },
+           right_O);
   EXPECT_NE(commuting.find("as if A and Omega commuted"), std::string::npos) << commuting;
-  const std::string backwards =
-      text(right_M, [](const MatX<double>& A, const ManakovState<double>& x) { return MatX<double>(-x.O * Omega_of(A, x.M)); });
+  const std::string backwards = text(right_M, [](const MatX<double>& A, const ManakovState<double>& x) {
+    return MatX<double>(-x.O * Omega_of(A, x.M));
+  });
   EXPECT_NE(backwards.find("dO/dt = -O Omega"), std::string::npos) << backwards;
-  EXPECT_EQ(backwards.find("dM/dt"), std::string::npos) << "the body part is right and must not be blamed: " << backwards;
-  const std::string left =
-      text(right_M, [](const MatX<double>& A, const ManakovState<double>& x) { return MatX<double>(Omega_of(A, x.M) * x.O); });
+  EXPECT_EQ(backwards.find("dM/dt"), std::string::npos)
+      << "the body part is right and must not be blamed: " << backwards;
+  const std::string left = text(right_M, [](const MatX<double>& A, const ManakovState<double>& x) {
+    return MatX<double>(Omega_of(A, x.M) * x.O);
+  });
   EXPECT_NE(left.find("Omega applied on the left"), std::string::npos) << left;
-  const std::string still = text([](const MatX<double>&, const MatX<double>& M) { return MatX<double>(MatX<double>::Zero(M.rows(), M.cols())); },
-                                 right_O);
+  const std::string still = text(
+      [](const MatX<double>&, const MatX<double>& M) { return MatX<double>(MatX<double>::Zero(M.rows(), M.cols())); },
+      right_O);
   EXPECT_NE(still.find("leaves M unchanged"), std::string::npos) << still;
 }
 
@@ -123,11 +129,13 @@ TEST(StepField, EachClebschMistakeIsNamed) {
   const Vec3<double> I(1.75, 1.5, 1.25);
   const auto F = [&](const MatX<double>& Z) { return ref::clebsch_field<double>(I, Z); };
   EXPECT_NE(clebsch_text(F).find("your step's vector field is right"), std::string::npos);
-  EXPECT_NE(clebsch_text([&](const MatX<double>& Z) { return MatX<double>(-F(Z)); }).find("Omega x Q"), std::string::npos);
+  EXPECT_NE(clebsch_text([&](const MatX<double>& Z) { return MatX<double>(-F(Z)); }).find("Omega x Q"),
+            std::string::npos);
   const std::string inertia = clebsch_text([&](const MatX<double>& Z) {
     const auto [Q, P] = ref::unstack3<double>(Z);
     const Vec3<double> W = I.cwiseProduct(ref::cross<double>(P, Q));
-    return ref::stack<double>(Vec3Pair<double>{Vec3<double>(-ref::cross<double>(W, Q)), Vec3<double>(-ref::cross<double>(W, P))});
+    return ref::stack<double>(
+        Vec3Pair<double>{Vec3<double>(-ref::cross<double>(W, Q)), Vec3<double>(-ref::cross<double>(W, P))});
   });
   EXPECT_NE(inertia.find("applied instead of its inverse"), std::string::npos) << inertia;
 

@@ -156,10 +156,10 @@ TEST(LongTime, TellsOscillationLossGrowthAndRoundoffApart) {
   for (int k = 0; k <= 20000; ++k) {
     const double s = k / 8.0;
     t.push_back(s);
-    loss.push_back(1e-6 * std::sin(s) - 4e-9 * s);   // drift -1e-5 over the run: c T = 10 a (a trend once c T > 4 a)
+    loss.push_back(1e-6 * std::sin(s) - 4e-9 * s);  // drift -1e-5 over the run: c T = 10 a (a trend once c T > 4 a)
     growth.push_back(1e-6 * std::sin(s) + 4e-9 * s);
     wave.push_back(1e-4 * (1 - std::cos(s)));
-    slow.push_back(1e-4 * std::sin(s / 40));         // period ~250: 10 periods in the run
+    slow.push_back(1e-4 * std::sin(s / 40));  // period ~250: 10 periods in the run
     tiny.push_back(1e-14 * std::sin(s));
     blowup.push_back(k < 15000 ? 1e-3 * std::exp(s / 100) : std::numeric_limits<double>::infinity());
     saturating.push_back(-0.51 * (1 - std::exp(-s / 10)));  // 51% lost, nearly all in the first 1% of the run
@@ -180,7 +180,8 @@ TEST(LongTime, TellsOscillationLossGrowthAndRoundoffApart) {
   // Not finite: after a growth it is the growth's end; from a state whose energy had not grown, a NaN
   // the step returned, said as such (never "gains energy"), and the run's statistics not shown.
   const auto b = longtime::classify_energy_error(t, blowup, budget, step);
-  EXPECT_NE(b.words().find("gains energy without bound: H is not finite within 15000 steps"), std::string::npos) << b.words();
+  EXPECT_NE(b.words().find("gains energy without bound: H is not finite within 15000 steps"), std::string::npos)
+      << b.words();
   EXPECT_EQ(b.evidence(), b.words());
   std::vector<double> nan_early(wave.begin(), wave.begin() + 100);
   nan_early.push_back(std::numeric_limits<double>::quiet_NaN());
@@ -208,7 +209,8 @@ TEST(OrderClaim, AnExactStepHoldsAnyClaimedOrder) {
   ASSERT_EQ(recorded_claims().size(), 1u);
   EXPECT_TRUE(recorded_claims()[0].holds);
   EXPECT_NE(recorded_claims()[0].evidence.find("exact for this problem (error at round-off for every step size"),
-            std::string::npos) << recorded_claims()[0].evidence;
+            std::string::npos)
+      << recorded_claims()[0].evidence;
 
   // Not measurable is an incomplete finding: it refutes nothing and verifies nothing (the
   // claims block then says NOT VERIFIED, with this reason).

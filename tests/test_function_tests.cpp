@@ -48,7 +48,8 @@ TEST(Polynomials, ValueGradientAndHessianAreExact) {
 
 TEST(Polynomials, ProductsSumsAndSubstitutionAreSymbolic) {
   const auto p = sample();
-  auto q = Polynomial<Rational>::coordinate(3, 1) * Polynomial<Rational>::coordinate(3, 2) + Polynomial<Rational>::constant(3, 3);
+  auto q = Polynomial<Rational>::coordinate(3, 1) * Polynomial<Rational>::coordinate(3, 2) +
+           Polynomial<Rational>::constant(3, 3);
   const auto x = point(Rational(7) / 8, Rational(1) / 4, Rational(-1));
   EXPECT_EQ((p * q)(x), p(x) * q(x));
   EXPECT_EQ((p - p).terms().size(), 0u);  // cancelling terms are dropped
@@ -99,7 +100,8 @@ TEST(LineDerivatives, GradientOfAPolynomialBlackBoxIsExactInRationals) {
   const auto p = sample();
   const auto x = point(Rational(1) / 8, Rational(-5) / 8, Rational(3) / 2);
   const auto nodes = central_nodes<Rational>(p.degree());
-  const auto g = line_gradient("p", [&](const VecX<Rational>& y) { return p(y); }, x, nodes, Rational(1), 0);
+  const auto g = line_gradient(
+      "p", [&](const VecX<Rational>& y) { return p(y); }, x, nodes, Rational(1), 0);
   EXPECT_EQ(g, p.gradient(x));
 }
 
@@ -111,7 +113,8 @@ TEST(LineDerivatives, GradientOfAPolynomialBlackBoxIsCloseInDouble) {
   x << 0.125, -0.625, 1.5;
   const auto nodes = central_nodes<double>(p.degree());
   const double R = 1.5 + to_double(nodes.radius());
-  const auto g = line_gradient("p", [&](const VecX<double>& y) { return p(y); }, x, nodes, p.bound(R), p.eval_ops());
+  const auto g = line_gradient(
+      "p", [&](const VecX<double>& y) { return p(y); }, x, nodes, p.bound(R), p.eval_ops());
   EXPECT_LE(max_abs((g - p.gradient(x)).eval()), (p.eval_ops() + nodes.ops()) * eps<double>() * nodes.W * p.bound(R));
 }
 
@@ -120,13 +123,15 @@ TEST(LineDerivatives, CertificateRejectsAFunctionOfHigherDegree) {
   const auto nodes = central_nodes<Rational>(2);
   // 1 / (1 + |y|^2) is not a polynomial: the interpolant cannot predict the next node.
   const auto msg = failure_of([&] {
-    line_gradient("1/(1+|y|^2)", [](const VecX<Rational>& y) { return Rational(1) / (1 + y.squaredNorm()); }, x, nodes,
-                  Rational(1), 0);
+    line_gradient(
+        "1/(1+|y|^2)", [](const VecX<Rational>& y) { return Rational(1) / (1 + y.squaredNorm()); }, x, nodes,
+        Rational(1), 0);
   });
   EXPECT_NE(msg.find("is a polynomial of degree <= 2"), std::string::npos) << msg;
   // A polynomial of degree 3 > 2m = 2 is rejected too.
   const auto msg3 = failure_of([&] {
-    line_gradient("y1^3", [](const VecX<Rational>& y) { return Rational(y(0) * y(0) * y(0)); }, x, nodes, Rational(1), 0);
+    line_gradient(
+        "y1^3", [](const VecX<Rational>& y) { return Rational(y(0) * y(0) * y(0)); }, x, nodes, Rational(1), 0);
   });
   EXPECT_NE(msg3.find("is a polynomial of degree <= 2"), std::string::npos) << msg3;
 }

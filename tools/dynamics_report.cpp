@@ -106,7 +106,8 @@ void conserved_along_flows(Worst& w, int cases) {
     }
     const Vec3<T> pi0 = s.spatial_momentum(O0, Pi0);
     for (const auto& x : dyn::oracle_rigid_body(I, x0, dyn::times_to(horizon, 10))) {
-      w.add("spatial_momentum(O, Pi) along the oracle's (2.20)", mp, d(max_abs((s.spatial_momentum(x.O, x.Pi) - pi0).eval())));
+      w.add("spatial_momentum(O, Pi) along the oracle's (2.20)", mp,
+            d(max_abs((s.spatial_momentum(x.O, x.Pi) - pi0).eval())));
       const Vec3<T> omega = x.O * x.Pi.cwiseQuotient(I), omega0 = O0 * Pi0.cwiseQuotient(I);
       w.add("I_space omega (Remark 2.1)", mp,
             d(max_abs((s.inertia_space(x.O, I) * omega - s.inertia_space(O0, I) * omega0).eval())));
@@ -261,7 +262,8 @@ int main(int argc, char** argv) {
   const int cd = argc > 1 ? std::atoi(argv[1]) : 20;
   const int cm = argc > 2 ? std::atoi(argv[2]) : 4;
   using namespace gm;
-  std::printf("Conserved quantities along the flows the properties use (%d cases in double, %d in 50 digits)\n", cd, cm);
+  std::printf("Conserved quantities along the flows the properties use (%d cases in double, %d in 50 digits)\n", cd,
+              cm);
   Worst w;
   conserved_along_flows<double>(w, cd);
   conserved_along_flows<Real50>(w, cm);

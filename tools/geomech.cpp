@@ -115,8 +115,17 @@ int run_student_check(const std::string& file, harness::CheckCliOptions o, const
     if (q.ok && !q.cached) {
       std::cerr << "geomech: compiled the double instantiation in " << std::fixed << std::setprecision(1) << q.seconds
                 << " s: a first look at every slot in double while the 50-digit and exact ones compile\n";
-      std::vector<std::string> argv{q.program, "--definitions", "--jobs", "1", "--name", q.name, "--source", file,
-                                    "--build-notes", q.notes_file, "--reproduce-prefix",
+      std::vector<std::string> argv{q.program,
+                                    "--definitions",
+                                    "--jobs",
+                                    "1",
+                                    "--name",
+                                    q.name,
+                                    "--source",
+                                    file,
+                                    "--build-notes",
+                                    q.notes_file,
+                                    "--reproduce-prefix",
                                     front_door() + " check " + harness::shell_quote(file) + replay_build_options(bo)};
       first_look = std::thread([argv] { harness::run_process(harness::ProcessSpec{argv, {}, true}); });
     }
@@ -142,8 +151,8 @@ int run_student_check(const std::string& file, harness::CheckCliOptions o, const
                            front_door() + " check " + harness::shell_quote(file) + replay_build_options(bo)});
   const harness::ProcessResult pr = harness::run_process(harness::ProcessSpec{argv, {}, true});
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  std::cerr << "geomech: checked " << b.name << " in " << std::fixed << std::setprecision(1) << total
-            << " s (build " << b.seconds << " s, check " << pr.seconds << " s)\n";
+  std::cerr << "geomech: checked " << b.name << " in " << std::fixed << std::setprecision(1) << total << " s (build "
+            << b.seconds << " s, check " << pr.seconds << " s)\n";
   if (!pr.started) {
     std::cerr << "geomech check: " << pr.output << "\n";
     return 2;
@@ -187,15 +196,16 @@ int run_protocol_check(const std::string& file, const std::vector<std::string>& 
   }
   if (language == "c++") {  // functions named like a slot but not one
     try {
-      for (const auto& advice : harness::slot_name_advice(harness::cpp_function_names(harness::read_stranger_file(file))))
+      for (const auto& advice :
+           harness::slot_name_advice(harness::cpp_function_names(harness::read_stranger_file(file))))
         info.warnings.push_back(advice);
     } catch (const harness::RefusedEntry&) {
       // not read: no advice
     }
   }
-  std::cerr << "geomech: " << language << " implementation " << file << " started and described itself in " << std::fixed
-            << std::setprecision(2) << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()
-            << " s\n";
+  std::cerr << "geomech: " << language << " implementation " << file << " started and described itself in "
+            << std::fixed << std::setprecision(2)
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
   const bool narrowed = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" || !o.integrator.empty() ||
                         !o.reproduce.empty();
   if (o.report_dir.empty() && !narrowed) o.report_dir = "geomech-reports/" + name;
@@ -371,7 +381,8 @@ int run_trajectory_check(const std::vector<std::string>& files, const harness::T
   for (const auto& f : files) cmd += " " + harness::shell_quote(f);
   if (o.params.system) cmd += " --system " + harness::shell_quote(*o.params.system);
   if (o.params.inertia)
-    cmd += " --inertia " + harness::shell_quote((*o.params.inertia)[0] + "," + (*o.params.inertia)[1] + "," + (*o.params.inertia)[2]);
+    cmd += " --inertia " +
+           harness::shell_quote((*o.params.inertia)[0] + "," + (*o.params.inertia)[1] + "," + (*o.params.inertia)[2]);
   if (o.params.step) cmd += " --step " + harness::shell_quote(*o.params.step);
   if (o.order > 0) cmd += " --order " + std::to_string(o.order);
   if (!o.preserves.empty()) {
@@ -388,8 +399,7 @@ int run_trajectory_check(const std::vector<std::string>& files, const harness::T
   std::optional<Catalogue> cat;
   try {
     cat = load_catalogue(default_catalogue_path());
-  } catch (const std::exception&) {
-  }
+  } catch (const std::exception&) {}
   if (quiet)
     std::cout << r.subject << ": " << r.verdict_word() << " (" << r.count(Outcome::Pass) << " PASS, "
               << r.count(Outcome::Fail) << " FAIL)\n";
@@ -516,8 +526,9 @@ int run_slots(const std::string& language) {
   }
   const bool python = language == "python";
   const std::string comment = python ? "# " : "% ";
-  std::cout << (python ? "## Python: functions named after the slots (scalars: float, mpmath.mpf, fractions.Fraction)\n\n"
-                       : "## Octave / MATLAB: functions named after the slots (double only)\n\n")
+  std::cout << (python
+                    ? "## Python: functions named after the slots (scalars: float, mpmath.mpf, fractions.Fraction)\n\n"
+                    : "## Octave / MATLAB: functions named after the slots (double only)\n\n")
             << "```" << (python ? "python" : "matlab") << "\n";
   for (const auto& s : subject_slots()) {
     std::cout << other_language_signature(s, python) << "\n    " << comment << s.place << ": " << s.meaning << "\n";
@@ -582,7 +593,8 @@ int main(int argc, char** argv) {
   check->add_option("--subject", subject, "built-in subject when no file is given (default: reference)");
   check->add_flag("--verbose", bo.verbose, "print the compiler commands");
   check->add_flag("--rebuild", bo.force, "compile again even if nothing changed");
-  check->add_option("--cache-dir", bo.cache_dir, "where compiled implementations are kept (default: in the build tree)");
+  check->add_option("--cache-dir", bo.cache_dir,
+                    "where compiled implementations are kept (default: in the build tree)");
   check->add_option("--name", bo.name, "the implementation's name in the report (default: the file's name)");
   check->add_option("--reproduce-prefix", gm::g_reproduce_prefix,
                     "the command the report prints to replay a check (default: this one; check-class gives the "
@@ -602,13 +614,19 @@ int main(int argc, char** argv) {
 
   gm::harness::ClassOptions class_opts;
   class_opts.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  auto* klass = app.add_subcommand("check-class", "check every implementation in a folder, in parallel, with a summary table");
-  klass->add_option("folder", class_opts.dir, "the class folder: one .cpp, .py or .m file per student, or one folder per student (C++, Python, or Octave function files)")->required();
+  auto* klass =
+      app.add_subcommand("check-class", "check every implementation in a folder, in parallel, with a summary table");
+  klass
+      ->add_option("folder", class_opts.dir,
+                   "the class folder: one .cpp, .py or .m file per student, or one folder per student (C++, Python, or "
+                   "Octave function files)")
+      ->required();
   klass->add_option("--parallel", class_opts.jobs, "implementations checked at once (default: all cores)")
       ->check(CLI::Range(1, 256));
   klass->add_option("--timeout-per-implementation", class_opts.timeout_per_implementation,
                     "seconds allowed to build and check one implementation (default 1800)");
-  klass->add_option("--cache-dir", class_opts.build.cache_dir, "where compiled implementations are kept (default: in the build tree)");
+  klass->add_option("--cache-dir", class_opts.build.cache_dir,
+                    "where compiled implementations are kept (default: in the build tree)");
   bool trusted = false;
   klass->add_flag("--trusted", trusted,
                   "check the implementations in-process, without the sandbox (faster; only for code you trust: "
@@ -616,13 +634,15 @@ int main(int argc, char** argv) {
   gm::harness::add_check_options(*klass, class_opts.check);
   gm::harness::add_library_options(*klass, class_libs);
   std::string shard;
-  klass->add_option("--shard", shard, "K/N: check only the K-th of N deterministic shares of the folder (CI matrix, Slurm array)");
+  klass->add_option("--shard", shard,
+                    "K/N: check only the K-th of N deterministic shares of the folder (CI matrix, Slurm array)");
   klass->add_option("--shared", class_opts.shared,
                     "FILE: a header every C++ submission may include (repeatable); nothing else of the class folder is "
                     "shared between students");
-  klass->add_flag("--fresh", class_opts.fresh,
-                  "check every implementation again (by default a re-run resumes: one unchanged since its last complete "
-                  "check, in source, options and suite, is not checked again)");
+  klass->add_flag(
+      "--fresh", class_opts.fresh,
+      "check every implementation again (by default a re-run resumes: one unchanged since its last complete "
+      "check, in source, options and suite, is not checked again)");
   klass->add_option("--regrade", class_opts.regrade,
                     "NAME: check this implementation again whatever its last result (repeatable); every other is "
                     "resumed as usual, and the summary and gradebook cover the whole class");
@@ -640,7 +660,8 @@ int main(int argc, char** argv) {
   add_grade_options(*klass, class_opts.grades);
   std::vector<std::string> merge_dirs;
   std::string merge_out;
-  auto* merge = app.add_subcommand("merge-class", "combine the report folders of check-class --shard K/N runs into one class report");
+  auto* merge = app.add_subcommand("merge-class",
+                                   "combine the report folders of check-class --shard K/N runs into one class report");
   merge->add_option("out", merge_out, "the folder for the combined report")->required();
   merge->add_option("shards", merge_dirs, "the shards' report folders")->required();
   gm::harness::GradeOptions merge_grades;
@@ -652,7 +673,8 @@ int main(int argc, char** argv) {
   bool tr_quiet = false;
   auto* traj = app.add_subcommand("check-trajectory",
                                   "check trajectory files from any language (format: docs/TRAJECTORY_FORMAT.md)");
-  traj->add_option("files", trajectory_files, "trajectory files; several runs of one motion at different steps give the order")
+  traj->add_option("files", trajectory_files,
+                   "trajectory files; several runs of one motion at different steps give the order")
       ->required();
   traj->add_option("--system", tr_system, "the system, for files without a header (rigid_body)");
   traj->add_option("--inertia", tr_inertia, "I1,I2,I3 for files without a header")->expected(3)->delimiter(',');
@@ -665,11 +687,14 @@ int main(int argc, char** argv) {
   traj->add_option("--tolerance", tro.tolerance,
                    "allowed error against the reference, relative to |Pi(0)| (default 0.05: catches wrong equations)")
       ->check(CLI::PositiveNumber);
-  traj->add_option("--report", tr_report, "write report.md, junit.xml, verdicts.json and figures/ here (default: geomech-reports/trajectory-<first file>)");
+  traj->add_option(
+      "--report", tr_report,
+      "write report.md, junit.xml, verdicts.json and figures/ here (default: geomech-reports/trajectory-<first file>)");
   traj->add_option("--junit", tr_junit, "also write the JUnit XML to this file");
   traj->add_flag("--quiet,-q", tr_quiet, "print only the summary");
-  traj->add_flag("--allow-nonphysical", tro.params.allow_nonphysical,
-                 "accept moments of inertia that violate the triangle inequality (no body has them; the notes' examples do)");
+  traj->add_flag(
+      "--allow-nonphysical", tro.params.allow_nonphysical,
+      "accept moments of inertia that violate the triangle inequality (no body has them; the notes' examples do)");
 
   auto* list = app.add_subcommand("list", "list the registered properties");
   auto* slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
@@ -692,28 +717,36 @@ int main(int argc, char** argv) {
 
   gm::mutation::MutantsOptions mo;
   auto* mut = app.add_subcommand(
-      "mutants", "mutation score: run the properties on single-mistake variants of the reference (docs: DESIGN.md, mutants)");
+      "mutants",
+      "mutation score: run the properties on single-mistake variants of the reference (docs: DESIGN.md, mutants)");
   mut->add_option("--slot", mo.slot, "only the mutants of this slot (rigid_body_step / manakov_step for integrators)");
   mut->add_option("--mutant", mo.mutant, "only this mutant (e.g. euler_3_8:negate_result)");
   mut->add_flag("--verbose", mo.verbose, "every property's verdict on each mutant (no early stop)");
-  mut->add_flag("--matrix", mo.matrix,
-                "the kill matrix: every property and scalar on every mutant of the full reference, timed, and the quick "
-                "profile chosen from it (in the report)");
-  mut->add_option("--write-quick-profile", mo.quick_profile_out,
-                  "with --matrix: write the quick profile (`geomech check --quick`) to this file (spec/quick_profile.json)");
-  mut->add_option("--write-thorough-only", mo.thorough_only_out,
-                  "with --matrix: write the 50-digit runs an implementation behind the protocol leaves to `geomech check "
-                  "--thorough` to this file (spec/thorough_only.json)");
-  mut->add_option("--from-report", mo.from_report,
-                  "read the kill matrix of an earlier `--matrix --report DIR` run (DIR/mutants.json) instead of running the "
-                  "mutants again, and choose the profiles from it")
+  mut->add_flag(
+      "--matrix", mo.matrix,
+      "the kill matrix: every property and scalar on every mutant of the full reference, timed, and the quick "
+      "profile chosen from it (in the report)");
+  mut->add_option(
+      "--write-quick-profile", mo.quick_profile_out,
+      "with --matrix: write the quick profile (`geomech check --quick`) to this file (spec/quick_profile.json)");
+  mut->add_option(
+      "--write-thorough-only", mo.thorough_only_out,
+      "with --matrix: write the 50-digit runs an implementation behind the protocol leaves to `geomech check "
+      "--thorough` to this file (spec/thorough_only.json)");
+  mut->add_option(
+         "--from-report", mo.from_report,
+         "read the kill matrix of an earlier `--matrix --report DIR` run (DIR/mutants.json) instead of running the "
+         "mutants again, and choose the profiles from it")
       ->check(CLI::ExistingFile);
   mut->add_option("--case-factor", mo.case_factor, "multiplies the properties' case counts (default 0.3)")
       ->check(CLI::PositiveNumber);
   mut->add_option("--seed", mo.seed, "base seed (default fixed)");
-  mut->add_option("--jobs,-j", mo.jobs, "mutants run at once, each in its own process (default 2)")->check(CLI::Range(1, 256));
-  mut->add_option("--timeout", mo.timeout_seconds, "seconds allowed per mutant (default 900)")->check(CLI::PositiveNumber);
-  mut->add_option("--min-score", mo.min_score, "exit 1 when the score in the full reference is below this (default 0.98)")
+  mut->add_option("--jobs,-j", mo.jobs, "mutants run at once, each in its own process (default 2)")
+      ->check(CLI::Range(1, 256));
+  mut->add_option("--timeout", mo.timeout_seconds, "seconds allowed per mutant (default 900)")
+      ->check(CLI::PositiveNumber);
+  mut->add_option("--min-score", mo.min_score,
+                  "exit 1 when the score in the full reference is below this (default 0.98)")
       ->check(CLI::Range(0.0, 1.0));
   mut->add_option("--report", mo.report_dir, "write mutants.md and mutants.json into this directory");
   mut->add_option("--equivalent", mo.equivalent_file, "equivalent mutants (default: spec/equivalent_mutants.json)");
@@ -724,12 +757,13 @@ int main(int argc, char** argv) {
                 "submission) and check it through the protocol: the score through the protocol, and any verdict that "
                 "differs from the in-process one (exit 1 if one does)");
   std::string served_name;
-  auto* serve_mut = app.add_subcommand("serve-mutant", "serve one mutant of the reference over the slot protocol "
-                                                       "(used by `geomech mutants --through-protocol`)");
+  auto* serve_mut = app.add_subcommand("serve-mutant",
+                                       "serve one mutant of the reference over the slot protocol "
+                                       "(used by `geomech mutants --through-protocol`)");
   serve_mut->add_option("name", served_name, "the mutant's name (e.g. euler_3_8:negate_result)")->required();
   serve_mut->group("");
 
-  gm::golden::add_commands(app);  // runs from its own callbacks (golden/cli.hpp)
+  gm::golden::add_commands(app);            // runs from its own callbacks (golden/cli.hpp)
   gm::harness::add_lecturer_commands(app);  // autograder, grade-submission, class-html (harness/class/lecturer_cli.hpp)
 
   // Bad arguments exit with 2, like every other input error of the tool (CLI11's own codes are
@@ -758,7 +792,8 @@ int main(int argc, char** argv) {
   try {
     if (*check) {
       if (!student_file.empty()) {
-        if (check->count("--subject")) throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
+        if (check->count("--subject"))
+          throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
         bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
         bo.exact = co.scalar == "all" || co.scalar == "exact";
         bo.libraries = check_libs.request();
@@ -799,7 +834,8 @@ int main(int argc, char** argv) {
     }
     if (*traj) {
       if (!tr_system.empty()) tro.params.system = tr_system;
-      if (!tr_inertia.empty()) tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
+      if (!tr_inertia.empty())
+        tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
       if (!tr_step.empty()) tro.params.step = tr_step;
       tro.preserves.insert(tr_preserves.begin(), tr_preserves.end());
       // A report by default, as `geomech check` writes one: named after the first file.

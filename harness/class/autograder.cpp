@@ -41,7 +41,8 @@ std::string read_text(const fs::path& p) {
 // At most `max` bytes of `text`: its beginning and its end, the cut said in the middle.
 std::string keep_ends(const std::string& text, std::size_t max) {
   if (text.size() <= max) return text;
-  const std::string mark = "\n\n[... " + std::to_string(text.size() - max) + " bytes of the report left out here; the "
+  const std::string mark = "\n\n[... " + std::to_string(text.size() - max) +
+                           " bytes of the report left out here; the "
                            "whole report is report.md ...]\n\n";
   std::size_t head = (max - mark.size()) * 2 / 3, tail = max - mark.size() - head;
   while (head > 0 && (static_cast<unsigned char>(text[head]) & 0xC0) == 0x80) --head;
@@ -77,7 +78,8 @@ std::string item_title(const ScoreItem& i) {
       const bool wrapped = !place.empty() && place.front() == '(' && place.back() == ')';
       return "slot " + i.name + ": " + s->meaning + " " + (wrapped ? place : "(" + place + ")");
     }
-    case ScoreItem::Kind::Area: return "area " + i.name + ": the checks of this part of the notes";
+    case ScoreItem::Kind::Area:
+      return "area " + i.name + ": the checks of this part of the notes";
     case ScoreItem::Kind::Claim:
       return i.name == "claims" ? std::string("integrator claims") : "claim: integrator " + i.name;
   }
@@ -98,7 +100,8 @@ std::string replay_of(const StudentView& s, const std::string& slot) {
 
 // What one item says to the student, in words.
 std::string item_output(const StudentView& s, const ScoreItem& i) {
-  if (s.status != "checked") return "not graded: " + s.status + (s.graded.first_fix.empty() ? "" : " (" + s.graded.first_fix + ")");
+  if (s.status != "checked")
+    return "not graded: " + s.status + (s.graded.first_fix.empty() ? "" : " (" + s.graded.first_fix + ")");
   std::ostringstream os;
   if (i.kind == ScoreItem::Kind::Slot) {
     if (i.state == "correct") {
@@ -175,22 +178,25 @@ std::string shown_summary(const StudentView& s, const std::string& level) {
       continue;
     }
     ++shown, points += i.points, max_points += i.max_points;
-    if (passed(i)) ++shown_passed;
-    else if (!first_wrong && i.kind == ScoreItem::Kind::Slot && i.state == "wrong") first_wrong = &i;
+    if (passed(i))
+      ++shown_passed;
+    else if (!first_wrong && i.kind == ScoreItem::Kind::Slot && i.state == "wrong")
+      first_wrong = &i;
   }
   std::ostringstream os;
   os << "The tests shown now: " << shown_passed << " of " << shown << " passed (" << format_points(points) << " of "
      << format_points(max_points) << " points).\n"
-     << hidden << (hidden == 1 ? " test is" : " tests are") << " hidden " << withheld_until(level)
-     << "; " << (hidden == 1 ? "it counts" : "they count") << " in the score.";
+     << hidden << (hidden == 1 ? " test is" : " tests are") << " hidden " << withheld_until(level) << "; "
+     << (hidden == 1 ? "it counts" : "they count") << " in the score.";
   if (first_wrong) os << "\nFirst fix among the tests shown: " << first_wrong->name << ": " << first_wrong->detail;
   return os.str();
 }
 
 void write_text(const fs::path& p, const std::string& text, bool executable = false) {
   write_file_atomically(p.string(), text);
-  if (executable) fs::permissions(p, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec |
-                                         fs::perms::others_read | fs::perms::others_exec);
+  if (executable)
+    fs::permissions(p, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                           fs::perms::others_exec);
 }
 
 std::string json_text(const json& j) { return j.dump(1, ' ', false, json::error_handler_t::replace) + "\n"; }
@@ -218,8 +224,11 @@ json gradescope_results(const StudentView& s, const std::string& report_md) {
   }
   const std::string withheld = withheld_level(s);
   if (s.status == "does not compile")
-    tests.push_back({{"name", "it compiles"}, {"status", "failed"}, {"output", keep_ends(for_student(s.row->build_message), 60000)},
-                     {"output_format", "text"}, {"visibility", "visible"}});
+    tests.push_back({{"name", "it compiles"},
+                     {"status", "failed"},
+                     {"output", keep_ends(for_student(s.row->build_message), 60000)},
+                     {"output_format", "text"},
+                     {"visibility", "visible"}});
   if (!report_md.empty())
     tests.push_back({{"name", "the whole report (report.md)"},
                      {"status", s.result == "PASS" ? "passed" : "failed"},
@@ -263,8 +272,9 @@ json prairielearn_results(const StudentView& s, const std::string& report_md) {
   if (withheld.empty())
     out["output"] = keep_ends(summary_text(s) + (report_md.empty() ? "" : "\n\n" + report_md), 400000);
   else
-    out["output"] = shown_summary(s, withheld), out["message"] = s.score.headline.substr(0, s.score.headline.find(':')) +
-                                                                 "; some tests are hidden " + withheld_until(withheld);
+    out["output"] = shown_summary(s, withheld),
+    out["message"] =
+        s.score.headline.substr(0, s.score.headline.find(':')) + "; some tests are hidden " + withheld_until(withheld);
   json tests = json::array();
   int hidden = 0;
   double hidden_points = 0, hidden_max = 0;
@@ -285,12 +295,13 @@ json prairielearn_results(const StudentView& s, const std::string& report_md) {
   }
   // Their points in one row, named by no slot: the score shows them anyway (score minus the rows shown).
   if (hidden > 0)
-    tests.push_back({{"name", std::to_string(hidden) + (hidden == 1 ? " test" : " tests") + " hidden " + withheld_until(withheld)},
-                     {"description", "counted in the score; shown when the lecturer releases them"},
-                     {"points", rounded(hidden_points)},
-                     {"max_points", rounded(hidden_max)},
-                     {"message", ""},
-                     {"output", ""}});
+    tests.push_back(
+        {{"name", std::to_string(hidden) + (hidden == 1 ? " test" : " tests") + " hidden " + withheld_until(withheld)},
+         {"description", "counted in the score; shown when the lecturer releases them"},
+         {"points", rounded(hidden_points)},
+         {"max_points", rounded(hidden_max)},
+         {"message", ""},
+         {"output", ""}});
   out["tests"] = tests;
   return out;
 }
@@ -365,7 +376,8 @@ int grade_submission(const GradeSubmissionOptions& o) {
   const json config = json::parse(read_text(o.config));
   if (config.value("format", "") != kConfigFormat)
     throw std::runtime_error(o.config + ": not an autograder configuration written by `geomech autograder`");
-  const Rubric rubric = parse_rubric(config.at("rubric").get<std::string>(), config.value("rubric_source", "rubric.json"));
+  const Rubric rubric =
+      parse_rubric(config.at("rubric").get<std::string>(), config.value("rubric_source", "rubric.json"));
   std::string work = o.work;
   struct Scratch {  // a work folder of its own is removed at the end, whatever happens
     std::string path;
@@ -400,8 +412,14 @@ int grade_submission(const GradeSubmissionOptions& o) {
   std::string report_md;
   if (!name.empty()) {
     const fs::path self = fs::read_symlink("/proc/self/exe");
-    std::vector<std::string> argv{self.string(), "check-class", class_dir.string(), "--report", report_dir.string(),
-                                  "--parallel", "1", "--timeout-per-implementation",
+    std::vector<std::string> argv{self.string(),
+                                  "check-class",
+                                  class_dir.string(),
+                                  "--report",
+                                  report_dir.string(),
+                                  "--parallel",
+                                  "1",
+                                  "--timeout-per-implementation",
                                   std::to_string(config.value("timeout", 540.0))};
     if (config.value("trusted", false)) argv.push_back("--trusted");
     // With the rubric, so that the instructor's log says the grade results.json gives.
@@ -420,8 +438,8 @@ int grade_submission(const GradeSubmissionOptions& o) {
       // No row: the class check refused before checking anyone (the grader's machine, exit 3, or
       // its own set-up): never the student's.
       rows[0].name = name;
-      rows[0].machine_fault = "the class check left no result (exit status " + std::to_string(pr.exit_code) + "): " +
-                              keep_ends(read_text(log), 4000);
+      rows[0].machine_fault = "the class check left no result (exit status " + std::to_string(pr.exit_code) +
+                              "): " + keep_ends(read_text(log), 4000);
     }
   }
   const ClassView view = decide_class(rows, rubric);
@@ -433,32 +451,38 @@ int grade_submission(const GradeSubmissionOptions& o) {
     std::error_code gone;
     fs::remove(o.results, gone);
     std::cout << "geomech grade-submission: GRADER ERROR, no results written (the grading machine, not the "
-                 "submission): " << grader_fault_of(*s.row) << "\n";
+                 "submission): "
+              << grader_fault_of(*s.row) << "\n";
     return kExitMachine;
   }
-  write_results(o.platform == Platform::gradescope ? gradescope_results(s, report_md) : prairielearn_results(s, report_md));
+  write_results(o.platform == Platform::gradescope ? gradescope_results(s, report_md)
+                                                   : prairielearn_results(s, report_md));
   std::cout << "geomech grade-submission: " << s.result << ", " << s.score.headline << "\n";
   return 0;
 }
 
 int write_autograder(const AutograderOptions& o) {
   if (o.rubric_file.empty())
-    throw std::runtime_error("an autograder needs --rubric FILE.json with an \"assignment\": it grades one submission at a "
-                             "time, so there is no class to learn the assignment from (docs/GRADEBOOK.md)");
+    throw std::runtime_error(
+        "an autograder needs --rubric FILE.json with an \"assignment\": it grades one submission at a "
+        "time, so there is no class to learn the assignment from (docs/GRADEBOOK.md)");
   const std::string rubric_text = read_text(o.rubric_file);
   const Rubric rubric = parse_rubric(rubric_text, fs::path(o.rubric_file).filename().string());
   if (!rubric.assignment)
-    throw std::runtime_error("rubric \"" + o.rubric_file + "\": an autograder needs its \"assignment\" (the slots the "
+    throw std::runtime_error("rubric \"" + o.rubric_file +
+                             "\": an autograder needs its \"assignment\" (the slots the "
                              "assignment asks for): one submission is graded at a time, so there is no class to learn "
                              "them from");
-  const fs::path src = o.source_dir.empty() ? fs::path(suite_data_path("geomech")).parent_path() : fs::path(o.source_dir);
+  const fs::path src =
+      o.source_dir.empty() ? fs::path(suite_data_path("geomech")).parent_path() : fs::path(o.source_dir);
   std::error_code ec;
   if (!fs::exists(src / "geomech", ec) || !fs::exists(src / "CMakeLists.txt", ec))
     throw std::runtime_error("the suite's source tree is not at " + src.string() +
                              " (an autograder packs it, to build the suite where it runs); give --source DIR");
   const fs::path out = fs::absolute(o.out_dir).lexically_normal();
   if (fs::exists(out, ec) && !fs::is_empty(out, ec) && !fs::exists(out / "README.md", ec))
-    throw std::runtime_error("refusing to write into " + out.string() + ": it is not empty and not an autograder folder");
+    throw std::runtime_error("refusing to write into " + out.string() +
+                             ": it is not empty and not an autograder folder");
   fs::remove_all(out, ec);
   const bool gs = o.platform == Platform::gradescope;
   const fs::path code_dir = gs ? out : out / "serverFilesCourse" / "geomech";
@@ -477,46 +501,51 @@ int write_autograder(const AutograderOptions& o) {
 
   // The suite's source, to be built where the grader runs (Debian packages only, by ./geomech).
   const fs::path tarball = (gs ? out : out) / "geomech-src.tar.gz";
-  const ProcessResult tar = run_process(ProcessSpec{
-      {"tar", "-czf", tarball.string(), "-C", src.string(), "--exclude=./build*", "--exclude=./.git",
-       "--exclude=./geomech-reports", "--exclude=__pycache__", "."},
-      "", false});
+  const ProcessResult tar =
+      run_process(ProcessSpec{{"tar", "-czf", tarball.string(), "-C", src.string(), "--exclude=./build*",
+                               "--exclude=./.git", "--exclude=./geomech-reports", "--exclude=__pycache__", "."},
+                              "",
+                              false});
   if (tar.exit_code != 0) throw std::runtime_error("tar could not pack " + src.string() + ": " + tar.output);
 
   std::string check_line;
   for (const auto& a : o.check_args) check_line += " " + shell_quote(a);
   if (gs) {
-    write_text(out / "setup.sh",
-               "#!/usr/bin/env bash\n"
-               "# Gradescope runs this once, as root, when it builds the autograder's image\n"
-               "# (gradescope-autograders.readthedocs.io/en/latest/specs/). Written by `geomech autograder gradescope`.\n"
-               "# It unpacks the suite and builds it with its own front door, which installs the Debian packages the\n"
-               "# suite needs (apt-get) and nothing from anywhere else.\n"
-               "set -euo pipefail\n"
-               "here=$(cd \"$(dirname \"${BASH_SOURCE[0]}\")\" && pwd)\n"
-               "mkdir -p /opt/geomech-spec\n"
-               "tar -xzf \"$here/geomech-src.tar.gz\" -C /opt/geomech-spec\n"
-               "cd /opt/geomech-spec\n"
-               "GEOMECH_JOBS=$(nproc) ./geomech build\n"
-               "ln -sf /opt/geomech-spec/build/bin/geomech /usr/local/bin/geomech\n"
-               "geomech slots >/dev/null  # the tool runs\n"
-               "# The grader's machine, tried as a submission's check needs it (the sandbox, the cache, Python):\n"
-               "# a container that cannot run the sandbox fails here, with the fix, instead of grading anyone 0.\n"
-               "geomech self-test" + std::string(o.trusted ? " --trusted" : "") + "\n",
-               true);
-    write_text(out / "run_autograder",
-               "#!/usr/bin/env bash\n"
-               "# Gradescope runs this for every submission, from /autograder: the student's files are in\n"
-               "# /autograder/submission, and /autograder/results/results.json is what Gradescope shows\n"
-               "# (gradescope-autograders.readthedocs.io/en/latest/specs/). Written by `geomech autograder gradescope`.\n"
-               "# GEOMECH_AUTOGRADER_ROOT (default /autograder) and GEOMECH (default: geomech on PATH) are for\n"
-               "# trying it outside Gradescope.\n"
-               "set -u\n"
-               "root=${GEOMECH_AUTOGRADER_ROOT:-/autograder}\n"
-               "mkdir -p \"$root/results\"\n"
-               "exec \"${GEOMECH:-geomech}\" grade-submission gradescope --submission \"$root/submission\" \\\n"
-               "  --results \"$root/results/results.json\" --config \"$root/source/" + std::string(kConfigName) + "\"\n",
-               true);
+    write_text(
+        out / "setup.sh",
+        "#!/usr/bin/env bash\n"
+        "# Gradescope runs this once, as root, when it builds the autograder's image\n"
+        "# (gradescope-autograders.readthedocs.io/en/latest/specs/). Written by `geomech autograder gradescope`.\n"
+        "# It unpacks the suite and builds it with its own front door, which installs the Debian packages the\n"
+        "# suite needs (apt-get) and nothing from anywhere else.\n"
+        "set -euo pipefail\n"
+        "here=$(cd \"$(dirname \"${BASH_SOURCE[0]}\")\" && pwd)\n"
+        "mkdir -p /opt/geomech-spec\n"
+        "tar -xzf \"$here/geomech-src.tar.gz\" -C /opt/geomech-spec\n"
+        "cd /opt/geomech-spec\n"
+        "GEOMECH_JOBS=$(nproc) ./geomech build\n"
+        "ln -sf /opt/geomech-spec/build/bin/geomech /usr/local/bin/geomech\n"
+        "geomech slots >/dev/null  # the tool runs\n"
+        "# The grader's machine, tried as a submission's check needs it (the sandbox, the cache, Python):\n"
+        "# a container that cannot run the sandbox fails here, with the fix, instead of grading anyone 0.\n"
+        "geomech self-test" +
+            std::string(o.trusted ? " --trusted" : "") + "\n",
+        true);
+    write_text(
+        out / "run_autograder",
+        "#!/usr/bin/env bash\n"
+        "# Gradescope runs this for every submission, from /autograder: the student's files are in\n"
+        "# /autograder/submission, and /autograder/results/results.json is what Gradescope shows\n"
+        "# (gradescope-autograders.readthedocs.io/en/latest/specs/). Written by `geomech autograder gradescope`.\n"
+        "# GEOMECH_AUTOGRADER_ROOT (default /autograder) and GEOMECH (default: geomech on PATH) are for\n"
+        "# trying it outside Gradescope.\n"
+        "set -u\n"
+        "root=${GEOMECH_AUTOGRADER_ROOT:-/autograder}\n"
+        "mkdir -p \"$root/results\"\n"
+        "exec \"${GEOMECH:-geomech}\" grade-submission gradescope --submission \"$root/submission\" \\\n"
+        "  --results \"$root/results/results.json\" --config \"$root/source/" +
+            std::string(kConfigName) + "\"\n",
+        true);
   } else {
     write_text(code_dir / "run.sh",
                "#!/usr/bin/env bash\n"
@@ -551,12 +580,15 @@ int write_autograder(const AutograderOptions& o) {
   }
   std::ostringstream readme;
   readme << "# A geomech autograder for " << (gs ? "Gradescope" : "PrairieLearn") << "\n\n"
-         << "Written by `geomech autograder " << platform_name(o.platform) << "` (docs/AUTOGRADERS.md). Every submission is "
+         << "Written by `geomech autograder " << platform_name(o.platform)
+         << "` (docs/AUTOGRADERS.md). Every submission is "
          << "checked " << (o.trusted ? "in-process (--trusted: a submission can forge its own verdicts)" : "sandboxed")
-         << " with the options `" << check_line << " ` and graded by the rubric `" << config["rubric_source"].get<std::string>()
-         << "` (its assignment: " << rubric.assignment->size() << " slots).\n\n";
+         << " with the options `" << check_line << " ` and graded by the rubric `"
+         << config["rubric_source"].get<std::string>() << "` (its assignment: " << rubric.assignment->size()
+         << " slots).\n\n";
   if (gs)
-    readme << "Upload `" << out.filename().string() << ".zip` (setup.sh, run_autograder and the rest at its root) as the "
+    readme << "Upload `" << out.filename().string()
+           << ".zip` (setup.sh, run_autograder and the rest at its root) as the "
            << "assignment's autograder. `setup.sh` builds the suite from `geomech-src.tar.gz` with its Debian "
            << "packages (about 7 minutes on 2 cores).\n";
   else

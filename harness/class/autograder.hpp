@@ -29,8 +29,8 @@ std::string platform_name(Platform p);
 
 struct AutograderOptions {
   Platform platform = Platform::gradescope;
-  std::string out_dir;                  // the autograder's folder (written; must be new or an earlier autograder)
-  std::string rubric_file;              // required: a rubric with an "assignment" (one submission has no class to learn it from)
+  std::string out_dir;      // the autograder's folder (written; must be new or an earlier autograder)
+  std::string rubric_file;  // required: a rubric with an "assignment" (one submission has no class to learn it from)
   std::vector<std::string> check_args;  // check options for every submission (--scalar, -p, --quick, --timeout ...)
   bool trusted = false;                 // in-process checks: only where the grader's sandbox cannot make namespaces
   double timeout_seconds = 540;         // one submission's build and check (PrairieLearn allows 600 s in all)

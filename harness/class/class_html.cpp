@@ -15,8 +15,10 @@ namespace {
 std::string key_of(const std::string& area) {
   std::string k;
   for (char c : area) {
-    if (std::isalnum(static_cast<unsigned char>(c))) k += c;
-    else if (!k.empty() && k.back() != '-') k += '-';
+    if (std::isalnum(static_cast<unsigned char>(c)))
+      k += c;
+    else if (!k.empty() && k.back() != '-')
+      k += '-';
   }
   while (!k.empty() && k.back() == '-') k.pop_back();
   return k;
@@ -112,7 +114,10 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
       b << "<a href=\"" << html_escape(name) << "/report.html\">" << html_escape(name) << "</a>";
     else
       b << html_escape(name);
-    b << "</td><td data-sort=\"" << result_rank(s.result) << "\" class=\"" << (s.result == "PASS" ? "PASS" : s.result == "INCOMPLETE" ? "INCOMPLETE" : "FAIL")
+    b << "</td><td data-sort=\"" << result_rank(s.result) << "\" class=\""
+      << (s.result == "PASS"         ? "PASS"
+          : s.result == "INCOMPLETE" ? "INCOMPLETE"
+                                     : "FAIL")
       << "\">" << html_escape(s.result) << "</td>";
     b << "<td data-sort=\"" << number(s.score.points) << "\">" << format_points(s.score.points) << "</td>";
     for (const auto& a : areas) {
@@ -122,7 +127,8 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
       b << "<td data-sort=\"" << number(frac) << "\"" << (c.bad > 0 ? " class=\"bad\"" : "") << ">"
         << html_escape(cell_text(c)) << "</td>";
     }
-    b << "<td data-sort=\"" << html_escape(s.graded.first_fix) << "\">" << html_escape(s.graded.first_fix) << "</td></tr>\n";
+    b << "<td data-sort=\"" << html_escape(s.graded.first_fix) << "\">" << html_escape(s.graded.first_fix)
+      << "</td></tr>\n";
   }
   b << "</tbody>\n</table>\n";
   if (!view.mistakes.empty()) {
@@ -131,33 +137,37 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
     const int bar_h = 22, label_w = 260, bar_w = 360;
     const int height = bar_h * static_cast<int>(view.mistakes.size()) + 10;
     b << "<h2 id=\"wrong\">What the class got wrong</h2>\n<svg role=\"img\" aria-label=\"students who got each wrong\" "
-         "width=\"" << label_w + bar_w + 90 << "\" height=\"" << height << "\" style=\"font: 13px sans-serif\">\n";
+         "width=\""
+      << label_w + bar_w + 90 << "\" height=\"" << height << "\" style=\"font: 13px sans-serif\">\n";
     for (std::size_t i = 0; i < view.mistakes.size(); ++i) {
       const ClassMistake& m = view.mistakes[i];
       const int y = static_cast<int>(i) * bar_h + 5;
       const int w = m.checked > 0 ? bar_w * m.students / m.checked : 0;
-      b << "<text x=\"" << label_w - 6 << "\" y=\"" << y + 15 << "\" text-anchor=\"end\">" << html_escape(m.kind + " " + m.what)
-        << "</text><rect x=\"" << label_w << "\" y=\"" << y + 3 << "\" width=\"" << std::max(w, 1) << "\" height=\"" << bar_h - 6
-        << "\" fill=\"#c0392b\"/><text x=\"" << label_w + std::max(w, 1) + 6 << "\" y=\"" << y + 15 << "\">" << m.students
-        << " of " << m.checked << "</text>\n";
+      b << "<text x=\"" << label_w - 6 << "\" y=\"" << y + 15 << "\" text-anchor=\"end\">"
+        << html_escape(m.kind + " " + m.what) << "</text><rect x=\"" << label_w << "\" y=\"" << y + 3 << "\" width=\""
+        << std::max(w, 1) << "\" height=\"" << bar_h - 6 << "\" fill=\"#c0392b\"/><text x=\""
+        << label_w + std::max(w, 1) + 6 << "\" y=\"" << y + 15 << "\">" << m.students << " of " << m.checked
+        << "</text>\n";
     }
-    b << "</svg>\n<table id=\"wrong-table\">\n<thead><tr><th>wrong</th><th>students</th><th>who</th><th>the most common "
+    b << "</svg>\n<table id=\"wrong-table\">\n<thead><tr><th>wrong</th><th>students</th><th>who</th><th>the most "
+         "common "
          "first fix</th></tr></thead>\n<tbody>\n";
     for (const auto& m : view.mistakes) {
       std::string who;
       for (std::size_t i = 0; i < m.who.size(); ++i) who += (i ? ", " : "") + m.who[i];
-      b << "<tr><td>" << html_escape(m.kind) << " <code>" << html_escape(m.what) << "</code></td><td>" << m.students << " of "
-        << m.checked << "</td><td>" << html_escape(who) << "</td><td>"
+      b << "<tr><td>" << html_escape(m.kind) << " <code>" << html_escape(m.what) << "</code></td><td>" << m.students
+        << " of " << m.checked << "</td><td>" << html_escape(who) << "</td><td>"
         << (m.common_fix.empty() ? std::string("-")
-                                 : "(" + std::to_string(m.common_fix_students) + " of " + std::to_string(m.students) + ") " +
-                                       html_escape(m.common_fix))
+                                 : "(" + std::to_string(m.common_fix_students) + " of " + std::to_string(m.students) +
+                                       ") " + html_escape(m.common_fix))
         << "</td></tr>\n";
     }
     b << "</tbody>\n</table>\n";
   }
   b << "<h2 id=\"in-words\">Each student in words</h2>\n<ul>\n";
   for (const auto& s : view.students) {
-    b << "<li id=\"words-" << html_escape(key_of(s.row->name)) << "\"><strong>" << html_escape(s.row->name) << "</strong>";
+    b << "<li id=\"words-" << html_escape(key_of(s.row->name)) << "\"><strong>" << html_escape(s.row->name)
+      << "</strong>";
     if (!s.language.empty()) b << " (" << s.language << ")";
     b << ": ";
     const auto words = words_of(s);
@@ -172,7 +182,8 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
       b << "<h2>" << html_escape(s.row->name) << ": does not compile</h2>\n<pre>" << html_escape(s.row->build_message)
         << "</pre>\n";
     } else if (s.status == "not checked") {
-      b << "<h2>" << html_escape(s.row->name) << ": not checked</h2>\n<pre>" << html_escape(s.row->problem) << "</pre>\n";
+      b << "<h2>" << html_escape(s.row->name) << ": not checked</h2>\n<pre>" << html_escape(s.row->problem)
+        << "</pre>\n";
     } else if (s.status == kGraderError) {
       b << "<h2>" << html_escape(s.row->name) << ": the grader's machine failed its check (no grade)</h2>\n<pre>"
         << html_escape(grader_fault_of(*s.row)) << "</pre>\n";

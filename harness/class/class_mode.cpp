@@ -48,16 +48,21 @@ struct Row {
   double build_seconds = 0;
   int exit_code = -1;
   double check_seconds = 0;
-  std::string problem;  // the check program itself failed to run properly
+  std::string problem;        // the check program itself failed to run properly
   std::string machine_fault;  // the grader's machine or set-up failed it (ClassRow::machine_fault)
-  json report;          // verdicts.json
+  json report;                // verdicts.json
 };
 
 // A row as class-shard.json and class-row.json keep it (its report is read from its folder).
 json row_json(const Row& row) {
-  return {{"name", row.impl.name}, {"source", row.impl.source}, {"built", row.built},
-          {"build_message", row.build_message}, {"build_seconds", row.build_seconds},
-          {"exit_code", row.exit_code}, {"check_seconds", row.check_seconds}, {"problem", row.problem},
+  return {{"name", row.impl.name},
+          {"source", row.impl.source},
+          {"built", row.built},
+          {"build_message", row.build_message},
+          {"build_seconds", row.build_seconds},
+          {"exit_code", row.exit_code},
+          {"check_seconds", row.check_seconds},
+          {"problem", row.problem},
           {"machine_fault", row.machine_fault}};
 }
 
@@ -218,15 +223,20 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
           if (f.kind != EntryKind::File && f.kind != EntryKind::Folder) throw RefusedEntry(rel, describe(f.kind));
           if (f.kind != EntryKind::File) continue;
           const std::string fext = fs::path(f.name).extension().string();
-          if (fext == ".cpp" && folder.read(rel, IntakeLimits{}.file_bytes).find("GEOMECH_STUDENT(") != std::string::npos)
+          if (fext == ".cpp" &&
+              folder.read(rel, IntakeLimits{}.file_bytes).find("GEOMECH_STUDENT(") != std::string::npos)
             sources.push_back(rel);
           if (fext == ".py") python.push_back(rel);
           if (fext == ".m") octave = true;
         }
-        if (sources.size() == 1) impl.origin = sources.front();
-        else if (sources.empty() && python.size() == 1) impl.origin = python.front();
-        else if (sources.empty() && python.empty() && octave) impl.origin = e.name;
-        else continue;  // not a submission (a folder of shared material, an empty folder)
+        if (sources.size() == 1)
+          impl.origin = sources.front();
+        else if (sources.empty() && python.size() == 1)
+          impl.origin = python.front();
+        else if (sources.empty() && python.empty() && octave)
+          impl.origin = e.name;
+        else
+          continue;  // not a submission (a folder of shared material, an empty folder)
         impl.source = (fs::path(dir) / impl.origin).string();
       } catch (const RefusedEntry& r) {
         impl.refused = r.what();
@@ -256,7 +266,8 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
       out[i].refused = out[i - 1].refused = why;
     }
   if (out.empty())
-    throw std::runtime_error(dir + " holds no implementation (*.cpp, *.py or *.m files, or folders with one .cpp using "
+    throw std::runtime_error(dir +
+                             " holds no implementation (*.cpp, *.py or *.m files, or folders with one .cpp using "
                              "GEOMECH_STUDENT, one .py, or .m files)");
   return out;
 }
@@ -269,14 +280,13 @@ std::string default_class_report_dir(const std::string& class_dir) {
   return "geomech-reports/" + (name.empty() ? std::string("class") : name);
 }
 
-
 namespace {
 
 // The gradebook's inputs, read and checked before anything is checked (a misspelt rubric key is
 // found in a second, not after the class). The rubric grades the summary too, and the roster names
 // the students who handed nothing in, with or without --grades.
 struct Grades {
-  std::string csv;  // empty: no gradebook file
+  std::string csv;           // empty: no gradebook file
   std::string feedback_dir;  // empty: no feedback files (harness/class/feedback_files.hpp)
   Rubric rubric;
   std::optional<Roster> roster;
@@ -332,15 +342,18 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
     md << "**In progress: " << view.students.size() << " of " << total
        << " implementations checked.** Not yet checked (the same command again resumes with them): ";
     for (std::size_t i = 0; i < st.pending.size(); ++i) md << (i ? ", " : "") << md_inline(st.pending[i]);
-    md << "." << (grades.csv.empty() ? "" : " The gradebook leaves their grades empty and says why in their row"
-                                              " (or is not written yet, while nothing checked can be graded).")
+    md << "."
+       << (grades.csv.empty() ? ""
+                              : " The gradebook leaves their grades empty and says why in their row"
+                                " (or is not written yet, while nothing checked can be graded).")
        << "\n\n";
   }
   md << view.students.size() << " implementations";
   if (!st.no_submission.empty()) md << " (" << st.no_submission.size() << " on the roster with no submission)";
   md << ". Grades: " << md_inline(grades.rubric.source) << ", " << view.assignment.size() << " slots in the assignment"
-     << (view.assignment_from_rubric ? "" : " (every slot a student of the class provides; a rubric's \"assignment\" "
-                                            "makes a PASS need all of them)")
+     << (view.assignment_from_rubric ? ""
+                                     : " (every slot a student of the class provides; a rubric's \"assignment\" "
+                                       "makes a PASS need all of them)")
      << ". Each area cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or ERROR), then the checks that did "
         "not run: n/w, of slots not written; d/o, in 50 digits or rationals, which the code or its language does not "
         "compute in (double only). Details in each implementation's report; summary.html is this page to read, "
@@ -351,7 +364,8 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
   md << " report |\n|---|---|---|";
   for (std::size_t i = 0; i < areas.size(); ++i) md << "---|";
   md << "---|\n";
-  console << "\n" << std::left << std::setw(22) << "implementation" << std::setw(18) << "result" << std::setw(10) << "grade";
+  console << "\n"
+          << std::left << std::setw(22) << "implementation" << std::setw(18) << "result" << std::setw(10) << "grade";
   for (const auto& a : areas) console << std::setw(22) << a;
   console << "\n" << std::string(22 + 18 + 10 + 22 * areas.size(), '-') << "\n";
   int bad = 0;
@@ -373,7 +387,8 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
     console << "\n";
   }
   if (!view.mistakes.empty()) {  // the lecture to repeat (class_record.hpp, class_mistakes)
-    md << "\n## What the class got wrong\n\n| wrong | students | who | the most common first fix |\n|---|---|---|---|\n";
+    md << "\n## What the class got wrong\n\n| wrong | students | who | the most common first fix "
+          "|\n|---|---|---|---|\n";
     for (const auto& m : view.mistakes) {
       std::string who;
       for (std::size_t i = 0; i < m.who.size(); ++i) who += (i ? ", " : "") + m.who[i];
@@ -397,15 +412,19 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
   md << "\n";
   for (const auto& s : view.students) {
     if (s.status == "does not compile") {
-      md << "## " << md_inline(s.row->name) << ": does not compile\n\n" << md_fenced(bounded_text(s.row->build_message)) << "\n";
-      console << "\n" << inert_text(s.row->name) << " does not compile:\n" << inert_text(bounded_text(s.row->build_message)) << "\n";
+      md << "## " << md_inline(s.row->name) << ": does not compile\n\n"
+         << md_fenced(bounded_text(s.row->build_message)) << "\n";
+      console << "\n"
+              << inert_text(s.row->name) << " does not compile:\n"
+              << inert_text(bounded_text(s.row->build_message)) << "\n";
     } else if (s.status == "not checked") {
       md << "## " << md_inline(s.row->name) << ": not checked\n\n" << md_fenced(bounded_text(s.row->problem)) << "\n";
       console << "\n" << inert_text(s.row->name) << ": " << inert_text(bounded_text(s.row->problem)) << "\n";
     } else if (s.status == kGraderError) {
       const std::string fault = bounded_text(grader_fault_of(*s.row));
       md << "## " << md_inline(s.row->name) << ": the grader's machine failed its check (no grade; checked again by "
-         << "the next run)\n\n" << md_fenced(fault) << "\n";
+         << "the next run)\n\n"
+         << md_fenced(fault) << "\n";
       console << "\n" << inert_text(s.row->name) << ": GRADER ERROR (no grade): " << inert_text(fault) << "\n";
     }
   }
@@ -449,8 +468,10 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
     }
     // Nothing gradable yet (a run that has checked nobody, under a rubric that learns its
     // assignment from the class): no gradebook at all rather than an earlier run's.
-    if (csv.empty()) fs::remove(grades.csv, ec);
-    else write_file_atomically(grades.csv, csv);
+    if (csv.empty())
+      fs::remove(grades.csv, ec);
+    else
+      write_file_atomically(grades.csv, csv);
   }
   if (!final) return bad == 0 ? 0 : 1;
   // Feedback where students read it, once the class is complete (never a page of a run cut short).
@@ -459,8 +480,9 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
       std::cout << "feedback: " << grades.feedback_dir << ": " << line << "\n";
   if (!grades.csv.empty() && !view.no_grades.empty())
     throw std::runtime_error("no gradebook written: " + view.no_grades + " (the summaries are written)");
-  std::cout << console.str() << "\nsummary: " << report_dir << "/summary.md and summary.html; one report per implementation in "
-            << report_dir << "/<name>/report.md (and .html)\n";
+  std::cout << console.str() << "\nsummary: " << report_dir
+            << "/summary.md and summary.html; one report per implementation in " << report_dir
+            << "/<name>/report.md (and .html)\n";
   if (!grades.csv.empty()) {
     std::cout << "grades: " << grades.csv << " (" << grades.rubric.source << "; " << view.assignment.size()
               << " slots in the assignment";
@@ -472,7 +494,6 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
       if (w.find("matches no implementation") == std::string::npos) std::cout << "warning: " << w << "\n";
   return bad == 0 ? 0 : 1;
 }
-
 
 std::vector<Implementation> shard_of(const std::vector<Implementation>& all, int k, int n) {
   std::vector<Implementation> out;
@@ -525,8 +546,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   }
   std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir
             << (o.untrusted ? " (untrusted mode: each sandboxed)" : " (trusted: in-process)");
-  if (o.shard_n > 1)
-    std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << all_impls.size() << ")";
+  if (o.shard_n > 1) std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << all_impls.size() << ")";
   std::cerr << ", " << o.jobs << " at a time\n";
   // How one implementation's check ended, into its row's JSON: status 0 or 1 is a verdict, anything
   // else (a crash, a refusal, a bad option) is a problem shown in the summary.
@@ -563,11 +583,13 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   // In the compilers' cache, under a name of the class folder: a whole run, its shards and a resumed
   // run check the same copies (and a C++ one compiled once is not compiled again).
   const fs::path snapshots = fs::absolute(o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir) /
-                             ("class-" + [&] {
-                               Fingerprint f;
-                               f.add(fs::absolute(o.dir).lexically_normal().string());
-                               return f.hex();
-                             }()) / "submissions";
+                             ("class-" +
+                              [&] {
+                                Fingerprint f;
+                                f.add(fs::absolute(o.dir).lexically_normal().string());
+                                return f.hex();
+                              }()) /
+                             "submissions";
   for (std::size_t i = 0; i < impls.size(); ++i) {
     Implementation& impl = impls[i];
     if (!impl.refused.empty()) {
@@ -577,8 +599,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
       finished[i] = std::move(row);
       continue;
     }
-    const bool folder = impl.origin.find('/') != std::string::npos ||
-                        class_folder.look(impl.origin).kind == EntryKind::Folder;
+    const bool folder =
+        impl.origin.find('/') != std::string::npos || class_folder.look(impl.origin).kind == EntryKind::Folder;
     const std::string root = folder ? impl.origin.substr(0, impl.origin.find('/')) : impl.origin;
     SubmissionTree tree;
     try {
@@ -619,7 +641,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
           // not checked, when the lecturer asks (--not-checked).
           const bool retry = o.not_checked && status_of(class_row(row)) == "not checked";
           if (retry) ++not_checked_again;
-          if (!retry && row.problem.rfind("its report cannot be read", 0) != 0 && grader_fault_of(class_row(row)).empty()) {
+          if (!retry && row.problem.rfind("its report cannot be read", 0) != 0 &&
+              grader_fault_of(class_row(row)).empty()) {
             finished[i] = std::move(row);
             ++resumed;
             continue;
@@ -650,8 +673,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   auto student_command = [](const Implementation& impl) {
     const fs::path origin(impl.origin);
     const bool octave_folder = impl.origin.find('/') == std::string::npos && origin.extension().empty();
-    return std::string("geomech check ") +
-           shell_quote(octave_folder ? impl.origin + "/" : origin.filename().string());
+    return std::string("geomech check ") + shell_quote(octave_folder ? impl.origin + "/" : origin.filename().string());
   };
   std::vector<std::function<std::string()>> tasks;
   // The cores are shared among the checks that run at once: a class of one (a regrade, an
@@ -749,16 +771,18 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   // The views of the class as it stands (summary.md, summary.html, the gradebook), rewritten
   // together, now (so that an earlier run's complete summary and gradebook never stand beside this
   // run's deleted results) and as each implementation finishes.
-  const std::string resume = o.command.empty() ? (o.front_door.empty() ? "geomech" : o.front_door) + " check-class " +
-                                                     shell_quote(o.dir)
-                                               : o.command;
+  const std::string resume =
+      o.command.empty() ? (o.front_door.empty() ? "geomech" : o.front_door) + " check-class " + shell_quote(o.dir)
+                        : o.command;
   ClassConsole console(impls.size(), impls.size() - to_check.size());
   auto state_now = [&] {
     ClassState st;
     st.class_dir = o.dir;
     for (std::size_t k = 0; k < impls.size(); ++k)
-      if (finished[k]) st.rows.push_back(*finished[k]);
-      else st.pending.push_back(impls[k].name);
+      if (finished[k])
+        st.rows.push_back(*finished[k]);
+      else
+        st.pending.push_back(impls[k].name);
     st.no_submission = no_submission;
     return st;
   };
@@ -767,7 +791,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     summarise_class(st, report_dir, grades, false);
     std::ostringstream say;
     say << "\n\ngeomech check-class: interrupted. " << st.rows.size() << " of " << impls.size()
-        << " results are kept in " << report_dir << "/ (a report and class-row.json each); summary.md and "
+        << " results are kept in " << report_dir
+        << "/ (a report and class-row.json each); summary.md and "
            "summary.html"
         << (grades.csv.empty() ? "" : " and the gradebook " + grades.csv) << " list the " << st.pending.size()
         << " not checked yet" << (grades.csv.empty() ? "" : " (no grade in the gradebook)")
@@ -797,7 +822,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     const ClassView view = decide_class(rows_now, grades.rubric);
     for (const auto& sv : view.students)
       if (sv.row->name == impls[i].name)
-        console.finished(impls[i].name, sv.result, view.no_grades.empty() ? sv.score.headline.substr(0, sv.score.headline.find(':')) : "",
+        console.finished(impls[i].name, sv.result,
+                         view.no_grades.empty() ? sv.score.headline.substr(0, sv.score.headline.find(':')) : "",
                          seconds);
     ++done;
     if (stop_after >= 0 && static_cast<long>(done) >= stop_after) ::raise(stop_signal);
@@ -821,7 +847,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     std::cerr << "geomech check-class: shard " << o.shard_k << "/" << o.shard_n << " written to " << report_dir
               << "; combine the shards with `geomech merge-class OUT SHARD_DIR...`\n";
   if (resumed > 0)
-    std::cout << "(" << resumed << " of " << impls.size() << " implementations resumed from the previous run, unchanged)\n";
+    std::cout << "(" << resumed << " of " << impls.size()
+              << " implementations resumed from the previous run, unchanged)\n";
   ClassState st;
   st.class_dir = o.dir;
   st.rows = rows;
@@ -829,7 +856,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   return summarise_class(st, report_dir, grades, true);
 }
 
-int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir, const GradeOptions& grade_options) {
+int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir,
+                const GradeOptions& grade_options) {
   if (shard_dirs.empty()) throw std::runtime_error("merge-class: no shard folders given");
   const auto grades = load_grades(grade_options);
   std::vector<Row> rows;
@@ -861,7 +889,8 @@ int merge_class(const std::vector<std::string>& shard_dirs, const std::string& o
                                j.at("class").get<std::string>() + " does not belong with shards of " +
                                std::to_string(n) + " of " + klass);
     }
-    if (!seen.insert(k).second) throw std::runtime_error(file.string() + ": shard " + std::to_string(k) + " given twice");
+    if (!seen.insert(k).second)
+      throw std::runtime_error(file.string() + ": shard " + std::to_string(k) + " given twice");
     for (const auto& r : j.at("rows")) {
       if (!r.value("submitted", true)) continue;  // a roster name with no submission: added below
       Row row = row_from_json(r, dir);
@@ -881,8 +910,8 @@ int merge_class(const std::vector<std::string>& shard_dirs, const std::string& o
     throw std::runtime_error("merge-class: shards " + missing + " of " + std::to_string(n) + " are missing");
   }
   if (rows.size() != total)
-    throw std::runtime_error("merge-class: the shards hold " + std::to_string(rows.size()) + " implementations, the class " +
-                             std::to_string(total));
+    throw std::runtime_error("merge-class: the shards hold " + std::to_string(rows.size()) +
+                             " implementations, the class " + std::to_string(total));
   std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.impl.name < b.impl.name; });
   ClassState st;
   st.class_dir = klass;

@@ -28,21 +28,21 @@ namespace gm::harness {
 // The gradebook export (harness/class/gradebook.hpp, docs/GRADEBOOK.md): written with the summary when
 // `csv` is set; the rubric and the roster are read before anything is checked.
 struct GradeOptions {
-  std::string csv;     // --grades FILE.csv
-  std::string rubric;  // --rubric FILE.json (default: partial credit per correct slot)
-  std::string roster;  // --roster FILE.csv (implementation name -> the LMS's identifiers)
+  std::string csv;           // --grades FILE.csv
+  std::string rubric;        // --rubric FILE.json (default: partial credit per correct slot)
+  std::string roster;        // --roster FILE.csv (implementation name -> the LMS's identifiers)
   std::string feedback_dir;  // --feedback-dir DIR: one page per student, named for the LMS's bulk upload
 };
 
 struct ClassOptions {
   std::string dir;
-  std::string report_dir;          // default: geomech-reports/<folder name>
-  int jobs = 2;                    // implementations at once
+  std::string report_dir;  // default: geomech-reports/<folder name>
+  int jobs = 2;            // implementations at once
   double timeout_per_implementation = 1800;
-  std::string front_door;          // how to call geomech in printed commands (e.g. "./geomech")
-  std::string command;             // this run's command line without --fresh: what resumes it (said on Ctrl-C)
-  CheckCliOptions check;           // forwarded to every implementation's check
-  BuildOptions build;              // how each implementation is compiled (jobs is set to 1)
+  std::string front_door;  // how to call geomech in printed commands (e.g. "./geomech")
+  std::string command;     // this run's command line without --fresh: what resumes it (said on Ctrl-C)
+  CheckCliOptions check;   // forwarded to every implementation's check
+  BuildOptions build;      // how each implementation is compiled (jobs is set to 1)
   // Untrusted mode (the default): every implementation is compiled and run in the
   // sandbox as its own process behind the slot protocol (`geomech check FILE --untrusted`).
   bool untrusted = true;
@@ -96,6 +96,7 @@ std::vector<Implementation> shard_of(const std::vector<Implementation>& all, int
 // `geomech merge-class OUT SHARD_DIR...`: the shards' results (class-shard.json and one report per
 // implementation in each shard folder) as one class report in OUT, with the same summary table as
 // an unsharded run. Throws std::runtime_error for a missing, repeated or foreign shard.
-int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir, const GradeOptions& grades = {});
+int merge_class(const std::vector<std::string>& shard_dirs, const std::string& out_dir,
+                const GradeOptions& grades = {});
 
 }  // namespace gm::harness

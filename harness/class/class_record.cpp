@@ -48,9 +48,14 @@ bool is_double_only(const json& v, const json& report) {
 }  // namespace
 
 json class_row_to_json(const ClassRow& row) {
-  json j = {{"name", row.name},       {"source", row.source},         {"built", row.built},
-            {"build_message", row.build_message}, {"build_seconds", row.build_seconds},
-            {"exit_code", row.exit_code}, {"check_seconds", row.check_seconds}, {"problem", row.problem}};
+  json j = {{"name", row.name},
+            {"source", row.source},
+            {"built", row.built},
+            {"build_message", row.build_message},
+            {"build_seconds", row.build_seconds},
+            {"exit_code", row.exit_code},
+            {"check_seconds", row.check_seconds},
+            {"problem", row.problem}};
   if (!row.submitted) j["submitted"] = false;
   if (!row.machine_fault.empty()) j["machine_fault"] = row.machine_fault;
   return j;
@@ -146,8 +151,10 @@ StudentResult student_result(const ClassRow& row) {
   // Credit only for what a check exercised: a slot no selected property calls is not known correct.
   const json exercised = row.report.value("exercised", json::object());
   for (const auto& slot : provided) {
-    if (exercised.contains(slot) && !exercised.at(slot).empty()) s.provided.push_back(slot);
-    else s.unexercised.push_back(slot);
+    if (exercised.contains(slot) && !exercised.at(slot).empty())
+      s.provided.push_back(slot);
+    else
+      s.unexercised.push_back(slot);
   }
   for (const auto& f : row.report.value("first_fix", json::array())) {
     const std::string slot = f.at("slot");
@@ -184,7 +191,8 @@ std::string fix_key(const std::string& fix, const std::string& name) {
     if (!name.empty() && fix.compare(i, name.size(), name) == 0) {
       out += "~";
       i += name.size();
-      while (i < fix.size() && (std::isalnum(static_cast<unsigned char>(fix[i])) || fix[i] == '.' || fix[i] == '_')) ++i;
+      while (i < fix.size() && (std::isalnum(static_cast<unsigned char>(fix[i])) || fix[i] == '.' || fix[i] == '_'))
+        ++i;
     } else if (std::isdigit(static_cast<unsigned char>(fix[i])) ||
                (fix[i] == '-' && i + 1 < fix.size() && std::isdigit(static_cast<unsigned char>(fix[i + 1])))) {
       out += "#";
@@ -265,10 +273,14 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
       s.score.headline = "no grade";
     }
     s.report_link = s.graded.report;
-    if (s.status == "no submission") s.result = "NO SUBMISSION";
-    else if (s.status == "does not compile") s.result = "DOES NOT COMPILE";
-    else if (s.status == "not checked") s.result = "NOT CHECKED";
-    else if (s.status == kGraderError) s.result = "GRADER ERROR";
+    if (s.status == "no submission")
+      s.result = "NO SUBMISSION";
+    else if (s.status == "does not compile")
+      s.result = "DOES NOT COMPILE";
+    else if (s.status == "not checked")
+      s.result = "NOT CHECKED";
+    else if (s.status == kGraderError)
+      s.result = "GRADER ERROR";
     if (s.status != "checked") {
       view.students.push_back(std::move(s));
       continue;
@@ -283,8 +295,10 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
         continue;
       }
       ++c.run;
-      if (out == "PASS") ++c.passed;
-      else ++c.bad;
+      if (out == "PASS")
+        ++c.passed;
+      else
+        ++c.bad;
     }
     // The assignment decides a PASS (one slot of twelve, right, read as PASS): every
     // check that ran passed, and every slot the rubric's assignment weights is provided, exercised
@@ -298,7 +312,8 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
       bool complete = true;
       for (const auto& item : s.score.items) {
         if (item.kind == ScoreItem::Kind::Slot && item.state != "correct") complete = false;
-        if (item.kind == ScoreItem::Kind::Claim && item.state == "none made") complete = false;  // claims asked, none made
+        if (item.kind == ScoreItem::Kind::Claim && item.state == "none made")
+          complete = false;  // claims asked, none made
       }
       s.result = complete ? "PASS" : "INCOMPLETE";
     }
@@ -313,13 +328,16 @@ std::vector<std::string> words_of(const StudentView& s) {
   const ClassRow& row = *s.row;
   const std::string grade = s.score.headline.substr(0, s.score.headline.find(':'));  // "0.00 of 20"
   if (s.status == "no submission")
-    return {"NO SUBMISSION, " + grade + ": the roster names this student, and the class folder holds nothing of theirs"};
+    return {"NO SUBMISSION, " + grade +
+            ": the roster names this student, and the class folder holds nothing of theirs"};
   if (s.status == kGraderError)
-    return {"GRADER ERROR, no grade yet: the grading machine could not check this submission (not a problem of the "
-            "code); the next run checks it again"};
+    return {
+        "GRADER ERROR, no grade yet: the grading machine could not check this submission (not a problem of the "
+        "code); the next run checks it again"};
   if (s.status != "checked") {
     out.push_back(s.result + ", " + grade);
-    if (!s.graded.first_fix.empty()) out.push_back((s.status == "does not compile" ? "first error: " : "why: ") + s.graded.first_fix);
+    if (!s.graded.first_fix.empty())
+      out.push_back((s.status == "does not compile" ? "first error: " : "why: ") + s.graded.first_fix);
     return out;
   }
   out.push_back(s.result + ", " + s.score.headline);
@@ -349,7 +367,8 @@ std::vector<std::string> words_of(const StudentView& s) {
   const json counts = row.report.value("counts", json::object());
   int problems = 0;
   for (const char* k : {"FAIL", "CRASH", "TIMEOUT", "ERROR"}) problems += counts.value(k, 0);
-  if (problems > 0) out.push_back(std::to_string(problems) + (problems == 1 ? " check fails" : " checks fail") + " in all");
+  if (problems > 0)
+    out.push_back(std::to_string(problems) + (problems == 1 ? " check fails" : " checks fail") + " in all");
   const auto unchecked = row.report.value("unchecked", json::array());
   if (!unchecked.empty()) out.push_back(std::to_string(unchecked.size()) + " could not be checked");
   if (!s.graded.first_fix.empty()) out.push_back("first fix: " + s.graded.first_fix);

@@ -25,13 +25,13 @@ struct ClassRow {
   bool built = false;         // compiled (always true for Python and Octave)
   std::string build_message;  // the compiler's message when it did not compile
   double build_seconds = 0;
-  int exit_code = -1;         // of the check: 0 every check passed, 1 some did not; else a problem
+  int exit_code = -1;  // of the check: 0 every check passed, 1 some did not; else a problem
   double check_seconds = 0;
-  std::string problem;        // the check itself could not run (a refusal, a crash of the harness...)
+  std::string problem;  // the check itself could not run (a refusal, a crash of the harness...)
   // The grader's machine or set-up failed it, with the fix (a sandbox that cannot start the compiler,
   // a check starved of CPU): never graded, checked again by the next run.
   std::string machine_fault;
-  nlohmann::json report;      // the check's verdicts.json; null unless it was checked
+  nlohmann::json report;  // the check's verdicts.json; null unless it was checked
 };
 
 // The grader's fault in a row: its own, or that of a verdict of its report (verdicts.json's
@@ -78,13 +78,13 @@ struct StudentView {
 // how many of the students checked, who, and the most common first fix among them (its line as
 // one of them was told; fixes are grouped with the student's own names and the numbers left out).
 struct ClassMistake {
-  std::string kind;                   // "slot" or "claim"
-  std::string what;                   // "vee", or "midpoint casimir"
-  int students = 0;                   // how many got it wrong
-  int checked = 0;                    // of how many checked (compiled and run)
-  std::vector<std::string> who;       // their names, sorted
-  std::string common_fix;             // the most common first fix (one student's words), or ""
-  int common_fix_students = 0;        // how many were told that fix
+  std::string kind;              // "slot" or "claim"
+  std::string what;              // "vee", or "midpoint casimir"
+  int students = 0;              // how many got it wrong
+  int checked = 0;               // of how many checked (compiled and run)
+  std::vector<std::string> who;  // their names, sorted
+  std::string common_fix;        // the most common first fix (one student's words), or ""
+  int common_fix_students = 0;   // how many were told that fix
 };
 
 struct ClassView {

@@ -37,8 +37,9 @@ std::string feedback_page(const StudentView& s) {
   if (!s.score.items.empty()) {
     b << "<h2>What the grade rests on</h2>\n<table><tr><th>part</th><th>state</th><th>points</th><th>why</th></tr>\n";
     for (const auto& i : s.score.items)
-      b << "<tr><td>" << html_escape(i.name) << "</td><td>" << html_escape(i.state) << "</td><td>" << format_points(i.points)
-        << " of " << format_points(i.max_points) << "</td><td>" << html_escape(i.detail) << "</td></tr>\n";
+      b << "<tr><td>" << html_escape(i.name) << "</td><td>" << html_escape(i.state) << "</td><td>"
+        << format_points(i.points) << " of " << format_points(i.max_points) << "</td><td>" << html_escape(i.detail)
+        << "</td></tr>\n";
     b << "</table>\n";
   }
   const std::string again = s.row->report.is_object() ? s.row->report.value("reproduce_prefix", std::string()) : "";
@@ -68,10 +69,12 @@ std::vector<std::string> write_feedback_files(const ClassView& view, const std::
   }
   std::vector<std::string> said;
   if (kinds.count("Moodle"))
-    said.push_back(std::to_string(kinds["Moodle"]) + " in folders named as Moodle's download names them: zip the "
+    said.push_back(std::to_string(kinds["Moodle"]) +
+                   " in folders named as Moodle's download names them: zip the "
                    "folder's content and use \"Upload multiple feedback files in a zip\"");
   if (kinds.count("Canvas"))
-    said.push_back(std::to_string(kinds["Canvas"]) + " named with Canvas's download prefix (user and submission ids): "
+    said.push_back(std::to_string(kinds["Canvas"]) +
+                   " named with Canvas's download prefix (user and submission ids): "
                    "zip them and use \"Re-upload submissions\"");
   if (!others.empty()) {
     std::string names;

@@ -38,10 +38,12 @@ void check_slot_name(const Rubric& r, const std::string& key, const std::string&
   static const std::vector<std::string> steps = {"rigid_body_step", "manakov_step", "clebsch_step",
                                                  "manakov_clebsch_step"};
   if (std::find(steps.begin(), steps.end(), name) != steps.end())
-    rubric_error(r, key, "\"" + name + "\" is an integrator's step, not a slot: an integrator earns credit by its "
-                         "claims (claims_weight, claims) and in the area \"integrators\"");
-  rubric_error(r, key, "unknown slot \"" + name + "\"" + did_you_mean(name, slots) +
-                           "; `geomech slots` lists the slot names");
+    rubric_error(r, key,
+                 "\"" + name +
+                     "\" is an integrator's step, not a slot: an integrator earns credit by its "
+                     "claims (claims_weight, claims) and in the area \"integrators\"");
+  rubric_error(r, key,
+               "unknown slot \"" + name + "\"" + did_you_mean(name, slots) + "; `geomech slots` lists the slot names");
 }
 
 void check_claim_name(const Rubric& r, const std::string& key, const std::string& name) {
@@ -63,8 +65,8 @@ const std::vector<std::string> kCanvasIds = {"Student", "ID", "SIS User ID", "SI
 
 // Canvas drops any column whose header contains one of these (its total columns),
 // so a grade item named like that would never be imported.
-const std::vector<std::string> kCanvasTotals = {"Current Score", "Current Points", "Current Grade",
-                                                "Final Score",   "Final Points",   "Final Grade",
+const std::vector<std::string> kCanvasTotals = {"Current Score",  "Current Points", "Current Grade",
+                                                "Final Score",    "Final Points",   "Final Grade",
                                                 "Override Score", "Override Grade", "Override Status"};
 
 void check_item(const Rubric& r) {
@@ -177,7 +179,8 @@ std::string trimmed_number(double value) {
 
 std::string csv_row(const std::vector<std::string>& fields) {
   std::string line;
-  for (std::size_t i = 0; i < fields.size(); ++i) line += (i ? "," : "") + csv_field(spreadsheet_safe(inert_text(fields[i])));
+  for (std::size_t i = 0; i < fields.size(); ++i)
+    line += (i ? "," : "") + csv_field(spreadsheet_safe(inert_text(fields[i])));
   return line + "\r\n";  // RFC 4180 line break; both importers also accept it (GRADEBOOK.md)
 }
 
@@ -191,9 +194,12 @@ void read_plain_key(Rubric& r, const std::string& key, const json& v) {
       rubric_error(r, key, "expected a number > 0, got " + v.dump());
     r.points = v.get<double>();
   } else if (key == "format") {
-    if (v == "moodle") r.format = LmsFormat::moodle;
-    else if (v == "canvas") r.format = LmsFormat::canvas;
-    else rubric_error(r, key, "expected \"moodle\" or \"canvas\", got " + v.dump());
+    if (v == "moodle")
+      r.format = LmsFormat::moodle;
+    else if (v == "canvas")
+      r.format = LmsFormat::canvas;
+    else
+      rubric_error(r, key, "expected \"moodle\" or \"canvas\", got " + v.dump());
   } else if (key == "feedback") {
     if (!v.is_boolean()) rubric_error(r, key, "expected true or false, got " + v.dump());
     r.feedback = v.get<bool>();
@@ -212,8 +218,9 @@ void read_plain_key(Rubric& r, const std::string& key, const json& v) {
     }
     r.assignment = slots;
   } else {
-    rubric_error(r, key, "unknown key; expected item, points, format, feedback, slots, assignment, "
-                         "areas, claims_weight, claims or visibility");
+    rubric_error(r, key,
+                 "unknown key; expected item, points, format, feedback, slots, assignment, "
+                 "areas, claims_weight, claims or visibility");
   }
 }
 
@@ -222,8 +229,9 @@ void read_plain_key(Rubric& r, const std::string& key, const json& v) {
 void read_visibility(Rubric& r, const std::string& key, const std::string& name, const json& level) {
   const std::vector<std::string> levels(kVisibilityLevels.begin(), kVisibilityLevels.end());
   if (!level.is_string() || std::find(levels.begin(), levels.end(), level.get<std::string>()) == levels.end())
-    rubric_error(r, key, "expected \"visible\", \"after_due_date\", \"after_published\" or \"hidden\", got " +
-                             level.dump() + (level.is_string() ? did_you_mean(level.get<std::string>(), levels) : ""));
+    rubric_error(r, key,
+                 "expected \"visible\", \"after_due_date\", \"after_published\" or \"hidden\", got " + level.dump() +
+                     (level.is_string() ? did_you_mean(level.get<std::string>(), levels) : ""));
   if (name == "default") {
     r.visibility_default = level.get<std::string>();
     return;
@@ -236,8 +244,9 @@ void read_visibility(Rubric& r, const std::string& key, const std::string& name,
     std::vector<std::string> all = slots;
     all.insert(all.end(), claims.begin(), claims.end());
     all.insert(all.end(), kKnownAreas.begin(), kKnownAreas.end());
-    rubric_error(r, key, "\"" + name + "\" is not a slot, a claim or an area" + did_you_mean(name, all) +
-                             "; `geomech slots` lists the slot names");
+    rubric_error(r, key,
+                 "\"" + name + "\" is not a slot, a claim or an area" + did_you_mean(name, all) +
+                     "; `geomech slots` lists the slot names");
   }
   r.visibility[name] = level.get<std::string>();
 }
@@ -288,8 +297,10 @@ Rubric parse_rubric(std::string_view json_text, const std::string& source) {
         each([&] {
           const double weight = read_weight(r, w, key + "." + name);
           if (name != "default") (slots ? check_slot_name : check_claim_name)(r, key + "." + name, name);
-          if (name == "default") (slots ? r.slot_default : r.claim_default) = weight;
-          else (slots ? r.slot_weights : r.claim_weights)[name] = weight;
+          if (name == "default")
+            (slots ? r.slot_default : r.claim_default) = weight;
+          else
+            (slots ? r.slot_weights : r.claim_weights)[name] = weight;
         });
     } else if (key == "areas") {
       each([&] { read_object(r, v, key); });
@@ -297,8 +308,9 @@ Rubric parse_rubric(std::string_view json_text, const std::string& source) {
       for (const auto& [name, w] : v.items())
         each([&] {
           if (std::find(kKnownAreas.begin(), kKnownAreas.end(), name) == kKnownAreas.end())
-            rubric_error(r, key + "." + name, "unknown area; expected one of \"sec. 1\", \"sec. 2\", "
-                                              "\"sec. 3\", \"momentum maps\", \"integrators\"");
+            rubric_error(r, key + "." + name,
+                         "unknown area; expected one of \"sec. 1\", \"sec. 2\", "
+                         "\"sec. 3\", \"momentum maps\", \"integrators\"");
           r.area_weights[name] = read_weight(r, w, key + "." + name);
         });
     } else if (key == "visibility") {
@@ -337,8 +349,9 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
   max += slot_max;
   for (const auto& [name, w] : r.area_weights) max += w;
   if (max <= 0)
-    rubric_error(r, "assignment", "the maximum grade is 0 for this class (" + std::to_string(assignment.size()) +
-                                      " assignment slots); list the slots under \"assignment\"");
+    rubric_error(r, "assignment",
+                 "the maximum grade is 0 for this class (" + std::to_string(assignment.size()) +
+                     " assignment slots); list the slots under \"assignment\"");
   Score out;
   out.max_points = r.points;
   const double scale = r.points / max;  // rubric weight -> points
@@ -435,7 +448,8 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
   const auto weighted = [&](const std::vector<std::string>& slots) {
     std::vector<std::string> out_list;
     for (const auto& s : slots) {
-      out_list.push_back(uniform ? s : s + " (weight " + trimmed_number(weight_of(r.slot_weights, r.slot_default, s)) + ")");
+      out_list.push_back(
+          uniform ? s : s + " (weight " + trimmed_number(weight_of(r.slot_weights, r.slot_default, s)) + ")");
     }
     return short_list(out_list);
   };
@@ -473,14 +487,16 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
     // The machine's fault is not the student's: no grade (an empty cell), and words without the
     // grader's paths; the lecturer's summary says what failed and its fix.
     out.headline = "no grade yet: the grading machine could not check this submission";
-    out.feedback = "no grade yet: the grading machine could not check this submission (a problem of the grader, not of "
-                   "your code); it will be checked again";
+    out.feedback =
+        "no grade yet: the grading machine could not check this submission (a problem of the grader, not of "
+        "your code); it will be checked again";
   }
   if (st.status == kNotCheckedYet) {
     // A class run stopped before this submission: no grade, and the row says why, as
     // the summary does; an empty grade cell is "no grade" to both importers.
     out.headline = "no grade yet: " + kNotCheckedYet;
-    out.feedback = "no grade yet: the class run stopped before checking this submission; the same command again resumes it";
+    out.feedback =
+        "no grade yet: the class run stopped before checking this submission; the same command again resumes it";
   }
   return out;
 }
@@ -508,12 +524,15 @@ std::string write_gradebook_csv(const std::vector<StudentResult>& cls, const Rub
     const Score score = score_student(*s, r, assignment);
     RosterEntry id;
     const bool listed = roster && roster->count(s->name);
-    if (listed) id = roster->at(s->name);
-    else id.username = id.full_name = s->name;  // no roster row: the implementation name identifies
-    const std::string grade = s->status == kNotCheckedYet || s->status == kGraderError ? "" : format_points(score.points);
+    if (listed)
+      id = roster->at(s->name);
+    else
+      id.username = id.full_name = s->name;  // no roster row: the implementation name identifies
+    const std::string grade =
+        s->status == kNotCheckedYet || s->status == kGraderError ? "" : format_points(score.points);
     if (r.format == LmsFormat::canvas) {
-      out += csv_row({id.full_name.empty() ? s->name : id.full_name, id.canvas_id, id.sis_user_id,
-                      id.sis_login_id, id.section, grade});
+      out += csv_row({id.full_name.empty() ? s->name : id.full_name, id.canvas_id, id.sis_user_id, id.sis_login_id,
+                      id.section, grade});
     } else {
       std::vector<std::string> f = {s->name, id.username, id.email, id.id_number, grade};
       if (r.feedback) f.push_back(score.feedback);
@@ -538,13 +557,14 @@ Roster parse_roster(std::string_view text, const std::string& source) {
     return s;
   };
   if (rows.empty()) fail("empty file; expected a header row with a \"name\" column");
-  const std::vector<std::string> known = {"name", "full_name", "username", "email", "id_number",
+  const std::vector<std::string> known = {"name",      "full_name",   "username",     "email",  "id_number",
                                           "canvas_id", "sis_user_id", "sis_login_id", "section"};
   std::vector<std::string> header;
   for (const auto& h : rows[0]) {
     header.push_back(trim(h));
     if (std::find(known.begin(), known.end(), header.back()) == known.end())
-      fail("unknown column \"" + header.back() + "\"; expected name, full_name, username, email, "
+      fail("unknown column \"" + header.back() +
+           "\"; expected name, full_name, username, email, "
            "id_number, canvas_id, sis_user_id, sis_login_id, section");
   }
   if (std::find(header.begin(), header.end(), "name") == header.end()) fail("no \"name\" column");
@@ -558,7 +578,7 @@ Roster parse_roster(std::string_view text, const std::string& source) {
     for (std::size_t c = 0; c < header.size(); ++c) f[header[c]] = trim(rows[i][c]);
     if (f["name"].empty()) fail("row " + std::to_string(i + 1) + " has an empty name");
     if (roster.count(f["name"])) fail("name \"" + f["name"] + "\" appears twice");
-    roster[f["name"]] = {f["full_name"], f["username"], f["email"], f["id_number"],
+    roster[f["name"]] = {f["full_name"], f["username"],    f["email"],        f["id_number"],
                          f["canvas_id"], f["sis_user_id"], f["sis_login_id"], f["section"]};
   }
   return roster;
@@ -583,9 +603,12 @@ std::string spreadsheet_safe(const std::string& cell) {
   std::size_t i = cell[0] == '-' || cell[0] == '+' ? 1 : 0;
   bool digits = false, dot = false;
   for (; i < cell.size(); ++i) {
-    if (std::isdigit(static_cast<unsigned char>(cell[i])) != 0) digits = true;
-    else if (cell[i] == '.' && !dot) dot = true;
-    else break;
+    if (std::isdigit(static_cast<unsigned char>(cell[i])) != 0)
+      digits = true;
+    else if (cell[i] == '.' && !dot)
+      dot = true;
+    else
+      break;
   }
   if (digits && i == cell.size()) return cell;
   return "'" + cell;
@@ -612,9 +635,12 @@ std::vector<std::vector<std::string>> parse_csv(std::string_view t) {
     const char c = t[i];
     any = true;
     if (in_quotes) {
-      if (c == '"' && i + 1 < t.size() && t[i + 1] == '"') field += '"', ++i;
-      else if (c == '"') in_quotes = false, closed = true;
-      else field += c, line += c == '\n';
+      if (c == '"' && i + 1 < t.size() && t[i + 1] == '"')
+        field += '"', ++i;
+      else if (c == '"')
+        in_quotes = false, closed = true;
+      else
+        field += c, line += c == '\n';
     } else if (c == ',') {
       end_field();
     } else if (c == '\r' || c == '\n') {

@@ -30,16 +30,16 @@ inline const std::string kNotCheckedYet = "not checked yet";
 inline const std::string kGraderError = "grader error";
 
 struct StudentResult {
-  std::string name;                   // the implementation's name in the class (file stem or folder name); unique
-  std::string status;                 // "checked", "does not compile", "not checked", "no submission", kNotCheckedYet, kGraderError
-  std::vector<std::string> provided;  // slot names the submission provides (any scalar) and a check exercised
+  std::string name;    // the implementation's name in the class (file stem or folder name); unique
+  std::string status;  // "checked", "does not compile", "not checked", "no submission", kNotCheckedYet, kGraderError
+  std::vector<std::string> provided;     // slot names the submission provides (any scalar) and a check exercised
   std::vector<std::string> unexercised;  // slots it provides that no check that ran called
-  std::vector<std::string> wrong;     // provided slots the check found wrong, first fix first
-  std::map<std::string, std::string> why_wrong;  // slot -> the line its first fix says
+  std::vector<std::string> wrong;        // provided slots the check found wrong, first fix first
+  std::map<std::string, std::string> why_wrong;      // slot -> the line its first fix says
   std::map<std::string, std::pair<int, int>> areas;  // area name -> (checks passed, checks run)
-  std::vector<ClaimResult> claims;    // every claim an integrator made, with its verdict
-  std::string first_fix;              // one line, may be empty: what to fix first
-  std::string report;                 // relative link to the student's report, e.g. "alice/report.md"
+  std::vector<ClaimResult> claims;                   // every claim an integrator made, with its verdict
+  std::string first_fix;                             // one line, may be empty: what to fix first
+  std::string report;                                // relative link to the student's report, e.g. "alice/report.md"
 };
 
 // Which LMS import the CSV is shaped for; the two want different columns.
@@ -47,8 +47,7 @@ enum class LmsFormat { moodle, canvas };
 
 // Area names a rubric may weight. A misspelt area would silently cost every
 // student its share, so the rubric parser rejects names not listed here.
-inline const std::vector<std::string> kKnownAreas = {"sec. 1", "sec. 2", "sec. 3", "momentum maps",
-                                                     "integrators"};
+inline const std::vector<std::string> kKnownAreas = {"sec. 1", "sec. 2", "sec. 3", "momentum maps", "integrators"};
 
 // The grading policy. A default-constructed Rubric is the documented default:
 // partial credit per correct slot, out of 100, Moodle columns.
@@ -57,13 +56,13 @@ struct Rubric {
   std::string item = "geomech";             // grade item / assignment column header
   double points = 100;                      // maximum grade
   LmsFormat format = LmsFormat::moodle;
-  bool feedback = true;                     // Moodle only: add a feedback column
-  double slot_default = 1;                  // credit per correct slot not named below
+  bool feedback = true;     // Moodle only: add a feedback column
+  double slot_default = 1;  // credit per correct slot not named below
   std::map<std::string, double> slot_weights;
   std::optional<std::vector<std::string>> assignment;  // unset: every slot the class provides
   std::map<std::string, double> area_weights;          // absent area: weight 0
-  double claims_weight = 0;                 // share of the grade for claims (0: claims ignored)
-  double claim_default = 1;                 // relative weight of a claim not named below
+  double claims_weight = 0;                            // share of the grade for claims (0: claims ignored)
+  double claim_default = 1;                            // relative weight of a claim not named below
   std::map<std::string, double> claim_weights;
   // When an autograder shows a slot's, a claim's or an area's test to the student (Gradescope's
   // test visibility; AUTOGRADERS.md, "Hidden tests"): one of kVisibilityLevels, by name.
@@ -73,7 +72,8 @@ struct Rubric {
 
 // Gradescope's words, in order of what a student sees: a test "visible" now, shown
 // "after_due_date", "after_published" (when the lecturer publishes the grades), or "hidden" (never).
-inline constexpr std::array<const char*, 4> kVisibilityLevels = {"visible", "after_due_date", "after_published", "hidden"};
+inline constexpr std::array<const char*, 4> kVisibilityLevels = {"visible", "after_due_date", "after_published",
+                                                                 "hidden"};
 
 // Parses rubric JSON. Throws std::runtime_error naming `source`, the offending
 // key and what was expected (unknown key, wrong type, negative weight, ...).
@@ -111,14 +111,14 @@ std::vector<std::string> resolve_assignment(const Rubric& rubric, const std::vec
 struct ScoreItem {
   enum class Kind { Slot, Area, Claim };
   Kind kind = Kind::Slot;
-  std::string name;         // the slot, the area, or "<integrator> <claim>" ("claims" when none was made)
-  double weight = 0;        // its maximum in the rubric's weights (a claim: its share of claims_weight)
-  double earned = 0;        // of that weight
-  double max_points = 0;    // weight scaled to the rubric's points (not rounded)
-  double points = 0;        // earned scaled to the rubric's points (not rounded)
-  std::string state;        // slot: correct, wrong, missing, not exercised; area: "k/n checks passed";
-                            // claim: its status; or the student's status when not graded
-  std::string detail;       // why, in words (a wrong slot: its first fix); may be empty
+  std::string name;                    // the slot, the area, or "<integrator> <claim>" ("claims" when none was made)
+  double weight = 0;                   // its maximum in the rubric's weights (a claim: its share of claims_weight)
+  double earned = 0;                   // of that weight
+  double max_points = 0;               // weight scaled to the rubric's points (not rounded)
+  double points = 0;                   // earned scaled to the rubric's points (not rounded)
+  std::string state;                   // slot: correct, wrong, missing, not exercised; area: "k/n checks passed";
+                                       // claim: its status; or the student's status when not graded
+  std::string detail;                  // why, in words (a wrong slot: its first fix); may be empty
   std::string visibility = "visible";  // the rubric's, for its slot, claim or area (kVisibilityLevels)
 };
 
@@ -129,13 +129,12 @@ struct Score {
   std::vector<std::string> breakdown;  // e.g. "slots 3/4", "sec. 1 5/6", "claims 2/3 verified"
   std::string headline;                // "80.00 of 100: 3 of 4 slots correct (weight 4 of 5)"
   std::vector<std::string> notes;      // "wrong: casimir (weight 1)", "missing: ...", "false claims: ..."
-  std::string feedback;                // one line of at most 400 bytes: the grade, what it rests on, the first fix, the report
+  std::string feedback;  // one line of at most 400 bytes: the grade, what it rests on, the first fix, the report
 };
 
 // Scores one student against an already resolved assignment. Throws
 // std::runtime_error if the rubric's maximum is 0 for this assignment.
-Score score_student(const StudentResult& student, const Rubric& rubric,
-                    const std::vector<std::string>& assignment);
+Score score_student(const StudentResult& student, const Rubric& rubric, const std::vector<std::string>& assignment);
 
 // The exact header row for the rubric's format and item.
 std::vector<std::string> gradebook_header(const Rubric& rubric);

@@ -11,10 +11,10 @@
 namespace gm::harness {
 
 struct GraderNeeds {
-  bool untrusted = true;   // trusted runs in-process: nothing of the sandbox is needed
-  std::string cache_dir;   // the compilers' cache (made if missing)
-  bool python = false;     // a Python submission is to be checked
-  bool octave = false;     // an Octave one
+  bool untrusted = true;  // trusted runs in-process: nothing of the sandbox is needed
+  std::string cache_dir;  // the compilers' cache (made if missing)
+  bool python = false;    // a Python submission is to be checked
+  bool octave = false;    // an Octave one
 };
 
 // Each problem in words: what fails, where, and the fix. Empty: the machine can check.

@@ -61,18 +61,22 @@ void add_lecturer_commands(CLI::App& app) {
     bool no_zip = false;
   };
   auto ag = std::make_shared<Autograder>();
-  auto* a = app.add_subcommand("autograder", "write a Gradescope or PrairieLearn autograder for an assignment "
-                                             "(docs/AUTOGRADERS.md)");
-  a->add_option("platform", ag->platform, "gradescope or prairielearn")->required()->check(
-      CLI::IsMember({"gradescope", "prairielearn"}));
+  auto* a = app.add_subcommand("autograder",
+                               "write a Gradescope or PrairieLearn autograder for an assignment "
+                               "(docs/AUTOGRADERS.md)");
+  a->add_option("platform", ag->platform, "gradescope or prairielearn")
+      ->required()
+      ->check(CLI::IsMember({"gradescope", "prairielearn"}));
   a->add_option("dir", ag->dir, "the folder to write it into (and, for Gradescope, DIR.zip beside it)")->required();
-  a->add_option("--rubric", ag->o.rubric_file, "the rubric, with the assignment's slots (docs/GRADEBOOK.md)")->required();
+  a->add_option("--rubric", ag->o.rubric_file, "the rubric, with the assignment's slots (docs/GRADEBOOK.md)")
+      ->required();
   a->add_flag("--trusted", ag->o.trusted,
               "check in-process, without the sandbox: only where the grader cannot make user namespaces (a "
               "submission can then forge its verdicts)");
   a->add_option("--timeout-per-submission", ag->o.timeout_seconds,
                 "seconds for one submission's build and check (default 540; PrairieLearn allows 600 in all)");
-  a->add_option("--source", ag->o.source_dir, "the suite's source tree to pack (default: the one this tool was built from)");
+  a->add_option("--source", ag->o.source_dir,
+                "the suite's source tree to pack (default: the one this tool was built from)");
   a->add_flag("--no-zip", ag->no_zip, "Gradescope: do not write DIR.zip");
   add_check_options(*a, ag->check);
   a->callback([ag] {
@@ -86,7 +90,8 @@ void add_lecturer_commands(CLI::App& app) {
       for (const auto& arg : to_args(c)) ag->o.check_args.push_back(arg);
       // --jobs is the grader's business: drop what to_args wrote for this machine.
       for (std::size_t i = 0; i + 1 < ag->o.check_args.size(); ++i)
-        if (ag->o.check_args[i] == "--jobs") ag->o.check_args.erase(ag->o.check_args.begin() + i, ag->o.check_args.begin() + i + 2);
+        if (ag->o.check_args[i] == "--jobs")
+          ag->o.check_args.erase(ag->o.check_args.begin() + i, ag->o.check_args.begin() + i + 2);
       return write_autograder(ag->o);
     });
   });
@@ -97,10 +102,12 @@ void add_lecturer_commands(CLI::App& app) {
     GradeSubmissionOptions o;
   };
   auto gr = std::make_shared<Grade>();
-  auto* g = app.add_subcommand("grade-submission", "check one submission and write the platform's results.json (run by "
-                                                   "an autograder's run_autograder or run.sh)");
-  g->add_option("platform", gr->platform, "gradescope or prairielearn")->required()->check(
-      CLI::IsMember({"gradescope", "prairielearn"}));
+  auto* g = app.add_subcommand("grade-submission",
+                               "check one submission and write the platform's results.json (run by "
+                               "an autograder's run_autograder or run.sh)");
+  g->add_option("platform", gr->platform, "gradescope or prairielearn")
+      ->required()
+      ->check(CLI::IsMember({"gradescope", "prairielearn"}));
   g->add_option("--submission", gr->o.submission, "the folder holding the student's files")->required();
   g->add_option("--results", gr->o.results, "the results.json to write")->required();
   g->add_option("--config", gr->o.config, "the autograder's geomech-autograder.json")->required();
@@ -118,9 +125,10 @@ void add_lecturer_commands(CLI::App& app) {
     std::string cache_dir;
   };
   auto st = std::make_shared<SelfTest>();
-  auto* t = app.add_subcommand("self-test", "try what checking submissions needs on this machine, as the sandbox's "
-                                            "user: the sandbox, the compilers' cache, the interpreters (exit 3 and the "
-                                            "fix when something fails)");
+  auto* t = app.add_subcommand("self-test",
+                               "try what checking submissions needs on this machine, as the sandbox's "
+                               "user: the sandbox, the compilers' cache, the interpreters (exit 3 and the "
+                               "fix when something fails)");
   t->add_flag("--trusted", st->trusted, "checks will run in-process (nothing of the sandbox is needed)");
   t->add_option("--cache-dir", st->cache_dir, "the compilers' cache to try (default: the build tree's)");
   t->add_flag("--no-python", st->no_python, "do not try the Python interpreter");
@@ -135,8 +143,8 @@ void add_lecturer_commands(CLI::App& app) {
       const auto problems = grader_machine_problems(needs);
       if (!problems.empty()) throw MachineError(grader_machine_message(problems));
       std::cout << "geomech self-test: this machine can check submissions"
-                << (needs.untrusted ? " sandboxed (the sandbox starts, the cache " + needs.cache_dir + " is within its reach" +
-                                          (needs.python ? ", Python starts in it" : "") +
+                << (needs.untrusted ? " sandboxed (the sandbox starts, the cache " + needs.cache_dir +
+                                          " is within its reach" + (needs.python ? ", Python starts in it" : "") +
                                           (needs.octave ? ", Octave can be shown to it" : "") + ")"
                                     : " in-process (trusted)")
                 << "\n";
@@ -149,7 +157,8 @@ void add_lecturer_commands(CLI::App& app) {
     std::string dir, rubric;
   };
   auto h = std::make_shared<Html>();
-  auto* c = app.add_subcommand("class-html", "write summary.html again from a class report folder (its class-shard.json)");
+  auto* c =
+      app.add_subcommand("class-html", "write summary.html again from a class report folder (its class-shard.json)");
   c->add_option("report_dir", h->dir, "the report folder of a check-class run")->required();
   c->add_option("--rubric", h->rubric, "the rubric of the grades shown (default: partial credit per correct slot)");
   c->callback([h] {
@@ -163,7 +172,8 @@ void add_lecturer_commands(CLI::App& app) {
       }
       std::vector<ClassRow> rows;
       for (const auto& r : j.at("rows")) rows.push_back(class_row_from_json(r, h->dir));
-      const Rubric rubric = h->rubric.empty() ? Rubric{} : parse_rubric(read_text(h->rubric), fs::path(h->rubric).filename().string());
+      const Rubric rubric =
+          h->rubric.empty() ? Rubric{} : parse_rubric(read_text(h->rubric), fs::path(h->rubric).filename().string());
       ClassPage page;
       page.class_name = j.value("class", h->dir);
       page.rubric_source = rubric.source;

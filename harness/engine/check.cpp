@@ -33,9 +33,12 @@ struct Item {
 template <class Fn>
 decltype(auto) with_scalar(ScalarKind k, Fn&& fn) {
   switch (k) {
-    case ScalarKind::Double: return fn(static_cast<double*>(nullptr));
-    case ScalarKind::MP50: return fn(static_cast<Real50*>(nullptr));
-    case ScalarKind::Exact: break;
+    case ScalarKind::Double:
+      return fn(static_cast<double*>(nullptr));
+    case ScalarKind::MP50:
+      return fn(static_cast<Real50*>(nullptr));
+    case ScalarKind::Exact:
+      break;
   }
   return fn(static_cast<Rational*>(nullptr));
 }
@@ -127,7 +130,8 @@ void keep_within_budget(CheckResult& r) {
   if (total <= kReportTextBudget) return;
   std::vector<Verdict*> longest;
   for (auto& v : r.verdicts) longest.push_back(&v);
-  std::sort(longest.begin(), longest.end(), [&](const Verdict* a, const Verdict* b) { return size_of(*a) > size_of(*b); });
+  std::sort(longest.begin(), longest.end(),
+            [&](const Verdict* a, const Verdict* b) { return size_of(*a) > size_of(*b); });
   std::size_t cut = 0;
   for (Verdict* v : longest) {
     if (total <= kReportTextBudget) break;
@@ -139,9 +143,11 @@ void keep_within_budget(CheckResult& r) {
     total -= before - size_of(*v);
     ++cut;
   }
-  r.info.warnings.push_back("the messages of " + std::to_string(cut) + " checks are cut to 1 KiB each: together the "
-                            "messages of a report are kept under " + std::to_string(kReportTextBudget >> 20) +
-                            " MiB, and each is shown up to " + std::to_string(kMessageCap) +
+  r.info.warnings.push_back("the messages of " + std::to_string(cut) +
+                            " checks are cut to 1 KiB each: together the "
+                            "messages of a report are kept under " +
+                            std::to_string(kReportTextBudget >> 20) + " MiB, and each is shown up to " +
+                            std::to_string(kMessageCap) +
                             " bytes (its beginning and its end) whatever the code under test raises");
 }
 
@@ -242,8 +248,10 @@ void explain_not_provided(Verdict& v, const Property& p, const SubjectSet& s, co
         return;
       }
     if (*kind != ScalarKind::Double && subject_provides(s, ScalarKind::Double, need)) {
-      v.message = "needs slot '" + need + "', which is provided for double only (it is not a function template "
-                  "on the scalar), so this check cannot run in " + v.scalar;
+      v.message = "needs slot '" + need +
+                  "', which is provided for double only (it is not a function template "
+                  "on the scalar), so this check cannot run in " +
+                  v.scalar;
       return;
     }
     v.message = "needs slot '" + need + "', which is not provided";
@@ -334,7 +342,8 @@ void account_for_slots(CheckResult& result, const SubjectSet& s, const CheckConf
           }
         }
       if (claim == "orthogonality" && i.form.has_quaternion())
-        result.unchecked.push_back("integrator '" + i.name + "' claims orthogonality, but keeps its attitude as a "
+        result.unchecked.push_back("integrator '" + i.name +
+                                   "' claims orthogonality, but keeps its attitude as a "
                                    "quaternion: the matrix the suite reads it as, R(q / |q|), is orthogonal by "
                                    "construction, so nothing of yours is checked by it; claim unit_quaternion (|q| = 1 "
                                    "kept to round-off) instead");
@@ -444,7 +453,8 @@ std::optional<ScalarKind> scalar_from_name(const std::string& name) {
 }
 
 int CheckResult::count(Outcome o) const {
-  return static_cast<int>(std::count_if(verdicts.begin(), verdicts.end(), [o](const Verdict& v) { return v.outcome == o; }));
+  return static_cast<int>(
+      std::count_if(verdicts.begin(), verdicts.end(), [o](const Verdict& v) { return v.outcome == o; }));
 }
 
 int CheckResult::ran() const {
@@ -465,8 +475,8 @@ std::string CheckResult::verdict_word() const {
 
 std::string reproduce_command(const CheckResult& r, const Verdict& v) {
   if (!r.info.randomised) return r.info.reproduce_prefix;
-  std::string prefix = r.info.reproduce_prefix.empty() ? "build/bin/geomech check --subject " + r.subject
-                                                        : r.info.reproduce_prefix;
+  std::string prefix =
+      r.info.reproduce_prefix.empty() ? "build/bin/geomech check --subject " + r.subject : r.info.reproduce_prefix;
   std::string cmd = prefix + " --property " + v.property + " --scalar " + v.scalar;
   if (!v.integrator.empty()) cmd += " --integrator " + v.integrator;
   if (!v.reproduce.empty())
@@ -480,7 +490,9 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   const auto start = std::chrono::steady_clock::now();
   // Values and types in failures are written in the implementation's language (support/show.hpp);
   // the checks' processes inherit it.
-  show_style() = info.language == "python" ? ShowStyle::Python : info.language == "octave" ? ShowStyle::Octave : ShowStyle::Cpp;
+  show_style() = info.language == "python"   ? ShowStyle::Python
+                 : info.language == "octave" ? ShowStyle::Octave
+                                             : ShowStyle::Cpp;
   CheckResult result;
   result.subject = s.name;
   result.description = s.description;
@@ -493,7 +505,8 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
 
   std::vector<Item> items;
   for (const auto& p : properties()) {
-    if (!cfg.properties.empty() && std::find(cfg.properties.begin(), cfg.properties.end(), p.id) == cfg.properties.end())
+    if (!cfg.properties.empty() &&
+        std::find(cfg.properties.begin(), cfg.properties.end(), p.id) == cfg.properties.end())
       continue;
     if (!cfg.spec_prefix.empty() && p.spec.rfind(cfg.spec_prefix, 0) != 0) continue;
     for (ScalarKind k : cfg.scalars) {
@@ -575,9 +588,10 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   for (std::size_t i : order) {
     const Item item = items[i];
     tasks.push_back([&s, item, run]() {
-      std::vector<Verdict> vs = item.integrator.empty()
-                                    ? run_property(*item.property, s, item.kind, run)
-                                    : run_property(*item.property, only_integrator(s, item.kind, item.integrator), item.kind, run);
+      std::vector<Verdict> vs =
+          item.integrator.empty()
+              ? run_property(*item.property, s, item.kind, run)
+              : run_property(*item.property, only_integrator(s, item.kind, item.integrator), item.kind, run);
       for (auto& v : vs) bound_texts(v);  // before they cross to the harness
       return verdicts_to_string(vs);
     });
@@ -630,7 +644,8 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   auto task_name = [&](std::size_t t) {
     if (t >= n_items) return std::string("pictures and work-precision diagram");
     const Item& item = items[order[t]];
-    return item.property->id + " [" + scalar_name(item.kind) + (item.integrator.empty() ? "" : ", " + item.integrator) + "]";
+    return item.property->id + " [" + scalar_name(item.kind) + (item.integrator.empty() ? "" : ", " + item.integrator) +
+           "]";
   };
   auto tell_progress = [&]() {
     progress.elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -675,7 +690,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   keep_within_budget(result);
   account_for_slots(result, s, cfg);
   decide_integrator_verdicts(result);  // once; every view renders it
-  decide_first_fixes(result);         // once, from the complete verdicts
+  decide_first_fixes(result);          // once, from the complete verdicts
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (CheckListener* l : cfg.listeners) l->ended(result);
   return result;

@@ -26,9 +26,9 @@ namespace gm::harness {
 struct SubjectInfo {
   std::string source;            // the student's file, when there is one
   std::string reproduce_prefix;  // the command that re-runs this check, e.g. "./geomech check my.cpp"
-  std::map<std::string, std::string> scalar_unavailable;                // scalar -> reason
+  std::map<std::string, std::string> scalar_unavailable;                 // scalar -> reason
   std::map<std::string, std::map<std::string, std::string>> slot_notes;  // scalar -> slot -> reason
-  std::vector<std::string> warnings;                                    // shown at the top of the report
+  std::vector<std::string> warnings;                                     // shown at the top of the report
   // What the implementation wrote but the suite could not check (an integrator whose step has
   // the wrong signature, a slot function that cannot be called as the slot expects). Each one
   // fails the check: a claim that could not be checked is not a pass.
@@ -68,9 +68,9 @@ struct CheckConfig {
   std::vector<std::string> properties;  // only these (empty: all)
   std::string spec_prefix;              // only properties whose spec entry starts with this
   std::vector<ScalarKind> scalars{ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact};
-  std::string integrator;               // only this integrator (empty: all)
-  std::set<std::string> only_checks;    // only these "property/scalar" (empty: all): --quick
-  std::string selection_note;           // said with the selection (the quick profile's provenance)
+  std::string integrator;             // only this integrator (empty: all)
+  std::set<std::string> only_checks;  // only these "property/scalar" (empty: all): --quick
+  std::string selection_note;         // said with the selection (the quick profile's provenance)
   // Left out and listed as such ("property/scalar"): the costly 50-digit runs an implementation
   // behind the protocol leaves to --thorough (harness/engine/thorough_only.hpp), and why.
   std::set<std::string> thorough_only;
@@ -78,13 +78,13 @@ struct CheckConfig {
   // Why run.case_factor is below 1 when the user did not choose it (the matrix's factor, for an
   // implementation behind the protocol); empty otherwise.
   std::string case_factor_note;
-  RunOptions run;                       // seed, case counts, reproduce string
-  double timeout_seconds = 60;          // per (property, scalar, integrator)
-  bool timeout_given = false;           // --timeout was given: timeout_factor() does not apply
-  int jobs = 1;                         // children at once
-  bool isolate = true;                  // fork per property (false: in-process, for a debugger)
+  RunOptions run;               // seed, case counts, reproduce string
+  double timeout_seconds = 60;  // per (property, scalar, integrator)
+  bool timeout_given = false;   // --timeout was given: timeout_factor() does not apply
+  int jobs = 1;                 // children at once
+  bool isolate = true;          // fork per property (false: in-process, for a debugger)
   long memory_limit_mb = 4096;
-  bool portraits = true;                // integrator pictures (convergence, invariants) besides the verdicts
+  bool portraits = true;  // integrator pictures (convergence, invariants) besides the verdicts
   // Non-empty: the work-precision diagram is not drawn, and this says why (behind the protocol its
   // cost axis would time the round trips; --thorough draws it).
   std::string work_precision_left_out;
@@ -107,26 +107,26 @@ std::set<std::string> failed_checks_in_report(const std::string& dir);
 // judge it (harness/engine/integrator_verdicts.hpp); every view (the console's claims block,
 // report.md, verdicts.json, the class summary, the gradebook) shows this record.
 enum class ClaimStatus {
-  Verified,        // claimed: every check that judges it ran all its cases and passed
-  FalseClaim,      // claimed: a complete measurement contradicts it
-  NotVerified,     // claimed: a check it rests on could not decide (the step raised, a crash, cut cases)
-  NotRun,          // claimed: no check that judges it ran in this run (a selection, --thorough)
-  NotChecked,      // claimed: no property judges it for this integrator's steps
-  Holds,           // not claimed: the evidence that would verify it if claimed
-  DoesNotHold,     // not claimed: a complete measurement shows it does not hold
-  NotEstablished,  // not claimed: the evidence is incomplete
-  Measured,        // the order, not claimed: measured, and the step converges
-  DoesNotConverge, // the order, not claimed: the step does not converge (its checks FAIL)
-  None,            // not claimed, and nothing judges it for this integrator
+  Verified,         // claimed: every check that judges it ran all its cases and passed
+  FalseClaim,       // claimed: a complete measurement contradicts it
+  NotVerified,      // claimed: a check it rests on could not decide (the step raised, a crash, cut cases)
+  NotRun,           // claimed: no check that judges it ran in this run (a selection, --thorough)
+  NotChecked,       // claimed: no property judges it for this integrator's steps
+  Holds,            // not claimed: the evidence that would verify it if claimed
+  DoesNotHold,      // not claimed: a complete measurement shows it does not hold
+  NotEstablished,   // not claimed: the evidence is incomplete
+  Measured,         // the order, not claimed: measured, and the step converges
+  DoesNotConverge,  // the order, not claimed: the step does not converge (its checks FAIL)
+  None,             // not claimed, and nothing judges it for this integrator
 };
 
 struct ClaimDecision {
   std::string claim;
-  std::string claimed;              // "2" for an order, "yes" / "no"
+  std::string claimed;  // "2" for an order, "yes" / "no"
   ClaimStatus status = ClaimStatus::None;
-  std::string word;                 // what every view shows: "verified", "FALSE CLAIM", "holds (not claimed)", ...
-  std::string measured;             // in a few words: "order 1.00 (double), 1.00 (mp50)"; may be empty
-  std::string why;                  // what kept it from being decided (NotVerified, NotEstablished, NotRun)
+  std::string word;                   // what every view shows: "verified", "FALSE CLAIM", "holds (not claimed)", ...
+  std::string measured;               // in a few words: "order 1.00 (double), 1.00 (mp50)"; may be empty
+  std::string why;                    // what kept it from being decided (NotVerified, NotEstablished, NotRun)
   std::vector<std::string> evidence;  // "double, integrator_order: ...", one per finding
 };
 
@@ -134,9 +134,9 @@ struct IntegratorInfo {
   std::string name;
   bool has_claims = false;
   IntegratorClaims claims;
-  std::vector<std::string> steps;    // "rigid_body_step", "manakov_step"
-  std::vector<std::string> scalars;  // the scalars it is instantiated in
-  StateForm form;                    // the form it keeps the rigid body's state in (core/state_form.hpp)
+  std::vector<std::string> steps;        // "rigid_body_step", "manakov_step"
+  std::vector<std::string> scalars;      // the scalars it is instantiated in
+  StateForm form;                        // the form it keeps the rigid body's state in (core/state_form.hpp)
   std::vector<ClaimDecision> decisions;  // decided at the end of the check (harness/engine/integrator_verdicts.hpp)
 };
 
@@ -145,7 +145,7 @@ struct CheckResult {
   std::string description;
   SubjectInfo info;
   std::uint64_t seed = 0;
-  std::string selection;  // the property selection, in words ("all properties", "--property x")
+  std::string selection;          // the property selection, in words ("all properties", "--property x")
   std::vector<Verdict> verdicts;  // sorted by property, then scalar (double, mp50, exact), then integrator
   std::map<std::string, std::vector<std::string>> provided;  // scalar -> slots it fills
   std::vector<IntegratorInfo> integrators;
@@ -174,7 +174,7 @@ struct CheckResult {
   RootCauses first_fixes;
 
   int count(Outcome o) const;
-  int ran() const;            // verdicts that are not NOT PROVIDED
+  int ran() const;  // verdicts that are not NOT PROVIDED
   // No FAIL, CRASH, TIMEOUT or ERROR, at least one check ran, and nothing was left unchecked:
   // a run that checked nothing is not a pass.
   bool ok() const;

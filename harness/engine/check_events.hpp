@@ -15,11 +15,11 @@ namespace gm::harness {
 struct CheckResult;
 
 struct CheckProgress {
-  std::size_t done = 0;                // checks ended
-  std::size_t total = 0;               // checks in the run (the pictures included)
-  double elapsed = 0;                  // seconds since the run started
-  double left = -1;                    // estimated seconds still to go (< 0: not known yet)
-  std::vector<std::string> running;    // the checks running now: "definition_hat_n [mp50]"
+  std::size_t done = 0;              // checks ended
+  std::size_t total = 0;             // checks in the run (the pictures included)
+  double elapsed = 0;                // seconds since the run started
+  double left = -1;                  // estimated seconds still to go (< 0: not known yet)
+  std::vector<std::string> running;  // the checks running now: "definition_hat_n [mp50]"
 };
 
 class CheckListener {

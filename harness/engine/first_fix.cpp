@@ -23,7 +23,8 @@ const Property* property_of(const Verdict& v) { return find_property(v.property)
 // counterexample (it fails in rationals, no tolerance involved) before a float one, and among float
 // ones the residual farthest above its allowance; a marginal case (a few eps over) comes last.
 bool clearer(const Verdict& a, const Verdict& b) {
-  const bool ea = a.scalar == "exact" && a.outcome == Outcome::Fail, eb = b.scalar == "exact" && b.outcome == Outcome::Fail;
+  const bool ea = a.scalar == "exact" && a.outcome == Outcome::Fail,
+             eb = b.scalar == "exact" && b.outcome == Outcome::Fail;
   if (ea != eb) return ea;
   return a.worst_eps_units > b.worst_eps_units;
 }
@@ -72,7 +73,10 @@ RootCauses root_causes(const CheckResult& r) {
   };
   for (const auto& [slot, direct] : rc.broken) rc.order.push_back(slot);
   std::stable_sort(rc.order.begin(), rc.order.end(), [&](const std::string& a, const std::string& b) {
-    auto n = [&](const std::string& s) { auto it = rc.downstream.find(s); return it == rc.downstream.end() ? 0 : it->second.size(); };
+    auto n = [&](const std::string& s) {
+      auto it = rc.downstream.find(s);
+      return it == rc.downstream.end() ? 0 : it->second.size();
+    };
     if (depth(a) != depth(b)) return depth(a) < depth(b);
     return n(a) > n(b);
   });

@@ -38,12 +38,15 @@ const std::vector<std::string>& claim_names() {
 std::string incomplete_because(const Verdict& v, const std::string& claim) {
   const std::string where = v.property + " [" + v.scalar + "]";
   switch (v.outcome) {
-    case Outcome::Pass: break;
+    case Outcome::Pass:
+      break;
     case Outcome::NotCharacterised:
     case Outcome::Fail:
-      if (!v.step_raised.empty()) return where + ": your step raised at " + v.step_raised_where + ": " + first_line(v.step_raised);
+      if (!v.step_raised.empty())
+        return where + ": your step raised at " + v.step_raised_where + ": " + first_line(v.step_raised);
       return where + " " + outcome_name(v.outcome) + "S: " + first_line(v.message);
-    default: return where + " " + outcome_name(v.outcome) + ": " + first_line(v.message);
+    default:
+      return where + " " + outcome_name(v.outcome) + ": " + first_line(v.message);
   }
   if (v.cases < v.cases_planned)
     return where + " ran " + std::to_string(v.cases) + " of its " + std::to_string(v.cases_planned) + " planned cases";
@@ -55,15 +58,24 @@ std::string incomplete_because(const Verdict& v, const std::string& claim) {
 
 // Whether checks of step kind k run on this integrator (has_step_kind, from what the report knows).
 bool applies_to(StepKind k, const IntegratorInfo& integ) {
-  auto has = [&](const char* step) { return std::find(integ.steps.begin(), integ.steps.end(), step) != integ.steps.end(); };
+  auto has = [&](const char* step) {
+    return std::find(integ.steps.begin(), integ.steps.end(), step) != integ.steps.end();
+  };
   switch (k) {
-    case StepKind::RigidBody: return has("rigid_body_step");
-    case StepKind::RigidBodyMatrix: return has("rigid_body_step") && !integ.form.has_quaternion();
-    case StepKind::RigidBodyQuaternion: return has("rigid_body_step") && integ.form.has_quaternion();
-    case StepKind::Manakov: return has("manakov_step");
-    case StepKind::Clebsch: return has("clebsch_step");
-    case StepKind::ManakovClebsch: return has("manakov_clebsch_step");
-    case StepKind::None: break;
+    case StepKind::RigidBody:
+      return has("rigid_body_step");
+    case StepKind::RigidBodyMatrix:
+      return has("rigid_body_step") && !integ.form.has_quaternion();
+    case StepKind::RigidBodyQuaternion:
+      return has("rigid_body_step") && integ.form.has_quaternion();
+    case StepKind::Manakov:
+      return has("manakov_step");
+    case StepKind::Clebsch:
+      return has("clebsch_step");
+    case StepKind::ManakovClebsch:
+      return has("manakov_clebsch_step");
+    case StepKind::None:
+      break;
   }
   return true;
 }
@@ -84,12 +96,13 @@ std::vector<const Property*> judging(const std::string& claim, const IntegratorI
 // One scalar's state for one claim.
 struct ScalarState {
   enum Kind { NotApplicable, NotRun, Partial, Incomplete, False, Complete } kind = NotApplicable;
-  std::string why;   // NotRun, Partial, Incomplete: which checks and why; False: the check that contradicts
+  std::string why;    // NotRun, Partial, Incomplete: which checks and why; False: the check that contradicts
   bool holds = true;  // Complete: every finding holds
 };
 
 ScalarState scalar_state(const CheckResult& r, const IntegratorInfo& integ, const std::string& claim,
-                         const std::string& scalar, std::vector<std::string>& evidence, std::vector<std::string>& measured) {
+                         const std::string& scalar, std::vector<std::string>& evidence,
+                         std::vector<std::string>& measured) {
   ScalarState st;
   // The verdicts of this integrator in this scalar that judge the claim.
   std::vector<const Verdict*> vs;
@@ -104,8 +117,11 @@ ScalarState scalar_state(const CheckResult& r, const IntegratorInfo& integ, cons
     const bool ran = std::any_of(vs.begin(), vs.end(), [&](const Verdict* v) { return v->property == p->id; });
     if (ran) continue;
     const std::string key = p->id + " [" + scalar + "]";
-    const bool thorough = std::find(r.left_to_thorough.begin(), r.left_to_thorough.end(), key) != r.left_to_thorough.end();
-    not_run.push_back(key + (thorough ? " left to --thorough" : r.narrowed ? " not selected in this run" : " did not run"));
+    const bool thorough =
+        std::find(r.left_to_thorough.begin(), r.left_to_thorough.end(), key) != r.left_to_thorough.end();
+    not_run.push_back(key + (thorough     ? " left to --thorough"
+                             : r.narrowed ? " not selected in this run"
+                                          : " did not run"));
   }
   if (vs.empty()) {
     if (not_run.empty()) return st;  // nothing judges it here
@@ -205,17 +221,28 @@ std::string verdict_word(const Verdict& v, const IntegratorClaims* claims) {
 
 const char* status_word(ClaimStatus s) {
   switch (s) {
-    case ClaimStatus::Verified: return "verified";
-    case ClaimStatus::FalseClaim: return "FALSE CLAIM";
-    case ClaimStatus::NotVerified: return "NOT VERIFIED";
-    case ClaimStatus::NotRun: return "claimed, not run";
-    case ClaimStatus::NotChecked: return "claimed, NOT CHECKED by any property";
-    case ClaimStatus::Holds: return "holds (not claimed)";
-    case ClaimStatus::DoesNotHold: return "does not hold (not claimed)";
-    case ClaimStatus::NotEstablished: return "not established (not claimed)";
-    case ClaimStatus::Measured: return "measured (not claimed)";
-    case ClaimStatus::DoesNotConverge: return "DOES NOT CONVERGE";
-    case ClaimStatus::None: break;
+    case ClaimStatus::Verified:
+      return "verified";
+    case ClaimStatus::FalseClaim:
+      return "FALSE CLAIM";
+    case ClaimStatus::NotVerified:
+      return "NOT VERIFIED";
+    case ClaimStatus::NotRun:
+      return "claimed, not run";
+    case ClaimStatus::NotChecked:
+      return "claimed, NOT CHECKED by any property";
+    case ClaimStatus::Holds:
+      return "holds (not claimed)";
+    case ClaimStatus::DoesNotHold:
+      return "does not hold (not claimed)";
+    case ClaimStatus::NotEstablished:
+      return "not established (not claimed)";
+    case ClaimStatus::Measured:
+      return "measured (not claimed)";
+    case ClaimStatus::DoesNotConverge:
+      return "DOES NOT CONVERGE";
+    case ClaimStatus::None:
+      break;
   }
   return "-";
 }

@@ -57,7 +57,8 @@ std::string run_portrait(const Integrator<T>& in, const IntegratorClaims& claims
     RigidBodyState<T> x = x0;
     for (int i = 0; i < n; ++i) x = in.rigid_body_step(I, x, h);
     double err = 0;
-    for (int k = 0; k < 3; ++k) err = std::max(err, std::abs(to_double(x.Pi(k)) - ref.Pi(k).template convert_to<double>()));
+    for (int k = 0; k < 3; ++k)
+      err = std::max(err, std::abs(to_double(x.Pi(k)) - ref.Pi(k).template convert_to<double>()));
     for (int k = 0; k < 9; ++k)
       err = std::max(err, std::abs(to_double(x.O(k / 3, k % 3)) - ref.O(k / 3, k % 3).template convert_to<double>()));
     // In 50 digits the difference must be taken in 50 digits, not after rounding to double.
@@ -159,7 +160,7 @@ Verdict portrait_from_task(const PortraitTask& task, const TaskResult& result) {
       v.message = std::string("the pictures could not be read back: ") + e.what();
     }
   }
-  v.outcome = result.status == TaskResult::Status::TimedOut ? Outcome::Timeout
+  v.outcome = result.status == TaskResult::Status::TimedOut  ? Outcome::Timeout
               : result.status == TaskResult::Status::Crashed ? Outcome::Crash
                                                              : Outcome::Error;
   if (v.message.empty()) v.message = "no pictures: drawing them " + result.detail;

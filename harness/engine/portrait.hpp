@@ -30,7 +30,7 @@ RigidBodyState<T> portrait_start() {
 struct PortraitTask {
   std::string integrator;
   std::string scalar;
-  std::function<std::string()> run;  // runs in a child; returns a JSON verdict carrying the series
+  std::function<std::string()> run;   // runs in a child; returns a JSON verdict carrying the series
   std::string property = "portrait";  // what the carrier verdict is called
 };
 

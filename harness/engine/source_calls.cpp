@@ -28,7 +28,8 @@ std::string read_regular(const fs::path& p) {
   std::string out;
   if (::fstat(fd, &st) == 0 && S_ISREG(st.st_mode)) {
     char buf[65536];
-    for (ssize_t n; out.size() < kMaxBytes && (n = ::read(fd, buf, sizeof buf)) > 0;) out.append(buf, static_cast<std::size_t>(n));
+    for (ssize_t n; out.size() < kMaxBytes && (n = ::read(fd, buf, sizeof buf)) > 0;)
+      out.append(buf, static_cast<std::size_t>(n));
     if (out.size() > kMaxBytes) out.resize(kMaxBytes);
   }
   ::close(fd);
@@ -49,7 +50,8 @@ std::string code_only(const std::string& text, const std::string& language) {
   };
   while (i < text.size()) {
     const char c = text[i];
-    if ((python && c == '#') || (octave && (c == '%' || c == '#')) || (!python && !octave && text.compare(i, 2, "//") == 0)) {
+    if ((python && c == '#') || (octave && (c == '%' || c == '#')) ||
+        (!python && !octave && text.compare(i, 2, "//") == 0)) {
       const std::size_t end = text.find('\n', i);
       blank(i, end == std::string::npos ? text.size() : end);
       i = end == std::string::npos ? text.size() : end;
@@ -78,9 +80,12 @@ std::string code_only(const std::string& text, const std::string& language) {
 std::vector<std::pair<std::size_t, std::string>> definitions(const std::string& code, const std::string& language) {
   std::vector<std::pair<std::size_t, std::string>> out;
   std::regex def;
-  if (language == "python") def = std::regex(R"((^|\n)[ \t]*def[ \t]+([A-Za-z_]\w*)[ \t]*\()");
-  else if (language == "octave") def = std::regex(R"((^|\n)[ \t]*function[ \t]+(?:[^\n=]*=[ \t]*)?([A-Za-z_]\w*)[ \t]*[\(\n;])");
-  else def = std::regex(R"((^|[\s>*&])([A-Za-z_]\w*)[ \t]*\([^;{}]*\)[^;{}]*\{)");
+  if (language == "python")
+    def = std::regex(R"((^|\n)[ \t]*def[ \t]+([A-Za-z_]\w*)[ \t]*\()");
+  else if (language == "octave")
+    def = std::regex(R"((^|\n)[ \t]*function[ \t]+(?:[^\n=]*=[ \t]*)?([A-Za-z_]\w*)[ \t]*[\(\n;])");
+  else
+    def = std::regex(R"((^|[\s>*&])([A-Za-z_]\w*)[ \t]*\([^;{}]*\)[^;{}]*\{)");
   for (auto it = std::sregex_iterator(code.begin(), code.end(), def); it != std::sregex_iterator(); ++it) {
     const std::string name = (*it)[2].str();
     if (is_slot_name(name)) out.emplace_back(static_cast<std::size_t>(it->position(2)), name);

@@ -14,7 +14,10 @@ std::string default_thorough_only_path() { return suite_data_path("spec/thorough
 
 ThoroughOnlySelection load_thorough_only(const std::string& path) {
   std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": no list of 50-digit runs left to --thorough (made by `geomech mutants --matrix --write-thorough-only`)");
+  if (!in)
+    throw std::runtime_error(
+        path +
+        ": no list of 50-digit runs left to --thorough (made by `geomech mutants --matrix --write-thorough-only`)");
   nlohmann::json j;
   ThoroughOnlySelection s;
   try {
@@ -35,7 +38,8 @@ ThoroughOnlySelection load_thorough_only(const std::string& path) {
   s.provenance = os.str();
   if (s.case_factor < 1) {
     std::ostringstream cf;
-    cf << "at " << s.case_factor << " of each property's cases, the kill matrix's checks kill every mutant the suite kills ("
+    cf << "at " << s.case_factor
+       << " of each property's cases, the kill matrix's checks kill every mutant the suite kills ("
        << j.value("killable", 0) << "; `" << j.value("made_by", std::string("?")) << "`)";
     s.case_factor_note = cf.str();
   }

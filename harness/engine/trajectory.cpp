@@ -58,7 +58,8 @@ Analysis analyse(Trajectory tr) {
   if (a.scale_Pi == 0) a.scale_Pi = 1;
   std::array<double, 3> pi0{};
   if (t.has_O)
-    for (int i = 0; i < 3; ++i) pi0[i] = r0.O[3 * i] * r0.Pi[0] + r0.O[3 * i + 1] * r0.Pi[1] + r0.O[3 * i + 2] * r0.Pi[2];
+    for (int i = 0; i < 3; ++i)
+      pi0[i] = r0.O[3 * i] * r0.Pi[0] + r0.O[3 * i + 1] * r0.Pi[1] + r0.O[3 * i + 2] * r0.Pi[2];
 
   // The reference, in 50 digits, from the initial state exactly as written.
   Vec3<Real50> Iq;
@@ -69,8 +70,7 @@ Analysis analyse(Trajectory tr) {
     for (int k = 0; k < 9; ++k) x0.O(k / 3, k % 3) = from_decimal<Real50>(t.first_row[4 + k]);
   const Real50 t0 = from_decimal<Real50>(t.first_row[0]);
   std::vector<Real50> times;
-  for (std::size_t i = 0; i < t.rows.size(); ++i)
-    times.push_back(i == 0 ? t0 : Real50(t.rows[i].t));
+  for (std::size_t i = 0; i < t.rows.size(); ++i) times.push_back(i == 0 ? t0 : Real50(t.rows[i].t));
   std::vector<RigidBodyState<Real50>> ref;
   try {
     ref = reference_rigid_body(Iq, x0, t0, times);
@@ -97,8 +97,8 @@ Analysis analyse(Trajectory tr) {
           eo = std::max(eo, std::abs(r.O[3 * p + q] - ref[i].O(p, q).convert_to<double>()));
         }
       const auto& O = r.O;
-      const double det = O[0] * (O[4] * O[8] - O[5] * O[7]) - O[1] * (O[3] * O[8] - O[5] * O[6]) +
-                         O[2] * (O[3] * O[7] - O[4] * O[6]);
+      const double det =
+          O[0] * (O[4] * O[8] - O[5] * O[7]) - O[1] * (O[3] * O[8] - O[5] * O[6]) + O[2] * (O[3] * O[7] - O[4] * O[6]);
       double sp = 0;
       for (int p = 0; p < 3; ++p) {
         const double pi = O[3 * p] * r.Pi[0] + O[3 * p + 1] * r.Pi[1] + O[3 * p + 2] * r.Pi[2];
@@ -166,8 +166,10 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
       for (const auto& w : a.tr.warnings) {
         auto it = std::find_if(seen.begin(), seen.end(), [&](const auto& x) { return x.first == w; });
         const std::string file = fs::path(a.tr.path).filename().string();
-        if (it == seen.end()) seen.push_back({w, file});
-        else it->second += ", " + file;
+        if (it == seen.end())
+          seen.push_back({w, file});
+        else
+          it->second += ", " + file;
       }
     for (const auto& [w, files_] : seen) r.info.warnings.push_back(files_ + ": " + w);
   }
@@ -194,9 +196,10 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
                                  std::to_string(a.tr.digits) + " digits printed)";
     v.claims.push_back(ClaimFinding{claim, claimed, holds, evidence});
     v.outcome = claimed && !holds ? Outcome::Fail : Outcome::Pass;
-    v.message = (claimed ? (holds ? "claimed and conserved to round-off: " : "false claim: not conserved to round-off: ")
-                         : (holds ? "conserved to round-off (not claimed): " : "not conserved to round-off (not claimed): ")) +
-                evidence;
+    v.message =
+        (claimed ? (holds ? "claimed and conserved to round-off: " : "false claim: not conserved to round-off: ")
+                 : (holds ? "conserved to round-off (not claimed): " : "not conserved to round-off (not claimed): ")) +
+        evidence;
     v.worst_absolute = measured;
     v.worst_eps_units = measured / std::numeric_limits<double>::epsilon();
     v.checks = static_cast<long>(a.tr.rows.size());
@@ -239,7 +242,8 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
                    "); a sign error in Euler's equations or a wrong inertia shows up this way";
     }
     v.series.push_back(series_of("error against the reference", run + ": Pi", "error / |Pi(0)|", a.tr, a.error_Pi));
-    if (a.tr.has_O) v.series.push_back(series_of("error against the reference", run + ": O", "error / |Pi(0)|", a.tr, a.error_O));
+    if (a.tr.has_O)
+      v.series.push_back(series_of("error against the reference", run + ": O", "error / |Pi(0)|", a.tr, a.error_O));
     r.verdicts.push_back(v);
     // Pictures of the invariants over time.
     Verdict pic = verdict(a, "portrait", "", "invariants over time");
@@ -247,7 +251,8 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
     pic.series.push_back(series_of("invariants over time", run + ": |Pi|^2", "relative residual", a.tr, a.casimir));
     pic.series.push_back(series_of("invariants over time", run + ": energy", "relative residual", a.tr, a.energy));
     if (a.tr.has_O)
-      pic.series.push_back(series_of("invariants over time", run + ": O^T O - Id", "relative residual", a.tr, a.orthogonality));
+      pic.series.push_back(
+          series_of("invariants over time", run + ": O^T O - Id", "relative residual", a.tr, a.orthogonality));
     r.portraits.push_back(pic);
 
     IntegratorInfo info;
@@ -267,7 +272,8 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
     const Trajectory& first = runs.front().tr;
     for (const auto& a : runs) {
       if (a.tr.inertia != first.inertia)
-        throw TrajectoryError(a.tr.path + ": a different inertia than " + first.path + "; runs compared for the order must be of one motion");
+        throw TrajectoryError(a.tr.path + ": a different inertia than " + first.path +
+                              "; runs compared for the order must be of one motion");
       if (a.tr.has_O != first.has_O)
         throw TrajectoryError(a.tr.path + ": O is given in one file and not in the other; compare like with like");
       for (int k = 1; k < 4; ++k)
@@ -278,7 +284,8 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
     std::map<double, int> steps;
     for (const auto& a : runs) ++steps[a.tr.step];
     for (const auto& [h, n] : steps)
-      if (n > 1) throw TrajectoryError("two files have the same step size " + sci(h) + "; the order needs different steps");
+      if (n > 1)
+        throw TrajectoryError("two files have the same step size " + sci(h) + "; the order needs different steps");
     // Error at the common final time (the latest time every run reaches), largest over rows up to it.
     double T = runs.front().tr.rows.back().t;
     for (const auto& a : runs) T = std::min(T, a.tr.rows.back().t);
@@ -309,8 +316,8 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
     int n_used = 0;
     for (bool u : used) n_used += u;
     std::ostringstream m;
-    m << "measured slope " << (std::isnan(slope) ? std::string("(not measurable)") : sci(slope)) << " from " << n_used << " of "
-      << pts.size() << " step sizes (errors at or below the round-off plateau " << sci(plateau)
+    m << "measured slope " << (std::isnan(slope) ? std::string("(not measurable)") : sci(slope)) << " from " << n_used
+      << " of " << pts.size() << " step sizes (errors at or below the round-off plateau " << sci(plateau)
       << " left out, and every smaller step after one):";
     for (std::size_t i = 0; i < pts.size(); ++i)
       m << "\n  h = " << sci(pts[i].first) << ": error " << sci(pts[i].second) << (used[i] ? "" : " (left out)");
@@ -320,14 +327,13 @@ CheckResult check_trajectories(const std::vector<std::string>& files, const Traj
     const bool exact = std::all_of(pts.begin(), pts.end(),
                                    [&](const auto& p) { return std::isfinite(p.second) && p.second <= plateau; });
     const bool holds = exact || (measurable && std::abs(slope - o.order) <= 0.2);
-    if (exact)
-      m << "\nexact for this problem (error at round-off for every step size): any claimed order holds";
+    if (exact) m << "\nexact for this problem (error at round-off for every step size): any claimed order holds";
     if (claimed) {
-      v.claims.push_back(ClaimFinding{
-          "order", true, holds,
-          (exact ? std::string("exact for this problem (error at round-off for every step size)")
-                 : "measured slope " + (measurable ? sci(slope) : std::string("not measurable"))) +
-              ", claimed " + std::to_string(o.order) + (exact ? "" : " (allowed difference 0.2)")});
+      v.claims.push_back(
+          ClaimFinding{"order", true, holds,
+                       (exact ? std::string("exact for this problem (error at round-off for every step size)")
+                              : "measured slope " + (measurable ? sci(slope) : std::string("not measurable"))) +
+                           ", claimed " + std::to_string(o.order) + (exact ? "" : " (allowed difference 0.2)")});
       v.outcome = holds ? Outcome::Pass : Outcome::Fail;
       if (!measurable && !exact)
         m << "\nfewer than two step sizes lie above the round-off plateau: use larger steps to measure the order";

@@ -15,10 +15,10 @@ namespace gm::harness {
 
 struct TrajectoryCheckOptions {
   TrajectoryParams params;
-  int order = 0;                   // claimed order (0: none); needs runs at several step sizes
+  int order = 0;                    // claimed order (0: none); needs runs at several step sizes
   std::set<std::string> preserves;  // claimed exact invariants: casimir, energy, orthogonality, spatial_momentum
-  double tolerance = 0.05;         // allowed error against the reference, relative to |Pi(0)|: catches
-                                   // wrong equations; accuracy itself is judged by the order
+  double tolerance = 0.05;          // allowed error against the reference, relative to |Pi(0)|: catches
+                                    // wrong equations; accuracy itself is judged by the order
 };
 
 // Checks each file (invariants, orthogonality and det of O, agreement with the reference) and,

@@ -76,8 +76,12 @@ json to_json(const Verdict& v) {
   j["series"] = series;
   json claims = json::array();
   for (const auto& c : v.claims)
-    claims.push_back({{"claim", c.claim}, {"claimed", c.claimed}, {"holds", c.holds}, {"evidence", c.evidence},
-                      {"complete", c.complete}, {"measured", c.measured}});
+    claims.push_back({{"claim", c.claim},
+                      {"claimed", c.claimed},
+                      {"holds", c.holds},
+                      {"evidence", c.evidence},
+                      {"complete", c.complete},
+                      {"measured", c.measured}});
   j["claims"] = claims;
   if (!v.word.empty()) j["word"] = v.word;
   if (!v.machine_fault.empty()) j["machine_fault"] = v.machine_fault;

@@ -33,7 +33,7 @@ using Stepper = std::function<State(const State&, double)>;
 
 struct Method {
   std::string name;
-  std::string source;      // "subject" or "suite"
+  std::string source;  // "subject" or "suite"
   Stepper step;
   int evals_per_step = 0;  // vector-field evaluations per step; 0 when not known (implicit, splitting, the subject's)
   // n steps at once, the state after each (an implementation behind the protocol: one round trip
@@ -151,14 +151,16 @@ Run odeint_run(const Problem& p, double tol) {
   do {
     y = p.x0;
     evals = 0;
-    steps = static_cast<long>(
-        odeint::integrate_adaptive(odeint::make_controlled<odeint::runge_kutta_dopri5<State>>(tol, tol), rhs, y, 0.0, kTime, 0.01));
+    steps = static_cast<long>(odeint::integrate_adaptive(
+        odeint::make_controlled<odeint::runge_kutta_dopri5<State>>(tol, tol), rhs, y, 0.0, kTime, 0.01));
     ++reps;
   } while (seconds_since(t0) < 5e-3 && reps < 1000);
   return Run{steps, evals, seconds_since(t0) / reps, error_against(y, p.reference), {}};
 }
 
-std::string figure_name(const Problem& p, const char* what) { return "work-precision, " + p.label + ": error against " + what; }
+std::string figure_name(const Problem& p, const char* what) {
+  return "work-precision, " + p.label + ": error against " + what;
+}
 std::string energy_figure(const Problem& p) { return "long-time energy, " + p.label + " (log t)"; }
 
 Series series(const std::string& figure, const std::string& name, const char* x_label, const char* y_label) {
@@ -191,8 +193,9 @@ void draw(const Problem& p, Verdict& v, std::vector<std::string>& cheapest, std:
     if (!ev.points.empty()) v.series.push_back(ev);
     v.series.push_back(tm);
     if (best)
-      cheapest.push_back(p.label + ", " + label + " " + sci(best->seconds * 1e3) + " ms (" + std::to_string(best->steps) +
-                         " steps" + (best->evals ? ", " + std::to_string(best->evals) + " evaluations" : "") + ")");
+      cheapest.push_back(p.label + ", " + label + " " + sci(best->seconds * 1e3) + " ms (" +
+                         std::to_string(best->steps) + " steps" +
+                         (best->evals ? ", " + std::to_string(best->evals) + " evaluations" : "") + ")");
   };
   // Each method from h = 1 down to h = 1/512; a step that throws (an implicit solve diverging at
   // h = 1) or blows up leaves that point out, and the levels stop at the time budget.
@@ -201,8 +204,9 @@ void draw(const Problem& p, Verdict& v, std::vector<std::string>& cheapest, std:
     const auto start = std::chrono::steady_clock::now();
     for (int k = 0; k < kLevels && seconds_since(start) < kLongBudget; ++k) {
       Run r = fixed_step_run(p, m, 4 << k);
-      if (!r.failure.empty()) failed.push_back(p.label + ", " + m.source + ": " + m.name + " at h = " + sci(kTime / (4 << k)) +
-                                               ": " + r.failure);
+      if (!r.failure.empty())
+        failed.push_back(p.label + ", " + m.source + ": " + m.name + " at h = " + sci(kTime / (4 << k)) + ": " +
+                         r.failure);
       if (std::isfinite(r.error)) runs.push_back(r);
     }
     record(m.source + ": " + m.name, runs);
@@ -238,8 +242,8 @@ void draw(const Problem& p, Verdict& v, std::vector<std::string>& cheapest, std:
         }
         x = by_runs ? chunk[at++] : m.step(x, p.long_step);
       } catch (const std::exception& e) {
-        failed.push_back(p.label + ", " + m.source + ": " + m.name + " in the long run at t = " + sci(i * p.long_step) + ": " +
-                         e.what());
+        failed.push_back(p.label + ", " + m.source + ": " + m.name + " in the long run at t = " + sci(i * p.long_step) +
+                         ": " + e.what());
         break;
       }
       if (i < next) continue;
@@ -261,7 +265,8 @@ using Subjects = std::vector<const Integrator<double>*>;
 // A subject's run of steps (Integrator::rigid_body_run / manakov_run) on packed states; empty when
 // the subject has none.
 template <class Param, class Unpack, class Pack, class Run>
-std::function<std::vector<State>(const State&, double, int)> packed_run(Param p, Unpack unpack, Pack pack_state, Run run) {
+std::function<std::vector<State>(const State&, double, int)> packed_run(Param p, Unpack unpack, Pack pack_state,
+                                                                        Run run) {
   if (!run) return {};
   return [p, unpack, pack_state, run](const State& s, double h, int n) {
     std::vector<State> out;
@@ -270,7 +275,9 @@ std::function<std::vector<State>(const State&, double, int)> packed_run(Param p,
   };
 }
 
-double rigid_body_energy(const Vec3<double>& I, const Vec3<double>& Pi) { return Pi.cwiseProduct(Pi).cwiseQuotient(I).sum() / 2; }
+double rigid_body_energy(const Vec3<double>& I, const Vec3<double>& Pi) {
+  return Pi.cwiseProduct(Pi).cwiseQuotient(I).sum() / 2;
+}
 
 // The motion of the portraits (portrait.hpp).
 Problem rigid_body_problem(const Subjects& mine) {
@@ -284,14 +291,18 @@ Problem rigid_body_problem(const Subjects& mine) {
   for (int k = 0; k < 9; ++k) p.reference.push_back(r.O(k / 3, k % 3));
   p.field = [I](const State& s) { return pack(ref::rigid_body_field<double>(I, unpack_rigid_body(s))); };
   p.energy = [I](const State& s) { return rigid_body_energy(I, Vec3<double>(s[0], s[1], s[2])); };
-  auto wrap = [I](auto step) { return [I, step](const State& s, double h) { return pack(step(I, unpack_rigid_body(s), h)); }; };
+  auto wrap = [I](auto step) {
+    return [I, step](const State& s, double h) { return pack(step(I, unpack_rigid_body(s), h)); };
+  };
   for (const auto* in : mine)
-    p.methods.push_back({in->name, "subject", wrap(in->rigid_body_step), 0,
-                         packed_run(I, unpack_rigid_body, [](const RigidBodyState<double>& x) { return pack(x); },
-                                    in->rigid_body_run)});
-  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::rk4_step<double>), 4, {}},
-               {"implicit_midpoint", "suite", wrap(ref::implicit_midpoint_step<double>), 0, {}},
-               {"lie_poisson_splitting", "suite", wrap(ref::lie_poisson_splitting_step<double>), 0, {}}});
+    p.methods.push_back(
+        {in->name, "subject", wrap(in->rigid_body_step), 0,
+         packed_run(
+             I, unpack_rigid_body, [](const RigidBodyState<double>& x) { return pack(x); }, in->rigid_body_run)});
+  p.methods.insert(p.methods.end(),
+                   {{"rk4", "suite", wrap(ref::rk4_step<double>), 4, {}},
+                    {"implicit_midpoint", "suite", wrap(ref::implicit_midpoint_step<double>), 0, {}},
+                    {"lie_poisson_splitting", "suite", wrap(ref::lie_poisson_splitting_step<double>), 0, {}}});
   return p;
 }
 
@@ -349,11 +360,14 @@ Problem manakov_problem(const Subjects& mine) {
     };
   };
   for (const auto* in : mine)
-    p.methods.push_back({in->name, "subject", wrap(in->manakov_step), 0,
-                         packed_run(A, unpack, [](const ManakovState<double>& y) { return pack(y.M, y.O); }, in->manakov_run)});
-  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_rk4_step<double>), 4, {}},
-               {"implicit_midpoint", "suite", wrap(ref::manakov_implicit_midpoint_step<double>), 0, {}},
-               {"isospectral_cayley", "suite", wrap(ref::manakov_isospectral_step<double>), 0, {}}});
+    p.methods.push_back(
+        {in->name, "subject", wrap(in->manakov_step), 0,
+         packed_run(
+             A, unpack, [](const ManakovState<double>& y) { return pack(y.M, y.O); }, in->manakov_run)});
+  p.methods.insert(p.methods.end(),
+                   {{"rk4", "suite", wrap(ref::manakov_rk4_step<double>), 4, {}},
+                    {"implicit_midpoint", "suite", wrap(ref::manakov_implicit_midpoint_step<double>), 0, {}},
+                    {"isospectral_cayley", "suite", wrap(ref::manakov_isospectral_step<double>), 0, {}}});
   return p;
 }
 
@@ -367,14 +381,19 @@ Problem clebsch_problem(const Subjects& mine) {
   const Vec3<double> Q0(0.5, -0.25, 0.75), P0(-0.25, 0.875, 0.5);
   p.x0 = pack(MatX<double>(Q0.transpose()), MatX<double>(P0.transpose()));
   const Vec3<Real50> Q50 = Q0.cast<Real50>(), P50 = P0.cast<Real50>();
-  const RigidBodyState<Real50> r = reference_rigid_body(portrait_inertia<Real50>(), RigidBodyState<Real50>{P50.cross(Q50), Mat3<Real50>::Identity()},
-                                                        Real50(0), {Real50(kTime)})
-                                       .front();
+  const RigidBodyState<Real50> r =
+      reference_rigid_body(portrait_inertia<Real50>(), RigidBodyState<Real50>{P50.cross(Q50), Mat3<Real50>::Identity()},
+                           Real50(0), {Real50(kTime)})
+          .front();
   const Vec3<Real50> Q = r.O.transpose() * Q50, P = r.O.transpose() * P50;
   for (int k = 0; k < 3; ++k) p.reference.push_back(Q(k));
   for (int k = 0; k < 3; ++k) p.reference.push_back(P(k));
-  auto to_pair = [](const State& s) { return Vec3Pair<double>{Vec3<double>(s[0], s[1], s[2]), Vec3<double>(s[3], s[4], s[5])}; };
-  auto from_pair = [](const Vec3Pair<double>& z) { return State{z.first(0), z.first(1), z.first(2), z.second(0), z.second(1), z.second(2)}; };
+  auto to_pair = [](const State& s) {
+    return Vec3Pair<double>{Vec3<double>(s[0], s[1], s[2]), Vec3<double>(s[3], s[4], s[5])};
+  };
+  auto from_pair = [](const Vec3Pair<double>& z) {
+    return State{z.first(0), z.first(1), z.first(2), z.second(0), z.second(1), z.second(2)};
+  };
   p.field = [I, to_pair, from_pair](const State& s) {
     const auto z = to_pair(s);
     return from_pair(ref::clebsch_3_21<double>(I, z.first, z.second));
@@ -388,8 +407,8 @@ Problem clebsch_problem(const Subjects& mine) {
   };
   for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->clebsch_step), 0, {}});
   p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::clebsch_rk4_step<double>), 4, {}},
-               {"clebsch_midpoint", "suite", wrap(ref::clebsch_midpoint_step<double>), 0, {}},
-               {"clebsch_splitting", "suite", wrap(ref::clebsch_splitting_step<double>), 0, {}}});
+                                     {"clebsch_midpoint", "suite", wrap(ref::clebsch_midpoint_step<double>), 0, {}},
+                                     {"clebsch_splitting", "suite", wrap(ref::clebsch_splitting_step<double>), 0, {}}});
   return p;
 }
 
@@ -440,8 +459,9 @@ Problem manakov_clebsch_problem(const Subjects& mine) {
     };
   };
   for (const auto* in : mine) p.methods.push_back({in->name, "subject", wrap(in->manakov_clebsch_step), 0, {}});
-  p.methods.insert(p.methods.end(), {{"rk4", "suite", wrap(ref::manakov_clebsch_rk4_step<double>), 4, {}},
-               {"clebsch_midpoint", "suite", wrap(ref::manakov_clebsch_midpoint_step<double>), 0, {}}});
+  p.methods.insert(p.methods.end(),
+                   {{"rk4", "suite", wrap(ref::manakov_clebsch_rk4_step<double>), 4, {}},
+                    {"clebsch_midpoint", "suite", wrap(ref::manakov_clebsch_midpoint_step<double>), 0, {}}});
   return p;
 }
 
@@ -450,7 +470,8 @@ std::vector<Problem> problems_for(const Subject<double>& s, const std::vector<st
   auto having = [&](auto step) {
     Subjects mine;
     for (const auto& in : s.integrators)
-      if (std::find(names.begin(), names.end(), in.name) != names.end() && static_cast<bool>(in.*step)) mine.push_back(&in);
+      if (std::find(names.begin(), names.end(), in.name) != names.end() && static_cast<bool>(in.*step))
+        mine.push_back(&in);
     return mine;
   };
   std::vector<Problem> out;
@@ -541,8 +562,8 @@ std::string work_precision_csv(const CheckResult& r) {
     const Series* e = find("vector-field evaluations");
     const Series* t = find("wall time");
     for (std::size_t i = 0; i < s.points.size(); ++i)
-      csv << quoted(problem) << "," << quoted(method) << "," << source << "," << static_cast<long>(s.points[i].first) << ","
-          << (e && i < e->points.size() ? std::to_string(static_cast<long>(e->points[i].first)) : "") << ","
+      csv << quoted(problem) << "," << quoted(method) << "," << source << "," << static_cast<long>(s.points[i].first)
+          << "," << (e && i < e->points.size() ? std::to_string(static_cast<long>(e->points[i].first)) : "") << ","
           << (t && i < t->points.size() ? num(t->points[i].first) : "") << "," << num(s.points[i].second) << "\n";
   }
   return csv.str();

@@ -23,7 +23,8 @@ std::size_t utf8_length(const std::string& s, std::size_t i) {
     if (cp < 0x800 || (cp >= 0xD800 && cp <= 0xDFFF)) return 0;
   }
   if (n == 4) {
-    const unsigned cp = ((c & 0x07u) << 18) | ((b(i + 1) & 0x3Fu) << 12) | ((b(i + 2) & 0x3Fu) << 6) | (b(i + 3) & 0x3Fu);
+    const unsigned cp =
+        ((c & 0x07u) << 18) | ((b(i + 1) & 0x3Fu) << 12) | ((b(i + 2) & 0x3Fu) << 6) | (b(i + 3) & 0x3Fu);
     if (cp < 0x10000 || cp > 0x10FFFF) return 0;
   }
   return n;
@@ -64,8 +65,9 @@ std::string bounded_text(const std::string& text, std::size_t cap) {
   };
   const std::size_t head = boundary(cap * 3 / 4);
   const std::size_t tail = boundary(text.size() - cap / 4);
-  return text.substr(0, head) + "\n[... " + std::to_string(tail - head) + " bytes cut: a message from the code under test is shown up to " +
-         std::to_string(cap) + " bytes, its beginning and its end ...]\n" + text.substr(tail);
+  return text.substr(0, head) + "\n[... " + std::to_string(tail - head) +
+         " bytes cut: a message from the code under test is shown up to " + std::to_string(cap) +
+         " bytes, its beginning and its end ...]\n" + text.substr(tail);
 }
 
 std::string md_inline(const std::string& text) {
@@ -75,16 +77,29 @@ std::string md_inline(const std::string& text) {
   for (std::size_t i = 0; i < s.size(); ++i) {
     const char c = s[i];
     switch (c) {
-      case '<': out += "&lt;"; break;  // no raw HTML, no autolink
-      case '>': out += "&gt;"; break;
-      case '&': out += "&amp;"; break;  // no entity spelled by the text
-      case '\n': out += "<br>"; break;
-      case '\t': out += ' '; break;
-      case '|': out += "\\|"; break;  // no table cell closed early
+      case '<':
+        out += "&lt;";
+        break;  // no raw HTML, no autolink
+      case '>':
+        out += "&gt;";
+        break;
+      case '&':
+        out += "&amp;";
+        break;  // no entity spelled by the text
+      case '\n':
+        out += "<br>";
+        break;
+      case '\t':
+        out += ' ';
+        break;
+      case '|':
+        out += "\\|";
+        break;   // no table cell closed early
       case ']':  // no link or image: "[text](url)" needs "]("
         out += i + 1 < s.size() && s[i + 1] == '(' ? "\\]" : "]";
         break;
-      default: out += c;
+      default:
+        out += c;
     }
   }
   return out;

@@ -15,7 +15,7 @@ std::string inert_text(const std::string& text);
 // At most `cap` bytes of `text` (a submission may raise a message of any size): its
 // beginning and its end, with the cut said in between ("[... 20971040 bytes cut: ...]"). Cut on
 // UTF-8 boundaries. The caps the harness uses:
-inline constexpr std::size_t kMessageCap = 8192;       // one message, traceback, compiler output
+inline constexpr std::size_t kMessageCap = 8192;            // one message, traceback, compiler output
 inline constexpr std::size_t kReportTextBudget = 2u << 20;  // all of a report's messages together
 std::string bounded_text(const std::string& text, std::size_t cap = kMessageCap);
 

@@ -59,11 +59,11 @@ struct Running {
   Clock::time_point start;
   std::string result;
   std::string output;
-  std::string sanitizer_report;  // the first line of a sanitizer's report in the output, if any
-  TreeTimes worker0;             // the worker's server's times when the task started
-  TreeTimes times;               // the code's CPU and run-queue delay so far (sampled)
+  std::string sanitizer_report;         // the first line of a sanitizer's report in the output, if any
+  TreeTimes worker0;                    // the worker's server's times when the task started
+  TreeTimes times;                      // the code's CPU and run-queue delay so far (sampled)
   std::shared_ptr<QueuedSoFar> queued;  // the tree's delay, ended processes included
-  Clock::time_point sampled{};   // when `times` was last read
+  Clock::time_point sampled{};          // when `times` was last read
 };
 
 // In a sanitized build (ASan, UBSan) the sanitizer catches a crash before the signal does, prints a
@@ -71,8 +71,8 @@ struct Running {
 // tail, which a long stack trace would push it out of.
 void note_sanitizer_report(const std::string& buf, std::string& report) {
   if (!report.empty()) return;
-  for (const char* marker : {"ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "ERROR: UndefinedBehaviorSanitizer",
-                             ": runtime error: "}) {
+  for (const char* marker :
+       {"ERROR: AddressSanitizer", "ERROR: LeakSanitizer", "ERROR: UndefinedBehaviorSanitizer", ": runtime error: "}) {
     const std::size_t at = buf.find(marker);
     if (at == std::string::npos) continue;
     const std::size_t end = buf.find('\n', at);
@@ -200,20 +200,41 @@ std::string describe_signal(int sig) {
   const char* name = nullptr;
   const char* what = ::strsignal(sig);
   switch (sig) {
-    case SIGSEGV: name = "SIGSEGV"; break;
-    case SIGABRT: name = "SIGABRT"; break;
-    case SIGFPE: name = "SIGFPE"; break;
-    case SIGILL: name = "SIGILL"; break;
-    case SIGBUS: name = "SIGBUS"; break;
-    case SIGKILL: name = "SIGKILL"; break;
-    case SIGTERM: name = "SIGTERM"; break;
-    case SIGXCPU: name = "SIGXCPU"; break;
-    case SIGPIPE: name = "SIGPIPE"; break;
-    default: break;
+    case SIGSEGV:
+      name = "SIGSEGV";
+      break;
+    case SIGABRT:
+      name = "SIGABRT";
+      break;
+    case SIGFPE:
+      name = "SIGFPE";
+      break;
+    case SIGILL:
+      name = "SIGILL";
+      break;
+    case SIGBUS:
+      name = "SIGBUS";
+      break;
+    case SIGKILL:
+      name = "SIGKILL";
+      break;
+    case SIGTERM:
+      name = "SIGTERM";
+      break;
+    case SIGXCPU:
+      name = "SIGXCPU";
+      break;
+    case SIGPIPE:
+      name = "SIGPIPE";
+      break;
+    default:
+      break;
   }
   std::string s = "signal " + std::to_string(sig);
-  if (name) s += " (" + std::string(name) + (what ? std::string(", ") + what : std::string()) + ")";
-  else if (what) s += " (" + std::string(what) + ")";
+  if (name)
+    s += " (" + std::string(name) + (what ? std::string(", ") + what : std::string()) + ")";
+  else if (what)
+    s += " (" + std::string(what) + ")";
   return s;
 }
 
@@ -386,7 +407,8 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
             t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
           } else if (cpu_out) {
             t.status = TaskResult::Status::TimedOut;
-            std::snprintf(buf, sizeof buf, "did not finish within %.0f s of CPU time (%.0f s of wall clock) and was stopped",
+            std::snprintf(buf, sizeof buf,
+                          "did not finish within %.0f s of CPU time (%.0f s of wall clock) and was stopped",
                           o.timeout_seconds, wall);
             t.detail = buf;
           } else if (!known) {
@@ -400,11 +422,12 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
             t.detail = buf;
           } else if (waiting || wall_out) {
             t.status = TaskResult::Status::TimedOut;
-            std::snprintf(buf, sizeof buf,
-                          "did not finish within %.0f s: stopped by the wall clock after %.0f s, of which the kernel "
-                          "counts %.1f s on a CPU, %.1f s queued for one and %.0f s asleep: it waits (a sleep, an input "
-                          "it reads, a lock) rather than computes",
-                          o.timeout_seconds, wall, r.times.cpu, r.times.queued, asleep);
+            std::snprintf(
+                buf, sizeof buf,
+                "did not finish within %.0f s: stopped by the wall clock after %.0f s, of which the kernel "
+                "counts %.1f s on a CPU, %.1f s queued for one and %.0f s asleep: it waits (a sleep, an input "
+                "it reads, a lock) rather than computes",
+                o.timeout_seconds, wall, r.times.cpu, r.times.queued, asleep);
             t.detail = buf;
           } else {
             t.status = TaskResult::Status::Busy;

@@ -19,7 +19,7 @@ namespace gm::harness {
 struct TaskResult;
 
 struct IsolationOptions {
-  int jobs = 1;                  // children running at once
+  int jobs = 1;  // children running at once
   // The limit of a task (slow is judged by the work done): the CPU seconds of the code under test,
   // its child's process tree and its worker's server (worker_times) together. A wall clock of
   // wall_factor times as long (and at least wall_floor more) stays, for a task that waits (sleeps,
@@ -30,12 +30,12 @@ struct IsolationOptions {
   double timeout_seconds = 120;
   double wall_factor = 3;
   double wall_floor = 60;
-  double busy_factor = 8;        // a starved task is stopped, as Busy, at this many times the wall guard
+  double busy_factor = 8;  // a starved task is stopped, as Busy, at this many times the wall guard
   // The CPU and run-queue delay the server of worker slot w has had so far (out-of-process
   // implementations); none: the code runs in the task's own process.
   std::function<TreeTimes(int)> worker_times;
-  long memory_limit_mb = 4096;   // address-space limit of a child (not applied under AddressSanitizer)
-  bool isolate = true;           // false: run the tasks in this process, one after the other (debugging)
+  long memory_limit_mb = 4096;  // address-space limit of a child (not applied under AddressSanitizer)
+  bool isolate = true;          // false: run the tasks in this process, one after the other (debugging)
   // Called in the parent as each task starts (index), and as it finishes (index, its result): a
   // check reports each result the moment it is known (harness/engine/check_events.hpp).
   std::function<void(std::size_t)> on_started;
@@ -76,7 +76,7 @@ struct TaskResult {
   std::string sanitizer_report;
   int signal = 0;
   int exit_code = 0;
-  double seconds = 0;      // wall clock
+  double seconds = 0;         // wall clock
   double cpu_seconds = 0;     // CPU of the code under test (the task's process tree and its worker's server)
   double queued_seconds = 0;  // ... and the time its runnable tasks waited for a core (live tasks only)
 };

@@ -8,7 +8,6 @@
 #include <fstream>
 #include <stdexcept>
 
-
 namespace gm::harness {
 
 namespace fs = std::filesystem;
@@ -37,7 +36,9 @@ void copy_into(const fs::path& from, const fs::path& to) {
     fs::copy_file(from, to, fs::copy_options::overwrite_existing, ec);
     // A program (a C++ submission's server) stays executable.
     const bool program = (st.permissions() & fs::perms::owner_exec) != fs::perms::none;
-    if (!ec) fs::permissions(to, program ? kFile | fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec : kFile, ec);
+    if (!ec)
+      fs::permissions(
+          to, program ? kFile | fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec : kFile, ec);
     if (ec) throw std::runtime_error("cannot copy " + from.string() + ": " + ec.message());
   }
 }
@@ -87,13 +88,16 @@ std::string PrivateCopy::add(const std::string& path, const std::string& area, s
       if (!out) throw std::runtime_error("cannot write " + to.string());
     }
     // Readable by the sandbox's user, a program (a C++ submission's server) still executable.
-    const bool program = !is_folder && (fs::symlink_status(from, ec).permissions() & fs::perms::owner_exec) != fs::perms::none;
+    const bool program =
+        !is_folder && (fs::symlink_status(from, ec).permissions() & fs::perms::owner_exec) != fs::perms::none;
     if (is_folder) {
       fs::permissions(to, kSubFolder, ec);
-      for (auto it = fs::recursive_directory_iterator(to, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+      for (auto it = fs::recursive_directory_iterator(to, ec); !ec && it != fs::recursive_directory_iterator();
+           it.increment(ec))
         fs::permissions(it->path(), it->is_directory() ? kSubFolder : kFile, ec);
     } else {
-      fs::permissions(to, program ? kFile | fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec : kFile, ec);
+      fs::permissions(
+          to, program ? kFile | fs::perms::owner_exec | fs::perms::group_exec | fs::perms::others_exec : kFile, ec);
     }
     return "/" + area + "/" + name.string();
   }

@@ -36,7 +36,8 @@ class PrivateCopy {
   // own files ("geomech") are copied as they are (a link among them is left out).
   // `max_bytes`: the largest file of the "submission" area (IntakeLimits::file_bytes; a program
   // built from a submission: IntakeLimits::program_bytes).
-  std::string add(const std::string& path, const std::string& area, std::uint64_t max_bytes = IntakeLimits{}.file_bytes);
+  std::string add(const std::string& path, const std::string& area,
+                  std::uint64_t max_bytes = IntakeLimits{}.file_bytes);
 
   // The --ro-bind pairs for SandboxSpec::mounts: each area's folder here and its path inside.
   std::vector<std::pair<std::string, std::string>> mounts() const;

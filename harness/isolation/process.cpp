@@ -107,8 +107,8 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
     posix_spawnattr_destroy(&attr);
     if (rc != 0) {
       results[i].started = false;
-      results[i].output = "cannot run " + (spec.argv.empty() ? std::string("(nothing)") : spec.argv[0]) + ": " +
-                          std::strerror(rc);
+      results[i].output =
+          "cannot run " + (spec.argv.empty() ? std::string("(nothing)") : spec.argv[0]) + ": " + std::strerror(rc);
       if (spec.output_file.empty() && !capture.empty()) ::unlink(capture.c_str());
       return;
     }

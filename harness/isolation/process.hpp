@@ -8,18 +8,18 @@
 namespace gm::harness {
 
 struct ProcessResult {
-  int exit_code = -1;    // when it exited
-  int signal = 0;        // when a signal ended it
+  int exit_code = -1;  // when it exited
+  int signal = 0;      // when a signal ended it
   bool timed_out = false;
-  bool started = false;  // false: it could not be started (output says why)
-  bool cancelled = false; // stopped, or never started, because a decisive process failed
-  std::string output;    // stdout and stderr, interleaved
+  bool started = false;    // false: it could not be started (output says why)
+  bool cancelled = false;  // stopped, or never started, because a decisive process failed
+  std::string output;      // stdout and stderr, interleaved
   double seconds = 0;
 };
 
 struct ProcessSpec {
   std::vector<std::string> argv;
-  std::string output_file;  // when set, output goes (also) to this file instead of memory
+  std::string output_file;    // when set, output goes (also) to this file instead of memory
   bool pass_through = false;  // let the child write to our stdout/stderr (nothing captured)
   // When it fails (exits non-zero, or a signal ends it), the others are stopped and those not yet
   // started are not: their results say `cancelled`. The compile in double is decisive: when the file

@@ -115,9 +115,7 @@ TreeTimes QueuedSoFar::sample(pid_t root) {
   return t;
 }
 
-double tree_cpu_seconds(pid_t root) {
-  return tree_times(root).cpu;
-}
+double tree_cpu_seconds(pid_t root) { return tree_times(root).cpu; }
 
 double self_cpu_seconds() {
   timespec t{};

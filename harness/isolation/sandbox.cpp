@@ -58,7 +58,8 @@ const std::vector<std::string>& visible_etc() {
   static const std::vector<std::string> entries = [] {
     std::vector<std::string> out;
     std::error_code ec;
-    for (const char* name : {"ld.so.cache", "ld.so.conf", "ld.so.conf.d", "alternatives", "localtime", "nsswitch.conf", "octaverc"})
+    for (const char* name :
+         {"ld.so.cache", "ld.so.conf", "ld.so.conf.d", "alternatives", "localtime", "nsswitch.conf", "octaverc"})
       if (fs::exists(fs::path("/etc") / name, ec)) out.push_back((fs::path("/etc") / name).string());
     for (const auto& e : fs::directory_iterator("/etc", ec))
       if (e.path().filename().string().rfind("python3", 0) == 0) out.push_back(e.path().string());
@@ -79,17 +80,22 @@ struct AccountsFolder {
     std::string pattern = (fs::temp_directory_path(ec) / "geomech-sandbox-etc-XXXXXX").string();
     if (::mkdtemp(pattern.data()) == nullptr) return;
     path = pattern;
-    fs::permissions(path, fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
-                              fs::perms::others_exec, ec);
+    fs::permissions(path,
+                    fs::perms::owner_all | fs::perms::group_read | fs::perms::group_exec | fs::perms::others_read |
+                        fs::perms::others_exec,
+                    ec);
     const unsigned uid = ::geteuid(), gid = ::getegid();
     std::string passwd = "root:x:0:0:root:/tmp:/usr/sbin/nologin\nnobody:x:65534:65534:nobody:/tmp:/usr/sbin/nologin\n";
     std::string group = "root:x:0:\nnogroup:x:65534:\n";
-    if (uid != 0 && uid != 65534) passwd += "geomech:x:" + std::to_string(uid) + ":" + std::to_string(gid) + "::/tmp:/usr/sbin/nologin\n";
+    if (uid != 0 && uid != 65534)
+      passwd += "geomech:x:" + std::to_string(uid) + ":" + std::to_string(gid) + "::/tmp:/usr/sbin/nologin\n";
     if (gid != 0 && gid != 65534) group += "geomech:x:" + std::to_string(gid) + ":\n";
     std::ofstream(path + "/passwd") << passwd;
     std::ofstream(path + "/group") << group;
     for (const char* f : {"passwd", "group"})
-      fs::permissions(path + "/" + f, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read, ec);
+      fs::permissions(path + "/" + f,
+                      fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read | fs::perms::others_read,
+                      ec);
   }
   ~AccountsFolder() {
     std::error_code ec;
@@ -147,7 +153,8 @@ std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const S
   for (const auto& e : visible_etc()) cmd.insert(cmd.end(), {"--ro-bind", e, e});
   const std::string& accounts = sandbox_accounts_folder();
   if (!accounts.empty())
-    for (const char* f : {"passwd", "group"}) cmd.insert(cmd.end(), {"--ro-bind", accounts + "/" + f, std::string("/etc/") + f});
+    for (const char* f : {"passwd", "group"})
+      cmd.insert(cmd.end(), {"--ro-bind", accounts + "/" + f, std::string("/etc/") + f});
   for (const char* link : {"/bin", "/sbin", "/lib", "/lib64", "/lib32", "/libx32"}) {
     std::error_code ec;
     if (fs::is_symlink(link, ec))
@@ -160,7 +167,8 @@ std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const S
   for (const auto& p : spec.read_only) cmd.insert(cmd.end(), {"--ro-bind", p, p});
   for (const auto& [here, inside] : spec.mounts) cmd.insert(cmd.end(), {"--ro-bind", here, inside});
   if (!spec.writable.empty()) cmd.insert(cmd.end(), {"--bind", spec.writable, spec.writable});
-  cmd.insert(cmd.end(), {"--setenv", "PATH", "/usr/bin:/bin", "--setenv", "HOME", "/tmp", "--setenv", "LANG", "C.UTF-8"});
+  cmd.insert(cmd.end(),
+             {"--setenv", "PATH", "/usr/bin:/bin", "--setenv", "HOME", "/tmp", "--setenv", "LANG", "C.UTF-8"});
   for (const auto& [k, v] : spec.env) cmd.insert(cmd.end(), {"--setenv", k, v});
   if (!tag.empty()) cmd.insert(cmd.end(), {"--setenv", "GEOMECH_SANDBOX_TAG", tag});
   cmd.insert(cmd.end(), {"--chdir", spec.chdir.empty() ? "/tmp" : spec.chdir});
@@ -168,10 +176,10 @@ std::vector<std::string> sandboxed(const std::vector<std::string>& argv, const S
   const auto mb = [](int m) { return std::to_string(static_cast<long long>(m) << 20); };
   cmd.insert(cmd.end(), {"--", which("prlimit")});
   if (spec.limits.memory_mb > 0) cmd.push_back("--as=" + mb(spec.limits.memory_mb));
-  cmd.insert(cmd.end(), {"--cpu=" + std::to_string(spec.limits.cpu_seconds),
-                         "--nproc=" + std::to_string(nproc) + ":" + std::to_string(nproc),
-                         "--fsize=" + mb(spec.limits.file_mb), "--nofile=" + std::to_string(spec.limits.open_files),
-                         "--core=0", "--"});
+  cmd.insert(cmd.end(),
+             {"--cpu=" + std::to_string(spec.limits.cpu_seconds),
+              "--nproc=" + std::to_string(nproc) + ":" + std::to_string(nproc), "--fsize=" + mb(spec.limits.file_mb),
+              "--nofile=" + std::to_string(spec.limits.open_files), "--core=0", "--"});
   cmd.insert(cmd.end(), argv.begin(), argv.end());
   return cmd;
 }

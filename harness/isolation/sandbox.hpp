@@ -39,8 +39,8 @@ struct SandboxSpec {
   // it needs are shown under neutral names (/submission, /geomech), so that nothing inside, not
   // even the program's own command line, names a folder of the machine.
   std::vector<std::pair<std::string, std::string>> mounts;
-  std::string writable;                // a directory visible read-write at the same path (or empty)
-  std::string chdir;                   // working directory inside (default /tmp)
+  std::string writable;                                  // a directory visible read-write at the same path (or empty)
+  std::string chdir;                                     // working directory inside (default /tmp)
   std::vector<std::pair<std::string, std::string>> env;  // the environment inside (besides PATH, HOME, LANG)
   SandboxLimits limits;
 };

@@ -41,13 +41,13 @@ SandboxedInterpreter interpreter_for_sandbox(const std::string& language, const 
   SandboxedInterpreter r;
   r.program = interpreter;
   if (language == "python") {
-    const ProcessResult p = run_process(
-        ProcessSpec{{interpreter, "-c",
-                     "import os, sys; print(sys.executable); print(sys.prefix); print(sys.base_prefix); "
-                     "print(os.path.realpath(sys.executable))"},
-                    {},
-                    false},
-        60);
+    const ProcessResult p =
+        run_process(ProcessSpec{{interpreter, "-c",
+                                 "import os, sys; print(sys.executable); print(sys.prefix); print(sys.base_prefix); "
+                                 "print(os.path.realpath(sys.executable))"},
+                                {},
+                                false},
+                    60);
     std::istringstream in(p.output);
     std::string executable, prefix, base, real;
     std::getline(in, executable);

@@ -130,15 +130,21 @@ std::string read_at(int dirfd, const std::string& name, const std::string& shown
 
 std::string describe(EntryKind k) {
   switch (k) {
-    case EntryKind::File: return "a file";
-    case EntryKind::Folder: return "a folder";
+    case EntryKind::File:
+      return "a file";
+    case EntryKind::Folder:
+      return "a folder";
     case EntryKind::Link:
       return "a symbolic link (submissions are never followed through a link: it may name another student's file or "
              "one that is not the student's; hand in the file itself)";
-    case EntryKind::Fifo: return "a FIFO (named pipe), which is never opened: reading it would wait for a writer";
-    case EntryKind::Socket: return "a socket, which is never opened";
-    case EntryKind::Device: return "a device, which is never opened";
-    case EntryKind::Other: break;
+    case EntryKind::Fifo:
+      return "a FIFO (named pipe), which is never opened: reading it would wait for a writer";
+    case EntryKind::Socket:
+      return "a socket, which is never opened";
+    case EntryKind::Device:
+      return "a device, which is never opened";
+    case EntryKind::Other:
+      break;
   }
   return "not a regular file or folder";
 }
@@ -182,7 +188,8 @@ std::vector<StrangerFolder::Entry> StrangerFolder::list(const std::string& rel) 
   }
   // fdopendir takes the descriptor; a duplicate stays ours for fstatat.
   DIR* d = ::fdopendir(::dup(dir.fd));
-  if (d == nullptr) throw RefusedEntry(rel.empty() ? path_ : rel, std::string("cannot be listed (") + std::strerror(errno) + ")");
+  if (d == nullptr)
+    throw RefusedEntry(rel.empty() ? path_ : rel, std::string("cannot be listed (") + std::strerror(errno) + ")");
   std::vector<Entry> out;
   while (const dirent* de = ::readdir(d)) {
     const std::string name = de->d_name;
@@ -220,8 +227,8 @@ void read_into(const StrangerFolder& from, const std::string& rel, const IntakeL
                std::size_t& entries, SubmissionTree& tree) {
   const StrangerFolder::Entry e = from.look(rel);
   if (++entries > limits.entries)
-    throw RefusedEntry(rel, "one entry too many: a submission holds at most " + std::to_string(limits.entries) +
-                                " files and folders");
+    throw RefusedEntry(
+        rel, "one entry too many: a submission holds at most " + std::to_string(limits.entries) + " files and folders");
   if (e.kind == EntryKind::Folder) {
     if (depth > limits.depth)
       throw RefusedEntry(rel, "folders nested deeper than " + std::to_string(limits.depth) + " levels");
@@ -232,8 +239,8 @@ void read_into(const StrangerFolder& from, const std::string& rel, const IntakeL
   if (e.kind != EntryKind::File) throw RefusedEntry(rel, describe(e.kind));
   const std::uint64_t left = limits.total_bytes - std::min(limits.total_bytes, tree.bytes());
   if (e.size > left && e.size <= limits.file_bytes)
-    throw RefusedEntry(rel, "beyond the size of a submission: " + std::to_string(limits.total_bytes >> 20) +
-                                " MiB in all");
+    throw RefusedEntry(rel,
+                       "beyond the size of a submission: " + std::to_string(limits.total_bytes >> 20) + " MiB in all");
   tree.files.emplace_back(rel, from.read(rel, std::min(limits.file_bytes, left)));
 }
 
@@ -261,7 +268,8 @@ void write_tree(const SubmissionTree& tree, const fs::path& dest) {
   for (const auto& [rel, text] : tree.files) {
     const fs::path to = dest / rel;
     keep.insert(to.lexically_normal());
-    for (fs::path p = to.parent_path(); p != dest && p.has_relative_path(); p = p.parent_path()) keep.insert(p.lexically_normal());
+    for (fs::path p = to.parent_path(); p != dest && p.has_relative_path(); p = p.parent_path())
+      keep.insert(p.lexically_normal());
     fs::create_directories(to.parent_path(), ec);
     if (ec) throw std::runtime_error("cannot create " + to.parent_path().string() + ": " + ec.message());
     {
@@ -284,7 +292,8 @@ void write_tree(const SubmissionTree& tree, const fs::path& dest) {
   }
   // What the submission no longer holds goes (deepest first).
   std::vector<fs::path> gone;
-  for (auto it = fs::recursive_directory_iterator(dest, ec); !ec && it != fs::recursive_directory_iterator(); it.increment(ec))
+  for (auto it = fs::recursive_directory_iterator(dest, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec))
     if (!keep.count(it->path().lexically_normal())) gone.push_back(it->path());
   std::sort(gone.begin(), gone.end(), [](const fs::path& a, const fs::path& b) { return a.string() > b.string(); });
   for (const auto& p : gone) fs::remove_all(p, ec);

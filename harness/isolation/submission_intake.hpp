@@ -29,7 +29,7 @@
 namespace gm::harness {
 
 struct IntakeLimits {
-  std::uint64_t file_bytes = 8u << 20;    // one file
+  std::uint64_t file_bytes = 8u << 20;  // one file
   // A program built from a submission in the sandbox (a C++ file's protocol server): the suite's code
   // linked with theirs, about 9 MiB of it the suite's. Read as a stranger's file, within this.
   std::uint64_t program_bytes = 64u << 20;

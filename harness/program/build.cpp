@@ -32,8 +32,8 @@ std::string sandbox_start_fault(const std::string& output, const fs::path& dir) 
   if (!ours) return {};
   std::string fault = "the grader's machine, not the file: the sandbox could not start the compiler (" + first + ")";
   if (const std::string blocked = sandbox_cannot_reach(dir.string()); !blocked.empty())
-    fault += ". Its user (" + std::string(sandbox_uid() == 65534 ? "nobody" : "this user") + ") cannot pass " + blocked +
-             ". Fix: `chmod o+x " + blocked + "`, or --cache-dir DIR in a folder every user may pass";
+    fault += ". Its user (" + std::string(sandbox_uid() == 65534 ? "nobody" : "this user") + ") cannot pass " +
+             blocked + ". Fix: `chmod o+x " + blocked + "`, or --cache-dir DIR in a folder every user may pass";
   else
     fault += ". Fix: `geomech self-test` says what the sandbox lacks";
   return fault;
@@ -46,7 +46,8 @@ std::string dso_missing(const std::string& output) {
   const auto at = output.find(marker);
   if (at == std::string::npos) return {};
   const auto begin = output.find_last_of(" /\n", at);
-  const std::string lib = output.substr(begin == std::string::npos ? 0 : begin + 1, at - (begin == std::string::npos ? 0 : begin + 1));
+  const std::string lib =
+      output.substr(begin == std::string::npos ? 0 : begin + 1, at - (begin == std::string::npos ? 0 : begin + 1));
   return lib.rfind("lib", 0) == 0 && lib.find(".so") != std::string::npos ? lib : std::string();
 }
 
@@ -76,16 +77,16 @@ SandboxSpec compiler_sandbox(const Toolchain& tc, const fs::path& dir) {
   if (!tc.precompiled_header.empty()) add(fs::path(tc.precompiled_header).parent_path());
   spec.writable = dir.string();
   spec.chdir = dir.string();
-  spec.limits.memory_mb = 8192;   // a 50-digit instantiation compiles in about 1.5 GB
-  spec.limits.file_mb = 2048;     // a sanitized suite's objects and programs reach hundreds of MB
-  spec.limits.scratch_mb = 2048;  // the compiler's temporary files (a tmpfs: memory used as needed)
+  spec.limits.memory_mb = 8192;        // a 50-digit instantiation compiles in about 1.5 GB
+  spec.limits.file_mb = 2048;          // a sanitized suite's objects and programs reach hundreds of MB
+  spec.limits.scratch_mb = 2048;       // the compiler's temporary files (a tmpfs: memory used as needed)
   if (sandbox_uid() != ::geteuid()) {  // root hands the folder to nobody
     ::chown(dir.c_str(), sandbox_uid(), sandbox_uid());
-    for (const auto& e : fs::recursive_directory_iterator(dir, ec)) ::lchown(e.path().c_str(), sandbox_uid(), sandbox_uid());
+    for (const auto& e : fs::recursive_directory_iterator(dir, ec))
+      ::lchown(e.path().c_str(), sandbox_uid(), sandbox_uid());
   }
   return spec;
 }
-
 
 const char* kScalars[] = {"double", "mp50", "exact"};
 
@@ -194,7 +195,7 @@ std::string shorten_types(std::string line) {
     }
     if (end >= line.size()) break;
     const std::string inside = line.substr(at, end + 1 - at);
-    const std::string name = inside.find("rational_adaptor") != std::string::npos ? "Rational"
+    const std::string name = inside.find("rational_adaptor") != std::string::npos   ? "Rational"
                              : inside.find("cpp_bin_float<50") != std::string::npos ? "Real50"
                                                                                     : "number<...>";
     line.replace(at, end + 1 - at, name);
@@ -223,7 +224,7 @@ std::string error_summary(const std::string& out, const std::string& source, std
     // The first place in the student's own file since the last error: the innermost of their lines.
     const bool include_chain = line.find("In file included from") != std::string::npos ||
                                (line.find_first_not_of(' ') != std::string::npos &&
-                                    line.compare(line.find_first_not_of(' '), 5, "from ") == 0);
+                                line.compare(line.find_first_not_of(' '), 5, "from ") == 0);
     if (place.empty() && !include_chain && line.find(file + ":") != std::string::npos &&
         line.find(": error:") == std::string::npos && line.find(": note:") == std::string::npos) {
       const auto at = line.find(file + ":");
@@ -234,7 +235,9 @@ std::string error_summary(const std::string& out, const std::string& source, std
     if (e == std::string::npos) continue;
     ++total;
     if (n < max_errors) {
-      std::string where = line.find(file + ":") != std::string::npos ? line.substr(line.find(file + ":"), line.find(": error:") - line.find(file + ":")) : place;
+      std::string where = line.find(file + ":") != std::string::npos
+                              ? line.substr(line.find(file + ":"), line.find(": error:") - line.find(file + ":"))
+                              : place;
       summary += "  " + (where.empty() ? std::string() : where + ": ") + (slot.empty() ? "" : "(in " + slot + ") ") +
                  clip(line.substr(e)) + "\n";
       ++n;
@@ -307,12 +310,13 @@ Toolchain load_toolchain(const std::string& path) {
     }
   }
   if (t.scalar_selection.empty())
-    throw std::runtime_error(path + ": none of its includes holds geomech/detail/scalar_selection.hpp (an install "
+    throw std::runtime_error(path +
+                             ": none of its includes holds geomech/detail/scalar_selection.hpp (an install "
                              "older than the tool?): reinstall or rebuild the suite");
   if (t.cache_dir.empty()) {  // per user: $XDG_CACHE_HOME/geomech-spec, ~/.cache/geomech-spec
     const char* xdg = std::getenv("XDG_CACHE_HOME");
     const char* home = std::getenv("HOME");
-    t.cache_dir = xdg && *xdg   ? std::string(xdg) + "/geomech-spec"
+    t.cache_dir = xdg && *xdg     ? std::string(xdg) + "/geomech-spec"
                   : home && *home ? std::string(home) + "/.cache/geomech-spec"
                                   : (fs::temp_directory_path() / "geomech-spec-cache").string();
   }
@@ -405,7 +409,8 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     std::vector<std::pair<std::string, std::string>> copies;
     try {
       const StrangerFolder beside(source.parent_path().string());
-      copies.emplace_back(source.filename().string(), beside.read(source.filename().string(), IntakeLimits{}.file_bytes));
+      copies.emplace_back(source.filename().string(),
+                          beside.read(source.filename().string(), IntakeLimits{}.file_bytes));
       std::uint64_t bytes = copies.back().second.size();
       for (const auto& e : beside.list()) {
         const std::string ext = fs::path(e.name).extension().string();
@@ -413,7 +418,8 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
         if (e.kind != EntryKind::File) throw RefusedEntry(e.name, describe(e.kind));
         copies.emplace_back(e.name, beside.read(e.name, IntakeLimits{}.file_bytes));
         if ((bytes += copies.back().second.size()) > IntakeLimits{}.total_bytes)
-          throw RefusedEntry(e.name, "beyond the size of a submission: " + std::to_string(IntakeLimits{}.total_bytes >> 20) + " MiB in all");
+          throw RefusedEntry(e.name, "beyond the size of a submission: " +
+                                         std::to_string(IntakeLimits{}.total_bytes >> 20) + " MiB in all");
       }
     } catch (const RefusedEntry& e) {
       r.message = "the file is not compiled: " + std::string(e.what()) + " (beside " + source.filename().string() + ")";
@@ -421,7 +427,8 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     }
     std::vector<fs::path> stale;
     for (const auto& e : fs::directory_iterator(dir / "src", ec))
-      if (std::none_of(copies.begin(), copies.end(), [&](const auto& c) { return c.first == e.path().filename().string(); }))
+      if (std::none_of(copies.begin(), copies.end(),
+                       [&](const auto& c) { return c.first == e.path().filename().string(); }))
         stale.push_back(e.path());
     for (const auto& p : stale) fs::remove(p, ec);  // a header no longer beside it is no longer there
     for (const auto& [name, text] : copies) {
@@ -600,7 +607,8 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
         if (!st[k].skip.count(slot)) {
           st[k].skip.insert(slot);
           const std::string hint = hint_for(msg, scalar);
-          st[k].skip_reason[slot] = "does not compile for " + scalar + ": " + msg + (hint.empty() ? "" : " (hint: " + hint + ")");
+          st[k].skip_reason[slot] =
+              "does not compile for " + scalar + ": " + msg + (hint.empty() ? "" : " (hint: " + hint + ")");
           progress = true;
         }
       if (!progress && !st[k].skip_integrators && integrators_failing_in(pr.output)) {
@@ -620,7 +628,8 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   if (!st[0].ok) {
     const std::string hint = missing_header_hint(st[0].output);
     r.message = "the file does not compile:\n" + error_summary(st[0].output, r.source) +
-                (hint.empty() ? "" : "hint: " + hint + "\n") + "the compiler's full output: " + (dir / "double.log").string();
+                (hint.empty() ? "" : "hint: " + hint + "\n") +
+                "the compiler's full output: " + (dir / "double.log").string();
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return r;
   }
@@ -700,9 +709,11 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
       if (pr.output.find("multiple definition of `main'") != std::string::npos)
         hint = "\nhint: the file defines main(); guard it with #ifndef GEOMECH_STUDENT_CHECK ... #endif";
       if (const std::string lib = dso_missing(pr.output); !lib.empty())
-        hint = "\nhint: the program needs the library " + lib + ", which no flag names (a library that a library you "
-               "use depends on, left out of its pkg-config file): add --ldflags -l" + lib.substr(3, lib.find(".so") - 3) +
-               " (or `// geomech: ldflags -l" + lib.substr(3, lib.find(".so") - 3) + "` in the file)";
+        hint = "\nhint: the program needs the library " + lib +
+               ", which no flag names (a library that a library you "
+               "use depends on, left out of its pkg-config file): add --ldflags -l" +
+               lib.substr(3, lib.find(".so") - 3) + " (or `// geomech: ldflags -l" +
+               lib.substr(3, lib.find(".so") - 3) + "` in the file)";
       else if (pr.output.find("undefined reference") != std::string::npos)
         hint = "\nhint: a function is declared but never defined (or defined in another file: list every file)";
       r.message = "the program could not be linked:\n" + trim_lines(pr.output, 30) + hint;

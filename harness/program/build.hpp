@@ -52,16 +52,16 @@ Toolchain load_toolchain(const std::string& path);
 std::string default_toolchain_path();
 
 struct BuildOptions {
-  int jobs = 2;                 // compilers at once
-  std::string name;             // implementation name (default: the file's stem)
-  std::string cache_dir;        // default: the toolchain's
-  bool verbose = false;         // print each command
-  bool force = false;           // ignore the cache
-  bool mp50 = true;             // compile the 50-digit instantiation (double is always compiled)
-  bool exact = true;            // compile the exact-rational instantiation
-  bool server = false;          // link the protocol server (untrusted mode) instead of the check program
-  bool sandbox = false;         // compile and link inside the sandbox, from a copy of the source
-  std::string program_name;     // the linked program's file name (default "check", or "server")
+  int jobs = 2;              // compilers at once
+  std::string name;          // implementation name (default: the file's stem)
+  std::string cache_dir;     // default: the toolchain's
+  bool verbose = false;      // print each command
+  bool force = false;        // ignore the cache
+  bool mp50 = true;          // compile the 50-digit instantiation (double is always compiled)
+  bool exact = true;         // compile the exact-rational instantiation
+  bool server = false;       // link the protocol server (untrusted mode) instead of the check program
+  bool sandbox = false;      // compile and link inside the sandbox, from a copy of the source
+  std::string program_name;  // the linked program's file name (default "check", or "server")
   // Every compile and link stops after this long (a file may include /dev/zero, or a
   // template recursion may not end); the message says so.
   double compile_timeout_seconds = 900;
@@ -71,17 +71,17 @@ struct BuildOptions {
 };
 
 struct BuildResult {
-  bool ok = false;               // a program was produced
-  std::string program;           // the check program
+  bool ok = false;      // a program was produced
+  std::string program;  // the check program
   std::string name;
-  std::string source;            // absolute path of the source
-  std::string message;           // when !ok: what went wrong, with the compiler's output
+  std::string source;   // absolute path of the source
+  std::string message;  // when !ok: what went wrong, with the compiler's output
   // When !ok because the sandbox could not start the compiler or the linker (bubblewrap's own
   // error, such as a cache folder its user cannot reach): the grader's set-up, not the file; the
   // message says what and the fix. Empty otherwise.
   std::string machine_fault;
-  nlohmann::json notes;          // scalar_unavailable, slot_notes, warnings (for --build-notes)
-  std::string notes_file;        // where the notes were written
+  nlohmann::json notes;    // scalar_unavailable, slot_notes, warnings (for --build-notes)
+  std::string notes_file;  // where the notes were written
   double seconds = 0;
   bool cached = false;           // nothing needed compiling
   std::vector<std::string> log;  // one line per compiler run, for the user

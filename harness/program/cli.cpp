@@ -24,7 +24,8 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_option("--scalar", o.scalar, "double, mp50, exact or all (default)");
   app.add_option("--integrator", o.integrator, "only this integrator, for integrator properties");
   app.add_option("--seed", o.seed, "base seed (default 0: runs are reproducible)");
-  app.add_option("--cases", o.cases, "cases per property (default: each property's own)")->check(CLI::NonNegativeNumber);
+  app.add_option("--cases", o.cases, "cases per property (default: each property's own)")
+      ->check(CLI::NonNegativeNumber);
   app.add_option_function<double>(
          "--case-factor",
          [&o](double f) {
@@ -49,20 +50,24 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
                  "implementation is then checked on fewer cases, which its verdict says, instead of timing out; "
                  "shrinking a failure likewise stops after a quarter of --timeout")
       ->check(CLI::NonNegativeNumber);
-  app.add_option("--jobs,-j", o.jobs, "checks run at once, each in its own process (default: the number of cores)")->check(CLI::Range(1, 256));
+  app.add_option("--jobs,-j", o.jobs, "checks run at once, each in its own process (default: the number of cores)")
+      ->check(CLI::Range(1, 256));
   app.add_option("--memory-limit", o.memory_limit_mb, "address space per check, in MiB (default 4096)")
       ->check(CLI::Range(64L, 1L << 30));
-  app.add_option("--report", o.report_dir, "write report.md, junit.xml, verdicts.json and figures/ into this directory");
+  app.add_option("--report", o.report_dir,
+                 "write report.md, junit.xml, verdicts.json and figures/ into this directory");
   app.add_option("--junit", o.junit, "also write the JUnit XML to this file");
   app.add_flag("--no-isolation", o.no_isolation, "run checks in this process (for a debugger; a crash ends the run)");
   app.add_flag("--no-portraits", o.no_portraits, "do not draw the integrator pictures");
   app.add_flag("--quiet,-q", o.quiet, "print only the summary");
-  app.add_flag("--quick", o.quick,
-               "only the checks of the quick profile: the few that kill every mutant the whole suite kills, chosen from "
-               "the kill matrix (spec/quick_profile.json); the full check stays the default");
-  app.add_flag("--thorough", o.thorough,
-               "for a Python implementation or an untrusted one: also the costly 50-digit runs it otherwise leaves out "
-               "(spec/thorough_only.json: in the kill matrix every mutant they kill is killed by a check that is kept)");
+  app.add_flag(
+      "--quick", o.quick,
+      "only the checks of the quick profile: the few that kill every mutant the whole suite kills, chosen from "
+      "the kill matrix (spec/quick_profile.json); the full check stays the default");
+  app.add_flag(
+      "--thorough", o.thorough,
+      "for a Python implementation or an untrusted one: also the costly 50-digit runs it otherwise leaves out "
+      "(spec/thorough_only.json: in the kill matrix every mutant they kill is killed by a check that is kept)");
   app.add_flag("--definitions", o.definitions_only,
                "only every slot's own definition check, in double (a first look; no report unless --report)");
 }
@@ -71,7 +76,8 @@ void add_library_options(CLI::App& app, LibraryCli& o) {
   app.add_option("--pkg", o.pkg,
                  "a library the C++ file uses, by its pkg-config name (repeatable; or the line `// geomech: pkg NAME` "
                  "in the file)");
-  app.add_option("--cxxflags", o.cxxflags, "compile flags for the C++ file (repeatable; or `// geomech: cxxflags ...`)");
+  app.add_option("--cxxflags", o.cxxflags,
+                 "compile flags for the C++ file (repeatable; or `// geomech: cxxflags ...`)");
   app.add_option("--ldflags", o.ldflags, "link flags for the C++ file (repeatable; or `// geomech: ldflags ...`)");
   app.add_option("-I", o.include, "an include folder for the C++ file (repeatable)");
   app.add_option("-L", o.libdir, "a library folder for the C++ file (repeatable)");
@@ -197,8 +203,8 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
   streaming.failed_before = failed_checks_in_report(o.report_dir);
   // Behind the protocol, the whole check leaves its costliest 50-digit runs to --thorough
   // (a selection by name, a replay or --quick runs what it names).
-  if (info.out_of_process && !o.thorough && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty() && !o.quick &&
-      !o.definitions_only) {
+  if (info.out_of_process && !o.thorough && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty() &&
+      !o.quick && !o.definitions_only) {
     try {
       const ThoroughOnlySelection t = load_thorough_only(default_thorough_only_path());
       streaming.thorough_only = t.checks;
@@ -222,8 +228,7 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
   const CheckResult r = run_check(subject, info, streaming);
   if (o.definitions_only && o.report_dir.empty()) {  // a first look: its failures were streamed
     std::cout << "geomech: first look: " << r.ran() << (r.ran() == 1 ? " slot check" : " slot checks") << " in double, "
-              << console.failures_printed()
-              << (console.failures_printed() == 1 ? " failure" : " failures") << "\n";
+              << console.failures_printed() << (console.failures_printed() == 1 ? " failure" : " failures") << "\n";
     return r.exit_code();
   }
   if (o.quiet) {
@@ -231,8 +236,9 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
               << r.count(Outcome::Fail) << " FAIL, " << r.count(Outcome::NotProvided) << " NOT PROVIDED, "
               << r.count(Outcome::Crash) << " CRASH, " << r.count(Outcome::Timeout) << " TIMEOUT, "
               << r.count(Outcome::Error) << " ERROR)"
-              << (r.left_to_thorough.empty() ? "" : "; " + std::to_string(r.left_to_thorough.size()) +
-                                                       " costly 50-digit runs left to --thorough")
+              << (r.left_to_thorough.empty()
+                      ? ""
+                      : "; " + std::to_string(r.left_to_thorough.size()) + " costly 50-digit runs left to --thorough")
               << "\n";
     for (const auto& u : r.unchecked) std::cout << "UNCHECKED: " << u << "\n";  // why it is not a pass
   } else {

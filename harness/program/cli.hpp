@@ -23,18 +23,19 @@ struct CheckCliOptions {
   std::uint64_t seed = 0;
   int cases = 0;
   double case_factor = 1.0;
-  bool case_factor_given = false;  // --case-factor was given (else an implementation behind the protocol gets the matrix's)
+  bool case_factor_given =
+      false;  // --case-factor was given (else an implementation behind the protocol gets the matrix's)
   std::string reproduce;
   double timeout = 60;
   bool timeout_given = false;  // set by the parser: the replay command repeats --timeout only then
-  double case_budget = -1;  // seconds after which no new case starts; < 0: 40 % of the timeout; 0: none
-  int jobs = default_jobs();  // the cores of this machine
+  double case_budget = -1;     // seconds after which no new case starts; < 0: 40 % of the timeout; 0: none
+  int jobs = default_jobs();   // the cores of this machine
   long memory_limit_mb = 4096;
   std::string report_dir;  // write report.md, junit.xml, verdicts.json, figures/ here
   std::string junit;       // also write the JUnit XML here
   bool no_isolation = false;
   bool no_portraits = false;
-  bool quiet = false;      // only the summary line and the report's path
+  bool quiet = false;  // only the summary line and the report's path
   // Only every slot's own definition check, in double, no report, no pictures: the first look
   // `geomech check FILE.cpp` takes while the other scalars compile.
   bool definitions_only = false;

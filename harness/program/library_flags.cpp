@@ -28,9 +28,12 @@ std::vector<std::string> split_flags(const std::string& text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (quote) {
-      if (c == quote) quote = 0;
-      else if (c == '\\' && quote == '"' && i + 1 < text.size()) cur += text[++i];
-      else cur += c;
+      if (c == quote)
+        quote = 0;
+      else if (c == '\\' && quote == '"' && i + 1 < text.size())
+        cur += text[++i];
+      else
+        cur += c;
     } else if (c == '\'' || c == '"') {
       quote = c, any = true;
     } else if (c == '\\' && i + 1 < text.size()) {
@@ -61,13 +64,18 @@ LibraryRequest declared_in_source(const std::string& text, const std::string& fi
     rest = rest.substr(word + 8);
     std::vector<std::string> words = split_flags(rest);
     if (words.empty())
-      throw std::invalid_argument(file_name + ":" + std::to_string(n) + ": a `// geomech:` line says nothing; write "
-                                  "`// geomech: pkg NAME`, `// geomech: cxxflags FLAGS` or `// geomech: ldflags FLAGS`");
+      throw std::invalid_argument(
+          file_name + ":" + std::to_string(n) +
+          ": a `// geomech:` line says nothing; write "
+          "`// geomech: pkg NAME`, `// geomech: cxxflags FLAGS` or `// geomech: ldflags FLAGS`");
     const std::string what = words.front();
     words.erase(words.begin());
-    if (what == "pkg") r.pkgs.insert(r.pkgs.end(), words.begin(), words.end());
-    else if (what == "cxxflags") r.cxxflags.insert(r.cxxflags.end(), words.begin(), words.end());
-    else if (what == "ldflags") r.ldflags.insert(r.ldflags.end(), words.begin(), words.end());
+    if (what == "pkg")
+      r.pkgs.insert(r.pkgs.end(), words.begin(), words.end());
+    else if (what == "cxxflags")
+      r.cxxflags.insert(r.cxxflags.end(), words.begin(), words.end());
+    else if (what == "ldflags")
+      r.ldflags.insert(r.ldflags.end(), words.begin(), words.end());
     else
       throw std::invalid_argument(file_name + ":" + std::to_string(n) + ": `// geomech: " + what +
                                   "` is not a request the suite knows; write `// geomech: pkg NAME`, "
@@ -89,7 +97,8 @@ std::vector<std::string> trusted_library_roots() {
     if (r.empty()) continue;
     std::error_code ec;
     if (r.front() != '/' || !fs::is_directory(r, ec))
-      throw std::invalid_argument("GEOMECH_LIBRARY_ROOTS: '" + r + "' is not an absolute path of a folder (the grader's "
+      throw std::invalid_argument("GEOMECH_LIBRARY_ROOTS: '" + r +
+                                  "' is not an absolute path of a folder (the grader's "
                                   "setting: the folders of libraries installed for a class, separated by ':')");
     const std::string real = fs::weakly_canonical(fs::path(r), ec).string();
     if (real == "/") throw std::invalid_argument("GEOMECH_LIBRARY_ROOTS: '/' would show the sandbox the whole machine");
@@ -133,7 +142,8 @@ std::vector<std::string> with_trusted(std::vector<std::string> roots) {
 // folder of a separate -I DIR), consumed by the caller when `takes_next`.
 std::string refusal(const std::string& f, bool link, const std::string* next, bool* takes_next) {
   *takes_next = false;
-  auto folder_flag = [&](const std::string& flag, const std::vector<std::string>& roots, const char* what) -> std::string {
+  auto folder_flag = [&](const std::string& flag, const std::vector<std::string>& roots,
+                         const char* what) -> std::string {
     std::string dir = f.substr(flag.size());
     if (dir.empty()) {
       if (!next) return "'" + f + "' without its folder";
@@ -142,19 +152,24 @@ std::string refusal(const std::string& f, bool link, const std::string* next, bo
     }
     if (under(dir, roots)) return {};
     return "'" + f + (f.size() == flag.size() ? " " + dir : "") + "': the folder is not one of the system's " + what +
-           " folders (" + (link ? "/usr/lib, /lib" : "/usr/include") + ") nor under GEOMECH_LIBRARY_ROOTS, so it would "
+           " folders (" + (link ? "/usr/lib, /lib" : "/usr/include") +
+           ") nor under GEOMECH_LIBRARY_ROOTS, so it would "
            "show the sandboxed compiler a folder of this machine; a grader who installed the library there for the "
-           "class trusts it with GEOMECH_LIBRARY_ROOTS=" + library_root_of(dir);
+           "class trusts it with GEOMECH_LIBRARY_ROOTS=" +
+           library_root_of(dir);
   };
   if (f.empty()) return "an empty flag";
   if (f[0] == '@') return "'" + f + "': an @file makes the compiler read its options from a file of this machine";
   if (f.rfind("-B", 0) == 0) return "'" + f + "': -B makes the compiler run its programs from another folder";
-  if (f == "-wrapper" || f.rfind("-wrapper", 0) == 0) return "'" + f + "': -wrapper runs a program of the host around each tool";
+  if (f == "-wrapper" || f.rfind("-wrapper", 0) == 0)
+    return "'" + f + "': -wrapper runs a program of the host around each tool";
   if (f.rfind("-fplugin", 0) == 0) return "'" + f + "': -fplugin loads code of the host into the compiler";
-  if (f.rfind("-specs", 0) == 0 || f.rfind("--specs", 0) == 0) return "'" + f + "': -specs rewrites the compiler driver's commands";
-  if (f.rfind("-Wl,", 0) == 0 || f.rfind("-Wa,", 0) == 0 || f.rfind("-Wp,", 0) == 0 || f == "-Xlinker" || f == "-Xassembler" ||
-      f == "-Xpreprocessor")
-    return "'" + f + "': it passes options to another program (the linker, the assembler), beyond what the suite can vet";
+  if (f.rfind("-specs", 0) == 0 || f.rfind("--specs", 0) == 0)
+    return "'" + f + "': -specs rewrites the compiler driver's commands";
+  if (f.rfind("-Wl,", 0) == 0 || f.rfind("-Wa,", 0) == 0 || f.rfind("-Wp,", 0) == 0 || f == "-Xlinker" ||
+      f == "-Xassembler" || f == "-Xpreprocessor")
+    return "'" + f +
+           "': it passes options to another program (the linker, the assembler), beyond what the suite can vet";
   if (f.rfind("-D", 0) == 0 || f.rfind("-U", 0) == 0) return f.size() > 2 ? "" : "'" + f + "' without its macro";
   if (f == "-pthread") return "";
   if (f.rfind("-W", 0) == 0) return "";  // a warning switch (-Wall, -Wno-unused); -Wl, and the like are refused above
@@ -169,7 +184,8 @@ std::string refusal(const std::string& f, bool link, const std::string* next, bo
       return "'" + f + "': a library is named by its name alone (-lode), never by a path";
     return {};
   }
-  return "'" + f + "' is not among the flags a file checked in untrusted mode may give: -D, -U, -I or -isystem "
+  return "'" + f +
+         "' is not among the flags a file checked in untrusted mode may give: -D, -U, -I or -isystem "
          "under /usr/include (or GEOMECH_LIBRARY_ROOTS), -W..., -pthread" +
          std::string(link ? "; for linking -l and -L under /usr/lib or /lib (or GEOMECH_LIBRARY_ROOTS)" : "");
 }
@@ -193,7 +209,8 @@ bool package_name_ok(const std::string& p) {
 std::vector<std::string> pkg_config(const std::string& pkg, const char* what) {
   const ProcessResult r = run_process(ProcessSpec{{"pkg-config", what, pkg}, {}, false}, 30);
   if (!r.started)
-    throw std::invalid_argument("--pkg " + pkg + ": pkg-config could not be run (apt-get install pkg-config): " + r.output);
+    throw std::invalid_argument("--pkg " + pkg +
+                                ": pkg-config could not be run (apt-get install pkg-config): " + r.output);
   if (r.exit_code != 0) {
     std::string msg = r.output;
     while (!msg.empty() && (msg.back() == '\n' || msg.back() == ' ')) msg.pop_back();
@@ -215,11 +232,13 @@ std::vector<std::string> without_suite_switches(const std::vector<std::string>& 
   for (const auto& f : flags) {
     const bool standard = f.rfind("-std=", 0) == 0 || f.rfind("--std=", 0) == 0;
     const bool optimisation = f.rfind("-O", 0) == 0;
-    const bool warning = f.rfind("-W", 0) == 0 && f.rfind("-Wl,", 0) != 0 && f.rfind("-Wa,", 0) != 0 && f.rfind("-Wp,", 0) != 0;
+    const bool warning =
+        f.rfind("-W", 0) == 0 && f.rfind("-Wl,", 0) != 0 && f.rfind("-Wa,", 0) != 0 && f.rfind("-Wp,", 0) != 0;
     if (standard || optimisation || warning)
       dropped.push_back("'" + f + "' from pkg-config --cflags " + pkg +
-                        (standard ? ": the suite compiles in its own standard (C++20)"
-                                  : optimisation ? ": the suite sets the optimisation" : ": the suite sets the warnings"));
+                        (standard       ? ": the suite compiles in its own standard (C++20)"
+                         : optimisation ? ": the suite sets the optimisation"
+                                        : ": the suite sets the warnings"));
     else
       kept.push_back(f);
   }
@@ -250,8 +269,9 @@ std::vector<std::string> canonical_folders(const std::vector<std::string>& flags
 // An option whose value is the next word (-include FILE, -isystem DIR, ...) and that word are kept as
 // they come, and so is a word that is not an option.
 void append_once(std::vector<std::string>& to, const std::vector<std::string>& flags) {
-  static const std::set<std::string> takes_next = {"-include", "-imacros", "-isystem", "-iquote", "-idirafter", "-I",
-                                                   "-L", "-D", "-U", "-Xlinker", "-Xpreprocessor", "-Xassembler", "-x"};
+  static const std::set<std::string> takes_next = {
+      "-include", "-imacros", "-isystem", "-iquote",        "-idirafter",  "-I", "-L",
+      "-D",       "-U",       "-Xlinker", "-Xpreprocessor", "-Xassembler", "-x"};
   for (std::size_t i = 0; i < flags.size(); ++i) {
     const std::string& f = flags[i];
     if (takes_next.count(f) && i + 1 < flags.size()) {
@@ -279,7 +299,8 @@ LibraryFlags resolve_library_flags(const LibraryRequest& req, bool stranger) {
         const std::string suffix = b.substr(a.size() + 1);
         for (const char* precision : {"float", "float32", "float64", "double", "single", "sp", "dp", "f32", "f64"})
           if (suffix == precision)
-            throw std::invalid_argument("--pkg " + a + " and --pkg " + b + " are two builds of one library (in another "
+            throw std::invalid_argument("--pkg " + a + " and --pkg " + b +
+                                        " are two builds of one library (in another "
                                         "precision): a program linking both mixes them; give one of them");
       }
   for (const auto& p : pkgs) {
@@ -306,8 +327,9 @@ LibraryFlags resolve_library_flags(const LibraryRequest& req, bool stranger) {
   append_once(out.compile, stranger ? canonical_folders(req.cxxflags) : req.cxxflags);
   append_once(out.link, stranger ? canonical_folders(req.ldflags) : req.ldflags);
   if (!refused.empty()) {
-    std::string msg = "flags refused for a file checked in untrusted mode (its compiler runs in the sandbox, which may "
-                      "read the system's headers and libraries and nothing else of this machine):";
+    std::string msg =
+        "flags refused for a file checked in untrusted mode (its compiler runs in the sandbox, which may "
+        "read the system's headers and libraries and nothing else of this machine):";
     for (const auto& r : refused) msg += "\n  " + r;
     throw std::invalid_argument(msg);
   }
@@ -353,8 +375,9 @@ std::string missing_header_hint(const std::string& out) {
              "` in the file)";
     // Several packages hold it: builds of one library (single and double precision, say), each an
     // alternative to the others; given together, a program would mix them.
-    hint += "; give one of its packages, not several (each is another build of the library, such as single or double "
-            "precision):";
+    hint +=
+        "; give one of its packages, not several (each is another build of the library, such as single or double "
+        "precision):";
     bool first = true;
     for (const auto& p : pkgs) hint += std::string(first ? " " : " or ") + "--pkg " + p, first = false;
     return hint;
@@ -364,9 +387,10 @@ std::string missing_header_hint(const std::string& out) {
     for (const auto& d : dirs) hint += " " + d;
     return hint + "; give that folder: --cxxflags -I" + *dirs.begin();
   }
-  return hint + "if it belongs to a library, install the library's development package and give its pkg-config name, "
-                "--pkg NAME (or the line `// geomech: pkg NAME` in the file; `pkg-config --list-all` lists them), or "
-                "its folders with --cxxflags -IDIR and its libraries with --ldflags -lNAME";
+  return hint +
+         "if it belongs to a library, install the library's development package and give its pkg-config name, "
+         "--pkg NAME (or the line `// geomech: pkg NAME` in the file; `pkg-config --list-all` lists them), or "
+         "its folders with --cxxflags -IDIR and its libraries with --ldflags -lNAME";
 }
 
 }  // namespace gm::harness

@@ -83,8 +83,8 @@ SubjectSet assemble(const std::string& name_in, harness::SubjectInfo& info, cons
   const PartInfo* any = r.d_info ? &*r.d_info : r.mp_info ? &*r.mp_info : r.q_info ? &*r.q_info : nullptr;
   s.name = !name_in.empty() ? name_in : any ? first_identifier(any->registration) : "student";
   s.description = any && !any->description.empty() ? any->description
-                  : any ? "GEOMECH_STUDENT(" + any->registration + ")"
-                        : "no GEOMECH_STUDENT registration was found";
+                  : any                            ? "GEOMECH_STUDENT(" + any->registration + ")"
+                                                   : "no GEOMECH_STUDENT registration was found";
   if (!any)
     info.warnings.push_back(
         "the program registered no implementation: the source needs GEOMECH_STUDENT(YourStruct, ...) at namespace "
@@ -119,7 +119,9 @@ SubjectSet assemble(const std::string& name_in, harness::SubjectInfo& info, cons
     if (mp_missing || q_missing)
       info.warnings.push_back(
           std::string("nothing is written as a template on the scalar, so nothing is checked in ") +
-          (mp_missing && q_missing ? "50 digits (mp50) or exact rationals (exact)" : mp_missing ? "50 digits (mp50)" : "exact rationals (exact)") +
+          (mp_missing && q_missing ? "50 digits (mp50) or exact rationals (exact)"
+           : mp_missing            ? "50 digits (mp50)"
+                                   : "exact rationals (exact)") +
           ": write `template <class T> static Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& Pi)` and so on");
   }
   for (const auto& [slot, why] : info.slot_notes["double"])

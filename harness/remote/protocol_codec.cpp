@@ -27,9 +27,12 @@ std::string encode_scalar(const Rational& x) {
 
 const char* lie_algebra_word(LieAlgebraId g) {
   switch (g) {
-    case LieAlgebraId::so3: return "so3";
-    case LieAlgebraId::so4: return "so4";
-    case LieAlgebraId::sl2: return "sl2";
+    case LieAlgebraId::so3:
+      return "so3";
+    case LieAlgebraId::so4:
+      return "so4";
+    case LieAlgebraId::sl2:
+      return "sl2";
   }
   return "?";
 }
@@ -116,8 +119,9 @@ Real50 decode_scalar<Real50>(const json& j, const std::string& what, Values valu
   if (s.find('/') != std::string::npos) return convert<Real50>(parse_rational(s, what));
   double special;
   if (values == Values::any && non_finite_word(s, special))
-    return std::isnan(special) ? std::numeric_limits<Real50>::quiet_NaN()
-                               : (special > 0 ? std::numeric_limits<Real50>::infinity() : -std::numeric_limits<Real50>::infinity());
+    return std::isnan(special)
+               ? std::numeric_limits<Real50>::quiet_NaN()
+               : (special > 0 ? std::numeric_limits<Real50>::infinity() : -std::numeric_limits<Real50>::infinity());
   try {
     return from_decimal<Real50>(s);
   } catch (const std::invalid_argument& e) {

@@ -152,13 +152,15 @@ X decode(const json& j, const std::string& what, Values values = Values::finite)
       X v(static_cast<Eigen::Index>(j.size()));
       for (std::size_t i = 0; i < j.size(); ++i) {
         if (j[i].is_array()) throw bad("expected a vector, got a nested array at entry " + std::to_string(i));
-        v(static_cast<Eigen::Index>(i)) = decode_entry<T>(j[i], [&] { return what + "[" + std::to_string(i) + "]"; }, values);
+        v(static_cast<Eigen::Index>(i)) = decode_entry<T>(
+            j[i], [&] { return what + "[" + std::to_string(i) + "]"; }, values);
       }
       return v;
     } else {
       const std::size_t rows = j.size();
       if (X::RowsAtCompileTime != Eigen::Dynamic && rows != static_cast<std::size_t>(X::RowsAtCompileTime))
-        throw bad("expected a matrix of " + std::to_string(X::RowsAtCompileTime) + " rows, got " + std::to_string(rows));
+        throw bad("expected a matrix of " + std::to_string(X::RowsAtCompileTime) + " rows, got " +
+                  std::to_string(rows));
       if (rows == 0) return X(0, 0);
       if (!j[0].is_array()) throw bad("expected a matrix (an array of rows), got a flat array");
       const std::size_t cols = j[0].size();
@@ -167,7 +169,8 @@ X decode(const json& j, const std::string& what, Values values = Values::finite)
       X m(static_cast<Eigen::Index>(rows), static_cast<Eigen::Index>(cols));
       for (std::size_t r = 0; r < rows; ++r) {
         if (!j[r].is_array() || j[r].size() != cols)
-          throw bad("row " + std::to_string(r) + " is not an array of " + std::to_string(cols) + " entries (rows differ)");
+          throw bad("row " + std::to_string(r) + " is not an array of " + std::to_string(cols) +
+                    " entries (rows differ)");
         for (std::size_t c = 0; c < cols; ++c)
           m(static_cast<Eigen::Index>(r), static_cast<Eigen::Index>(c)) = decode_entry<T>(
               j[r][c], [&] { return what + "[" + std::to_string(r) + "][" + std::to_string(c) + "]"; }, values);

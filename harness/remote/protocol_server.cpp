@@ -28,7 +28,8 @@ struct ServedSlot<T, R(A...)> {
     return invoke(f, args, who, std::index_sequence_for<A...>{});
   }
   template <std::size_t... k>
-  static json invoke(const std::function<R(A...)>& f, const json& args, const std::string& who, std::index_sequence<k...>) {
+  static json invoke(const std::function<R(A...)>& f, const json& args, const std::string& who,
+                     std::index_sequence<k...>) {
     return encode<T>(f(decode<T, std::decay_t<A>>(args[k], who + " argument " + std::to_string(k + 1))...));
   }
 };
@@ -57,22 +58,22 @@ json call_in(const Subject<T>* s, const json& c) {
               in.rigid_body_step, args, who);
         if (slot == "manakov_step" && in.manakov_step)
           return ServedSlot<T, ManakovState<T>(const MatX<T>&, const ManakovState<T>&, const T&)>::call(in.manakov_step,
-                                                                                                         args, who);
+                                                                                                        args, who);
         if (slot == "clebsch_step" && in.clebsch_step)
           return ServedSlot<T, Vec3Pair<T>(const Vec3<T>&, const Vec3Pair<T>&, const T&)>::call(in.clebsch_step, args,
-                                                                                                  who);
+                                                                                                who);
         if (slot == "manakov_clebsch_step" && in.manakov_clebsch_step)
           return ServedSlot<T, MatXPair<T>(const MatX<T>&, const MatXPair<T>&, const T&)>::call(in.manakov_clebsch_step,
-                                                                                                  args, who);
+                                                                                                args, who);
         throw std::runtime_error("integrator '" + name + "' has no " + slot + " in " + scalar_word<T>());
       }
       throw std::runtime_error("no integrator is named '" + name + "'");
     }
   }
-#define GM_SERVE_SLOT(name, sig, place, meaning)                                              \
-  if (slot == #name) {                                                                        \
+#define GM_SERVE_SLOT(name, sig, place, meaning)                                                          \
+  if (slot == #name) {                                                                                    \
     if (!s->name) throw std::runtime_error(std::string(#name " is not provided in ") + scalar_word<T>()); \
-    return ServedSlot<T, sig>::call(s->name, args, #name);                                    \
+    return ServedSlot<T, sig>::call(s->name, args, #name);                                                \
   }
   GM_SUBJECT_SLOTS(GM_SERVE_SLOT)
 #undef GM_SERVE_SLOT
@@ -93,11 +94,13 @@ json domain_json(const StepDomain& d) {
   return j;
 }
 
-
 }  // namespace
 
 json hello_for(const SubjectSet& s, const harness::SubjectInfo& info, const std::string& language) {
-  json h{{"protocol", kProtocolName}, {"version", kProtocolVersion}, {"language", language}, {"description", s.description}};
+  json h{{"protocol", kProtocolName},
+         {"version", kProtocolVersion},
+         {"language", language},
+         {"description", s.description}};
   json slots = json::object();
   json integrators = json::array();
   auto describe = [&](const auto* sub, const char* scalar) {
@@ -109,7 +112,8 @@ json hello_for(const SubjectSet& s, const harness::SubjectInfo& info, const std:
     using T = typename std::remove_pointer_t<decltype(sub)>::Scalar;
     if constexpr (!is_exact_v<T>)
       for (const auto& in : sub->integrators) {
-        auto it = std::find_if(integrators.begin(), integrators.end(), [&](const json& j) { return j["name"] == in.name; });
+        auto it =
+            std::find_if(integrators.begin(), integrators.end(), [&](const json& j) { return j["name"] == in.name; });
         if (it == integrators.end()) {
           json steps = json::array();
           if (in.rigid_body_step) steps.push_back("rigid_body_step");
@@ -166,7 +170,8 @@ json answer(const SubjectSet& s, const json& request) {
         // step's argument, as if the harness had made the calls one by one.
         const int n = c["repeat"].is_number_integer() ? c["repeat"].get<int>() : 0;
         if (!c.contains("integrator") || n < 1 || !c.contains("args") || !c["args"].is_array() || c["args"].size() != 3)
-          throw std::runtime_error("\"repeat\" needs an integrator's step, its three arguments and a count of at least 1");
+          throw std::runtime_error(
+              "\"repeat\" needs an integrator's step, its three arguments and a count of at least 1");
         json call = c;
         v = json::array();
         for (int k = 0; k < n; ++k) {
@@ -249,7 +254,9 @@ int serve_requests(const SubjectSet& s, LineReader& in, int out, bool in_session
       // implementation as the handshake left it and leaves nothing behind.
       int done[2];
       if (::pipe(done) != 0) {
-        write_all(out, json{{"id", id}, {"fatal", std::string("cannot create a pipe: ") + std::strerror(errno)}}.dump() + "\n");
+        write_all(
+            out,
+            json{{"id", id}, {"fatal", std::string("cannot create a pipe: ") + std::strerror(errno)}}.dump() + "\n");
         return 2;
       }
       const pid_t pid = ::fork();
@@ -264,8 +271,7 @@ int serve_requests(const SubjectSet& s, LineReader& in, int out, bool in_session
       int status = 0;
       bool ended = false;
       if (pid > 0) {
-        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-        }
+        while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
         // Ended only if the copy said so with its 'E' and then exited normally: code under test
         // that writes into every descriptor it finds (examples/hostile/forged_verdict.cpp) reaches
         // this pipe too, and must not pass for a session that ended.

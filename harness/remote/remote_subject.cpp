@@ -46,7 +46,6 @@ bool write_all(int fd, const std::string& text) {
   return true;
 }
 
-
 std::string slot_table_json() {
   json t;
   t["protocol"] = kProtocolName;
@@ -94,7 +93,8 @@ void drain_output(ServerProcess& s) {
 }
 
 std::string with_output(const ServerProcess& s) {
-  std::string tail = s.output_tail.size() > 4000 ? "..." + s.output_tail.substr(s.output_tail.size() - 4000) : s.output_tail;
+  std::string tail =
+      s.output_tail.size() > 4000 ? "..." + s.output_tail.substr(s.output_tail.size() - 4000) : s.output_tail;
   while (!tail.empty() && (tail.back() == '\n' || tail.back() == '\r')) tail.pop_back();
   return tail.empty() ? std::string() : "\nwhat it printed last:\n" + tail;
 }
@@ -119,8 +119,10 @@ void Connection::kill_server(ServerProcess& s) {
   if (s.pid > 0) {
     bool gone = false;
     for (int i = 0; i < 50 && !gone; ++i) {
-      if (::waitpid(s.pid, nullptr, WNOHANG) == s.pid) gone = true;
-      else ::usleep(2000);
+      if (::waitpid(s.pid, nullptr, WNOHANG) == s.pid)
+        gone = true;
+      else
+        ::usleep(2000);
     }
     ::kill(-s.pid, SIGKILL);  // its process group: a session's copy too
     if (!gone) {
@@ -207,7 +209,8 @@ std::string Connection::died(ServerProcess& s, const std::string& otherwise) {
         const int code = WEXITSTATUS(status);
         std::string how = "exited with status " + std::to_string(code);
         // A sandbox (bwrap) or a shell passes on a signal's death as 128 + the signal's number.
-        if (code > 128 && code < 128 + 65) how += " (128 + " + std::to_string(code - 128) + ": " + strsignal(code - 128) + ")";
+        if (code > 128 && code < 128 + 65)
+          how += " (128 + " + std::to_string(code - 128) + ": " + strsignal(code - 128) + ")";
         return how;
       }
       if (WIFSIGNALED(status)) return std::string("was killed by signal ") + strsignal(WTERMSIG(status));
@@ -288,13 +291,18 @@ json Connection::request_text(ServerProcess& s, const std::string& text, long id
     throw RemoteError("the implementation answered " + what + " with something that is not JSON (" + e.what() +
                       "): " + line.substr(0, 300) + with_output(s));
   }
-  if (!rep.is_object()) throw RemoteError("the implementation's reply to " + what + " is not a JSON object: " + line.substr(0, 300));
+  if (!rep.is_object())
+    throw RemoteError("the implementation's reply to " + what + " is not a JSON object: " + line.substr(0, 300));
   if (rep.contains("died"))
-    throw RemoteError("the implementation's process " + harness::bounded_text(rep["died"].is_string() ? rep["died"].get<std::string>() : rep["died"].dump()) +
-                      " while answering " + what + with_output(s));
+    throw RemoteError(
+        "the implementation's process " +
+        harness::bounded_text(rep["died"].is_string() ? rep["died"].get<std::string>() : rep["died"].dump()) +
+        " while answering " + what + with_output(s));
   if (rep.contains("fatal"))
-    throw RemoteError("the implementation's server failed on " + what + ": " +
-                      harness::bounded_text(rep["fatal"].is_string() ? rep["fatal"].get<std::string>() : rep["fatal"].dump()) + with_output(s));
+    throw RemoteError(
+        "the implementation's server failed on " + what + ": " +
+        harness::bounded_text(rep["fatal"].is_string() ? rep["fatal"].get<std::string>() : rep["fatal"].dump()) +
+        with_output(s));
   if (!rep.contains("id") || rep["id"] != id)
     throw RemoteError("the implementation's reply to " + what + " answers another request (id " +
                       (rep.contains("id") ? rep["id"].dump() : std::string("missing")) + ", expected " +
@@ -405,9 +413,10 @@ std::vector<Reply> Connection::exchange(const std::vector<Call>& calls, const st
     req += '}';
   }
   req += "]}";
-  const std::string what = calls.empty() ? std::string("an empty request")
-                                         : "the call of '" + (calls[0].integrator.empty() ? "" : calls[0].integrator + ".") +
-                                               calls[0].slot + "' (" + calls[0].scalar + ")";
+  const std::string what = calls.empty()
+                               ? std::string("an empty request")
+                               : "the call of '" + (calls[0].integrator.empty() ? "" : calls[0].integrator + ".") +
+                                     calls[0].slot + "' (" + calls[0].scalar + ")";
   const int w = harness::current_worker();
   ServerProcess& s = server_for_this_process();
   const bool session = me != owner_ && sessions_ && session_pid_ == me && abandoned_pid_ != me;
@@ -417,7 +426,8 @@ std::vector<Reply> Connection::exchange(const std::vector<Call>& calls, const st
     const auto asked = std::chrono::steady_clock::now();
     ++protocol_counts().round_trips;
     rep = request_text(s, req, id, what, 0);
-    protocol_counts().waiting_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
+    protocol_counts().waiting_seconds +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - asked).count();
     if (!rep.contains("results") || !rep["results"].is_array() || rep["results"].size() != calls.size())
       throw RemoteError("the implementation's reply to " + what + " has no \"results\" array of " +
                         std::to_string(calls.size()) + " entries: " + rep.dump().substr(0, 300));
@@ -478,9 +488,11 @@ json Connection::call(const Call& c) {
   if (known) {
     const std::string differs = CallMemo::compare(*known, r[0].result);
     if (!differs.empty())
-      throw RemoteCallError(function() + " answered the same arguments twice, differently (is it a function of its "
+      throw RemoteCallError(function() +
+                            " answered the same arguments twice, differently (is it a function of its "
                             "arguments only? a persistent or global variable, or a random draw, makes it not):\n"
-                            "  arguments: " + args_text.substr(0, 400) + "\n  " + differs);
+                            "  arguments: " +
+                            args_text.substr(0, 400) + "\n  " + differs);
     return std::move(r[0].result);
   }
   if (c.repeat == 0) {
@@ -500,8 +512,9 @@ RemoteDescription parse_hello(const json& h) {
   auto bad = [](const std::string& why) { return RemoteError("handshake: " + why); };
   if (!h.is_object()) throw bad("not a JSON object");
   if (h.contains("fatal"))
-    throw RemoteError("the implementation could not start: " +
-                      harness::bounded_text(h["fatal"].is_string() ? h["fatal"].get<std::string>() : h["fatal"].dump()));
+    throw RemoteError("the implementation could not start: " + harness::bounded_text(h["fatal"].is_string()
+                                                                                         ? h["fatal"].get<std::string>()
+                                                                                         : h["fatal"].dump()));
   if (h.value("protocol", "") != kProtocolName)
     throw bad(std::string("\"protocol\" must be \"") + kProtocolName + "\"");
   if (!h.contains("version") || !h["version"].is_number_integer() || h["version"].get<int>() != kProtocolVersion)
@@ -509,7 +522,9 @@ RemoteDescription parse_hello(const json& h) {
               (h.contains("version") ? h["version"].dump() : std::string("none")));
   RemoteDescription d;
   d.language = h.value("language", "unknown");
-  d.language_version = h.contains("language_version") && h["language_version"].is_string() ? h["language_version"].get<std::string>() : "";
+  d.language_version = h.contains("language_version") && h["language_version"].is_string()
+                           ? h["language_version"].get<std::string>()
+                           : "";
   d.interpreter = h.contains("interpreter") && h["interpreter"].is_string() ? h["interpreter"].get<std::string>() : "";
   d.description = h.value("description", "");
   if (h.contains("slots")) {
@@ -533,7 +548,8 @@ RemoteDescription parse_hello(const json& h) {
       // An integrator's name names figures and report sections and is typed in --integrator:
       // letters, digits and "_.-", at most 64 (it is the submission's text).
       if (x.name.empty() || x.name.size() > 64 ||
-          x.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") != std::string::npos)
+          x.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") !=
+              std::string::npos)
         throw bad("an integrator's name must be 1 to 64 letters, digits, '_', '.' or '-'; got '" +
                   harness::inert_text(harness::bounded_text(x.name, 200)) + "'");
       for (const auto& s : i.value("steps", json::array())) x.steps.push_back(s.get<std::string>());
@@ -556,8 +572,9 @@ RemoteDescription parse_hello(const json& h) {
             const std::string guess = harness::closest_claim(k, names);
             std::string list;
             for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-            d.unchecked.push_back("integrator '" + x.name + "' claims '" + k + "', which is not a claim the suite knows, so " +
-                                  "nothing can verify it" + (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
+            d.unchecked.push_back("integrator '" + x.name + "' claims '" + k +
+                                  "', which is not a claim the suite knows, so " + "nothing can verify it" +
+                                  (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
                                   " The claims are: " + list);
           }
       }
@@ -608,7 +625,8 @@ RemoteDescription parse_hello(const json& h) {
     for (const auto& w : list)
       if (into.size() < kMaxRemarks) into.push_back(text(w));
     if (list.size() > kMaxRemarks)
-      into.push_back(std::to_string(list.size() - kMaxRemarks) + " more " + what + " of the implementation's are not shown");
+      into.push_back(std::to_string(list.size() - kMaxRemarks) + " more " + what +
+                     " of the implementation's are not shown");
   };
   if (h.contains("notes") && h["notes"].is_object())
     for (const auto& [scalar, slots] : h["notes"].items())
@@ -644,12 +662,11 @@ struct RemoteSlot<T, R(A...)> {
       static const std::string unnamed;
       try {
         return decode<T, R>(result, unnamed, values);
-      } catch (const ProtocolValueError&) {
-      }
+      } catch (const ProtocolValueError&) {}
       const std::string who = (integrator.empty() ? std::string() : integrator + ".") + slot;
       try {
-        return decode<T, R>(result, "the result of " + conn->language() + " function '" + who + "' (" +
-                                        scalar_word<T>() + ")", values);
+        return decode<T, R>(
+            result, "the result of " + conn->language() + " function '" + who + "' (" + scalar_word<T>() + ")", values);
       } catch (const ProtocolValueError& e) {
         throw ProtocolValueError(std::string(e.what()) + "; the reply was " + result.dump().substr(0, 300));
       }
@@ -659,11 +676,11 @@ struct RemoteSlot<T, R(A...)> {
 
 // An integrator's run of n steps in one call ("repeat": n): the list of the n states.
 template <class T, class State, class Param>
-std::function<std::vector<State>(const Param&, const State&, const T&, int)> remote_run(std::shared_ptr<Connection> conn,
-                                                                                      const char* slot,
-                                                                                      std::string integrator) {
+std::function<std::vector<State>(const Param&, const State&, const T&, int)> remote_run(
+    std::shared_ptr<Connection> conn, const char* slot, std::string integrator) {
   return [conn, slot, integrator](const Param& p, const State& x, const T& h, int n) {
-    Call c{slot, scalar_word<T>(), json::array({encode<T, Param>(p), encode<T, State>(x), encode<T, T>(h)}), integrator, n};
+    Call c{slot, scalar_word<T>(), json::array({encode<T, Param>(p), encode<T, State>(x), encode<T, T>(h)}), integrator,
+           n};
     const json result = conn->call(c);
     const std::string what = "the run of " + std::to_string(n) + " steps of " + conn->language() + " function '" +
                              integrator + "." + slot + "' (" + scalar_word<T>() + ")";
@@ -685,10 +702,10 @@ std::shared_ptr<Subject<T>> make_part(const std::shared_ptr<Connection>& conn, c
   bool any = false;
   if (it != d.slots.end()) {
     const auto& have = it->second;
-#define GM_REMOTE_SLOT(name, sig, place, meaning)                   \
-  if (have.count(#name)) {                                          \
-    s->name = RemoteSlot<T, sig>::make(conn, #name);                \
-    any = true;                                                     \
+#define GM_REMOTE_SLOT(name, sig, place, meaning)    \
+  if (have.count(#name)) {                           \
+    s->name = RemoteSlot<T, sig>::make(conn, #name); \
+    any = true;                                      \
   }
     GM_SUBJECT_SLOTS(GM_REMOTE_SLOT)
 #undef GM_REMOTE_SLOT
@@ -713,13 +730,14 @@ std::shared_ptr<Subject<T>> make_part(const std::shared_ptr<Connection>& conn, c
           };
           if (d.repeat)
             in.declared_run = [conn, form, name](const Vec3<T>& I, const EngineState<T>& x, const T& h, int n) {
-              Call c{"rigid_body_step", scalar_word<T>(), json::array({encode<T>(I), encode<T>(x), encode<T>(h)}), name, n};
+              Call c{"rigid_body_step", scalar_word<T>(), json::array({encode<T>(I), encode<T>(x), encode<T>(h)}), name,
+                     n};
               const json result = conn->call(c);
               const std::string what = "the run of " + std::to_string(n) + " steps of " + conn->language() +
                                        " function '" + name + ".rigid_body_step' (" + scalar_word<T>() + ")";
               if (!result.is_array() || static_cast<int>(result.size()) != n)
-                throw ProtocolValueError(what + ": expected a list of " + std::to_string(n) + " states; the reply was " +
-                                         result.dump().substr(0, 300));
+                throw ProtocolValueError(what + ": expected a list of " + std::to_string(n) +
+                                         " states; the reply was " + result.dump().substr(0, 300));
               std::vector<EngineState<T>> out;
               for (const auto& r : result) out.push_back(decode_engine_state<T>(r, form, what));
               return out;
@@ -727,16 +745,16 @@ std::shared_ptr<Subject<T>> make_part(const std::shared_ptr<Connection>& conn, c
           adapt_declared_step(in);
         } else if (step == "rigid_body_step") {
           in.rigid_body_step =
-              RemoteSlot<T, RigidBodyState<T>(const Vec3<T>&, const RigidBodyState<T>&, const T&)>::make(conn, "rigid_body_step", i.name);
+              RemoteSlot<T, RigidBodyState<T>(const Vec3<T>&, const RigidBodyState<T>&, const T&)>::make(
+                  conn, "rigid_body_step", i.name);
           if (d.repeat) in.rigid_body_run = remote_run<T, RigidBodyState<T>, Vec3<T>>(conn, "rigid_body_step", i.name);
         } else if (step == "manakov_step") {
-          in.manakov_step =
-              RemoteSlot<T, ManakovState<T>(const MatX<T>&, const ManakovState<T>&, const T&)>::make(conn, "manakov_step", i.name);
+          in.manakov_step = RemoteSlot<T, ManakovState<T>(const MatX<T>&, const ManakovState<T>&, const T&)>::make(
+              conn, "manakov_step", i.name);
           if (d.repeat) in.manakov_run = remote_run<T, ManakovState<T>, MatX<T>>(conn, "manakov_step", i.name);
-        }
-        else if (step == "clebsch_step")
-          in.clebsch_step =
-              RemoteSlot<T, Vec3Pair<T>(const Vec3<T>&, const Vec3Pair<T>&, const T&)>::make(conn, "clebsch_step", i.name);
+        } else if (step == "clebsch_step")
+          in.clebsch_step = RemoteSlot<T, Vec3Pair<T>(const Vec3<T>&, const Vec3Pair<T>&, const T&)>::make(
+              conn, "clebsch_step", i.name);
         else if (step == "manakov_clebsch_step")
           in.manakov_clebsch_step = RemoteSlot<T, MatXPair<T>(const MatX<T>&, const MatXPair<T>&, const T&)>::make(
               conn, "manakov_clebsch_step", i.name);
@@ -750,7 +768,8 @@ std::shared_ptr<Subject<T>> make_part(const std::shared_ptr<Connection>& conn, c
 
 }  // namespace
 
-SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::string& name, harness::SubjectInfo& info) {
+SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::string& name,
+                          harness::SubjectInfo& info) {
   const RemoteDescription d = parse_hello(conn->hello());
   // The server that answered the handshake stays: it is worker 0's. With sessions, each check opens
   // one on its worker's server; without, each check's process starts its own copy.
@@ -786,9 +805,11 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   for (const auto& i : d.integrators)
     if (i.has_claims) s.claims.push_back(i.claims);
   for (const auto& i : d.integrators)
-    if (!i.claims.precision.empty()) {  // the author's own words: shown as inert text (the lead's md helpers after issue 46)
+    if (!i.claims.precision
+             .empty()) {  // the author's own words: shown as inert text (the lead's md helpers after issue 46)
       auto& c = s.claims[static_cast<std::size_t>(
-          std::find_if(s.claims.begin(), s.claims.end(), [&](const IntegratorClaims& x) { return x.integrator == i.name; }) -
+          std::find_if(s.claims.begin(), s.claims.end(),
+                       [&](const IntegratorClaims& x) { return x.integrator == i.name; }) -
           s.claims.begin())];
       c.precision = harness::inert_text(c.precision);
       c.precision_reason = harness::inert_text(c.precision_reason);
@@ -799,10 +820,13 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   if (d.language == "python" || d.language == "octave") info.language = d.language;
   // Which interpreter ran it, and its version, as the server says.
   if (!d.interpreter.empty())
-    info.interpreter = harness::inert_text(d.interpreter) +
-                       (d.language_version.empty() ? std::string()
-                                                   : " (" + std::string(d.language == "python" ? "Python " : d.language == "octave" ? "Octave " : "") +
-                                                         harness::inert_text(d.language_version) + ")");
+    info.interpreter = harness::inert_text(d.interpreter) + (d.language_version.empty()
+                                                                 ? std::string()
+                                                                 : " (" +
+                                                                       std::string(d.language == "python"   ? "Python "
+                                                                                   : d.language == "octave" ? "Octave "
+                                                                                                            : "") +
+                                                                       harness::inert_text(d.language_version) + ")");
   // "did you mean" for a function named like a slot but not as one (`energy`, `euler`), as for C++.
   if (!info.source.empty() && !info.language.empty()) {
     std::vector<std::string> names;
@@ -897,8 +921,13 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
   if (p.extension() == ".m" || (fs::is_directory(p, ec) && !fs::is_empty(p, ec))) {
     if (language) *language = "octave";
     if (const std::string embedded = octave_server_program(); !embedded.empty()) return {embedded, file};
-    return {octave_interpreter(), "--no-gui", "--quiet", "--no-init-file", "--no-history",
-            suite_data_path("student/octave/geomech_server.m"), file};
+    return {octave_interpreter(),
+            "--no-gui",
+            "--quiet",
+            "--no-init-file",
+            "--no-history",
+            suite_data_path("student/octave/geomech_server.m"),
+            file};
   }
   if (why) *why = "not a .py or .m file (nor a folder of .m files)";
   return {};

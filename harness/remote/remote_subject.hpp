@@ -67,9 +67,9 @@ std::string slot_table_json();
 // One running copy of the implementation's program and its pipes.
 struct ServerProcess {
   pid_t pid = -1;
-  int to = -1;       // its standard input: requests
-  int replies = -1;  // its descriptor 3: the protocol's replies
-  int output = -1;   // its standard output and error: what the implementation prints
+  int to = -1;              // its standard input: requests
+  int replies = -1;         // its descriptor 3: the protocol's replies
+  int output = -1;          // its standard output and error: what the implementation prints
   std::string buffer;       // reply bytes read but not yet taken
   std::string output_tail;  // the end of what it printed
   bool running() const { return pid > 0; }
@@ -171,7 +171,7 @@ struct RemoteDescription {
   std::vector<Integrator> integrators;
   std::map<std::string, std::map<std::string, std::string>> notes;  // scalar -> slot -> reason
   std::vector<std::string> warnings;
-  std::vector<std::string> unchecked;                      // written but not checkable (fails the check)
+  std::vector<std::string> unchecked;                     // written but not checkable (fails the check)
   std::map<std::string, std::string> scalar_unavailable;  // scalar -> why nothing is provided there
   bool repeat = false;  // the server takes "repeat" on an integrator's step (a run of steps in one call)
 };

@@ -19,11 +19,14 @@ const std::map<std::string_view, std::string>& table() {
       {"vee", "fixed by (2.11): vee(m) = (m(3,2), m(1,3), m(2,1)) for skew m"},
       {"pairing", "fixed by (2.15): <A, B> = tr(A^T B) / 2, for any n x n matrices (n = 2..6), not only skew ones"},
       {"hat_n",
-       std::string("free: the coordinates of so(n), at every n (n = 3 included; agreeing with (2.11) there is "
-                   "recommended): each coordinate is one entry above the diagonal, with its negative below; their order "
-                   "and signs are yours. The suite learns them from hat_n(e_k, n) and checks vee_n, so4_bracket_R6 and "
-                   "ad_star_so4_R6 in them. ") + kDocumentedSoN},
-      {"vee_n", "follows hat_n: reads back the coordinates hat_n writes; without hat_n, the documented ones (see hat_n)"},
+       std::string(
+           "free: the coordinates of so(n), at every n (n = 3 included; agreeing with (2.11) there is "
+           "recommended): each coordinate is one entry above the diagonal, with its negative below; their order "
+           "and signs are yours. The suite learns them from hat_n(e_k, n) and checks vee_n, so4_bracket_R6 and "
+           "ad_star_so4_R6 in them. ") +
+           kDocumentedSoN},
+      {"vee_n",
+       "follows hat_n: reads back the coordinates hat_n writes; without hat_n, the documented ones (see hat_n)"},
       {"lie_hat",
        "free: the basis of each algebra. so(3), so(4): coordinates as for hat_n (order and signs yours); sl(2, R): any "
        "three traceless 2 x 2 matrices forming a basis (documented: (a, b, c) -> [[a, b], [c, -a]]). The suite learns "
@@ -32,11 +35,14 @@ const std::map<std::string_view, std::string>& table() {
       {"ad_star",
        "in lie_hat's basis (documented without it); the pairing of g* with g is that of the dual basis, "
        "<mu, xi> = mu_k xi^k, so (ad*_xi mu)_k = <mu, [xi, e_k]>"},
-      {"so4_bracket_R6", "in hat_n's coordinates of so(4) (documented without hat_n): [a, b] = vee_4([hat_4(a), hat_4(b)])"},
-      {"ad_star_so4_R6", "in hat_n's coordinates of so(4) (documented without hat_n), dual-basis pairing as for ad_star"},
+      {"so4_bracket_R6",
+       "in hat_n's coordinates of so(4) (documented without hat_n): [a, b] = vee_4([hat_4(a), hat_4(b)])"},
+      {"ad_star_so4_R6",
+       "in hat_n's coordinates of so(4) (documented without hat_n), dual-basis pairing as for ad_star"},
       {"euler_3_8", "fixed by (3.8): dPi/dt = Pi x Omega with Omega = I^-1 Pi (I the principal moments, a 3-vector)"},
       {"euler_matrix_2_12", "fixed by (2.12): Pi_hat and the result are skew matrices in the hat convention (2.11)"},
-      {"lie_poisson_2_23", "gradients as skew matrices in the hat convention (2.11); {f, h} = -<Pi, [df, dh]> with (2.15)"},
+      {"lie_poisson_2_23",
+       "gradients as skew matrices in the hat convention (2.11); {f, h} = -<Pi, [df, dh]> with (2.15)"},
       {"canonical_bracket", "sign fixed: {f, h} = df/dq . dh/dp - df/dp . dh/dq, so {q_i, p_j} = delta_ij"},
       {"momentum_map", "sign fixed by the momentum-map section: J(q, p) = p x q (not q x p)"},
       {"clebsch_3_21", "Pi = P x Q (3.21); returns the pair (dQ/dt, dP/dt)"},
@@ -45,12 +51,14 @@ const std::map<std::string_view, std::string>& table() {
        "left-invariant; not Omega_hat O)"},
       {"spatial_momentum", "fixed: pi = Ad*_{O^-1} Pi = O Pi (erratum s2.noether: not O^T Pi, not O^-1 Pi O)"},
       {"inertia_space", "I_space = O diag(I) O^T, O mapping body to space"},
-      {"inertia_tensor_2_3", "the points are the columns of X (3 x N), their masses m (N); I = sum m_k (|X_k|^2 Id - X_k X_k^T)"},
+      {"inertia_tensor_2_3",
+       "the points are the columns of X (3 x N), their masses m (N); I = sum m_k (|X_k|^2 Id - X_k X_k^T)"},
       {"inertia_bilinear_2_3", "the points are the columns of X (3 x N), as for inertia_tensor_2_3"},
       {"manakov_M", "A is any symmetric positive definite n x n matrix (not only diagonal); M = A Omega + Omega A"},
       {"manakov_Omega", "A symmetric positive definite, not only diagonal: Omega solves A Omega + Omega A = M"},
       {"manakov_2_34", "dM/dt = [M, Omega] = M Omega - Omega M, Omega from A Omega + Omega A = M"},
-      {"manakov_clebsch_3_23", "M = Q^T P - P^T Q (erratum mm.manakov-clebsch); returns (dQ/dt, dP/dt) = (Q Omega, P Omega)"},
+      {"manakov_clebsch_3_23",
+       "M = Q^T P - P^T Q (erratum mm.manakov-clebsch); returns (dQ/dt, dP/dt) = (Q Omega, P Omega)"},
   };
   return t;
 }
@@ -67,18 +75,21 @@ std::string integrator_interface(const std::string& language) {
   const char* state =
       "The state of the rigid body is (Pi, O): Pi the body angular momentum, O in SO(3) mapping body coordinates to "
       "space coordinates, moving by dO/dt = O Omega_hat (2.10) with Omega = I^-1 Pi (3.5); Pi moves by (3.8). "
-      "Manakov's state is (M, O): M in so(n), O in SO(n), dO/dt = O Omega. The canonical steps act on (Q, P): 3-vectors "
+      "Manakov's state is (M, O): M in so(n), O in SO(n), dO/dt = O Omega. The canonical steps act on (Q, P): "
+      "3-vectors "
       "of (3.21), or n x n matrices of (3.23).";
   std::string out = std::string("Integrators. ") + state + "\n";
   if (language == "python") {
     out +=
         "  class Midpoint:                           # one class (or dict) per integrator, at module level\n"
         "      name = \"midpoint\"\n"
-        "      claims = {\"order\": 2, \"casimir\": True}  # keys: order symmetric casimir energy orthogonality spectrum\n"
+        "      claims = {\"order\": 2, \"casimir\": True}  # keys: order symmetric casimir energy orthogonality "
+        "spectrum\n"
         "                                            #   poisson noether equivariant bounded_energy symplectic\n"
         "      def rigid_body_step(I, x, h):         # I: 3-list, x[\"Pi\"]: 3-list, x[\"O\"]: 3x3 list of rows\n"
         "          return {\"Pi\": Pi, \"O\": O}         # or the pair (Pi, O)\n"
-        "      # manakov_step(A, x, h): x[\"M\"], x[\"O\"] n x n; clebsch_step(I, QP, h), manakov_clebsch_step(A, QP, h):\n"
+        "      # manakov_step(A, x, h): x[\"M\"], x[\"O\"] n x n; clebsch_step(I, QP, h), manakov_clebsch_step(A, QP, "
+        "h):\n"
         "      # QP the pair (Q, P); h a float or an mpmath.mpf (steps are not run in rationals)\n";
   } else if (language == "octave") {
     out +=
@@ -87,7 +98,8 @@ std::string integrator_interface(const std::string& language) {
         "                  'rigid_body_step', @midpoint_step);\n"
         "  end\n"
         "  function x = midpoint_step(I, x0, h)      % I: 3x1; x0.Pi: 3x1 column; x0.O: 3x3; return x.Pi, x.O\n"
-        "  % manakov_step(A, x, h): x.M, x.O n x n; clebsch_step(I, QP, h), manakov_clebsch_step(A, QP, h): QP = {Q, P}\n"
+        "  % manakov_step(A, x, h): x.M, x.O n x n; clebsch_step(I, QP, h), manakov_clebsch_step(A, QP, h): QP = {Q, "
+        "P}\n"
         "  % claims fields: order symmetric casimir energy orthogonality spectrum poisson noether equivariant\n"
         "  %                bounded_energy symplectic\n";
   } else {

@@ -32,27 +32,48 @@ std::size_t distance(const std::string& a, const std::string& b) {
 // Words students use for a slot, by concept (the index printed by `geomech slots --concepts`).
 const std::vector<std::pair<const char*, const char*>>& aliases() {
   static const std::vector<std::pair<const char*, const char*>> a = {
-      {"energy", "hamiltonian_3_4"},         {"hamiltonian", "hamiltonian_3_4"},
-      {"kinetic_energy", "lagrangian_2_5"},  {"lagrangian", "lagrangian_2_5"},
-      {"euler", "euler_3_8"},                {"euler_equations", "euler_3_8"},
-      {"euler_rhs", "euler_3_8"},            {"rhs", "euler_3_8"},
-      {"vector_field", "euler_3_8"},         {"pi_dot", "euler_3_8"},
-      {"dpi_dt", "euler_3_8"},               {"omega_dot", "euler_2_1"},
-      {"omega", "omega_3_5"},                {"angular_velocity", "omega_3_5"},
-      {"legendre", "legendre_3_1"},          {"body_momentum", "legendre_3_1"},
-      {"angular_momentum", "legendre_3_1"},  {"casimir_function", "casimir"},
-      {"c", "casimir"},                      {"reconstruction", "reconstruction_2_10"},
-      {"attitude", "reconstruction_2_10"},   {"o_dot", "reconstruction_2_10"},
-      {"do_dt", "reconstruction_2_10"},      {"spatial_angular_momentum", "spatial_momentum"},
-      {"noether", "spatial_momentum"},       {"j", "momentum_map"},
-      {"hat_map", "hat"},                    {"skew", "hat"},
-      {"vee_map", "vee"},                    {"unhat", "vee"},
-      {"lie_poisson", "lie_poisson_3_6"},    {"poisson_bracket", "lie_poisson_3_6"},
-      {"bracket", "lie_poisson_3_6"},        {"nambu", "nambu_3_13"},
-      {"nambu_bracket", "nambu_3_13"},       {"clebsch", "clebsch_3_21"},
-      {"inertia", "inertia_tensor_2_3"},     {"inertia_tensor", "inertia_tensor_2_3"},
-      {"manakov", "manakov_2_34"},           {"coadjoint", "ad_star"},
-      {"trace_pairing", "pairing"},          {"inner_product", "pairing"},
+      {"energy", "hamiltonian_3_4"},
+      {"hamiltonian", "hamiltonian_3_4"},
+      {"kinetic_energy", "lagrangian_2_5"},
+      {"lagrangian", "lagrangian_2_5"},
+      {"euler", "euler_3_8"},
+      {"euler_equations", "euler_3_8"},
+      {"euler_rhs", "euler_3_8"},
+      {"rhs", "euler_3_8"},
+      {"vector_field", "euler_3_8"},
+      {"pi_dot", "euler_3_8"},
+      {"dpi_dt", "euler_3_8"},
+      {"omega_dot", "euler_2_1"},
+      {"omega", "omega_3_5"},
+      {"angular_velocity", "omega_3_5"},
+      {"legendre", "legendre_3_1"},
+      {"body_momentum", "legendre_3_1"},
+      {"angular_momentum", "legendre_3_1"},
+      {"casimir_function", "casimir"},
+      {"c", "casimir"},
+      {"reconstruction", "reconstruction_2_10"},
+      {"attitude", "reconstruction_2_10"},
+      {"o_dot", "reconstruction_2_10"},
+      {"do_dt", "reconstruction_2_10"},
+      {"spatial_angular_momentum", "spatial_momentum"},
+      {"noether", "spatial_momentum"},
+      {"j", "momentum_map"},
+      {"hat_map", "hat"},
+      {"skew", "hat"},
+      {"vee_map", "vee"},
+      {"unhat", "vee"},
+      {"lie_poisson", "lie_poisson_3_6"},
+      {"poisson_bracket", "lie_poisson_3_6"},
+      {"bracket", "lie_poisson_3_6"},
+      {"nambu", "nambu_3_13"},
+      {"nambu_bracket", "nambu_3_13"},
+      {"clebsch", "clebsch_3_21"},
+      {"inertia", "inertia_tensor_2_3"},
+      {"inertia_tensor", "inertia_tensor_2_3"},
+      {"manakov", "manakov_2_34"},
+      {"coadjoint", "ad_star"},
+      {"trace_pairing", "pairing"},
+      {"inner_product", "pairing"},
   };
   return a;
 }
@@ -83,7 +104,8 @@ const std::vector<SlotConcept>& slot_concepts() {
       {"Nambu bracket and motion", "nambu_3_13, nambu_motion_3_14"},
       {"Clebsch variables", "clebsch_3_21"},
       {"Manakov's SO(n) body", "manakov_M, manakov_Omega, manakov_2_34, manakov_lagrangian, manakov_clebsch_3_23"},
-      {"an integrator", "rigid_body_step, manakov_step, clebsch_step, manakov_clebsch_step (in a struct with a name and claims)"},
+      {"an integrator",
+       "rigid_body_step, manakov_step, clebsch_step, manakov_clebsch_step (in a struct with a name and claims)"},
   };
   return c;
 }
@@ -159,8 +181,9 @@ std::string did_you_mean(const std::string& name, const std::vector<std::string>
 
 std::vector<std::string> slot_name_advice(const std::vector<std::string>& names) {
   std::vector<std::string> out;
-  static const std::set<std::string> not_slots = {"rigid_body_step", "manakov_step", "clebsch_step", "manakov_clebsch_step", "main", "name", "claims",
-                                                  "description", "operator"};
+  static const std::set<std::string> not_slots = {
+      "rigid_body_step", "manakov_step", "clebsch_step", "manakov_clebsch_step", "main", "name",
+      "claims",          "description",  "operator"};
   for (const auto& name : names) {
     if (is_slot_name(name) || not_slots.count(name)) continue;
     const std::string low = lower(name);

@@ -120,14 +120,15 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
     const std::string slot = slot_of_direct_check(v);
     if (!slot.empty() && first_fixes_.insert(slot).second) {
       // A slot that calls one already named wrong most likely fails through it.
-      if (!calls_) calls_ = stub_.info.source.empty() ? std::map<std::string, std::set<std::string>>{}
-                                                      : slot_calls(stub_.info.source, stub_.info.language);
+      if (!calls_)
+        calls_ = stub_.info.source.empty() ? std::map<std::string, std::set<std::string>>{}
+                                           : slot_calls(stub_.info.source, stub_.info.language);
       std::string callee;
       if (auto it = calls_->find(slot); it != calls_->end())
         for (const auto& c : it->second)
           if (first_fixes_.count(c) && c != slot) callee = c;
-      lead = callee.empty() ? "FIRST FIX: " + slot_named(stub_.info, slot, "'") + " is wrong: its own check " + v.property +
-                                  " fails in " + v.scalar + ": " + first_line(v.message)
+      lead = callee.empty() ? "FIRST FIX: " + slot_named(stub_.info, slot, "'") + " is wrong: its own check " +
+                                  v.property + " fails in " + v.scalar + ": " + first_line(v.message)
                             : "THEN:      " + slot_named(stub_.info, slot, "'") + " fails its own check " + v.property +
                                   " in " + v.scalar + ", and it calls '" + callee + "', which is wrong: fix that first";
     }
@@ -137,18 +138,20 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
               " (the claims whose checks it stops are NOT VERIFIED; the rest NOT CHARACTERISED)";
       // A step written for floats, given 50-digit numbers (an mpf to numpy or math): its precision says so.
       if (v.scalar == "mp50" && stub_.info.language == "python" && v.step_raised.find("TypeError") != std::string::npos)
-        lead += "\n  (a TypeError in 50 digits: a step that computes in double only says so with precision = \"double\" "
-                "in its class, and is then run in double only; docs/STUDENTS.md, \"A step's stated precision\")";
+        lead +=
+            "\n  (a TypeError in 50 digits: a step that computes in double only says so with precision = \"double\" "
+            "in its class, and is then run in double only; docs/STUDENTS.md, \"A step's stated precision\")";
     }
     for (const auto& c : v.claims)
       if (c.claimed && !c.holds && v.step_raised.empty())
-        lead += std::string(lead.empty() ? "" : "\n") + "FALSE CLAIM: integrator '" + v.integrator + "' claims " + c.claim +
-                ": " + c.evidence;
+        lead += std::string(lead.empty() ? "" : "\n") + "FALSE CLAIM: integrator '" + v.integrator + "' claims " +
+                c.claim + ": " + c.evidence;
     if (quiet_) {
       if (!lead.empty()) text << lead << "\n";
       continue;
     }
-    text << "\n" << outcome_name(v.outcome) << "  " << check_name(v) << "  (" << seconds_text(p.elapsed)
+    text << "\n"
+         << outcome_name(v.outcome) << "  " << check_name(v) << "  (" << seconds_text(p.elapsed)
          << " into the check)\n";
     if (!lead.empty()) text << lead << "\n";
     text << head_lines(v.message, 12);

@@ -70,7 +70,8 @@ std::string inline_html(const std::string& s, const MarkdownHtml& o, bool in_lin
       while (i + n < s.size() && s[i + n] == '`') ++n;
       const std::string fence(n, '`');
       std::size_t close = s.find(fence, i + n);
-      while (close != std::string::npos && close + n < s.size() && s[close + n] == '`') close = s.find(fence, close + n + 1);
+      while (close != std::string::npos && close + n < s.size() && s[close + n] == '`')
+        close = s.find(fence, close + n + 1);
       if (close == std::string::npos) {
         out += fence;
         i += n - 1;
@@ -190,8 +191,10 @@ bool anchor_line(const std::string& line, std::string* id) {
 std::string slug(const std::string& text) {
   std::string out;
   for (char c : text) {
-    if (std::isalnum(static_cast<unsigned char>(c))) out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    else if ((c == ' ' || c == '-' || c == '_') && !out.empty() && out.back() != '-') out += '-';
+    if (std::isalnum(static_cast<unsigned char>(c)))
+      out += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    else if ((c == ' ' || c == '-' || c == '_') && !out.empty() && out.back() != '-')
+      out += '-';
   }
   while (!out.empty() && out.back() == '-') out.pop_back();
   return out;
@@ -204,12 +207,23 @@ std::string html_escape(std::string_view text) {
   out.reserve(text.size());
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&#39;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -359,7 +373,8 @@ std::string html_page(const std::string& title, const std::string& body, const s
        "style-src 'unsafe-inline'; script-src 'unsafe-inline'; base-uri 'none'; form-action 'none'\">\n"
     << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n"
     << "<title>" << html_escape(title) << "</title>\n<style>\n"
-    << "body{font-family:system-ui,sans-serif;margin:1.5em auto;max-width:75em;padding:0 1em;line-height:1.45;color:#222}\n"
+    << "body{font-family:system-ui,sans-serif;margin:1.5em auto;max-width:75em;padding:0 "
+       "1em;line-height:1.45;color:#222}\n"
        "table{border-collapse:collapse;margin:1em 0;font-size:.92em}\n"
        "th,td{border:1px solid #ccc;padding:.25em .5em;text-align:left;vertical-align:top}\n"
        "th{background:#f2f2f2}\nth.sortable{cursor:pointer}\nth.sortable:after{content:' \\2195';color:#888}\n"

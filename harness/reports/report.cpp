@@ -159,8 +159,9 @@ void write_report_dir(const CheckResult& r, const std::string& dir, const Catalo
     if (!fs::is_directory(target, ec))
       throw std::runtime_error("cannot write a report into " + target.string() + ": it is a file");
     if (!fs::is_empty(target, ec) && !fs::exists(target / "verdicts.json", ec))
-      throw std::runtime_error("refusing to replace " + target.string() +
-                               ": it is not empty and not a geomech report (no verdicts.json); choose another --report");
+      throw std::runtime_error(
+          "refusing to replace " + target.string() +
+          ": it is not empty and not a geomech report (no verdicts.json); choose another --report");
   }
   fs::create_directories(parent, ec);
   if (ec) throw std::runtime_error("cannot create " + parent.string() + ": " + ec.message());

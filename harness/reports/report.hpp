@@ -25,7 +25,7 @@ const std::vector<std::string>& area_names();
 // Every figure the verdicts and the portraits carry; series of the same property, integrator and figure are drawn together across
 // scalars (double and 50 digits side by side).
 struct Figure {
-  std::string file;        // relative to the report directory: figures/<name>.svg
+  std::string file;  // relative to the report directory: figures/<name>.svg
   std::string svg;
   std::string integrator;  // the integrator it belongs to, if any
 };

@@ -67,7 +67,9 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     for (const auto& slot : provided) unexercised += r.exercised.count(slot) == 0;
     os << "(" << provided.size() << " of " << subject_slots().size() << " slots provided";
     if (!provided.empty()) {
-      os << ", " << (unexercised == 0 ? std::string("all checked") : std::to_string(provided.size() - unexercised) + " checked");
+      os << ", "
+         << (unexercised == 0 ? std::string("all checked")
+                              : std::to_string(provided.size() - unexercised) + " checked");
       os << ", " << rc.broken.size() << " wrong by their own check";
       if (!rc.broken.empty()) {
         os << " (";
@@ -134,15 +136,17 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
         // contradicts a claim made.
         if (!row.why.empty() && (row.fails || row.status.rfind("not established", 0) == 0 ||
                                  row.status.find("by the checks that ran") != std::string::npos))
-          rows << "\n  " << std::setw(24) << "" << "(" << row.why << ")";
+          rows << "\n  " << std::setw(24) << ""
+               << "(" << row.why << ")";
       }
     if (rows.str().empty()) continue;
     os << "\nintegrator '" << integ.name << "'";
     if (!integ.form.is_notes()) os << " (state: " << state_form_words(integ.form) << ")";
     if (!integ.claims.precision.empty())
       os << " (computes in " << bounded_text(inert_text(integ.claims.precision), 40)
-         << (integ.claims.precision_reason.empty() ? std::string("")
-                                                    : ": " + bounded_text(inert_text(integ.claims.precision_reason), 300))
+         << (integ.claims.precision_reason.empty()
+                 ? std::string("")
+                 : ": " + bounded_text(inert_text(integ.claims.precision_reason), 300))
          << ")";
     os << " claims" << domain_words(integ.claims.domain) << ":" << rows.str() << "\n";
   }
@@ -160,7 +164,8 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
       if (!header) os << "\ndetails of every verdict that is not a pass or not provided:\n";
       header = true;
       if (!v.step_raised.empty() && !raised.insert(v.integrator + "\n" + v.step_raised).second) {
-        os << "\n" << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]: your step raised, as above\n";
+        os << "\n"
+           << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]: your step raised, as above\n";
         continue;
       }
       os << "\n" << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]  spec " << v.spec;

@@ -35,8 +35,8 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   j["scalar_unavailable"] = r.info.scalar_unavailable;
   j["provided"] = r.provided;
   json counts;
-  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error,
-                    Outcome::NotCharacterised})
+  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout,
+                    Outcome::Error, Outcome::NotCharacterised})
     counts[outcome_name(o)] = r.count(o);
   j["counts"] = counts;
   j["left_to_thorough"] = r.left_to_thorough;
@@ -47,11 +47,17 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   for (const auto& i : r.integrators) {
     json claims = json::array();
     for (const auto& row : claim_rows(r, i))
-      claims.push_back({{"claim", row.claim}, {"claimed", row.claimed}, {"status", row.status}, {"measured", row.measured},
-                        {"why", row.why}, {"fails", row.fails}, {"evidence", row.evidence}});
+      claims.push_back({{"claim", row.claim},
+                        {"claimed", row.claimed},
+                        {"status", row.status},
+                        {"measured", row.measured},
+                        {"why", row.why},
+                        {"fails", row.fails},
+                        {"evidence", row.evidence}});
     json one{{"name", i.name}, {"steps", i.steps}, {"scalars", i.scalars}, {"claims", claims}};
     if (!i.form.is_notes()) one["state"] = state_form_words(i.form);
-    if (!i.claims.precision.empty()) one["precision"] = {{"stated", i.claims.precision}, {"reason", i.claims.precision_reason}};
+    if (!i.claims.precision.empty())
+      one["precision"] = {{"stated", i.claims.precision}, {"reason", i.claims.precision_reason}};
     json domain = json::object();
     if (i.claims.domain.max_omega > 0) domain["max_omega"] = i.claims.domain.max_omega;
     if (i.claims.domain.max_pi > 0) domain["max_pi"] = i.claims.domain.max_pi;
@@ -72,8 +78,8 @@ json json_report(const CheckResult& r, const Catalogue* c) {
       json entry = {{"slot", slot}, {"property", direct->property}, {"scalar", direct->scalar}};
       if (auto c = rc.calls_broken.find(slot); c != rc.calls_broken.end()) {
         entry["calls"] = c->second;
-        entry["line"] = slot_named(r, slot, "'") + " fails its own check " + direct->property + " in " + direct->scalar +
-                        ", and it calls '" + c->second + "', which is wrong: fix that first";
+        entry["line"] = slot_named(r, slot, "'") + " fails its own check " + direct->property + " in " +
+                        direct->scalar + ", and it calls '" + c->second + "', which is wrong: fix that first";
       } else {
         entry["line"] = slot_named(r, slot, "'") + " is wrong: its own check " + direct->property + " fails in " +
                         direct->scalar + ": " + first_line(direct->message);

@@ -30,11 +30,10 @@ std::string junit_report(const CheckResult& r) {
   std::snprintf(time_buf, sizeof time_buf, "%.3f", r.seconds);
   std::ostringstream x;
   x << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
-  x << "<testsuites name=\"geomech\" tests=\"" << tests << "\" failures=\"" << failures << "\" errors=\""
-    << errors << "\" skipped=\"" << skipped << "\" time=\"" << time_buf << "\">\n";
-  x << "  <testsuite name=\"geomech." << xml_escape(r.subject) << "\" tests=\"" << tests
-    << "\" failures=\"" << failures << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\""
-    << time_buf << "\">\n";
+  x << "<testsuites name=\"geomech\" tests=\"" << tests << "\" failures=\"" << failures << "\" errors=\"" << errors
+    << "\" skipped=\"" << skipped << "\" time=\"" << time_buf << "\">\n";
+  x << "  <testsuite name=\"geomech." << xml_escape(r.subject) << "\" tests=\"" << tests << "\" failures=\"" << failures
+    << "\" errors=\"" << errors << "\" skipped=\"" << skipped << "\" time=\"" << time_buf << "\">\n";
   x << "    <properties><property name=\"seed\" value=\"" << r.seed << "\"/></properties>\n";
   for (const auto& v : r.verdicts) {
     char t[32];
@@ -47,8 +46,8 @@ std::string junit_report(const CheckResult& r) {
     if (is_problem(v.outcome)) body += "\nreproduce: " + reproduce_command(r, v);
     switch (v.outcome) {
       case Outcome::Fail:
-        x << "      <failure type=\"FAIL\" message=\"" << xml_escape(first_line(v.message)) << "\">"
-          << xml_escape(body) << "</failure>\n";
+        x << "      <failure type=\"FAIL\" message=\"" << xml_escape(first_line(v.message)) << "\">" << xml_escape(body)
+          << "</failure>\n";
         break;
       case Outcome::Crash:
       case Outcome::Timeout:

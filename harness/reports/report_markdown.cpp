@@ -32,8 +32,8 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     md << "Source: " << md_inline(src.filename().string()) << "\n\n";
   }
   if (!r.info.interpreter.empty()) md << "Interpreter: " << md_inline(r.info.interpreter) << "\n\n";
-  md << "**Result: " << r.verdict_word() << "** - " << summary_counts(r) << ". Exit status "
-     << r.exit_code() << ".\n\n";
+  md << "**Result: " << r.verdict_word() << "** - " << summary_counts(r) << ". Exit status " << r.exit_code()
+     << ".\n\n";
   if (r.ran() == 0)
     md << "Nothing was checked: no property could run on what this implementation provides"
        << (r.narrowed ? " with this selection" : "") << ". A check that ran nothing is not a pass.\n\n";
@@ -68,8 +68,8 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
            << "`, which is wrong (above): fix that first. Its own check `" << direct->property << "` fails in ["
            << direct->scalar << "](#" << anchor_of(*direct) << "): " << md_cell(first_line(direct->message)) << "\n";
       else
-        md << "- **" << slot_named(r, slot, "`") << " is wrong**: its own check `" << direct->property << "` fails in [" << direct->scalar
-           << "](#" << anchor_of(*direct) << "): " << md_cell(first_line(direct->message)) << "\n";
+        md << "- **" << slot_named(r, slot, "`") << " is wrong**: its own check `" << direct->property << "` fails in ["
+           << direct->scalar << "](#" << anchor_of(*direct) << "): " << md_cell(first_line(direct->message)) << "\n";
       auto it = rc.downstream.find(slot);
       if (it != rc.downstream.end() && !it->second.empty()) {
         md << "  - these fail too, and call `" << slot << "` (fix it first): ";
@@ -83,8 +83,10 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       if (v->step_raised.empty()) continue;
       const std::string key = v->integrator + "\n" + v->step_raised;
       auto it = std::find_if(raises.begin(), raises.end(), [&](const auto& g) { return g.first == key; });
-      if (it == raises.end()) raises.push_back({key, {v}});
-      else it->second.push_back(v);
+      if (it == raises.end())
+        raises.push_back({key, {v}});
+      else
+        it->second.push_back(v);
     }
     // The integrator's domain check says where it raises (properties/integrators/integrator_domain.cpp): its
     // line leads, and it is not repeated below.
@@ -120,8 +122,10 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       if (rc.explained.count(v->property) || !v->step_raised.empty() || said.count(v)) continue;
       const std::string key = row_name(*v) + "|" + outcome_name(v->outcome);
       auto it = std::find_if(groups.begin(), groups.end(), [&](const auto& g) { return g.first == key; });
-      if (it == groups.end()) groups.push_back({key, {v}});
-      else it->second.push_back(v);
+      if (it == groups.end())
+        groups.push_back({key, {v}});
+      else
+        it->second.push_back(v);
     }
     for (const auto& [key, vs] : groups) {
       const Verdict& v = *vs.front();
@@ -183,13 +187,16 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
            << ", and steps your own state along each run.\n\n";
       if (!integ.claims.precision.empty())
         md << "Precision: computes in " << md_inline(bounded_text(integ.claims.precision, 40)) << ", "
-           << (integ.claims.precision_reason.empty() ? std::string("stated without a reason")
-                                                      : "stated: " + md_inline(bounded_text(integ.claims.precision_reason, 300)))
+           << (integ.claims.precision_reason.empty()
+                   ? std::string("stated without a reason")
+                   : "stated: " + md_inline(bounded_text(integ.claims.precision_reason, 300)))
            << ".\n\n";
       bool any_row = false;
       for (const auto& row : claim_rows(r, integ)) any_row = any_row || row.status != "-";
-      if (!any_row) md << "Nothing claimed, and no property reported on any claim.\n\n";
-      else md << "| claim | claimed | finding | measured | evidence |\n|---|---|---|---|---|\n";
+      if (!any_row)
+        md << "Nothing claimed, and no property reported on any claim.\n\n";
+      else
+        md << "| claim | claimed | finding | measured | evidence |\n|---|---|---|---|---|\n";
       for (const auto& row : claim_rows(r, integ)) {
         if (row.status == "-") continue;  // neither claimed nor checked
         std::string status = md_cell(row.status);
@@ -197,8 +204,8 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
         std::string finding = row.measured.empty() ? "" : md_cell(row.measured);
         if (!row.why.empty() && row.status.rfind("verified", 0) != 0)
           finding += (finding.empty() ? "" : "; ") + md_cell(row.why);
-        md << "| " << row.claim << " | " << row.claimed << " | " << status << " | " << finding << " | " << md_cell(row.evidence)
-           << " |\n";
+        md << "| " << row.claim << " | " << row.claimed << " | " << status << " | " << finding << " | "
+           << md_cell(row.evidence) << " |\n";
       }
       md << "\n";
       if (std::find(integ.steps.begin(), integ.steps.end(), "rigid_body_step") == integ.steps.end() &&
@@ -241,7 +248,7 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   if (r.count(Outcome::NotProvided) == 0) {
     md << "Nothing: every property ran.\n\n";
   } else {
-    std::map<std::string, int> missing_slots;  // a slot or integrator step not written -> its checks
+    std::map<std::string, int> missing_slots;            // a slot or integrator step not written -> its checks
     std::map<std::string, std::set<std::string>> other;  // double only: reason -> rows
     int not_written = 0;
     for (const auto& v : r.verdicts) {
@@ -263,10 +270,12 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       if (what.empty()) what = md_cell(v.message);
       ++missing_slots[what];
     }
-    md << r.count(Outcome::NotProvided) << " checks could not run; none is skipped silently (each, by name and "
+    md << r.count(Outcome::NotProvided)
+       << " checks could not run; none is skipped silently (each, by name and "
           "scalar, is in verdicts.json).\n\n";
     if (not_written > 0 && is_engine_wrapper(r)) {
-      md << "- " << not_written << " need slots of the notes: an engine wrapper: slots not provided (its integrators "
+      md << "- " << not_written
+         << " need slots of the notes: an engine wrapper: slots not provided (its integrators "
             "are checked).\n";
     } else if (not_written > 0) {
       md << "- " << not_written << " need what this implementation does not have, by what they need: ";
@@ -290,8 +299,11 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   }
   if (!r.left_to_thorough.empty()) {
     md << "## Left to --thorough\n\n"
-       << r.left_to_thorough.size() << " costly 50-digit runs were not done: an implementation behind the protocol leaves "
-          "them to `--thorough`, since " << md_cell(r.thorough_only_note) << ". Each of these properties ran in double "
+       << r.left_to_thorough.size()
+       << " costly 50-digit runs were not done: an implementation behind the protocol leaves "
+          "them to `--thorough`, since "
+       << md_cell(r.thorough_only_note)
+       << ". Each of these properties ran in double "
           "(and in rationals where it is exact), and every slot's own check ran in 50 digits: ";
     bool first = true;
     for (const auto& c : r.left_to_thorough) {
@@ -302,8 +314,10 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   }
   if (r.case_factor > 0) {
     md << "## Cases\n\n"
-       << "Every check ran " << r.case_factor << " of its property's cases: an implementation behind the protocol "
-          "makes every call a round trip, and " << md_cell(r.case_factor_note) << ". `--thorough` runs every case.\n\n";
+       << "Every check ran " << r.case_factor
+       << " of its property's cases: an implementation behind the protocol "
+          "makes every call a round trip, and "
+       << md_cell(r.case_factor_note) << ". `--thorough` runs every case.\n\n";
   }
   if (!r.work_precision_left_out.empty()) md << "Not drawn: " << md_cell(r.work_precision_left_out) << ".\n\n";
   md << "Slots provided:\n\n";
@@ -381,15 +395,15 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       if (!v->counterexample.empty() && !inputs_in_message(*v)) {
         md << (v->shrink_stopped ? "\nCounterexample (full precision; shrinking was stopped by its time budget, so it "
                                    "is the smallest failing case found by then, not a minimal one):\n\n"
-                               : counterexample_by_name(*v)
-                                   ? "\nCounterexample (shrunk, full precision), by the notes' names:\n\n"
-                                   : "\nCounterexample (shrunk, full precision):\n\n");
+               : counterexample_by_name(*v) ? "\nCounterexample (shrunk, full precision), by the notes' names:\n\n"
+                                            : "\nCounterexample (shrunk, full precision):\n\n");
         std::string ce;
         for (const auto& [type, value] : v->counterexample) ce += type + " = " + value + "\n";
         md << fence(ce);
       }
       md << "\n";
-      if (v->outcome == Outcome::Fail && r.info.randomised) md << "Failed after " << v->cases << " passing cases; seed " << v->seed << ".\n\n";
+      if (v->outcome == Outcome::Fail && r.info.randomised)
+        md << "Failed after " << v->cases << " passing cases; seed " << v->seed << ".\n\n";
       md << "Reproduce:\n\n" << fence(reproduce_command(r, *v)) << "\n";
     }
   }

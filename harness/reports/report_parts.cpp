@@ -78,8 +78,8 @@ std::string verdict_cell(const Verdict& v, bool exact_column) {
 std::string summary_counts(const CheckResult& r) {
   std::ostringstream os;
   bool first = true;
-  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout, Outcome::Error,
-                    Outcome::NotCharacterised}) {
+  for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout,
+                    Outcome::Error, Outcome::NotCharacterised}) {
     const int n = r.count(o);
     if (n == 0 && o != Outcome::Pass && o != Outcome::Fail) continue;
     os << (first ? "" : ", ") << n << " " << outcome_name(o);

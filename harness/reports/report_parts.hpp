@@ -19,7 +19,7 @@ const Property* property_of(const Verdict& v);
 std::string eps_text(double units);  // "3.2 eps"
 // How the report names a slot to fix (harness::slot_named of the result's subject).
 std::string slot_named(const CheckResult& r, const std::string& slot, const char* quote);
-std::string file_safe(const std::string& s);  // letters, digits, '-' and '_' only
+std::string file_safe(const std::string& s);                 // letters, digits, '-' and '_' only
 std::string place_of(const Verdict& v, const Catalogue* c);  // the notes' place of its spec entry, or ""
 // Rows of the result table: property (+ integrator) -> scalar -> verdict, in verdict order.
 std::vector<std::pair<std::string, std::map<std::string, const Verdict*>>> table_rows(const CheckResult& r);

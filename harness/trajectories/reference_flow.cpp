@@ -23,7 +23,7 @@ std::string estimate_text(const R& n) {
 // The project's Taylor oracle (oracle/taylor.hpp) on the attitude field of oracle/fields.hpp:
 // state (Pi, O) with O row-major, local error below limits.tolerance * max(1, |x|_inf) per step.
 std::vector<RigidBodyState<R>> reference_rigid_body(const Vec3<R>& I, const RigidBodyState<R>& x0, const R& t0,
-                                                   const std::vector<R>& times, const ReferenceLimits& limits) {
+                                                    const std::vector<R>& times, const ReferenceLimits& limits) {
   for (int i = 0; i < 3; ++i)
     if (!(I(i) > R(0))) throw std::invalid_argument("the moments of inertia must be positive");
   if (!all_finite(x0.Pi) || !all_finite(x0.O)) throw std::invalid_argument("the initial state is not finite");

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kAbsurd = 1e12;        // larger magnitudes are rejected as absurd
+constexpr double kAbsurd = 1e12;  // larger magnitudes are rejected as absurd
 constexpr std::size_t kMaxRows = 1000000;
 const char* kSystems = "rigid_body";
 const char* kColumns4 = "t Pi1 Pi2 Pi3";
@@ -61,7 +61,8 @@ std::string where(const std::string& name, std::size_t line, std::size_t column 
 std::string printable(const std::string& s) {
   std::string out;
   for (unsigned char c : s) {
-    if (c >= 0x20 && c < 0x7f) out += static_cast<char>(c);
+    if (c >= 0x20 && c < 0x7f)
+      out += static_cast<char>(c);
     else {
       char buf[8];
       std::snprintf(buf, sizeof buf, "\\x%02x", c);
@@ -78,7 +79,9 @@ double number(const Field& f, const std::string& name, std::size_t line, const c
   for (char c : f.text) lower += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   const std::string bare = (!lower.empty() && (lower[0] == '+' || lower[0] == '-')) ? lower.substr(1) : lower;
   if (bare == "nan" || bare.rfind("nan(", 0) == 0)
-    throw TrajectoryError(where(name, line, f.column) + what + " is NaN: a trajectory must be finite (NaN usually means the method broke down before this row)");
+    throw TrajectoryError(
+        where(name, line, f.column) + what +
+        " is NaN: a trajectory must be finite (NaN usually means the method broke down before this row)");
   if (bare == "inf" || bare == "infinity")
     throw TrajectoryError(where(name, line, f.column) + what + " is infinite: a trajectory must be finite");
   const char* first = f.text.data();
@@ -87,7 +90,8 @@ double number(const Field& f, const std::string& name, std::size_t line, const c
   double x = 0;
   const auto [ptr, ec] = std::from_chars(first, last, x);
   if (ec == std::errc::result_out_of_range)
-    throw TrajectoryError(where(name, line, f.column) + what + " '" + printable(f.text) + "' is out of the range of a double");
+    throw TrajectoryError(where(name, line, f.column) + what + " '" + printable(f.text) +
+                          "' is out of the range of a double");
   if (ec != std::errc() || ptr != last)
     throw TrajectoryError(where(name, line, f.column) + what + " is not a number: '" + printable(f.text) + "'");
   if (!std::isfinite(x))
@@ -111,13 +115,13 @@ int significant_digits(const std::string& text) {
   return n;
 }
 
-
 }  // namespace
 
 Trajectory parse_trajectory(const std::string& text, const std::string& name, const TrajectoryParams& params) {
   Trajectory tr;
   tr.path = name;
-  if (text.find('\0') != std::string::npos) throw TrajectoryError(name + ": this is not a text file (it contains NUL bytes)");
+  if (text.find('\0') != std::string::npos)
+    throw TrajectoryError(name + ": this is not a text file (it contains NUL bytes)");
   std::vector<std::string> lines;
   {
     std::size_t start = 0;
@@ -154,8 +158,9 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
       const auto colon = body.find(':');
       const std::size_t key_col = lines[i].find(body) + 1;
       if (colon == std::string::npos)
-        throw TrajectoryError(where(name, i + 1, key_col) + "a header line must be '# key: value' (or a '## comment'), got '" +
-                              printable(body) + "'");
+        throw TrajectoryError(where(name, i + 1, key_col) +
+                              "a header line must be '# key: value' (or a '## comment'), got '" + printable(body) +
+                              "'");
       const std::string key = trim(std::string_view(body).substr(0, colon));
       const std::string value = trim(std::string_view(body).substr(colon + 1));
       const std::size_t value_col = key_col + body.find(value, colon + 1);
@@ -179,7 +184,8 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
       } else if (key == "step") {
         once(step_text.has_value());
         const auto f = split_fields(value, value_col - 1);
-        if (f.size() != 1) throw TrajectoryError(where(name, i + 1, value_col) + "step needs one number, the step size h");
+        if (f.size() != 1)
+          throw TrajectoryError(where(name, i + 1, value_col) + "step needs one number, the step size h");
         number(f[0], name, i + 1, "the step size");
         step_text = f[0].text;
         step_line = i + 1;
@@ -191,8 +197,8 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
         std::string norm;
         for (const auto& f : split_fields(value)) norm += (norm.empty() ? "" : " ") + f.text;
         if (norm != kColumns4 && norm != kColumns13)
-          throw TrajectoryError(where(name, i + 1, value_col) + "columns must be '" + kColumns4 + "' or '" + kColumns13 +
-                                "', got '" + printable(value) + "'");
+          throw TrajectoryError(where(name, i + 1, value_col) + "columns must be '" + kColumns4 + "' or '" +
+                                kColumns13 + "', got '" + printable(value) + "'");
         columns = norm;
       } else {
         throw TrajectoryError(where(name, i + 1, key_col) + "unknown header field '" + printable(key) +
@@ -215,19 +221,22 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
   merge(system, params.system, "system", system_line);
   merge(inertia, params.inertia, "inertia", inertia_line);
   merge(step_text, params.step, "step", step_line);
-  if (!system) throw TrajectoryError(name + ": no system: give '# system: rigid_body' in the header or --system rigid_body");
+  if (!system)
+    throw TrajectoryError(name + ": no system: give '# system: rigid_body' in the header or --system rigid_body");
   if (*system != kSystems)
-    throw TrajectoryError((system_line ? where(name, system_line) : name + ": ") + "unknown system '" + printable(*system) +
-                          "' (known: " + kSystems + ")");
-  if (!inertia) throw TrajectoryError(name + ": no inertia: give '# inertia: I1 I2 I3' in the header or --inertia I1,I2,I3");
+    throw TrajectoryError((system_line ? where(name, system_line) : name + ": ") + "unknown system '" +
+                          printable(*system) + "' (known: " + kSystems + ")");
+  if (!inertia)
+    throw TrajectoryError(name + ": no inertia: give '# inertia: I1 I2 I3' in the header or --inertia I1,I2,I3");
   if (!step_text) throw TrajectoryError(name + ": no step size: give '# step: h' in the header or --step h");
   tr.system = *system;
   tr.inertia = *inertia;
   for (int k = 0; k < 3; ++k) {
     const double Ik = number({tr.inertia[k], 0}, name, inertia_line, "a moment of inertia");
     if (!(Ik > 0))
-      throw TrajectoryError((inertia_line ? where(name, inertia_line) : name + ": ") + "the moments of inertia must be positive, got I" +
-                            std::to_string(k + 1) + " = " + printable(tr.inertia[k]));
+      throw TrajectoryError((inertia_line ? where(name, inertia_line) : name + ": ") +
+                            "the moments of inertia must be positive, got I" + std::to_string(k + 1) + " = " +
+                            printable(tr.inertia[k]));
   }
   {
     // No mass distribution has a moment larger than the sum of the other two (the notes' example
@@ -236,7 +245,8 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
     for (int k = 0; k < 3; ++k) I[k] = number({tr.inertia[k], 0}, name, inertia_line, "a moment of inertia");
     for (int k = 0; k < 3; ++k)
       if (I[k] > I[(k + 1) % 3] + I[(k + 2) % 3]) {
-        const std::string what = "I" + std::to_string(k + 1) + " is larger than the sum of the other two moments: no "
+        const std::string what = "I" + std::to_string(k + 1) +
+                                 " is larger than the sum of the other two moments: no "
                                  "rigid body has this inertia";
         if (!params.allow_nonphysical)
           throw TrajectoryError((inertia_line ? where(name, inertia_line) : name + ": ") + what +
@@ -265,11 +275,13 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
       expected_fields = f.size();
     } else if (f.size() != expected_fields) {
       throw TrajectoryError(where(name, i + 1) + "a row has " + std::to_string(f.size()) + " fields, expected " +
-                            std::to_string(expected_fields) + " like the " + (tr.rows.empty() ? "columns line" : "rows above") +
-                            " (" + (expected_fields == 13 ? kColumns13 : kColumns4) + ")");
+                            std::to_string(expected_fields) + " like the " +
+                            (tr.rows.empty() ? "columns line" : "rows above") + " (" +
+                            (expected_fields == 13 ? kColumns13 : kColumns4) + ")");
     }
     if (tr.rows.size() >= kMaxRows)
-      throw TrajectoryError(where(name, i + 1) + "more than " + std::to_string(kMaxRows) + " rows; write every k-th step only");
+      throw TrajectoryError(where(name, i + 1) + "more than " + std::to_string(kMaxRows) +
+                            " rows; write every k-th step only");
     TrajectoryRow row;
     row.t = number(f[0], name, i + 1, "t");
     for (int k = 0; k < 3; ++k) row.Pi[k] = number(f[1 + k], name, i + 1, ("Pi" + std::to_string(k + 1)).c_str());

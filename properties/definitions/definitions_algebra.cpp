@@ -23,8 +23,9 @@ namespace {
 template <class T>
 void definition_hat(const Subject<T>& s) {
   const Vec3<T> v = *gen::regime_vec3<T>().as("v");
-  showing_inputs([&] { return named("v", v); },
-                 [&] { require_close("slot hat: hat(v) = (-v_i eps_ijk), (2.11)", s.hat(v), truth::skew_of(v), norm_inf(v), 0); });
+  showing_inputs(
+      [&] { return named("v", v); },
+      [&] { require_close("slot hat: hat(v) = (-v_i eps_ijk), (2.11)", s.hat(v), truth::skew_of(v), norm_inf(v), 0); });
 }
 
 // vee inverts (2.11) on skew matrices.
@@ -32,8 +33,9 @@ template <class T>
 void definition_vee(const Subject<T>& s) {
   const Vec3<T> v = *gen::regime_vec3<T>().as("v");
   const Mat3<T> S = truth::skew_of(v);
-  showing_inputs([&] { return named("S", S); },
-                 [&] { require_close("slot vee: vee(S) = (S_32, S_13, S_21) for skew S, (2.11)", s.vee(S), v, norm_inf(v), 0); });
+  showing_inputs(
+      [&] { return named("S", S); },
+      [&] { require_close("slot vee: vee(S) = (S_32, S_13, S_21) for skew S, (2.11)", s.vee(S), v, norm_inf(v), 0); });
 }
 
 // (2.15): <A, B> = tr(A^T B) / 2, for any n x n matrices (n = 2..6), not only skew ones. The sum
@@ -44,11 +46,13 @@ void definition_pairing(const Subject<T>& s) {
   const int e = *gen::uniform(-30, 31).as("e (a scale 2^e)");
   const MatX<T> A = (*gen::mat<T>(n, n).as("A / 2^e") * gen::pow2<T>(e)).eval();
   const MatX<T> B = *gen::uniform(0, 2).as("B in thirds (1: yes)") ? MatX<T>(*gen::mat<T>(n, n).as("3 B") / T(3))
-                                                                : MatX<T>(*gen::mat<T>(n, n).as("B"));
-  showing_inputs([&] { return named("A", A) + named("B", B); }, [&] {
-    require_close("slot pairing: <A, B> = tr(A^T B)/2, (2.15)", s.pairing(A, B), T(A.cwiseProduct(B).sum() / T(2)),
-                  T(norm_inf(A) * norm_inf(B) * T(n * n)), 2.0 * n * n + 2);
-  });
+                                                                   : MatX<T>(*gen::mat<T>(n, n).as("B"));
+  showing_inputs([&] { return named("A", A) + named("B", B); },
+                 [&] {
+                   require_close("slot pairing: <A, B> = tr(A^T B)/2, (2.15)", s.pairing(A, B),
+                                 T(A.cwiseProduct(B).sum() / T(2)), T(norm_inf(A) * norm_inf(B) * T(n * n)),
+                                 2.0 * n * n + 2);
+                 });
 }
 
 // The coordinates of so(n) and of the generic algebras are the student's (
@@ -59,10 +63,11 @@ void definition_pairing(const Subject<T>& s) {
 template <class T>
 void note_coordinates(const coords::Basis<T>& b, const std::string& algebra) {
   if (!b.documented)
-    record_note("checked in your coordinates of " + algebra + ", from " + b.origin + ": " + b.describe() +
-                " (the documented ones: " +
-                (b.skew ? coords::documented_so_n<T>(b.n) : coords::documented_algebra<T>(LieAlgebraId::sl2)).describe() +
-                "); the notes leave this choice open");
+    record_note(
+        "checked in your coordinates of " + algebra + ", from " + b.origin + ": " + b.describe() +
+        " (the documented ones: " +
+        (b.skew ? coords::documented_so_n<T>(b.n) : coords::documented_algebra<T>(LieAlgebraId::sl2)).describe() +
+        "); the notes leave this choice open");
 }
 
 std::string n_text(int n) { return " (n = " + std::to_string(n) + ")"; }
@@ -76,12 +81,14 @@ void definition_hat_n(const Subject<T>& s) {
   const VecX<T> v = *gen::regime_vec<T>(truth::so_dimension(n)).as("v");
   std::string why;
   const auto basis = coords::learned_so_n(s, n, &why);
-  showing_inputs([&] { return named("v", v) + "    n = " + std::to_string(n) + "\n"; }, [&] {
-    require("slot hat_n: hat_n(e_k, n) are coordinates of so(n): one entry above the diagonal each" + n_text(n),
-            basis.has_value(), why);
-    require_close("slot hat_n: hat_n(v, n) = sum_k v_k hat_n(e_k, n), the so(n) matrix of v" + n_text(n), s.hat_n(v, n),
-                  basis->matrix(v), norm_inf(v), 0);
-  });
+  showing_inputs(
+      [&] { return named("v", v) + "    n = " + std::to_string(n) + "\n"; },
+      [&] {
+        require("slot hat_n: hat_n(e_k, n) are coordinates of so(n): one entry above the diagonal each" + n_text(n),
+                basis.has_value(), why);
+        require_close("slot hat_n: hat_n(v, n) = sum_k v_k hat_n(e_k, n), the so(n) matrix of v" + n_text(n),
+                      s.hat_n(v, n), basis->matrix(v), norm_inf(v), 0);
+      });
   note_coordinates(*basis, "so(" + std::to_string(n) + ")");
 }
 
@@ -94,20 +101,22 @@ void definition_vee_n(const Subject<T>& s) {
   const MatX<T> m = basis.matrix(v);
   std::string hint;
   if (basis.documented && !s.hat_n) {
-    hint = coords::basis_hint<T>(
-        "vee_n", "hat_n", "so(" + std::to_string(n) + ")", basis,
-        {coords::basis_of_vee<T>(n, [&](const MatX<T>& x) { return VecX<T>(s.vee_n(x)); }, "your vee_n")},
-        [&](const coords::Basis<T>& alt) { return VecX<T>(s.vee_n(alt.matrix(v))) == v; });
+    hint = coords::basis_hint<T>("vee_n", "hat_n", "so(" + std::to_string(n) + ")", basis,
+                                 {coords::basis_of_vee<T>(
+                                     n, [&](const MatX<T>& x) { return VecX<T>(s.vee_n(x)); }, "your vee_n")},
+                                 [&](const coords::Basis<T>& alt) { return VecX<T>(s.vee_n(alt.matrix(v))) == v; });
   }
-  showing_inputs([&] { return named("m", m); }, [&] {
-    try {
-      require_close("slot vee_n: vee_n(m) are the so(n) coordinates of m, in " + basis.name() + n_text(n), s.vee_n(m), v,
-                    norm_inf(v), 0);
-    } catch (rc::detail::CaseResult& r) {
-      r.description = hint + r.description;
-      throw;
-    }
-  });
+  showing_inputs([&] { return named("m", m); },
+                 [&] {
+                   try {
+                     require_close(
+                         "slot vee_n: vee_n(m) are the so(n) coordinates of m, in " + basis.name() + n_text(n),
+                         s.vee_n(m), v, norm_inf(v), 0);
+                   } catch (rc::detail::CaseResult& r) {
+                     r.description = hint + r.description;
+                     throw;
+                   }
+                 });
   note_coordinates(basis, "so(" + std::to_string(n) + ")");
 }
 
@@ -124,12 +133,16 @@ void definition_lie_hat(const Subject<T>& s) {
   const VecX<T> x = *gen::regime_vec<T>(truth::algebra_dimension(g)).as("x");
   std::string why;
   const auto basis = coords::learned_algebra(s, g, &why);
-  showing_inputs([&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("x", x); }, [&] {
-    require(std::string("slot lie_hat: lie_hat(g, e_k) is a basis of ") + lie_algebra_name(g), basis.has_value(), why);
-    require_close(std::string("slot lie_hat: lie_hat(g, x) = sum_k x_k lie_hat(g, e_k), the matrix of x in ") +
-                      lie_algebra_name(g),
-                  s.lie_hat(g, x), basis->matrix(x), T(norm_inf(x) * basis->condition), basis->skew ? 0.0 : 4.0 * 3);
-  });
+  showing_inputs([&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("x", x); },
+                 [&] {
+                   require(std::string("slot lie_hat: lie_hat(g, e_k) is a basis of ") + lie_algebra_name(g),
+                           basis.has_value(), why);
+                   require_close(
+                       std::string("slot lie_hat: lie_hat(g, x) = sum_k x_k lie_hat(g, e_k), the matrix of x in ") +
+                           lie_algebra_name(g),
+                       s.lie_hat(g, x), basis->matrix(x), T(norm_inf(x) * basis->condition),
+                       basis->skew ? 0.0 : 4.0 * 3);
+                 });
   note_coordinates(*basis, lie_algebra_name(g));
 }
 
@@ -141,19 +154,22 @@ void definition_lie_vee(const Subject<T>& s) {
   const MatX<T> m = basis.matrix(x);
   std::string hint;
   if (basis.documented && !s.lie_hat && g != LieAlgebraId::sl2)
-    hint = coords::basis_hint<T>(
-        "lie_vee", "lie_hat", lie_algebra_name(g), basis,
-        {coords::basis_of_vee<T>(basis.n, [&](const MatX<T>& y) { return VecX<T>(s.lie_vee(g, y)); }, "your lie_vee")},
-        [&](const coords::Basis<T>& alt) { return VecX<T>(s.lie_vee(g, alt.matrix(x))) == x; });
-  showing_inputs([&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("m", m); }, [&] {
-    try {
-      require_close(std::string("slot lie_vee: the coordinates of m in ") + lie_algebra_name(g) + ", in " + basis.name(),
-                    s.lie_vee(g, m), x, T(norm_inf(x) * basis.condition), 4.0 * basis.dimension());
-    } catch (rc::detail::CaseResult& r) {
-      r.description = hint + r.description;
-      throw;
-    }
-  });
+    hint =
+        coords::basis_hint<T>("lie_vee", "lie_hat", lie_algebra_name(g), basis,
+                              {coords::basis_of_vee<T>(
+                                  basis.n, [&](const MatX<T>& y) { return VecX<T>(s.lie_vee(g, y)); }, "your lie_vee")},
+                              [&](const coords::Basis<T>& alt) { return VecX<T>(s.lie_vee(g, alt.matrix(x))) == x; });
+  showing_inputs([&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("m", m); },
+                 [&] {
+                   try {
+                     require_close(std::string("slot lie_vee: the coordinates of m in ") + lie_algebra_name(g) +
+                                       ", in " + basis.name(),
+                                   s.lie_vee(g, m), x, T(norm_inf(x) * basis.condition), 4.0 * basis.dimension());
+                   } catch (rc::detail::CaseResult& r) {
+                     r.description = hint + r.description;
+                     throw;
+                   }
+                 });
   note_coordinates(basis, lie_algebra_name(g));
 }
 
@@ -184,25 +200,29 @@ void definition_ad_star(const Subject<T>& s) {
   if (basis.documented && !s.lie_hat && g != LieAlgebraId::sl2) {
     std::vector<std::optional<coords::Basis<T>>> alts;
     if (s.lie_vee)
-      alts.push_back(coords::basis_of_vee<T>(n, [&](const MatX<T>& y) { return VecX<T>(s.lie_vee(g, y)); }, "your lie_vee"));
+      alts.push_back(coords::basis_of_vee<T>(
+          n, [&](const MatX<T>& y) { return VecX<T>(s.lie_vee(g, y)); }, "your lie_vee"));
     if (s.vee_n)
-      alts.push_back(coords::basis_of_vee<T>(n, [&](const MatX<T>& y) { return VecX<T>(s.vee_n(y)); }, "your vee_n"));
+      alts.push_back(coords::basis_of_vee<T>(
+          n, [&](const MatX<T>& y) { return VecX<T>(s.vee_n(y)); }, "your vee_n"));
     if (auto b = coords::learned_so_n(s, n)) alts.push_back(b);
-    hint = coords::basis_hint<T>("ad_star", "lie_hat", lie_algebra_name(g), basis, alts, [&](const coords::Basis<T>& alt) {
-      return max_abs(VecX<T>(s.ad_star(g, xi, mu) - ad_star_in(alt, xi, mu))) <= T(4.0 * d * n) * eps<T>() * scale;
-    });
+    hint =
+        coords::basis_hint<T>("ad_star", "lie_hat", lie_algebra_name(g), basis, alts, [&](const coords::Basis<T>& alt) {
+          return max_abs(VecX<T>(s.ad_star(g, xi, mu) - ad_star_in(alt, xi, mu))) <= T(4.0 * d * n) * eps<T>() * scale;
+        });
   }
-  showing_inputs([&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("xi", xi) + named("mu", mu); },
-                 [&] {
-                   try {
-                     require_close(std::string("slot ad_star: <ad*_xi mu, e_k> = <mu, [xi, e_k]> in ") +
-                                       lie_algebra_name(g) + ", in " + basis.name(),
-                                   s.ad_star(g, xi, mu), ad_star_in(basis, xi, mu), scale, 4.0 * d * n);
-                   } catch (rc::detail::CaseResult& r) {
-                     r.description = hint + r.description;
-                     throw;
-                   }
-                 });
+  showing_inputs(
+      [&] { return std::string("    g = ") + lie_algebra_name(g) + "\n" + named("xi", xi) + named("mu", mu); },
+      [&] {
+        try {
+          require_close(std::string("slot ad_star: <ad*_xi mu, e_k> = <mu, [xi, e_k]> in ") + lie_algebra_name(g) +
+                            ", in " + basis.name(),
+                        s.ad_star(g, xi, mu), ad_star_in(basis, xi, mu), scale, 4.0 * d * n);
+        } catch (rc::detail::CaseResult& r) {
+          r.description = hint + r.description;
+          throw;
+        }
+      });
   note_coordinates(basis, lie_algebra_name(g));
 }
 
@@ -212,11 +232,13 @@ void definition_ad_star(const Subject<T>& s) {
 template <class T>
 std::vector<std::optional<coords::Basis<T>>> so4_alternatives(const Subject<T>& s) {
   std::vector<std::optional<coords::Basis<T>>> alts;
-  if (s.vee_n) alts.push_back(coords::basis_of_vee<T>(4, [&](const MatX<T>& y) { return VecX<T>(s.vee_n(y)); }, "your vee_n"));
+  if (s.vee_n)
+    alts.push_back(coords::basis_of_vee<T>(
+        4, [&](const MatX<T>& y) { return VecX<T>(s.vee_n(y)); }, "your vee_n"));
   if (auto b = coords::learned_algebra(s, LieAlgebraId::so4)) alts.push_back(b);
   if (s.lie_vee)
-    alts.push_back(coords::basis_of_vee<T>(4, [&](const MatX<T>& y) { return VecX<T>(s.lie_vee(LieAlgebraId::so4, y)); },
-                                           "your lie_vee on so(4)"));
+    alts.push_back(coords::basis_of_vee<T>(
+        4, [&](const MatX<T>& y) { return VecX<T>(s.lie_vee(LieAlgebraId::so4, y)); }, "your lie_vee on so(4)"));
   return alts;
 }
 
@@ -233,18 +255,21 @@ void definition_so4_bracket_R6(const Subject<T>& s) {
   const T scale = T(norm_inf(a) * norm_inf(b));
   std::string hint;
   if (basis.documented && !s.hat_n)
-    hint = coords::basis_hint<T>("so4_bracket_R6", "hat_n", "so(4)", basis, so4_alternatives(s), [&](const coords::Basis<T>& alt) {
-      return max_abs(VecX<T>(VecX<T>(s.so4_bracket_R6(Vec6<T>(a), Vec6<T>(b))) - bracket_in(alt))) <= T(16) * eps<T>() * scale;
-    });
-  showing_inputs([&] { return named("a", a) + named("b", b); }, [&] {
-    try {
-      require_close("slot so4_bracket_R6: [a, b] = vee_4([hat_4(a), hat_4(b)]), in " + basis.name(),
-                    VecX<T>(s.so4_bracket_R6(Vec6<T>(a), Vec6<T>(b))), bracket_in(basis), scale, 16);
-    } catch (rc::detail::CaseResult& r) {
-      r.description = hint + r.description;
-      throw;
-    }
-  });
+    hint = coords::basis_hint<T>(
+        "so4_bracket_R6", "hat_n", "so(4)", basis, so4_alternatives(s), [&](const coords::Basis<T>& alt) {
+          return max_abs(VecX<T>(VecX<T>(s.so4_bracket_R6(Vec6<T>(a), Vec6<T>(b))) - bracket_in(alt))) <=
+                 T(16) * eps<T>() * scale;
+        });
+  showing_inputs([&] { return named("a", a) + named("b", b); },
+                 [&] {
+                   try {
+                     require_close("slot so4_bracket_R6: [a, b] = vee_4([hat_4(a), hat_4(b)]), in " + basis.name(),
+                                   VecX<T>(s.so4_bracket_R6(Vec6<T>(a), Vec6<T>(b))), bracket_in(basis), scale, 16);
+                   } catch (rc::detail::CaseResult& r) {
+                     r.description = hint + r.description;
+                     throw;
+                   }
+                 });
   note_coordinates(basis, "so(4)");
 }
 
@@ -256,19 +281,22 @@ void definition_ad_star_so4_R6(const Subject<T>& s) {
   const T scale = T(norm_inf(xi) * norm_inf(mu));
   std::string hint;
   if (basis.documented && !s.hat_n)
-    hint = coords::basis_hint<T>("ad_star_so4_R6", "hat_n", "so(4)", basis, so4_alternatives(s), [&](const coords::Basis<T>& alt) {
-      return max_abs(VecX<T>(VecX<T>(s.ad_star_so4_R6(Vec6<T>(xi), Vec6<T>(mu))) - ad_star_in(alt, xi, mu))) <=
-             T(96) * eps<T>() * scale;
-    });
-  showing_inputs([&] { return named("xi", xi) + named("mu", mu); }, [&] {
-    try {
-      require_close("slot ad_star_so4_R6: <ad*_xi mu, e_k> = <mu, [xi, e_k]> in so(4) = R^6, in " + basis.name(),
-                    VecX<T>(s.ad_star_so4_R6(Vec6<T>(xi), Vec6<T>(mu))), ad_star_in(basis, xi, mu), scale, 96);
-    } catch (rc::detail::CaseResult& r) {
-      r.description = hint + r.description;
-      throw;
-    }
-  });
+    hint = coords::basis_hint<T>(
+        "ad_star_so4_R6", "hat_n", "so(4)", basis, so4_alternatives(s), [&](const coords::Basis<T>& alt) {
+          return max_abs(VecX<T>(VecX<T>(s.ad_star_so4_R6(Vec6<T>(xi), Vec6<T>(mu))) - ad_star_in(alt, xi, mu))) <=
+                 T(96) * eps<T>() * scale;
+        });
+  showing_inputs([&] { return named("xi", xi) + named("mu", mu); },
+                 [&] {
+                   try {
+                     require_close(
+                         "slot ad_star_so4_R6: <ad*_xi mu, e_k> = <mu, [xi, e_k]> in so(4) = R^6, in " + basis.name(),
+                         VecX<T>(s.ad_star_so4_R6(Vec6<T>(xi), Vec6<T>(mu))), ad_star_in(basis, xi, mu), scale, 96);
+                   } catch (rc::detail::CaseResult& r) {
+                     r.description = hint + r.description;
+                     throw;
+                   }
+                 });
   note_coordinates(basis, "so(4)");
 }
 
@@ -288,10 +316,11 @@ template <class T>
 void definition_lie_poisson_3_6(const Subject<T>& s) {
   const Vec3<T> Pi = *gen::regime_vec3<T>().as("Pi"), df = *gen::regime_vec3<T>().as("df/dPi"),
                 dh = *gen::regime_vec3<T>().as("dh/dPi");
-  showing_inputs([&] { return named("Pi", Pi) + named("df/dPi", df) + named("dh/dPi", dh); }, [&] {
-    require_close("slot lie_poisson_3_6: {f, h} = -Pi . (df x dh), (3.6)", s.lie_poisson_3_6(Pi, df, dh),
-                  minus_triple(Pi, df, dh), size3(Pi, df, dh), 8);
-  });
+  showing_inputs([&] { return named("Pi", Pi) + named("df/dPi", df) + named("dh/dPi", dh); },
+                 [&] {
+                   require_close("slot lie_poisson_3_6: {f, h} = -Pi . (df x dh), (3.6)", s.lie_poisson_3_6(Pi, df, dh),
+                                 minus_triple(Pi, df, dh), size3(Pi, df, dh), 8);
+                 });
 }
 
 // (2.23): {f, h} = -<Pi, [df, dh]> with skew matrices; in vectors, -Pi . (df x dh) by (2.25).
@@ -301,10 +330,11 @@ void definition_lie_poisson_2_23(const Subject<T>& s) {
   const Vec3<T> Pi = *gen::regime_vec3<T>().as("Pi"), df = *gen::regime_vec3<T>().as("df/dPi"),
                 dh = *gen::regime_vec3<T>().as("dh/dPi");
   const Mat3<T> P = truth::skew_of(Pi), F = truth::skew_of(df), H = truth::skew_of(dh);
-  showing_inputs([&] { return named("Pi_hat", P) + named("df_hat", F) + named("dh_hat", H); }, [&] {
-    require_close("slot lie_poisson_2_23: {f, h} = -<Pi, [df, dh]> = -Pi . (df x dh), (2.23)",
-                  s.lie_poisson_2_23(P, F, H), minus_triple(Pi, df, dh), size3(Pi, df, dh), 24);
-  });
+  showing_inputs([&] { return named("Pi_hat", P) + named("df_hat", F) + named("dh_hat", H); },
+                 [&] {
+                   require_close("slot lie_poisson_2_23: {f, h} = -<Pi, [df, dh]> = -Pi . (df x dh), (2.23)",
+                                 s.lie_poisson_2_23(P, F, H), minus_triple(Pi, df, dh), size3(Pi, df, dh), 24);
+                 });
 }
 
 // (3.13): {f, h} = -grad c . (grad f x grad h).
@@ -312,20 +342,22 @@ template <class T>
 void definition_nambu_3_13(const Subject<T>& s) {
   const Vec3<T> dc = *gen::regime_vec3<T>().as("grad c"), df = *gen::regime_vec3<T>().as("grad f"),
                 dh = *gen::regime_vec3<T>().as("grad h");
-  showing_inputs([&] { return named("grad c", dc) + named("grad f", df) + named("grad h", dh); }, [&] {
-    require_close("slot nambu_3_13: {f, h} = -grad c . (grad f x grad h), (3.13)", s.nambu_3_13(dc, df, dh),
-                  minus_triple(dc, df, dh), size3(dc, df, dh), 8);
-  });
+  showing_inputs([&] { return named("grad c", dc) + named("grad f", df) + named("grad h", dh); },
+                 [&] {
+                   require_close("slot nambu_3_13: {f, h} = -grad c . (grad f x grad h), (3.13)",
+                                 s.nambu_3_13(dc, df, dh), minus_triple(dc, df, dh), size3(dc, df, dh), 8);
+                 });
 }
 
 // (3.14): dx/dt = grad c x grad h.
 template <class T>
 void definition_nambu_motion_3_14(const Subject<T>& s) {
   const Vec3<T> dc = *gen::regime_vec3<T>().as("grad c"), dh = *gen::regime_vec3<T>().as("grad h");
-  showing_inputs([&] { return named("grad c", dc) + named("grad h", dh); }, [&] {
-    require_close("slot nambu_motion_3_14: dx/dt = grad c x grad h, (3.14)", s.nambu_motion_3_14(dc, dh),
-                  truth::cross(dc, dh), T(norm_inf(dc) * norm_inf(dh)), 4);
-  });
+  showing_inputs([&] { return named("grad c", dc) + named("grad h", dh); },
+                 [&] {
+                   require_close("slot nambu_motion_3_14: dx/dt = grad c x grad h, (3.14)", s.nambu_motion_3_14(dc, dh),
+                                 truth::cross(dc, dh), T(norm_inf(dc) * norm_inf(dh)), 4);
+                 });
 }
 
 // Section 3.5: {f, h} = df/dq . dh/dp - df/dp . dh/dq, so that {q_i, p_j} = delta_ij.
@@ -333,32 +365,35 @@ template <class T>
 void definition_canonical_bracket(const Subject<T>& s) {
   const Vec3<T> fq = *gen::regime_vec3<T>().as("fq"), fp = *gen::regime_vec3<T>().as("fp");
   const Vec3<T> hq = *gen::regime_vec3<T>().as("hq"), hp = *gen::regime_vec3<T>().as("hp");
-  showing_inputs([&] { return named("df/dq", fq) + named("df/dp", fp) + named("dh/dq", hq) + named("dh/dp", hp); }, [&] {
-    require_close("slot canonical_bracket: {f, h} = df/dq . dh/dp - df/dp . dh/dq", s.canonical_bracket(fq, fp, hq, hp),
-                  T(fq.dot(hp) - fp.dot(hq)), T(norm_inf(fq) * norm_inf(hp) + norm_inf(fp) * norm_inf(hq)), 8);
-  });
+  showing_inputs([&] { return named("df/dq", fq) + named("df/dp", fp) + named("dh/dq", hq) + named("dh/dp", hp); },
+                 [&] {
+                   require_close("slot canonical_bracket: {f, h} = df/dq . dh/dp - df/dp . dh/dq",
+                                 s.canonical_bracket(fq, fp, hq, hp), T(fq.dot(hp) - fp.dot(hq)),
+                                 T(norm_inf(fq) * norm_inf(hp) + norm_inf(fp) * norm_inf(hq)), 8);
+                 });
 }
 
 // The momentum-map section: J(q, p) = p x q, the cotangent lift of SO(3) acting on R^3.
 template <class T>
 void definition_momentum_map(const Subject<T>& s) {
   const Vec3<T> q = *gen::regime_vec3<T>().as("q"), p = *gen::regime_vec3<T>().as("p");
-  showing_inputs([&] { return named("q", q) + named("p", p); }, [&] {
-    require_close("slot momentum_map: J(q, p) = p x q (the momentum-map section)", s.momentum_map(q, p),
-                  truth::cross(p, q), T(norm_inf(q) * norm_inf(p)), 4);
-  });
+  showing_inputs([&] { return named("q", q) + named("p", p); },
+                 [&] {
+                   require_close("slot momentum_map: J(q, p) = p x q (the momentum-map section)", s.momentum_map(q, p),
+                                 truth::cross(p, q), T(norm_inf(q) * norm_inf(p)), 4);
+                 });
 }
 
 }  // namespace
 
-#define GM_DEFINITION(slot, entry, statement, tolerance_class, ...)                                    \
-  GM_PROPERTY(definition_##slot, all_scalars,                                                          \
-              {.id = "definition_" #slot,                                                              \
-               .spec = entry,                                                                          \
-               .title = "slot " #slot " alone: " statement,                                            \
-               .tolerance = ToleranceClass::tolerance_class,                                           \
-               .needs = {#slot},                                                                       \
-               .negative_controls = {__VA_ARGS__},                                                     \
+#define GM_DEFINITION(slot, entry, statement, tolerance_class, ...) \
+  GM_PROPERTY(definition_##slot, all_scalars,                       \
+              {.id = "definition_" #slot,                           \
+               .spec = entry,                                       \
+               .title = "slot " #slot " alone: " statement,         \
+               .tolerance = ToleranceClass::tolerance_class,        \
+               .needs = {#slot},                                    \
+               .negative_controls = {__VA_ARGS__},                  \
                .cases = {.d = 200, .mp = 100, .q = 50}})
 
 GM_DEFINITION(hat, "s2.hat-map", "hat(v) = (-v_i eps_ijk), (2.11), on axes, zeros, tiny and huge v", Exact,
@@ -374,11 +409,12 @@ GM_DEFINITION(vee_n, "s1.so4-hat", "vee_n inverts hat_n for n = 2..6 (in hat_n's
 GM_DEFINITION(lie_hat, "s1.ad-star-coordinates",
               "coordinates to matrices: a basis of so(3), so(4), sl(2, R) (of the student's choosing)", Exact,
               "lie_hat_sl2_not_traceless");
-GM_DEFINITION(lie_vee, "s1.ad-star-coordinates", "matrices to coordinates in so(3), so(4), sl(2, R), in lie_hat's basis",
-              Exact, "lie_vee_sl2_transposed", "lie_hat_sl2_transposed");
+GM_DEFINITION(lie_vee, "s1.ad-star-coordinates",
+              "matrices to coordinates in so(3), so(4), sl(2, R), in lie_hat's basis", Exact, "lie_vee_sl2_transposed",
+              "lie_hat_sl2_transposed");
 GM_DEFINITION(ad_star, "s1.ad-star-definition",
-              "<ad*_xi mu, eta> = <mu, [xi, eta]> on so(3), so(4), sl(2, R), in lie_hat's basis",
-              Exact, "ad_star_is_ad", "ad_star_sign_flipped", "ad_star_sl2_transpose_pairing");
+              "<ad*_xi mu, eta> = <mu, [xi, eta]> on so(3), so(4), sl(2, R), in lie_hat's basis", Exact,
+              "ad_star_is_ad", "ad_star_sign_flipped", "ad_star_sl2_transpose_pairing");
 GM_DEFINITION(so4_bracket_R6, "s1.so4-hat", "[a, b] = vee_4([hat_4 a, hat_4 b]) in hat_n's coordinates", Exact,
               "so4_bracket_R6_sign_slip");
 GM_DEFINITION(ad_star_so4_R6, "s1.so4-ep-r6", "ad* of so(4) = R^6 from its definition, in hat_n's coordinates", Exact,

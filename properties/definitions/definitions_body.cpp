@@ -50,40 +50,44 @@ template <class T>
 void definition_euler_2_1(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
-  showing_inputs([&] { return body_inputs(I, "Omega", W); }, [&] {
-    require_close("slot euler_2_1: dOmega/dt = I^-1 (I Omega x Omega), (2.1)", s.euler_2_1(I, W), omega_dot(I, W),
-                  T(norm_inf(I) * W.squaredNorm() / min_moment(I)), 12);
-  });
+  showing_inputs([&] { return body_inputs(I, "Omega", W); },
+                 [&] {
+                   require_close("slot euler_2_1: dOmega/dt = I^-1 (I Omega x Omega), (2.1)", s.euler_2_1(I, W),
+                                 omega_dot(I, W), T(norm_inf(I) * W.squaredNorm() / min_moment(I)), 12);
+                 });
 }
 
 template <class T>
 void definition_euler_2_2(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
-  showing_inputs([&] { return body_inputs(I, "Omega", W); }, [&] {
-    require_close("slot euler_2_2: I dOmega/dt = I Omega x Omega, (2.2)", s.euler_2_2(I, W), omega_dot(I, W),
-                  T(norm_inf(I) * W.squaredNorm() / min_moment(I)), 12);
-  });
+  showing_inputs([&] { return body_inputs(I, "Omega", W); },
+                 [&] {
+                   require_close("slot euler_2_2: I dOmega/dt = I Omega x Omega, (2.2)", s.euler_2_2(I, W),
+                                 omega_dot(I, W), T(norm_inf(I) * W.squaredNorm() / min_moment(I)), 12);
+                 });
 }
 
 template <class T>
 void definition_euler_3_7(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
-  showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
-    require_close("slot euler_3_7: dPi/dt = Pi x I^-1 Pi, componentwise (3.7)", s.euler_3_7(I, P), pi_dot(I, P),
-                  T(P.squaredNorm() / min_moment(I)), 12);
-  });
+  showing_inputs([&] { return body_inputs(I, "Pi", P); },
+                 [&] {
+                   require_close("slot euler_3_7: dPi/dt = Pi x I^-1 Pi, componentwise (3.7)", s.euler_3_7(I, P),
+                                 pi_dot(I, P), T(P.squaredNorm() / min_moment(I)), 12);
+                 });
 }
 
 template <class T>
 void definition_euler_3_8(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
-  showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
-    require_close("slot euler_3_8: dPi/dt = Pi x I^-1 Pi, (3.8)", s.euler_3_8(I, P), pi_dot(I, P),
-                  T(P.squaredNorm() / min_moment(I)), 12);
-  });
+  showing_inputs([&] { return body_inputs(I, "Pi", P); },
+                 [&] {
+                   require_close("slot euler_3_8: dPi/dt = Pi x I^-1 Pi, (3.8)", s.euler_3_8(I, P), pi_dot(I, P),
+                                 T(P.squaredNorm() / min_moment(I)), 12);
+                 });
 }
 
 // (2.12)/(2.20): dPi_hat/dt = -[Omega_hat, Pi_hat], i.e. the hat of Pi x Omega.
@@ -92,10 +96,12 @@ void definition_euler_matrix_2_12(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   const Mat3<T> P_hat = truth::skew_of(P);
-  showing_inputs([&] { return named("I", I) + named("Pi_hat", P_hat); }, [&] {
-    require_close("slot euler_matrix_2_12: dPi/dt = -[Omega_hat, Pi_hat] = hat(Pi x Omega), (2.12)",
-                  s.euler_matrix_2_12(I, P_hat), truth::skew_of(pi_dot(I, P)), T(P.squaredNorm() / min_moment(I)), 24);
-  });
+  showing_inputs([&] { return named("I", I) + named("Pi_hat", P_hat); },
+                 [&] {
+                   require_close("slot euler_matrix_2_12: dPi/dt = -[Omega_hat, Pi_hat] = hat(Pi x Omega), (2.12)",
+                                 s.euler_matrix_2_12(I, P_hat), truth::skew_of(pi_dot(I, P)),
+                                 T(P.squaredNorm() / min_moment(I)), 24);
+                 });
 }
 
 // (2.5): l = I Omega . Omega / 2.
@@ -103,10 +109,11 @@ template <class T>
 void definition_lagrangian_2_5(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
-  showing_inputs([&] { return body_inputs(I, "Omega", W); }, [&] {
-    require_close("slot lagrangian_2_5: l = I Omega . Omega / 2, (2.5)", s.lagrangian_2_5(I, W),
-                  T(W.dot(I.cwiseProduct(W)) / T(2)), T(norm_inf(I) * W.squaredNorm()), 8);
-  });
+  showing_inputs([&] { return body_inputs(I, "Omega", W); },
+                 [&] {
+                   require_close("slot lagrangian_2_5: l = I Omega . Omega / 2, (2.5)", s.lagrangian_2_5(I, W),
+                                 T(W.dot(I.cwiseProduct(W)) / T(2)), T(norm_inf(I) * W.squaredNorm()), 8);
+                 });
 }
 
 // (2.13): l = <I Omega_hat, Omega_hat> / 2, the same number as (2.5).
@@ -115,10 +122,12 @@ void definition_lagrangian_2_13(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
   const Mat3<T> W_hat = truth::skew_of(W);
-  showing_inputs([&] { return named("I", I) + named("Omega_hat", W_hat); }, [&] {
-    require_close("slot lagrangian_2_13: l = <I Omega_hat, Omega_hat>/2 = I Omega . Omega / 2, (2.13)",
-                  s.lagrangian_2_13(I, W_hat), T(W.dot(I.cwiseProduct(W)) / T(2)), T(norm_inf(I) * W.squaredNorm()), 16);
-  });
+  showing_inputs([&] { return named("I", I) + named("Omega_hat", W_hat); },
+                 [&] {
+                   require_close("slot lagrangian_2_13: l = <I Omega_hat, Omega_hat>/2 = I Omega . Omega / 2, (2.13)",
+                                 s.lagrangian_2_13(I, W_hat), T(W.dot(I.cwiseProduct(W)) / T(2)),
+                                 T(norm_inf(I) * W.squaredNorm()), 16);
+                 });
 }
 
 // (3.1): Pi = dl/dOmega = I Omega.
@@ -126,10 +135,11 @@ template <class T>
 void definition_legendre_3_1(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
-  showing_inputs([&] { return body_inputs(I, "Omega", W); }, [&] {
-    require_close("slot legendre_3_1: Pi = dl/dOmega = I Omega, (3.1)", s.legendre_3_1(I, W), Vec3<T>(I.cwiseProduct(W)),
-                  T(norm_inf(I) * norm_inf(W)), 2);
-  });
+  showing_inputs([&] { return body_inputs(I, "Omega", W); },
+                 [&] {
+                   require_close("slot legendre_3_1: Pi = dl/dOmega = I Omega, (3.1)", s.legendre_3_1(I, W),
+                                 Vec3<T>(I.cwiseProduct(W)), T(norm_inf(I) * norm_inf(W)), 2);
+                 });
 }
 
 // (3.5): Omega = dh/dPi = I^-1 Pi.
@@ -137,10 +147,11 @@ template <class T>
 void definition_omega_3_5(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
-  showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
-    require_close("slot omega_3_5: Omega = dh/dPi = I^-1 Pi, (3.5)", s.omega_3_5(I, P), Vec3<T>(P.cwiseQuotient(I)),
-                  T(norm_inf(P) / min_moment(I)), 2);
-  });
+  showing_inputs([&] { return body_inputs(I, "Pi", P); },
+                 [&] {
+                   require_close("slot omega_3_5: Omega = dh/dPi = I^-1 Pi, (3.5)", s.omega_3_5(I, P),
+                                 Vec3<T>(P.cwiseQuotient(I)), T(norm_inf(P) / min_moment(I)), 2);
+                 });
 }
 
 // (3.3) and (3.4): h = Pi . Omega - l(Omega) = Pi . I^-1 Pi / 2.
@@ -148,20 +159,22 @@ template <class T>
 void definition_hamiltonian_3_3(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
-  showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
-    require_close("slot hamiltonian_3_3: h = Pi . Omega - l(Omega) = Pi . I^-1 Pi / 2, (3.3)", s.hamiltonian_3_3(I, P),
-                  energy(I, P), T(P.squaredNorm() / min_moment(I)), 16);
-  });
+  showing_inputs([&] { return body_inputs(I, "Pi", P); },
+                 [&] {
+                   require_close("slot hamiltonian_3_3: h = Pi . Omega - l(Omega) = Pi . I^-1 Pi / 2, (3.3)",
+                                 s.hamiltonian_3_3(I, P), energy(I, P), T(P.squaredNorm() / min_moment(I)), 16);
+                 });
 }
 
 template <class T>
 void definition_hamiltonian_3_4(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
-  showing_inputs([&] { return body_inputs(I, "Pi", P); }, [&] {
-    require_close("slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4)", s.hamiltonian_3_4(I, P), energy(I, P),
-                  T(P.squaredNorm() / min_moment(I)), 8);
-  });
+  showing_inputs([&] { return body_inputs(I, "Pi", P); },
+                 [&] {
+                   require_close("slot hamiltonian_3_4: h = Pi . I^-1 Pi / 2, (3.4)", s.hamiltonian_3_4(I, P),
+                                 energy(I, P), T(P.squaredNorm() / min_moment(I)), 8);
+                 });
 }
 
 // (2.21): h = <Pi, Omega_hat> - l, the same number as (3.4).
@@ -170,10 +183,11 @@ void definition_hamiltonian_2_21(const Subject<T>& s) {
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   const Mat3<T> P_hat = truth::skew_of(P);
-  showing_inputs([&] { return named("I", I) + named("Pi_hat", P_hat); }, [&] {
-    require_close("slot hamiltonian_2_21: h = <Pi, Omega_hat> - l = Pi . I^-1 Pi / 2, (2.21)",
-                  s.hamiltonian_2_21(I, P_hat), energy(I, P), T(P.squaredNorm() / min_moment(I)), 32);
-  });
+  showing_inputs([&] { return named("I", I) + named("Pi_hat", P_hat); },
+                 [&] {
+                   require_close("slot hamiltonian_2_21: h = <Pi, Omega_hat> - l = Pi . I^-1 Pi / 2, (2.21)",
+                                 s.hamiltonian_2_21(I, P_hat), energy(I, P), T(P.squaredNorm() / min_moment(I)), 32);
+                 });
 }
 
 // (3.16): dx1/dt = -a1 a3 x2 x3, dx2/dt = -a2 a3 x3 x1, dx3/dt = a1 a2 x1 x2.
@@ -189,7 +203,8 @@ void definition_nambu_3_16(const Subject<T>& s) {
   const T scale = T(a.squaredNorm() * x.squaredNorm());
   recognising_erratum(
       [&] { return printed != expected && (got - printed).cwiseAbs().maxCoeff() <= T(8) * eps<T>() * scale; },
-      "s3.nambu-3.16", "the answer grad(a1 x1^2 + a3 x3^2) x grad(a2 x2^2 + a3 x3^2) / 4", [&] {
+      "s3.nambu-3.16", "the answer grad(a1 x1^2 + a3 x3^2) x grad(a2 x2^2 + a3 x3^2) / 4",
+      [&] {
         showing_inputs([&] { return named("a", a) + named("x", x); },
                        [&] { require_close("slot nambu_3_16: the system (3.16)", got, expected, scale, 6); });
       });
@@ -204,12 +219,13 @@ void definition_clebsch_3_21(const Subject<T>& s) {
   const Vec3<T> W = truth::cross(P, Q).cwiseQuotient(I);
   const auto [dQ, dP] = s.clebsch_3_21(I, Q, P);
   const T scale = norm_inf(P) * norm_inf(Q) / min_moment(I);
-  showing_inputs([&] { return named("I", I) + named("Q", Q) + named("P", P); }, [&] {
-    require_close("slot clebsch_3_21: dQ/dt = Q x Omega, Omega = I^-1 (P x Q), (3.21)", dQ, truth::cross(Q, W),
-                  T(scale * norm_inf(Q)), 16);
-    require_close("slot clebsch_3_21: dP/dt = P x Omega, Omega = I^-1 (P x Q), (3.21)", dP, truth::cross(P, W),
-                  T(scale * norm_inf(P)), 16);
-  });
+  showing_inputs([&] { return named("I", I) + named("Q", Q) + named("P", P); },
+                 [&] {
+                   require_close("slot clebsch_3_21: dQ/dt = Q x Omega, Omega = I^-1 (P x Q), (3.21)", dQ,
+                                 truth::cross(Q, W), T(scale * norm_inf(Q)), 16);
+                   require_close("slot clebsch_3_21: dP/dt = P x Omega, Omega = I^-1 (P x Q), (3.21)", dP,
+                                 truth::cross(P, W), T(scale * norm_inf(P)), 16);
+                 });
 }
 
 // (2.10): dO/dt = O Omega_hat (Omega_hat = O^-1 dO/dt, left-invariant).
@@ -217,10 +233,11 @@ template <class T>
 void definition_reconstruction_2_10(const Subject<T>& s) {
   const Mat3<T> O = *gen::regime_rotation3<T>().as("O");
   const Vec3<T> W = *gen::regime_vec3<T>().as("Omega");
-  showing_inputs([&] { return named("O", O) + named("Omega", W); }, [&] {
-    require_close("slot reconstruction_2_10: dO/dt = O Omega_hat, (2.10)", s.reconstruction_2_10(O, W),
-                  Mat3<T>(O * truth::skew_of(W)), norm_inf(W), 8);
-  });
+  showing_inputs([&] { return named("O", O) + named("Omega", W); },
+                 [&] {
+                   require_close("slot reconstruction_2_10: dO/dt = O Omega_hat, (2.10)", s.reconstruction_2_10(O, W),
+                                 Mat3<T>(O * truth::skew_of(W)), norm_inf(W), 8);
+                 });
 }
 
 // Theorem 2.2 with the erratum of (2.30): pi = Ad*_{O^-1} Pi = O Pi.
@@ -229,14 +246,17 @@ void definition_spatial_momentum(const Subject<T>& s) {
   const Mat3<T> O = *gen::regime_rotation3<T>().as("O");
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   const Vec3<T> pi = s.spatial_momentum(O, P);
-  recognising_erratum(
-      [&] { return (pi - O.transpose() * P).cwiseAbs().maxCoeff() <= T(8) * eps<T>() * norm_inf(P); }, "s2.noether",
-      "(2.30) pi = O^-1 Pi O, i.e. O^T Pi", [&] {
-        showing_inputs([&] { return named("O", O) + named("Pi", P); }, [&] {
-          require_close("slot spatial_momentum: pi = O Pi (Theorem 2.2; (2.30) as printed is an erratum)", pi,
-                        Vec3<T>(O * P), norm_inf(P), 6);
-        });
-      });
+  recognising_erratum([&] { return (pi - O.transpose() * P).cwiseAbs().maxCoeff() <= T(8) * eps<T>() * norm_inf(P); },
+                      "s2.noether", "(2.30) pi = O^-1 Pi O, i.e. O^T Pi",
+                      [&] {
+                        showing_inputs(
+                            [&] { return named("O", O) + named("Pi", P); },
+                            [&] {
+                              require_close(
+                                  "slot spatial_momentum: pi = O Pi (Theorem 2.2; (2.30) as printed is an erratum)", pi,
+                                  Vec3<T>(O * P), norm_inf(P), 6);
+                            });
+                      });
 }
 
 // Remark 2.1: I_space = O I O^-1 = O diag(I) O^T.
@@ -244,10 +264,11 @@ template <class T>
 void definition_inertia_space(const Subject<T>& s) {
   const Mat3<T> O = *gen::regime_rotation3<T>().as("O");
   const Vec3<T> I = *gen::regime_inertia<T>().as("I");
-  showing_inputs([&] { return named("O", O) + named("I", I); }, [&] {
-    require_close("slot inertia_space: I_space = O I O^-1, Remark 2.1", s.inertia_space(O, I),
-                  Mat3<T>(O * I.asDiagonal() * O.transpose()), norm_inf(I), 12);
-  });
+  showing_inputs([&] { return named("O", O) + named("I", I); },
+                 [&] {
+                   require_close("slot inertia_space: I_space = O I O^-1, Remark 2.1", s.inertia_space(O, I),
+                                 Mat3<T>(O * I.asDiagonal() * O.transpose()), norm_inf(I), 12);
+                 });
 }
 
 // (2.3) for N = 1..5 point masses m_k at the columns X_k of X.
@@ -274,10 +295,11 @@ void definition_inertia_tensor_2_3(const Subject<T>& s) {
     expected += m(k) * (x.squaredNorm() * Mat3<T>::Identity() - x * x.transpose());
   }
   const T scale = T(m.size()) * norm_inf(m) * norm_inf(X) * norm_inf(X);
-  showing_inputs([&] { return named("m", m) + named("X (columns X_k)", X); }, [&] {
-    require_close("slot inertia_tensor_2_3: I = sum m_k (|X_k|^2 Id - X_k X_k^T), (2.3)", s.inertia_tensor_2_3(m, X),
-                  expected, scale, 8.0 * static_cast<double>(m.size()));
-  });
+  showing_inputs([&] { return named("m", m) + named("X (columns X_k)", X); },
+                 [&] {
+                   require_close("slot inertia_tensor_2_3: I = sum m_k (|X_k|^2 Id - X_k X_k^T), (2.3)",
+                                 s.inertia_tensor_2_3(m, X), expected, scale, 8.0 * static_cast<double>(m.size()));
+                 });
 }
 
 template <class T>
@@ -293,22 +315,24 @@ void definition_inertia_bilinear_2_3(const Subject<T>& s) {
     expected += m(k) * truth::cross(a, x).dot(truth::cross(b, x));
   }
   const T scale = T(m.size()) * norm_inf(m) * norm_inf(X) * norm_inf(X) * norm_inf(a) * norm_inf(b);
-  showing_inputs([&] { return named("m", m) + named("X (columns X_k)", X) + named("a", a) + named("b", b); }, [&] {
-    require_close("slot inertia_bilinear_2_3: (a, b) = sum m_k (a x X_k) . (b x X_k), (2.3)",
-                  s.inertia_bilinear_2_3(m, X, a, b), expected, scale, 24.0 * static_cast<double>(m.size()));
-  });
+  showing_inputs([&] { return named("m", m) + named("X (columns X_k)", X) + named("a", a) + named("b", b); },
+                 [&] {
+                   require_close("slot inertia_bilinear_2_3: (a, b) = sum m_k (a x X_k) . (b x X_k), (2.3)",
+                                 s.inertia_bilinear_2_3(m, X, a, b), expected, scale,
+                                 24.0 * static_cast<double>(m.size()));
+                 });
 }
 
 }  // namespace
 
-#define GM_BODY_DEFINITION(slot, entry, statement, ...)                                                \
-  GM_PROPERTY(definition_##slot, all_scalars,                                                          \
-              {.id = "definition_" #slot,                                                              \
-               .spec = entry,                                                                          \
-               .title = "slot " #slot " alone: " statement,                                            \
-               .tolerance = ToleranceClass::Exact,                                                     \
-               .needs = {#slot},                                                                       \
-               .negative_controls = {__VA_ARGS__},                                                     \
+#define GM_BODY_DEFINITION(slot, entry, statement, ...)     \
+  GM_PROPERTY(definition_##slot, all_scalars,               \
+              {.id = "definition_" #slot,                   \
+               .spec = entry,                               \
+               .title = "slot " #slot " alone: " statement, \
+               .tolerance = ToleranceClass::Exact,          \
+               .needs = {#slot},                            \
+               .negative_controls = {__VA_ARGS__},          \
                .cases = {.d = 200, .mp = 100, .q = 50}})
 
 GM_BODY_DEFINITION(euler_2_1, "s2.euler-equations", "(2.1) on symmetric and spherical tops, axes, tiny and huge Omega",

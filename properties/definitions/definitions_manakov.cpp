@@ -40,10 +40,12 @@ void definition_manakov_M(const Subject<T>& s) {
   const int n = *gen::uniform(3, 7).as("n");
   const auto b = *gen::manakov_body<T>(n).as("body");
   const MatX<T> W = draw_omega<T>(n);
-  showing_inputs([&] { return body_text(b) + named("Omega", W); }, [&] {
-    require_close("slot manakov_M: M = A Omega + Omega A, (2.34) (n = " + std::to_string(n) + ")", s.manakov_M(b.A, W),
-                  MatX<T>(b.A * W + W * b.A), T(T(n) * norm_inf(b.A) * norm_inf(W)), 4.0 * n);
-  });
+  showing_inputs([&] { return body_text(b) + named("Omega", W); },
+                 [&] {
+                   require_close("slot manakov_M: M = A Omega + Omega A, (2.34) (n = " + std::to_string(n) + ")",
+                                 s.manakov_M(b.A, W), MatX<T>(b.A * W + W * b.A), T(T(n) * norm_inf(b.A) * norm_inf(W)),
+                                 4.0 * n);
+                 });
 }
 
 // (2.34) read backwards: Omega solves A Omega + Omega A = M (unique for positive definite A).
@@ -55,13 +57,15 @@ void definition_manakov_Omega(const Subject<T>& s) {
   const auto b = *gen::manakov_body<T>(n).as("body");
   const MatX<T> W = draw_omega<T>(n);
   const MatX<T> M = b.A * W + W * b.A;
-  showing_inputs([&] { return body_text(b) + named("M", M); }, [&] {
-    const MatX<T> Ws = s.manakov_Omega(b.A, M);
-    require("slot manakov_Omega: Omega is n x n (n = " + std::to_string(n) + ")", Ws.rows() == n && Ws.cols() == n,
-            "got " + std::to_string(Ws.rows()) + " x " + std::to_string(Ws.cols()));
-    require_close("slot manakov_Omega: A Omega + Omega A = M, (2.34) (n = " + std::to_string(n) + ")",
-                  MatX<T>(b.A * Ws + Ws * b.A), M, T(T(n) * norm_inf(b.A) * norm_inf(Ws)), 8.0 * n * n);
-  });
+  showing_inputs([&] { return body_text(b) + named("M", M); },
+                 [&] {
+                   const MatX<T> Ws = s.manakov_Omega(b.A, M);
+                   require("slot manakov_Omega: Omega is n x n (n = " + std::to_string(n) + ")",
+                           Ws.rows() == n && Ws.cols() == n,
+                           "got " + std::to_string(Ws.rows()) + " x " + std::to_string(Ws.cols()));
+                   require_close("slot manakov_Omega: A Omega + Omega A = M, (2.34) (n = " + std::to_string(n) + ")",
+                                 MatX<T>(b.A * Ws + Ws * b.A), M, T(T(n) * norm_inf(b.A) * norm_inf(Ws)), 8.0 * n * n);
+                 });
 }
 
 // (2.34), (2.36): dM/dt = [M, Omega] with Omega from M.
@@ -71,11 +75,13 @@ void definition_manakov_2_34(const Subject<T>& s) {
   const auto b = *gen::manakov_body<T>(n).as("body");
   const MatX<T> W = draw_omega<T>(n);
   const MatX<T> M = b.A * W + W * b.A;
-  showing_inputs([&] { return body_text(b) + named("M", M); }, [&] {
-    require_close("slot manakov_2_34: dM/dt = [M, Omega], A Omega + Omega A = M, (2.34) (n = " + std::to_string(n) + ")",
-                  s.manakov_2_34(b.A, M), commutator_of(M, W), T(b.spread * norm_inf(M) * norm_inf(W)),
-                  8.0 * n * n + 8.0 * n);
-  });
+  showing_inputs([&] { return body_text(b) + named("M", M); },
+                 [&] {
+                   require_close("slot manakov_2_34: dM/dt = [M, Omega], A Omega + Omega A = M, (2.34) (n = " +
+                                     std::to_string(n) + ")",
+                                 s.manakov_2_34(b.A, M), commutator_of(M, W), T(b.spread * norm_inf(M) * norm_inf(W)),
+                                 8.0 * n * n + 8.0 * n);
+                 });
 }
 
 // Proposition 2.4's Lagrangian: l(Omega) = -tr(Omega A Omega) / 2.
@@ -84,10 +90,12 @@ void definition_manakov_lagrangian(const Subject<T>& s) {
   const int n = *gen::uniform(3, 7).as("n");
   const auto b = *gen::manakov_body<T>(n).as("body");
   const MatX<T> W = draw_omega<T>(n);
-  showing_inputs([&] { return body_text(b) + named("Omega", W); }, [&] {
-    require_close("slot manakov_lagrangian: l = -tr(Omega A Omega)/2, Proposition 2.4", s.manakov_lagrangian(b.A, W),
-                  T(-(W * b.A * W).trace() / T(2)), T(T(n * n) * norm_inf(b.A) * norm_inf(W) * norm_inf(W)), 2.0 * n * n);
-  });
+  showing_inputs([&] { return body_text(b) + named("Omega", W); },
+                 [&] {
+                   require_close("slot manakov_lagrangian: l = -tr(Omega A Omega)/2, Proposition 2.4",
+                                 s.manakov_lagrangian(b.A, W), T(-(W * b.A * W).trace() / T(2)),
+                                 T(T(n * n) * norm_inf(b.A) * norm_inf(W) * norm_inf(W)), 2.0 * n * n);
+                 });
 }
 
 // (3.23) with the corrected momentum of the closing exercise (erratum mm.manakov-clebsch):
@@ -110,29 +118,31 @@ void definition_manakov_clebsch_3_23(const Subject<T>& s) {
   // The closing exercise as printed, M = (P^T Q - Q^T P)/2 = -M/2: Omega and both rates scale by -1/2.
   recognising_erratum(
       [&] {
-        return !M.isZero() &&
-               (dQ + Q * W / T(2)).cwiseAbs().maxCoeff() <= T(64 * n * n) * eps<T>() * T(T(n) * norm_inf(Q) * omega_size);
+        return !M.isZero() && (dQ + Q * W / T(2)).cwiseAbs().maxCoeff() <=
+                                  T(64 * n * n) * eps<T>() * T(T(n) * norm_inf(Q) * omega_size);
       },
-      "mm.manakov-clebsch", "M = (P^T Q - Q^T P)/2", [&] {
-        showing_inputs([&] { return body_text(b) + named("Q", Q) + named("P", P); }, [&] {
-          require_close("slot manakov_clebsch_3_23: dQ/dt = Q Omega, M = Q^T P - P^T Q, (3.23)", dQ, MatX<T>(Q * W),
-                        T(T(n) * norm_inf(Q) * omega_size), 16.0 * n * n);
-          require_close("slot manakov_clebsch_3_23: dP/dt = P Omega, M = Q^T P - P^T Q, (3.23)", dP, MatX<T>(P * W),
-                        T(T(n) * norm_inf(P) * omega_size), 16.0 * n * n);
-        });
+      "mm.manakov-clebsch", "M = (P^T Q - Q^T P)/2",
+      [&] {
+        showing_inputs([&] { return body_text(b) + named("Q", Q) + named("P", P); },
+                       [&] {
+                         require_close("slot manakov_clebsch_3_23: dQ/dt = Q Omega, M = Q^T P - P^T Q, (3.23)", dQ,
+                                       MatX<T>(Q * W), T(T(n) * norm_inf(Q) * omega_size), 16.0 * n * n);
+                         require_close("slot manakov_clebsch_3_23: dP/dt = P Omega, M = Q^T P - P^T Q, (3.23)", dP,
+                                       MatX<T>(P * W), T(T(n) * norm_inf(P) * omega_size), 16.0 * n * n);
+                       });
       });
 }
 
 }  // namespace
 
-#define GM_MANAKOV_DEFINITION(slot, entry, statement, ...)                                             \
-  GM_PROPERTY(definition_##slot, all_scalars,                                                          \
-              {.id = "definition_" #slot,                                                              \
-               .spec = entry,                                                                          \
-               .title = "slot " #slot " alone: " statement,                                            \
-               .tolerance = ToleranceClass::Exact,                                                     \
-               .needs = {#slot},                                                                       \
-               .negative_controls = {__VA_ARGS__},                                                     \
+#define GM_MANAKOV_DEFINITION(slot, entry, statement, ...)  \
+  GM_PROPERTY(definition_##slot, all_scalars,               \
+              {.id = "definition_" #slot,                   \
+               .spec = entry,                               \
+               .title = "slot " #slot " alone: " statement, \
+               .tolerance = ToleranceClass::Exact,          \
+               .needs = {#slot},                            \
+               .negative_controls = {__VA_ARGS__},          \
                .cases = {.d = 100, .mp = 25, .q = 15}})
 
 GM_MANAKOV_DEFINITION(manakov_M, "s2.manakov", "M = A Omega + Omega A, (2.34), n = 3..6, A = R D R^T",

@@ -214,9 +214,12 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
   const std::string parts = parts_order({"Q", "P"}, {errs_Q, errs_P}, hs, floors);
   explained(c, [&] {
     showing_inputs(
-        [&] { return c.inputs(t_end / T(Ns.front())) + "    (h halved down to 1/" + std::to_string(Ns.back()) + ")\n"; },
         [&] {
-          judge_order_claim(in.name, cl.order, " on the Clebsch system " + c.system, scalar_tag<T>(), hs, errs, floors, parts);
+          return c.inputs(t_end / T(Ns.front())) + "    (h halved down to 1/" + std::to_string(Ns.back()) + ")\n";
+        },
+        [&] {
+          judge_order_claim(in.name, cl.order, " on the Clebsch system " + c.system, scalar_tag<T>(), hs, errs, floors,
+                            parts);
         });
   });
 }
@@ -387,7 +390,8 @@ GM_PROPERTY(
      .tolerance = ToleranceClass::Truncation,
      .needs = {},
      .negative_controls = {"explicit_verlet_nonseparable", "clebsch_midpoint_sign_flipped"},
-     GM_CL, .judges = {"order"}});
+     GM_CL,
+     .judges = {"order"}});
 
 GM_PROPERTY(manakov_clebsch_integrator_order, integrator_scalars,
             {.id = "manakov_clebsch_integrator_order",
@@ -396,7 +400,8 @@ GM_PROPERTY(manakov_clebsch_integrator_order, integrator_scalars,
              .tolerance = ToleranceClass::Truncation,
              .needs = {},
              .negative_controls = {"explicit_verlet_nonseparable", "manakov_clebsch_midpoint_printed_M"},
-             GM_MCL, .judges = {"order"}});
+             GM_MCL,
+             .judges = {"order"}});
 
 GM_PROPERTY(clebsch_integrator_symmetric, integrator_scalars,
             {.id = "clebsch_integrator_symmetric",
@@ -405,7 +410,8 @@ GM_PROPERTY(clebsch_integrator_symmetric, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"explicit_verlet_nonseparable", "clebsch_midpoint_loose_solve"},
-             GM_CL, .judges = {"symmetric"}});
+             GM_CL,
+             .judges = {"symmetric"}});
 
 GM_PROPERTY(manakov_clebsch_integrator_symmetric, integrator_scalars,
             {.id = "manakov_clebsch_integrator_symmetric",
@@ -414,7 +420,8 @@ GM_PROPERTY(manakov_clebsch_integrator_symmetric, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"explicit_verlet_nonseparable", "clebsch_midpoint_loose_solve"},
-             GM_MCL, .judges = {"symmetric"}});
+             GM_MCL,
+             .judges = {"symmetric"}});
 
 GM_PROPERTY(clebsch_integrator_energy, integrator_scalars,
             {.id = "clebsch_integrator_energy",
@@ -423,7 +430,8 @@ GM_PROPERTY(clebsch_integrator_energy, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"clebsch_midpoint_claims_energy"},
-             GM_CL, .judges = {"energy"}});
+             GM_CL,
+             .judges = {"energy"}});
 
 GM_PROPERTY(
     manakov_clebsch_integrator_energy, integrator_scalars,
@@ -433,7 +441,8 @@ GM_PROPERTY(
      .tolerance = ToleranceClass::Roundoff,
      .needs = {},
      .negative_controls = {"clebsch_midpoint_claims_energy"},
-     GM_MCL, .judges = {"energy"}});
+     GM_MCL,
+     .judges = {"energy"}});
 
 GM_PROPERTY(clebsch_integrator_symplectic, integrator_scalars,
             {.id = "clebsch_integrator_symplectic",
@@ -444,7 +453,8 @@ GM_PROPERTY(clebsch_integrator_symplectic, integrator_scalars,
              .needs = {},
              .negative_controls = {"explicit_verlet_nonseparable", "rk4_claims_symplectic",
                                    "clebsch_midpoint_loose_solve"},
-             GM_CL, .judges = {"symplectic"}});
+             GM_CL,
+             .judges = {"symplectic"}});
 
 GM_PROPERTY(manakov_clebsch_integrator_symplectic, integrator_scalars,
             {.id = "manakov_clebsch_integrator_symplectic",
@@ -454,7 +464,8 @@ GM_PROPERTY(manakov_clebsch_integrator_symplectic, integrator_scalars,
              .needs = {},
              .negative_controls = {"explicit_verlet_nonseparable", "rk4_claims_symplectic",
                                    "clebsch_midpoint_loose_solve"},
-             GM_MCL, .judges = {"symplectic"}});
+             GM_MCL,
+             .judges = {"symplectic"}});
 
 #undef GM_CL
 #undef GM_MCL

@@ -105,7 +105,7 @@ void integrator_order(const Subject<T>&, const Integrator<T>& in, const Integrat
   const RigidBodyState<T> exact = dyn::oracle_rigid_body(I, x0, {t_end}).front();
   const T scale = dyn::at_least_one(norm_inf(x0.Pi));
   std::vector<double> hs, errs, floors, errs_pi, errs_O;
-  Series ser{"convergence: " + in.name, "error at t = 1" + scalar_tag<T>(), "step h", "max error", true, true, {},
+  Series ser{"convergence: " + in.name,   "error at t = 1" + scalar_tag<T>(), "step h", "max error", true, true, {},
              static_cast<double>(c.order)};
   for (int N : {8, 16, 32, 64, 128}) {
     const T h = t_end / T(N);
@@ -121,10 +121,16 @@ void integrator_order(const Subject<T>&, const Integrator<T>& in, const Integrat
   record_series(ser);
   // Each part with its own order: a Lie-group method may be right on Pi and not on O.
   const std::string parts = parts_order({"Pi", "O"}, {errs_pi, errs_O}, hs, floors);
-  explaining_step(in, I, [&] { return std::vector<RigidBodyState<T>>{x0, exact}; }, hs, [&] {
-    showing_inputs([&] { return rigid_body_inputs(I, x0) + "    h = 1/8, halved down to 1/128; t = 1\n"; },
-                   [&] { judge_order_claim(in.name, c.order, "", scalar_tag<T>(), hs, errs, floors, parts); });
-  });
+  explaining_step(
+      in, I,
+      [&] {
+        return std::vector<RigidBodyState<T>>{x0, exact};
+      },
+      hs,
+      [&] {
+        showing_inputs([&] { return rigid_body_inputs(I, x0) + "    h = 1/8, halved down to 1/128; t = 1\n"; },
+                       [&] { judge_order_claim(in.name, c.order, "", scalar_tag<T>(), hs, errs, floors, parts); });
+      });
 }
 
 // Symmetry: step(h) then step(-h) returns to the start, at round-off: two steps, each accurate to
@@ -141,10 +147,11 @@ void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const Inte
     const T r = state_distance(back, x0);
     if (k == 0 || worse(r, worst)) worst = r, inputs = rigid_body_inputs(I, x0) + "    h = 1/4\n";
   }
-  showing_inputs([&] { return inputs; }, [&] {
-    judge_measured_claim<T>("symmetric", c.symmetric, in.name, "step(h) then step(-h) returns to the start", worst, T(1),
-                            64);
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_measured_claim<T>("symmetric", c.symmetric, in.name,
+                                           "step(h) then step(-h) returns to the start", worst, T(1), 64);
+                 });
 }
 
 // Invariants over 64 steps of h = 1/8: round-off accumulates at most linearly, k = 16 per step and
@@ -161,13 +168,15 @@ constexpr int kSteps = 64;
 template <class T>
 std::string scaled_note(const T& lambda, const T& unscaled, const T& allowed) {
   if (lambda == T(1)) return {};
-  const std::string where = " (worst at a state scaled by " + to_string_full(lambda) + " and h by its inverse: the same motion in other units";
+  const std::string where = " (worst at a state scaled by " + to_string_full(lambda) +
+                            " and h by its inverse: the same motion in other units";
   if (!is_finite(unscaled))
-    return where + "; the same body and state unscaled could not be run to compare (not finite, or the step raised): "
-                   "cause not identified)";
+    return where +
+           "; the same body and state unscaled could not be run to compare (not finite, or the step raised): "
+           "cause not identified)";
   if (!(unscaled <= allowed))
-    return where + "; the same body and state unscaled fail as well, with " + fmt("%.3g", to_double(T(unscaled / allowed))) +
-           " of the allowed residual: the units are not the cause)";
+    return where + "; the same body and state unscaled fail as well, with " +
+           fmt("%.3g", to_double(T(unscaled / allowed))) + " of the allowed residual: the units are not the cause)";
   return where + "; the same body and state unscaled keep it, with " + fmt("%.3g", to_double(T(unscaled / allowed))) +
          " of the allowed residual: the defect depends on the units, so an absolute "
          "tolerance (an iteration stopped when a change is below a fixed size) or a cut-off on the state's size is the "
@@ -213,8 +222,8 @@ T claim_state_scale(int k) {
 // 1/lambda (claim_state_scale); `scale_of` is taken on the drawn state and carried over as
 // lambda^degree (the invariant's degree in Pi), so the allowance does not change.
 template <class T, class Invariant, class Scale>
-void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const char* name, Invariant invariant, Scale scale_of,
-                     int degree) {
+void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const char* name, Invariant invariant,
+                     Scale scale_of, int degree) {
   T worst(0), worst_lambda(1), worst_scale(1);
   Vec3<T> I_worst;
   RigidBodyState<T> drawn_worst, x_worst;  // the worst case as drawn, and as run (scaled)
@@ -222,18 +231,26 @@ void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, c
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
     const RigidBodyState<T> drawn{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
     // Inside the integrator's declared domain, h = 1/8 scaled with the state.
-    const T lambda = within_domain<T>(claim_state_scale<T>(k), stepguard::rate_of(I, drawn), stepguard::size_of(drawn), 0.125);
+    const T lambda =
+        within_domain<T>(claim_state_scale<T>(k), stepguard::rate_of(I, drawn), stepguard::size_of(drawn), 0.125);
     const RigidBodyState<T> x0{(drawn.Pi * lambda).eval(), drawn.O};
     const T drawn_scale = scale_of(I, drawn);
     T scale = drawn_scale;
     for (int d = 0; d < degree; ++d) scale *= lambda;
     const T v0 = invariant(I, x0);
-    Series ser{std::string("invariants: ") + in.name, std::string(name) + scalar_tag<T>(), "t", "|residual|", false, true,
-               {}, 0};
+    Series ser{std::string("invariants: ") + in.name,
+               std::string(name) + scalar_tag<T>(),
+               "t",
+               "|residual|",
+               false,
+               true,
+               {},
+               0};
     bool this_worst = k == 0;
     run(in, I, x0, T(1) / (T(8) * lambda), kSteps, [&](int n, const RigidBodyState<T>& x) {
       const T r = abs_value(T(invariant(I, x) - v0));
-      if (worse(T(r / scale), worst)) worst = r / scale, worst_lambda = lambda, this_worst = true;  // a NaN stays the worst
+      if (worse(T(r / scale), worst))
+        worst = r / scale, worst_lambda = lambda, this_worst = true;  // a NaN stays the worst
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
     if (this_worst) I_worst = I, drawn_worst = drawn, x_worst = x0, worst_scale = drawn_scale;
@@ -244,29 +261,33 @@ void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, c
     return std::vector<RigidBodyState<T>>{x_worst, run(in, I_worst, x_worst, h_worst, kSteps)};
   };
   explaining_step(in, I_worst, states, std::vector<double>{to_double(h_worst)}, [&] {
-    showing_inputs([&] { return rigid_body_inputs(I_worst, x_worst) + "    h = " + to_string_full(h_worst) +
-                                ", 64 steps (the case with the worst residual)\n"; },
-                   [&] {
-                     // A cause is named on a failing row only, and only on an experiment.
-                     const T allowed = T(T(16.0 * degree) * T(kSteps) * eps<T>());
-                     const bool fails = !(is_finite(worst) && worst <= allowed);
-                     T unscaled(0);
-                     if (fails && worst_lambda != T(1))
-                       unscaled = residual_along(
-                           [&](const RigidBodyState<T>& x, const auto& each) { run(in, I_worst, x, T(1) / T(8), kSteps, each); },
-                           drawn_worst, worst_scale, [&](const RigidBodyState<T>& x) { return invariant(I_worst, x); });
-                     judge_measured_claim<T>(claim, claimed, in.name,
-                                             std::string(name) + " is kept to round-off over 64 steps" +
-                                                 (fails ? scaled_note(worst_lambda, unscaled, allowed) : std::string()),
-                                             worst, T(kSteps), 16.0 * degree);
-                   });
+    showing_inputs(
+        [&] {
+          return rigid_body_inputs(I_worst, x_worst) + "    h = " + to_string_full(h_worst) +
+                 ", 64 steps (the case with the worst residual)\n";
+        },
+        [&] {
+          // A cause is named on a failing row only, and only on an experiment.
+          const T allowed = T(T(16.0 * degree) * T(kSteps) * eps<T>());
+          const bool fails = !(is_finite(worst) && worst <= allowed);
+          T unscaled(0);
+          if (fails && worst_lambda != T(1))
+            unscaled = residual_along(
+                [&](const RigidBodyState<T>& x, const auto& each) { run(in, I_worst, x, T(1) / T(8), kSteps, each); },
+                drawn_worst, worst_scale, [&](const RigidBodyState<T>& x) { return invariant(I_worst, x); });
+          judge_measured_claim<T>(claim, claimed, in.name,
+                                  std::string(name) + " is kept to round-off over 64 steps" +
+                                      (fails ? scaled_note(worst_lambda, unscaled, allowed) : std::string()),
+                                  worst, T(kSteps), 16.0 * degree);
+        });
   });
 }
 
 template <class T>
 void integrator_casimir(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   invariant_claim<T>(
-      in, "casimir", c.casimir, "the Casimir |Pi|^2", [](const Vec3<T>&, const RigidBodyState<T>& x) { return dyn::casimir(x.Pi); },
+      in, "casimir", c.casimir, "the Casimir |Pi|^2",
+      [](const Vec3<T>&, const RigidBodyState<T>& x) { return dyn::casimir(x.Pi); },
       [](const Vec3<T>&, const RigidBodyState<T>& x) {
         const T size = dyn::at_least_one(norm_inf(x.Pi));
         return T(size * size);
@@ -277,7 +298,8 @@ void integrator_casimir(const Subject<T>&, const Integrator<T>& in, const Integr
 template <class T>
 void integrator_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
   invariant_claim<T>(
-      in, "energy", c.energy, "the energy h (3.4)", [](const Vec3<T>& I, const RigidBodyState<T>& x) { return dyn::energy(I, x.Pi); },
+      in, "energy", c.energy, "the energy h (3.4)",
+      [](const Vec3<T>& I, const RigidBodyState<T>& x) { return dyn::energy(I, x.Pi); },
       [](const Vec3<T>& I, const RigidBodyState<T>& x) {
         const T size = dyn::at_least_one(norm_inf(x.Pi));
         return T(size * size / I.minCoeff());
@@ -294,8 +316,8 @@ void integrator_orthogonality(const Subject<T>&, const Integrator<T>& in, const 
     const Vec3<T> I = dyn::draw_generic_inertia<T>();
     const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
     if (k == 0) inputs = rigid_body_inputs(I, x0) + "    h = 1/8, 64 steps\n";
-    Series ser{std::string("invariants: ") + in.name, "|O^T O - Id|" + scalar_tag<T>(), "t", "|residual|", false, true, {},
-               0};
+    Series ser{
+        std::string("invariants: ") + in.name, "|O^T O - Id|" + scalar_tag<T>(), "t", "|residual|", false, true, {}, 0};
     run(in, I, x0, T(1) / T(8), kSteps, [&](int n, const RigidBodyState<T>& x) {
       const T r = max_abs((x.O.transpose() * x.O - Mat3<T>::Identity()).eval());
       if (worse(r, worst)) worst = r, inputs = rigid_body_inputs(I, x0) + "    h = 1/8, 64 steps\n";
@@ -303,10 +325,11 @@ void integrator_orthogonality(const Subject<T>&, const Integrator<T>& in, const 
     });
     if (k == 0) record_series(ser);
   }
-  showing_inputs([&] { return inputs; }, [&] {
-    judge_measured_claim<T>("orthogonality", c.orthogonality, in.name, "O^T O = Id is kept to round-off over 64 steps",
-                            worst, T(kSteps), 32);
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_measured_claim<T>("orthogonality", c.orthogonality, in.name,
+                                           "O^T O = Id is kept to round-off over 64 steps", worst, T(kSteps), 32);
+                 });
 }
 
 // Poisson map for the bracket (3.6): with Phi the Pi-part of one step (O = Id; the Pi-part of a
@@ -321,7 +344,9 @@ T poisson_defect(const Integrator<T>& in, std::string* inputs) {
   const Vec3<T> Pi = dyn::draw_generic_momentum<T>();
   const T h = T(1) / T(4);
   *inputs = named("I", I) + named("Pi", Pi) + "    O = Id, h = 1/4\n";
-  auto phi = [&](const Vec3<T>& p) { return Vec3<T>(in.rigid_body_step(I, RigidBodyState<T>{p, Mat3<T>::Identity()}, h).Pi); };
+  auto phi = [&](const Vec3<T>& p) {
+    return Vec3<T>(in.rigid_body_step(I, RigidBodyState<T>{p, Mat3<T>::Identity()}, h).Pi);
+  };
   Mat3<T> D;
   for (int j = 0; j < 3; ++j)
     D.col(j) = deriv::central8<T>(
@@ -343,10 +368,12 @@ void integrator_poisson(const Subject<T>&, const Integrator<T>& in, const Integr
     const T r = poisson_defect<T>(in, &drawn);
     if (k == 0 || worse(r, worst)) worst = r, inputs = drawn;
   }
-  showing_inputs([&] { return inputs; }, [&] {
-    judge_measured_claim<T>("poisson", c.poisson, in.name, "D Phi J(Pi) D Phi^T = J(Phi(Pi)): a Poisson map for (3.6)",
-                            worst, deriv::roundoff_factor8<T>(), 16);
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_measured_claim<T>("poisson", c.poisson, in.name,
+                                           "D Phi J(Pi) D Phi^T = J(Phi(Pi)): a Poisson map for (3.6)", worst,
+                                           deriv::roundoff_factor8<T>(), 16);
+                 });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -398,8 +425,9 @@ void manakov_integrator_order(const Subject<T>&, const Integrator<T>& in, const 
   const ManakovState<T> exact = dyn::oracle_manakov(m.a, m.x0, {t_end}).front();
   const T scale = dyn::at_least_one(norm_inf(m.x0.M));
   std::vector<double> hs, errs, floors, errs_M, errs_O;
-  Series ser{"convergence (Manakov): " + in.name, "error at t = 1" + scalar_tag<T>(), "step h", "max error", true, true, {},
-             static_cast<double>(c.order)};
+  Series ser{
+      "convergence (Manakov): " + in.name, "error at t = 1" + scalar_tag<T>(), "step h", "max error", true, true, {},
+      static_cast<double>(c.order)};
   for (int N : {8, 16, 32, 64}) {
     const T h = t_end / T(N);
     const ManakovState<T> y = run(in, m.A, m.x0, h, N);
@@ -413,12 +441,18 @@ void manakov_integrator_order(const Subject<T>&, const Integrator<T>& in, const 
   }
   record_series(ser);
   const std::string parts = parts_order({"M", "O"}, {errs_M, errs_O}, hs, floors);
-  explaining_manakov_step(in, m.A, [&] { return std::vector<ManakovState<T>>{m.x0, exact}; }, [&] {
-    showing_inputs([&] { return manakov_inputs(m, T(t_end / T(8))) + "    (h halved down to 1/64)\n"; }, [&] {
-      judge_order_claim(in.name, c.order, " on Manakov, n = " + std::to_string(m.n), scalar_tag<T>(), hs, errs, floors,
-                        parts);
-    });
-  });
+  explaining_manakov_step(
+      in, m.A,
+      [&] {
+        return std::vector<ManakovState<T>>{m.x0, exact};
+      },
+      [&] {
+        showing_inputs([&] { return manakov_inputs(m, T(t_end / T(8))) + "    (h halved down to 1/64)\n"; },
+                       [&] {
+                         judge_order_claim(in.name, c.order, " on Manakov, n = " + std::to_string(m.n), scalar_tag<T>(),
+                                           hs, errs, floors, parts);
+                       });
+      });
 }
 
 // |M_ij| <= 1 and n <= 5 here: the scale n (entries of products summed over n terms).
@@ -434,12 +468,15 @@ void manakov_integrator_symmetric(const Subject<T>&, const Integrator<T>& in, co
     const T r = state_distance(back, m.x0) / T(m.n);
     if (k == 0 || worse(r, worst)) worst = r, worst_case = m;
   }
-  explaining_manakov_step(in, first.A, [&] { return std::vector<ManakovState<T>>{first.x0}; }, [&] {
-    showing_inputs([&] { return manakov_inputs(worst_case, h); }, [&] {
-      judge_measured_claim<T>("symmetric", c.symmetric, in.name, "Manakov step(h) then step(-h) returns to the start",
-                              worst, T(1), 64);
-    });
-  });
+  explaining_manakov_step(
+      in, first.A, [&] { return std::vector<ManakovState<T>>{first.x0}; },
+      [&] {
+        showing_inputs([&] { return manakov_inputs(worst_case, h); },
+                       [&] {
+                         judge_measured_claim<T>("symmetric", c.symmetric, in.name,
+                                                 "Manakov step(h) then step(-h) returns to the start", worst, T(1), 64);
+                       });
+      });
 }
 
 // The worst drift over 32 steps of h = 1/8 from kStates generic cases with n in [lo, hi], relative
@@ -449,8 +486,8 @@ void manakov_integrator_symmetric(const Subject<T>&, const Integrator<T>& in, co
 constexpr int kManakovSteps = 32;
 
 template <class T, class F>
-void manakov_invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const std::string& name, int lo, int hi,
-                             F invariant, int degree, int homogeneity) {
+void manakov_invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const std::string& name, int lo,
+                             int hi, F invariant, int degree, int homogeneity) {
   T worst(0), worst_lambda(1), worst_scale(1);
   ManakovCase<T> worst_case, drawn_worst;  // the worst case as run (scaled), and as drawn
   for (int k = 0; k < kStates; ++k) {
@@ -483,14 +520,18 @@ void manakov_invariant_claim(const Integrator<T>& in, const char* claim, bool cl
     return std::vector<ManakovState<T>>{worst_case.x0, run(in, worst_case.A, worst_case.x0, h_worst, kManakovSteps)};
   };
   explaining_manakov_step(in, worst_case.A, states, [&] {
-    const auto inputs = [&] { return manakov_inputs(worst_case, h_worst) + "    (32 steps; the case with the worst residual)\n"; };
+    const auto inputs = [&] {
+      return manakov_inputs(worst_case, h_worst) + "    (32 steps; the case with the worst residual)\n";
+    };
     showing_inputs(inputs, [&] {
       const T allowed = T(T(16.0 * degree) * T(kManakovSteps) * eps<T>());
       const bool fails = !(is_finite(worst) && worst <= allowed);
       T unscaled(0);
       if (fails && worst_lambda != T(1))
         unscaled = residual_along(
-            [&](const ManakovState<T>& x, const auto& each) { run(in, drawn_worst.A, x, T(1) / T(8), kManakovSteps, each); },
+            [&](const ManakovState<T>& x, const auto& each) {
+              run(in, drawn_worst.A, x, T(1) / T(8), kManakovSteps, each);
+            },
             drawn_worst.x0, worst_scale, [&](const ManakovState<T>& x) { return invariant(drawn_worst, x); });
       judge_measured_claim<T>(claim, claimed, in.name,
                               name + " is kept to round-off over 32 steps" +
@@ -587,7 +628,8 @@ T manakov_poisson_defect(const Integrator<T>& in, std::string* inputs) {
   auto phi = [&](const MatX<T>& M) { return in.manakov_step(A, ManakovState<T>{M, MatX<T>::Identity(n, n)}, h).M; };
   MatX<T> D(d, d);
   for (int k = 0; k < d; ++k)
-    D.col(k) = deriv::central8<T>([&](const T& e) { return coords((phi((M0 + e * basis(k)).eval()))); }, deriv::step8<T>());
+    D.col(k) =
+        deriv::central8<T>([&](const T& e) { return coords((phi((M0 + e * basis(k)).eval()))); }, deriv::step8<T>());
   const MatX<T> defect = D * J(M0) * D.transpose() - J(phi(M0));
   return max_abs(defect);
 }
@@ -601,11 +643,13 @@ void manakov_integrator_poisson(const Subject<T>&, const Integrator<T>& in, cons
     const T r = manakov_poisson_defect<T>(in, &drawn);
     if (k == 0 || worse(r, worst)) worst = r, inputs = drawn;
   }
-  showing_inputs([&] { return inputs; }, [&] {
-    judge_measured_claim<T>("poisson", c.poisson, in.name,
-                            "D Phi J(M) D Phi^T = J(Phi(M)): a Poisson map for the Lie-Poisson bracket of so(4)*", worst,
-                            T(T(6) * deriv::roundoff_factor8<T>()), 16);
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_measured_claim<T>(
+                       "poisson", c.poisson, in.name,
+                       "D Phi J(M) D Phi^T = J(Phi(M)): a Poisson map for the Lie-Poisson bracket of so(4)*", worst,
+                       T(T(6) * deriv::roundoff_factor8<T>()), 16);
+                 });
 }
 
 }  // namespace
@@ -616,14 +660,16 @@ void manakov_integrator_poisson(const Subject<T>&, const Integrator<T>& in, cons
 // (2^-20 or less) for an absolute tolerance at 1e-50 to show (about 0.7 per case).
 #define GM_MK_SCALED .cases = {.d = 5, .mp = 3, .q = 0}, .step = StepKind::Manakov
 
-GM_PROPERTY(integrator_order, integrator_scalars,
-            {.id = "integrator_order",
-             .spec = "s3.euler-flow",
-             .title = "rigid-body integrator: the claimed order is the log-log slope of the error against h (within 0.1)",
-             .tolerance = ToleranceClass::Truncation,
-             .needs = {},
-             .negative_controls = {"splitting_lie_trotter", "midpoint_one_iteration"},
-             GM_RB, .judges = {"order"}});
+GM_PROPERTY(
+    integrator_order, integrator_scalars,
+    {.id = "integrator_order",
+     .spec = "s3.euler-flow",
+     .title = "rigid-body integrator: the claimed order is the log-log slope of the error against h (within 0.1)",
+     .tolerance = ToleranceClass::Truncation,
+     .needs = {},
+     .negative_controls = {"splitting_lie_trotter", "midpoint_one_iteration"},
+     GM_RB,
+     .judges = {"order"}});
 
 GM_PROPERTY(integrator_symmetric, integrator_scalars,
             {.id = "integrator_symmetric",
@@ -632,7 +678,8 @@ GM_PROPERTY(integrator_symmetric, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"splitting_lie_trotter", "rk4_claims_everything"},
-             GM_RB, .judges = {"symmetric"}});
+             GM_RB,
+             .judges = {"symmetric"}});
 
 GM_PROPERTY(integrator_casimir, integrator_scalars,
             {.id = "integrator_casimir",
@@ -641,7 +688,8 @@ GM_PROPERTY(integrator_casimir, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"rk4_claims_everything", "midpoint_one_iteration", "midpoint_absolute_tolerance"},
-             GM_RB, .judges = {"casimir"}});
+             GM_RB,
+             .judges = {"casimir"}});
 
 GM_PROPERTY(integrator_energy, integrator_scalars,
             {.id = "integrator_energy",
@@ -650,7 +698,8 @@ GM_PROPERTY(integrator_energy, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"rk4_claims_everything", "midpoint_one_iteration", "midpoint_absolute_tolerance"},
-             GM_RB, .judges = {"energy"}});
+             GM_RB,
+             .judges = {"energy"}});
 
 GM_PROPERTY(integrator_orthogonality, integrator_scalars,
             {.id = "integrator_orthogonality",
@@ -661,7 +710,9 @@ GM_PROPERTY(integrator_orthogonality, integrator_scalars,
              .negative_controls = {"rk4_claims_everything"},
              // Its own matrix only: a quaternion's matrix is the suite's R(q / |q|), orthogonal by
              // construction (its norm is integrator_unit_quaternion's).
-             .cases = {.d = 10, .mp = 2, .q = 0}, .step = StepKind::RigidBodyMatrix, .judges = {"orthogonality"}});
+             .cases = {.d = 10, .mp = 2, .q = 0},
+             .step = StepKind::RigidBodyMatrix,
+             .judges = {"orthogonality"}});
 
 GM_PROPERTY(integrator_poisson, integrator_scalars,
             {.id = "integrator_poisson",
@@ -670,7 +721,8 @@ GM_PROPERTY(integrator_poisson, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"rk4_claims_everything"},
-             GM_RB, .judges = {"poisson"}});
+             GM_RB,
+             .judges = {"poisson"}});
 
 GM_PROPERTY(manakov_integrator_order, integrator_scalars,
             {.id = "manakov_integrator_order",
@@ -680,7 +732,8 @@ GM_PROPERTY(manakov_integrator_order, integrator_scalars,
              .needs = {},
              .negative_controls = {"manakov_isospectral_explicit", "midpoint_one_iteration",
                                    "manakov_midpoint_commutator_reversed"},
-             GM_MK, .judges = {"order"}});
+             GM_MK,
+             .judges = {"order"}});
 
 GM_PROPERTY(manakov_integrator_symmetric, integrator_scalars,
             {.id = "manakov_integrator_symmetric",
@@ -689,7 +742,8 @@ GM_PROPERTY(manakov_integrator_symmetric, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"manakov_isospectral_explicit", "rk4_claims_everything"},
-             GM_MK, .judges = {"symmetric"}});
+             GM_MK,
+             .judges = {"symmetric"}});
 
 GM_PROPERTY(manakov_integrator_casimir, integrator_scalars,
             {.id = "manakov_integrator_casimir",
@@ -698,7 +752,8 @@ GM_PROPERTY(manakov_integrator_casimir, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"rk4_claims_everything", "midpoint_one_iteration", "midpoint_absolute_tolerance"},
-             GM_MK_SCALED, .judges = {"casimir"}});
+             GM_MK_SCALED,
+             .judges = {"casimir"}});
 
 GM_PROPERTY(manakov_integrator_energy, integrator_scalars,
             {.id = "manakov_integrator_energy",
@@ -706,8 +761,10 @@ GM_PROPERTY(manakov_integrator_energy, integrator_scalars,
              .title = "Manakov integrator claiming the energy: -tr(Omega M)/4 kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
-             .negative_controls = {"rk4_claims_everything", "manakov_isospectral_explicit", "midpoint_absolute_tolerance"},
-             GM_MK_SCALED, .judges = {"energy"}});
+             .negative_controls = {"rk4_claims_everything", "manakov_isospectral_explicit",
+                                   "midpoint_absolute_tolerance"},
+             GM_MK_SCALED,
+             .judges = {"energy"}});
 
 GM_PROPERTY(manakov_integrator_orthogonality, integrator_scalars,
             {.id = "manakov_integrator_orthogonality",
@@ -716,16 +773,19 @@ GM_PROPERTY(manakov_integrator_orthogonality, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"rk4_claims_everything"},
-             GM_MK, .judges = {"orthogonality"}});
+             GM_MK,
+             .judges = {"orthogonality"}});
 
-GM_PROPERTY(manakov_integrator_spectrum, integrator_scalars,
-            {.id = "manakov_integrator_spectrum",
-             .spec = "s2.isospectral",
-             .title = "Manakov integrator claiming the spectrum: eigenvalues of M and tr(M^4) kept to round-off (n = 5)",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {},
-             .negative_controls = {"rk4_claims_everything"},
-             GM_MK, .judges = {"spectrum"}});
+GM_PROPERTY(
+    manakov_integrator_spectrum, integrator_scalars,
+    {.id = "manakov_integrator_spectrum",
+     .spec = "s2.isospectral",
+     .title = "Manakov integrator claiming the spectrum: eigenvalues of M and tr(M^4) kept to round-off (n = 5)",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {},
+     .negative_controls = {"rk4_claims_everything"},
+     GM_MK,
+     .judges = {"spectrum"}});
 
 GM_PROPERTY(manakov_integrator_poisson, integrator_scalars,
             {.id = "manakov_integrator_poisson",
@@ -734,7 +794,8 @@ GM_PROPERTY(manakov_integrator_poisson, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"rk4_claims_everything"},
-             GM_MK, .judges = {"poisson"}});
+             GM_MK,
+             .judges = {"poisson"}});
 
 #undef GM_RB
 #undef GM_MK

@@ -30,10 +30,10 @@ namespace properties_integrator_domain {
 namespace {
 
 struct Probe {
-  int j = 0;          // the state scaled by 2^j (0: as drawn)
-  int k = 4;          // h |Omega| = 2^-k
-  double rate = 0;    // |Omega| there
-  double size = 0;    // |state| there
+  int j = 0;        // the state scaled by 2^j (0: as drawn)
+  int k = 4;        // h |Omega| = 2^-k
+  double rate = 0;  // |Omega| there
+  double size = 0;  // |state| there
   double h = 0;
   bool raised = false;
   bool finite = true;
@@ -78,8 +78,10 @@ inline std::string verdict_of(const std::vector<Probe>& probes, const StepDomain
   bool by_rate = true;
   for (const auto& p : probes)
     if (p.k == 4) {
-      if (p.raised || !p.finite) fail_rate = std::min(fail_rate, p.rate);
-      else ok_rate = std::max(ok_rate, p.rate);
+      if (p.raised || !p.finite)
+        fail_rate = std::min(fail_rate, p.rate);
+      else
+        ok_rate = std::max(ok_rate, p.rate);
     }
   for (const auto& p : probes)
     if (p.k == 4 && p.rate >= fail_rate && !(p.raised || !p.finite)) by_rate = false;
@@ -92,23 +94,25 @@ inline std::string verdict_of(const std::vector<Probe>& probes, const StepDomain
             "domain{.max_omega = ...}; Python: domain = {\"max_omega\": ...}; Octave: the field domain = "
             "struct('max_omega', ...)), and nothing outside it is drawn";
   if (by_rate && fail_rate < 1e308)
-    return "your step " + what + " for |Omega| >= " + fmt("%.3g", fail_rate) + " (it works up to " + fmt("%.3g", ok_rate) + ")" +
-           first_message + advice;
+    return "your step " + what + " for |Omega| >= " + fmt("%.3g", fail_rate) + " (it works up to " +
+           fmt("%.3g", ok_rate) + ")" + first_message + advice;
   // A threshold on h.
   double fail_h = 0, ok_h = 1e308;
   bool by_h = true;
   for (const auto& p : probes)
     if (p.j == 0) {
-      if (p.raised || !p.finite) fail_h = std::max(fail_h, p.h);
-      else ok_h = std::min(ok_h, p.h);
+      if (p.raised || !p.finite)
+        fail_h = std::max(fail_h, p.h);
+      else
+        ok_h = std::min(ok_h, p.h);
     }
   for (const auto& p : probes)
     if (p.j == 0 && p.h <= fail_h && !(p.raised || !p.finite)) by_h = false;
   for (const auto& p : probes)
     if (p.j != 0 && (p.raised || !p.finite)) by_h = false;
   if (by_h && fail_h > 0)
-    return "your step " + what + " for h <= " + fmt("%.3g", fail_h) + " (it works down to h = " + fmt("%.3g", ok_h) + ")" +
-           first_message +
+    return "your step " + what + " for h <= " + fmt("%.3g", fail_h) + " (it works down to h = " + fmt("%.3g", ok_h) +
+           ")" + first_message +
            (declared.declared() ? std::string(" inside its declared domain")
                                 : "; if it is meant to work only above that, declare its domain (min_h)");
   return "your step " + what + " at " + std::to_string(bad.size()) + " of " + std::to_string(probes.size()) +
@@ -141,8 +145,10 @@ void refine(std::vector<Probe>& probes, Call&& at_scale) {
   int ok = -1000, bad = 1000;
   for (const auto& p : probes)
     if (p.k == 4) {
-      if (p.raised || !p.finite) bad = std::min(bad, p.j);
-      else ok = std::max(ok, p.j);
+      if (p.raised || !p.finite)
+        bad = std::min(bad, p.j);
+      else
+        ok = std::max(ok, p.j);
     }
   while (ok > -1000 && bad < 1000 && bad - ok > 1) {
     const int mid = (ok + bad) / 2;
@@ -194,9 +200,13 @@ void integrator_domain(const Subject<T>&, const Integrator<T>& in, const Integra
   const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
   const double rate0 = stepguard::rate_of(I, x0), size0 = stepguard::size_of(x0);
   const auto probes = probes_of<T>(
-      rate0, size0, [&](const T& l) { return RigidBodyState<T>{Vec3<T>(x0.Pi * l), x0.O}; },
+      rate0, size0,
+      [&](const T& l) {
+        return RigidBodyState<T>{Vec3<T>(x0.Pi * l), x0.O};
+      },
       [&](int j, int k, const RigidBodyState<T>& x, const T& h) {
-        return probe(j, k, I, x, h, [&](const RigidBodyState<T>& s, const T& dt) { return finite(in.rigid_body_step(I, s, dt)); });
+        return probe(j, k, I, x, h,
+                     [&](const RigidBodyState<T>& s, const T& dt) { return finite(in.rigid_body_step(I, s, dt)); });
       });
   bool works = false;
   const std::string words = verdict_of(probes, c.domain, &works);
@@ -213,9 +223,13 @@ void manakov_integrator_domain(const Subject<T>&, const Integrator<T>& in, const
   const ManakovState<T> x0{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
   const double rate0 = stepguard::rate_of(A, x0), size0 = stepguard::size_of(x0);
   const auto probes = probes_of<T>(
-      rate0, size0, [&](const T& l) { return ManakovState<T>{MatX<T>(x0.M * l), x0.O}; },
+      rate0, size0,
+      [&](const T& l) {
+        return ManakovState<T>{MatX<T>(x0.M * l), x0.O};
+      },
       [&](int j, int k, const ManakovState<T>& x, const T& h) {
-        return probe(j, k, A, x, h, [&](const ManakovState<T>& s, const T& dt) { return finite(in.manakov_step(A, s, dt)); });
+        return probe(j, k, A, x, h,
+                     [&](const ManakovState<T>& s, const T& dt) { return finite(in.manakov_step(A, s, dt)); });
       });
   bool works = false;
   const std::string words = verdict_of(probes, c.domain, &works);

@@ -35,8 +35,8 @@ void integrator_unit_quaternion(const Subject<T>&, const Integrator<T>& in, cons
     const std::string drawn = named("I", I) + named("q", u.q) + named(angular_key(in.form.angular), u.angular()) +
                               "    (" + describe_state_form(in.form) + "), h = 1/8, 64 steps\n";
     if (k == 0) inputs = drawn;
-    Series ser{std::string("invariants: ") + in.name, "||q|^2 - 1|" + scalar_tag<T>(), "t", "|residual|", false, true, {},
-               0};
+    Series ser{
+        std::string("invariants: ") + in.name, "||q|^2 - 1|" + scalar_tag<T>(), "t", "|residual|", false, true, {}, 0};
     for (int n = 1; n <= kSteps; ++n) {
       u = in.declared_step(I, u, T(1) / T(8));
       u.form = in.form;
@@ -46,25 +46,29 @@ void integrator_unit_quaternion(const Subject<T>&, const Integrator<T>& in, cons
     }
     if (k == 0) record_series(ser);
   }
-  showing_inputs([&] { return inputs; }, [&] {
-    judge_roundoff_claim<T>("unit_quaternion", c.unit_quaternion, in.name,
-                            your_attitude(in.form) + " keeps |q|^2 = 1 to round-off over 64 steps", worst, T(kSteps), 32);
-    // judge_roundoff_claim records the finding; a claimed one also logs its residual here.
-    if (c.unit_quaternion) require_close(in.name + ": |q|^2 - 1 (claimed)", worst, T(0), T(kSteps), 32);
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_roundoff_claim<T>("unit_quaternion", c.unit_quaternion, in.name,
+                                           your_attitude(in.form) + " keeps |q|^2 = 1 to round-off over 64 steps",
+                                           worst, T(kSteps), 32);
+                   // judge_roundoff_claim records the finding; a claimed one also logs its residual here.
+                   if (c.unit_quaternion) require_close(in.name + ": |q|^2 - 1 (claimed)", worst, T(0), T(kSteps), 32);
+                 });
 }
 
 }  // namespace
 
-GM_PROPERTY(integrator_unit_quaternion, integrator_scalars,
-            {.id = "integrator_unit_quaternion",
-             .spec = "s2.reconstruction",
-             .title = "rigid-body integrator keeping a quaternion and claiming unit_quaternion: |q| = 1 kept to round-off",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {},
-             .negative_controls = {"quaternion_euler_claims_unit_norm"},
-             .cases = {.d = 10, .mp = 2, .q = 0},
-             .step = StepKind::RigidBodyQuaternion, .judges = {"unit_quaternion"}});
+GM_PROPERTY(
+    integrator_unit_quaternion, integrator_scalars,
+    {.id = "integrator_unit_quaternion",
+     .spec = "s2.reconstruction",
+     .title = "rigid-body integrator keeping a quaternion and claiming unit_quaternion: |q| = 1 kept to round-off",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {},
+     .negative_controls = {"quaternion_euler_claims_unit_norm"},
+     .cases = {.d = 10, .mp = 2, .q = 0},
+     .step = StepKind::RigidBodyQuaternion,
+     .judges = {"unit_quaternion"}});
 
 }  // namespace properties_integrator_quaternion
 }  // namespace gm

@@ -56,8 +56,11 @@ namespace gm {
 namespace properties_integrator_regimes {
 namespace {
 
-const char* kRegimeNames[] = {"generic", "relative equilibrium (Pi along a principal axis)",
-                              "near a relative equilibrium", "symmetric top (two equal moments)", "spherical top",
+const char* kRegimeNames[] = {"generic",
+                              "relative equilibrium (Pi along a principal axis)",
+                              "near a relative equilibrium",
+                              "symmetric top (two equal moments)",
+                              "spherical top",
                               "nearly symmetric top (two moments 2^-k apart)"};
 
 struct RegimeDraw {
@@ -87,8 +90,9 @@ std::string regime_name(const RigidBodyRegime<T>& r) {
 template <class T>
 RigidBodyRegime<T> draw_rigid_body_regime() {
   RigidBodyRegime<T> r;
-  r.regime = dyn::pick<T>(gen::uniform(0, 6), "regime (0 generic, 1 on an axis, 2 near one, 3 symmetric top, 4 sphere, "
-                                               "5 nearly symmetric)");
+  r.regime = dyn::pick<T>(gen::uniform(0, 6),
+                          "regime (0 generic, 1 on an axis, 2 near one, 3 symmetric top, 4 sphere, "
+                          "5 nearly symmetric)");
   const int axis = dyn::pick<T>(gen::uniform(0, 3), "axis (of the regime)");
   r.I = dyn::draw_generic_inertia<T>();
   Vec3<T> P = dyn::draw_generic_momentum<T>();
@@ -126,7 +130,8 @@ RigidBodyRegime<T> draw_rigid_body_regime() {
   const T rate = dyn::at_least_one(T(norm_inf(P) / r.I.minCoeff()));
   // Inside the integrator's declared domain: the scale halved until the state, its rate
   // and the smallest step (t / 128) are.
-  r.lambda = within_domain<T>(r.lambda, stepguard::rate_of(r.I, r.x0), to_double(T(norm_inf(P))), to_double(T(T(1) / rate / T(128))));
+  r.lambda = within_domain<T>(r.lambda, stepguard::rate_of(r.I, r.x0), to_double(T(norm_inf(P))),
+                              to_double(T(T(1) / rate / T(128))));
   r.t_end = T(1) / rate;
   r.x0.Pi *= r.lambda;
   r.t_end /= r.lambda;
@@ -175,27 +180,29 @@ void judge_convergence(const std::string& integrator, const IntegratorClaims& c,
     // error that is large at every step is the latter, and the claim's finding says so first.
     const bool converged = errs.back() <= floors.back();
     const std::string stall = conv::stall_words(errs, floors.back());
-    record_claim_finding("order", c.order > 0, converged,
-                         converged ? integrator + ": at round-off in the regime '" + regime + "' (" + scalar +
-                                         "): no order contradicted"
-                                   : integrator + ": does not converge in the regime '" + regime + "' (" + scalar +
-                                         "): " + stall,
-                         converged ? std::string() : "does not converge");
+    record_claim_finding(
+        "order", c.order > 0, converged,
+        converged ? integrator + ": at round-off in the regime '" + regime + "' (" + scalar + "): no order contradicted"
+                  : integrator + ": does not converge in the regime '" + regime + "' (" + scalar + "): " + stall,
+        converged ? std::string() : "does not converge");
     require(integrator + ": the error at t converges to 0 as h -> 0 (" + regime + ")", converged,
             stall + "\n" + fit.table + "  inputs, by the notes' names:\n" + inputs + hints);
     return;
   }
   const double needed = c.order > 0 ? c.order - 0.1 : 0.9;
   const bool holds = fit.slope >= needed;
-  showing_inputs([&] { return inputs + "  the error at t against h:\n" + fit.table + hints; }, [&] {
-    judge_claim("order", c.order > 0, holds,
-                integrator + fmt(": measured order %.3f in the regime '", fit.slope) + regime +
-                    (c.order > 0 ? fmt("', claimed %g", c.order) : std::string("', no order claimed: at least 0.9")) + " (" +
-                    scalar + ")");
-  });
+  showing_inputs([&] { return inputs + "  the error at t against h:\n" + fit.table + hints; },
+                 [&] {
+                   judge_claim("order", c.order > 0, holds,
+                               integrator + fmt(": measured order %.3f in the regime '", fit.slope) + regime +
+                                   (c.order > 0 ? fmt("', claimed %g", c.order)
+                                                : std::string("', no order claimed: at least 0.9")) +
+                                   " (" + scalar + ")");
+                 });
   require(integrator + ": in the regime '" + regime + "' the error at t converges at order >= " + fmt("%.1f", needed) +
               (c.order > 0 ? fmt(" (claimed order %g)", c.order) : std::string(" (any convergent method)")),
-          holds, fmt("measured slope %.4f\n", fit.slope) + fit.table + "  inputs, by the notes' names:\n" + inputs + hints);
+          holds,
+          fmt("measured slope %.4f\n", fit.slope) + fit.table + "  inputs, by the notes' names:\n" + inputs + hints);
 }
 
 // A convergence run of a regime: the error at t_end for h = t/8 ... t/128 (hs as fractions of t,
@@ -256,14 +263,18 @@ std::string regime_evidence(const Integrator<T>& in, const RigidBodyRegime<T>& r
     u.lambda = T(1);
     u.x0.Pi /= r.lambda;
     u.t_end *= r.lambda;
-    const std::string e = experiment(c, [&] { return convergence_run(in, u); }, measured);
+    const std::string e = experiment(
+        c, [&] { return convergence_run(in, u); }, measured);
     if (e == "passes")
-      return "  cause, by experiment: the same body and state unscaled (momentum divided by " + to_string_full(r.lambda) +
-             ", time multiplied by it) converge (" + measured + "); scaled they do not: the defect depends on the units, "
-             "so a cut-off on the size of the momentum (a body 'at rest' below some size) or an iteration stopped at an "
-             "absolute tolerance such as eps (1 + |Pi|) is what to look for; make them relative to the momentum's size\n";
-    out += "    the same body and state unscaled " + std::string(e == "fails" ? "fail as well" : "could not be run") + " (" +
-           measured + "): the units are not the cause\n";
+      return "  cause, by experiment: the same body and state unscaled (momentum divided by " +
+             to_string_full(r.lambda) + ", time multiplied by it) converge (" + measured +
+             "); scaled they do not: the defect depends on the units, "
+             "so a cut-off on the size of the momentum (a body 'at rest' below some size) or an iteration stopped at "
+             "an "
+             "absolute tolerance such as eps (1 + |Pi|) is what to look for; make them relative to the momentum's "
+             "size\n";
+    out += "    the same body and state unscaled " + std::string(e == "fails" ? "fail as well" : "could not be run") +
+           " (" + measured + "): the units are not the cause\n";
   }
   // The attitude near a branch point of the rotation group (the identity, a rotation by pi):
   // nudged off by 1/4 rad (the same body, momentum, units and time), does the step converge?
@@ -271,8 +282,10 @@ std::string regime_evidence(const Integrator<T>& in, const RigidBodyRegime<T>& r
   const bool near_identity = cos_angle > T(1) - gen::pow2<T>(-12), near_pi = cos_angle < T(-1) + gen::pow2<T>(-12);
   const Mat3<T> skew_part = r.x0.O - r.x0.O.transpose();
   const double sin_angle = std::sqrt(to_double(T(skew_part(2, 1) * skew_part(2, 1) + skew_part(0, 2) * skew_part(0, 2) +
-                                                 skew_part(1, 0) * skew_part(1, 0)))) / 2;
-  const double off = near_pi ? M_PI - std::atan2(sin_angle, to_double(cos_angle)) : std::atan2(sin_angle, to_double(cos_angle));
+                                                 skew_part(1, 0) * skew_part(1, 0)))) /
+                           2;
+  const double off =
+      near_pi ? M_PI - std::atan2(sin_angle, to_double(cos_angle)) : std::atan2(sin_angle, to_double(cos_angle));
   if (near_identity || near_pi) {
     RigidBodyRegime<T> n = r;
     const Vec3<T> axis(T(1) / T(3), T(2) / T(3), T(2) / T(3));
@@ -282,10 +295,13 @@ std::string regime_evidence(const Integrator<T>& in, const RigidBodyRegime<T>& r
     const Mat3<T> Id = Mat3<T>::Identity();
     n.x0.O = Mat3<T>(r.x0.O * (Id - S).inverse() * (Id + S));
     const std::string where = near_identity ? "the identity" : "a rotation by pi";
-    const std::string e = experiment(c, [&] { return convergence_run(in, n); }, measured);
+    const std::string e = experiment(
+        c, [&] { return convergence_run(in, n); }, measured);
     if (e == "passes")
-      return "  cause, by experiment: the attitude is within " + fmt("%.2g", off) + " rad of " + where + "; turned off it by about 1/4 rad (the same body, momentum and time), the step "
-             "converges (" + measured + "): the step branches on the attitude near " + where +
+      return "  cause, by experiment: the attitude is within " + fmt("%.2g", off) + " rad of " + where +
+             "; turned off it by about 1/4 rad (the same body, momentum and time), the step "
+             "converges (" +
+             measured + "): the step branches on the attitude near " + where +
              " (a small-angle series or a threshold on the rotation angle, a quaternion's sign)\n";
     out += "    with the attitude turned 1/4 rad off " + where + " it " +
            std::string(e == "fails" ? "fails as well" : "could not be run") + " (" + measured +
@@ -303,16 +319,18 @@ std::string regime_evidence(const Integrator<T>& in, const RigidBodyRegime<T>& r
       n.I(1) *= T(1) - gen::pow2<T>(-6);
       how = "the moments made distinct by 2^-6";
     }
-    const std::string e = experiment(c, [&] { return convergence_run(in, n); }, measured);
+    const std::string e = experiment(
+        c, [&] { return convergence_run(in, n); }, measured);
     if (e == "passes")
       return "  cause, by experiment: " + how + " (the same units and time), the step converges (" + measured +
              "); at the special state it does not: the step branches at this special state (a 'fast path' for steady "
              "rotation about a principal axis, a branch for equal moments)\n";
-    out += "    with " + how + " it " + std::string(e == "fails" ? "fails as well" : "could not be run") + " (" + measured +
-           "): the special state is not the cause\n";
+    out += "    with " + how + " it " + std::string(e == "fails" ? "fails as well" : "could not be run") + " (" +
+           measured + "): the special state is not the cause\n";
   }
   return "  cause not identified; tried at this case:\n" +
-         (out.empty() ? std::string("    nothing: a generic state in the drawn units, whose field the step follows\n") : out);
+         (out.empty() ? std::string("    nothing: a generic state in the drawn units, whose field the step follows\n")
+                      : out);
 }
 
 template <class T>
@@ -322,9 +340,15 @@ void integrator_converges_in_every_regime(const Subject<T>&, const Integrator<T>
   const std::string inputs = "    regime: " + regime_name(r) + "\n" + named("I", r.I) + named("Pi", r.x0.Pi) +
                              named("O", r.x0.O) + "    t = " + to_string_full(r.t_end) + ", h = t/8 ... t/128\n";
   try {
-    stepfield::explaining_step(in, r.I, [&] { return std::vector<RigidBodyState<T>>{r.x0, flow_at_end(r)}; }, run.h_run, [&] {
-      judge_convergence(in.name, c, ScalarInfo<T>::name, regime_name(r), run.hs, run.errs, run.floors, inputs, "");
-    });
+    stepfield::explaining_step(
+        in, r.I,
+        [&] {
+          return std::vector<RigidBodyState<T>>{r.x0, flow_at_end(r)};
+        },
+        run.h_run,
+        [&] {
+          judge_convergence(in.name, c, ScalarInfo<T>::name, regime_name(r), run.hs, run.errs, run.floors, inputs, "");
+        });
   } catch (rc::detail::CaseResult& failure) {
     // A cause only on an experiment at this case, run now that it failed.
     const std::string evidence = regime_evidence(in, r, c);
@@ -380,7 +404,8 @@ ConvergenceRun manakov_convergence_run(const Integrator<T>& in, const ManakovFra
     const ManakovState<T> x = run_steps(in, A, x0, h, N);
     run.hs.push_back(1.0 / N);
     run.h_run.push_back(to_double(h));
-    run.errs.push_back(to_double(std::max(T(max_abs((x.M - exact.M).eval()) / size), T(max_abs((x.O - exact.O).eval())))));
+    run.errs.push_back(
+        to_double(std::max(T(max_abs((x.M - exact.M).eval()) / size), T(max_abs((x.O - exact.O).eval())))));
     run.floors.push_back(16.0 * eps_double<T>() * N * n);
   }
   return run;
@@ -395,9 +420,11 @@ std::string manakov_frame_evidence(const Integrator<T>& in, const ManakovFrame<T
   if (f.lambda != T(1)) {
     ManakovFrame<T> u = f;
     u.lambda = T(1);
-    const std::string e = experiment(c, [&] { return manakov_convergence_run(in, u); }, measured);
+    const std::string e = experiment(
+        c, [&] { return manakov_convergence_run(in, u); }, measured);
     if (e == "passes")
-      return "  cause, by experiment: the same case unscaled converges (" + measured + "); scaled it does not: the "
+      return "  cause, by experiment: the same case unscaled converges (" + measured +
+             "); scaled it does not: the "
              "defect depends on the units (a cut-off on |M|, an absolute tolerance); make them relative to |M|\n";
     out += "    the same case unscaled " + std::string(e == "fails" ? "fails as well" : "could not be run") + " (" +
            measured + "): the units are not the cause\n";
@@ -405,21 +432,24 @@ std::string manakov_frame_evidence(const Integrator<T>& in, const ManakovFrame<T
   if (!f.R.isIdentity(T(0))) {
     ManakovFrame<T> d = f;
     d.R = MatX<T>::Identity(d.R.rows(), d.R.cols());
-    const std::string e = experiment(c, [&] { return manakov_convergence_run(in, d); }, measured);
+    const std::string e = experiment(
+        c, [&] { return manakov_convergence_run(in, d); }, measured);
     if (e == "passes")
       return "  cause, by experiment: the same body in its principal frame (A diagonal) converges (" + measured +
              "); with A = R diag(a) R^T not diagonal it does not: the step is right only for a diagonal A (Omega_ij = "
              "M_ij / (A_ii + A_jj), or only A's diagonal read); Omega must solve A Omega + Omega A = M (2.34) for the "
              "whole A\n";
-    out += "    in the principal frame (A diagonal) it " + std::string(e == "fails" ? "fails as well" : "could not be run") +
-           " (" + measured + "): the frame is not the cause\n";
+    out += "    in the principal frame (A diagonal) it " +
+           std::string(e == "fails" ? "fails as well" : "could not be run") + " (" + measured +
+           "): the frame is not the cause\n";
   }
   return "  cause not identified; tried at this case:\n" +
          (out.empty() ? std::string("    nothing: A diagonal, in the drawn units\n") : out);
 }
 
 template <class T>
-void manakov_integrator_converges_in_every_frame(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+void manakov_integrator_converges_in_every_frame(const Subject<T>&, const Integrator<T>& in,
+                                                 const IntegratorClaims& c) {
   ManakovFrame<T> f;
   const int n = dyn::pick<T>(gen::uniform(3, 5), "n");
   f.a = dyn::draw_generic_manakov_a<T>(n);
@@ -433,13 +463,18 @@ void manakov_integrator_converges_in_every_frame(const Subject<T>&, const Integr
   const ManakovState<T> x0 = f.seen(f.x0);
   const ManakovState<T> exact = f.seen(dyn::oracle_manakov(f.a, f.x0, {T(1)}).front());
   const ConvergenceRun run = manakov_convergence_run(in, f);
-  const std::string inputs = named("A", A) + named("M", x0.M) + named("O", x0.O) + "    t = " +
-                             to_string_full(T(T(1) / f.lambda)) + ", h = t/8 ... t/64\n";
+  const std::string inputs = named("A", A) + named("M", x0.M) + named("O", x0.O) +
+                             "    t = " + to_string_full(T(T(1) / f.lambda)) + ", h = t/8 ... t/64\n";
   try {
-    stepfield::explaining_manakov_step(in, A, [&] { return std::vector<ManakovState<T>>{x0, exact}; }, [&] {
-      judge_convergence(in.name, c, ScalarInfo<T>::name, "Manakov, n = " + std::to_string(n) + ", " + f.name(), run.hs,
-                        run.errs, run.floors, inputs, "");
-    });
+    stepfield::explaining_manakov_step(
+        in, A,
+        [&] {
+          return std::vector<ManakovState<T>>{x0, exact};
+        },
+        [&] {
+          judge_convergence(in.name, c, ScalarInfo<T>::name, "Manakov, n = " + std::to_string(n) + ", " + f.name(),
+                            run.hs, run.errs, run.floors, inputs, "");
+        });
   } catch (rc::detail::CaseResult& failure) {
     const std::string evidence = manakov_frame_evidence(in, f, c);
     if (!failure.description.empty() && failure.description.back() != '\n') failure.description += '\n';
@@ -466,7 +501,8 @@ void integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& in, const
   if (!(err <= bound)) {
     // First what the step does on the variable that shows it (a precision below 50 digits
     // measured as such, a step that does not reduce to the identity), then its field.
-    const std::string seen = stepfield::explain_rigid_body_step(in, I, std::vector<RigidBodyState<T>>{x0}, {to_double(h)});
+    const std::string seen =
+        stepfield::explain_rigid_body_step(in, I, std::vector<RigidBodyState<T>>{x0}, {to_double(h)});
     const bool field_right = seen.find("your step's vector field is right") != std::string::npos;
     // Field right and no precision below 50 digits measured (explain_rigid_body_step tries that
     // first): nothing confirms a cause, and none is named.
@@ -483,10 +519,11 @@ void integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& in, const
   require(err <= bound ? in.name + ": one step of h = 2^-40 in 50 digits is accurate far below double round-off"
                        : in.name + ": one step of h = 2^-40 in 50 digits is not accurate to 50 digits: " + cause,
           err <= bound,
-          "the error of the step is " + to_string_full(err) + " of the state's size, where any method of order >= 1 has "
-              "at most ~1e-24 (local error C h^2) and the bound is 2^-60 = " + to_string_full(bound) +
-              "\n  inputs, by the notes' names:\n" + named("I", I) + named("Pi", x0.Pi) + named("O", x0.O) +
-              "    h = 2^-40\n");
+          "the error of the step is " + to_string_full(err) +
+              " of the state's size, where any method of order >= 1 has "
+              "at most ~1e-24 (local error C h^2) and the bound is 2^-60 = " +
+              to_string_full(bound) + "\n  inputs, by the notes' names:\n" + named("I", I) + named("Pi", x0.Pi) +
+              named("O", x0.O) + "    h = 2^-40\n");
 }
 
 // Manakov's (M, O), n = 3..4 (the oracle's cost grows like n^4), A = diag(a) (the oracle's body).
@@ -506,11 +543,13 @@ void manakov_integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& i
                        in.name + ": one Manakov step of h = 2^-40 in 50 digits errs by " + to_string_full(err) +
                            " of the state's size (at most 2^-60 for a 50-digit step of any order)",
                        err <= bound ? std::string() : "computed below 50 digits");
-  require(in.name + ": one Manakov step of h = 2^-40 in 50 digits is accurate far below double round-off", err <= bound,
-          "the error of the step is " + to_string_full(err) + " of the state's size, where any method of order >= 1 has "
-              "at most ~1e-24 and the bound is 2^-60 (cause not identified: the Manakov step's precision is not probed)\n"
-              "  inputs, by the notes' names:\n" +
-              named("A", A) + named("M", x0.M) + named("O", x0.O) + "    h = 2^-40\n");
+  require(
+      in.name + ": one Manakov step of h = 2^-40 in 50 digits is accurate far below double round-off", err <= bound,
+      "the error of the step is " + to_string_full(err) +
+          " of the state's size, where any method of order >= 1 has "
+          "at most ~1e-24 and the bound is 2^-60 (cause not identified: the Manakov step's precision is not probed)\n"
+          "  inputs, by the notes' names:\n" +
+          named("A", A) + named("M", x0.M) + named("O", x0.O) + "    h = 2^-40\n");
 }
 
 // The local order (3. at the top of this file).
@@ -561,27 +600,29 @@ inline void judge_local_order(const std::string& integrator, const IntegratorCla
     const bool converged = errs.back() <= floor;
     if (!converged)
       record_claim_finding("order", c.order > 0, false,
-                           integrator + ": the error of one step" + problem + " does not go to 0 (" + scalar + "): " +
-                               conv::stall_words(errs, floor),
+                           integrator + ": the error of one step" + problem + " does not go to 0 (" + scalar +
+                               "): " + conv::stall_words(errs, floor),
                            "does not converge");
     require(integrator + ": the error of one step" + problem + " goes to 0 as h -> 0", converged,
             conv::stall_words(errs, floor) + "\n" + fit.table + "  inputs, by the notes' names:\n" + inputs);
-    record_note(integrator + ": the error of one step" + problem + " is at round-off from h = " +
-                fmt("%.3g", hs[std::max(0, fit.used)]) + " on: fewer than three step sizes to measure its slope in " +
-                scalar);
-    judge_claim("order", c.order > 0, true,
-                integrator + ": the error of one step" + problem + " is at round-off (" + scalar + "): no order contradicted");
+    record_note(integrator + ": the error of one step" + problem +
+                " is at round-off from h = " + fmt("%.3g", hs[std::max(0, fit.used)]) +
+                " on: fewer than three step sizes to measure its slope in " + scalar);
+    judge_claim(
+        "order", c.order > 0, true,
+        integrator + ": the error of one step" + problem + " is at round-off (" + scalar + "): no order contradicted");
     return;
   }
   const double needed = c.order > 0 ? c.order + 1 - 0.1 : 1.9;
   const bool holds = fit.slope >= needed;
-  showing_inputs([&] { return inputs + "  the error of one step against h:\n" + fit.table; }, [&] {
-    judge_claim("order", c.order > 0, holds,
-                integrator + fmt(": the error of one step is ~ h^%.3f", fit.slope) + problem +
-                    (c.order > 0 ? fmt(", where order %g needs h^%g", c.order, c.order + 1)
-                                 : std::string(", where any convergent method needs h^2")) +
-                    " (" + scalar + ")");
-  });
+  showing_inputs([&] { return inputs + "  the error of one step against h:\n" + fit.table; },
+                 [&] {
+                   judge_claim("order", c.order > 0, holds,
+                               integrator + fmt(": the error of one step is ~ h^%.3f", fit.slope) + problem +
+                                   (c.order > 0 ? fmt(", where order %g needs h^%g", c.order, c.order + 1)
+                                                : std::string(", where any convergent method needs h^2")) +
+                                   " (" + scalar + ")");
+                 });
   require(integrator + ": the error of one step" + problem + " shrinks like h^" + fmt("%.1f", needed) + " or faster" +
               (c.order > 0 ? fmt(" (claimed order %g)", c.order) : std::string(" (any convergent method)")),
           holds,
@@ -611,11 +652,13 @@ void integrator_local_order(const Subject<T>&, const Integrator<T>& in, const In
     h_run.push_back(to_double(steps[i]));
     errs.push_back(to_double(relative_distance(in.rigid_body_step(I, x0, steps[i]), exact[i], size)));
   }
-  stepfield::explaining_step(in, I, [&] { return std::vector<RigidBodyState<T>>{x0}; }, h_run, [&] {
-    judge_local_order(in.name, c, "", ScalarInfo<T>::name, hs, errs, local_error_floor<T>(),
-                      named("I", I) + named("Pi", x0.Pi) + named("O", x0.O) + "    h = c 2^-k t, c = " +
-                          to_string_full(factor) + ", t = " + to_string_full(t_s) + "\n");
-  });
+  stepfield::explaining_step(
+      in, I, [&] { return std::vector<RigidBodyState<T>>{x0}; }, h_run,
+      [&] {
+        judge_local_order(in.name, c, "", ScalarInfo<T>::name, hs, errs, local_error_floor<T>(),
+                          named("I", I) + named("Pi", x0.Pi) + named("O", x0.O) + "    h = c 2^-k t, c = " +
+                              to_string_full(factor) + ", t = " + to_string_full(t_s) + "\n");
+      });
 }
 
 // Manakov's (M, O), n = 3..4, A = diag(a), |M_ij| <= 1 (the time scale 1).
@@ -637,15 +680,17 @@ void manakov_integrator_local_order(const Subject<T>&, const Integrator<T>& in, 
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const ManakovState<T> step = in.manakov_step(A, x0, steps[i]);
     hs.push_back(to_double(steps[i]));
-    errs.push_back(to_double(
-        std::max(T(max_abs((step.M - exact[i].M).eval()) / size), T(max_abs((step.O - exact[i].O).eval())))));
+    errs.push_back(
+        to_double(std::max(T(max_abs((step.M - exact[i].M).eval()) / size), T(max_abs((step.O - exact[i].O).eval())))));
   }
-  stepfield::explaining_manakov_step(in, A, [&] { return std::vector<ManakovState<T>>{x0}; }, [&] {
-    judge_local_order(in.name, c, " on Manakov, n = " + std::to_string(n), ScalarInfo<T>::name, hs, errs,
-                      local_error_floor<T>() * n,
-                      named("A", A) + named("M", x0.M) + named("O", x0.O) + "    h = c 2^-k, c = " +
-                          to_string_full(factor) + "\n");
-  });
+  stepfield::explaining_manakov_step(
+      in, A, [&] { return std::vector<ManakovState<T>>{x0}; },
+      [&] {
+        judge_local_order(in.name, c, " on Manakov, n = " + std::to_string(n), ScalarInfo<T>::name, hs, errs,
+                          local_error_floor<T>() * n,
+                          named("A", A) + named("M", x0.M) + named("O", x0.O) +
+                              "    h = c 2^-k, c = " + to_string_full(factor) + "\n");
+      });
 }
 
 }  // namespace
@@ -659,7 +704,8 @@ GM_PROPERTY(integrator_local_order, integrator_scalars,
              .needs = {},
              .negative_controls = {"midpoint_step_size_in_float"},
              .cases = {.d = 10, .mp = 3, .q = 0},
-             .step = StepKind::RigidBody, .judges = {"order"}});
+             .step = StepKind::RigidBody,
+             .judges = {"order"}});
 
 GM_PROPERTY(manakov_integrator_local_order, integrator_scalars,
             {.id = "manakov_integrator_local_order",
@@ -670,7 +716,8 @@ GM_PROPERTY(manakov_integrator_local_order, integrator_scalars,
              .needs = {},
              .negative_controls = {"midpoint_step_size_in_float"},
              .cases = {.d = 5, .mp = 2, .q = 0},
-             .step = StepKind::Manakov, .judges = {"order"}});
+             .step = StepKind::Manakov,
+             .judges = {"order"}});
 
 GM_PROPERTY(integrator_converges_in_every_regime, integrator_scalars,
             {.id = "integrator_converges_in_every_regime",
@@ -681,7 +728,8 @@ GM_PROPERTY(integrator_converges_in_every_regime, integrator_scalars,
              .needs = {},
              .negative_controls = {"principal_axis_fast_path", "symmetric_top_branch", "midpoint_at_rest_below_1e_10"},
              .cases = {.d = 60, .mp = 20, .q = 0},
-             .step = StepKind::RigidBody, .judges = {"order"}});
+             .step = StepKind::RigidBody,
+             .judges = {"order"}});
 
 GM_PROPERTY(manakov_integrator_converges_in_every_frame, integrator_scalars,
             {.id = "manakov_integrator_converges_in_every_frame",
@@ -692,7 +740,8 @@ GM_PROPERTY(manakov_integrator_converges_in_every_frame, integrator_scalars,
              .needs = {},
              .negative_controls = {"manakov_midpoint_diagonal_A_only", "midpoint_at_rest_below_1e_10"},
              .cases = {.d = 60, .mp = 12, .q = 0},
-             .step = StepKind::Manakov, .judges = {"order"}});
+             .step = StepKind::Manakov,
+             .judges = {"order"}});
 
 GM_PROPERTY(integrator_50_digit_floor, integrator_mp50_scalars,
             {.id = "integrator_50_digit_floor",
@@ -703,7 +752,8 @@ GM_PROPERTY(integrator_50_digit_floor, integrator_mp50_scalars,
              .needs = {},
              .negative_controls = {"rk4_double_inside"},
              .cases = {.d = 0, .mp = 5, .q = 0},
-             .step = StepKind::RigidBody, .judges = {"order"}});
+             .step = StepKind::RigidBody,
+             .judges = {"order"}});
 
 GM_PROPERTY(manakov_integrator_50_digit_floor, integrator_mp50_scalars,
             {.id = "manakov_integrator_50_digit_floor",
@@ -713,7 +763,8 @@ GM_PROPERTY(manakov_integrator_50_digit_floor, integrator_mp50_scalars,
              .needs = {},
              .negative_controls = {"rk4_double_inside"},
              .cases = {.d = 0, .mp = 3, .q = 0},
-             .step = StepKind::Manakov, .judges = {"order"}});
+             .step = StepKind::Manakov,
+             .judges = {"order"}});
 
 }  // namespace properties_integrator_regimes
 }  // namespace gm

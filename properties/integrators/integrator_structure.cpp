@@ -66,11 +66,13 @@ void integrator_noether(const Subject<T>&, const Integrator<T>& in, const Integr
     }
     if (k == 0) record_series(ser);
   }
-  showing_inputs([&] { return inputs; }, [&] {
-    judge_roundoff_claim<T>("noether", c.noether, in.name,
-                            "the spatial momentum pi = O Pi (Theorem 2.2) is kept to round-off over 64 steps", worst,
-                            T(kNoetherSteps), 32);
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_roundoff_claim<T>(
+                       "noether", c.noether, in.name,
+                       "the spatial momentum pi = O Pi (Theorem 2.2) is kept to round-off over 64 steps", worst,
+                       T(kNoetherSteps), 32);
+                 });
 }
 
 // O M O^T is of degree 3 in the state and each entry sums n^2 products: scale n^2 max(1, |M|),
@@ -95,11 +97,12 @@ void manakov_integrator_noether(const Subject<T>&, const Integrator<T>& in, cons
       if (worse(r, worst)) worst = r, inputs = drawn;
     }
   }
-  showing_inputs([&] { return inputs; }, [&] {
-    judge_roundoff_claim<T>("noether", c.noether, in.name,
-                            "the spatial momentum O M O^T is kept to round-off over 32 steps (n = 3..6)", worst,
-                            T(kManakovNoetherSteps), 48);
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_roundoff_claim<T>("noether", c.noether, in.name,
+                                           "the spatial momentum O M O^T is kept to round-off over 32 steps (n = 3..6)",
+                                           worst, T(kManakovNoetherSteps), 48);
+                 });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -125,10 +128,12 @@ void integrator_equivariant(const Subject<T>&, const Integrator<T>& in, const In
     const T r = std::max(max_abs(Vec3<T>(b.Pi - a.Pi)), max_abs(Mat3<T>(b.O - R * a.O)));
     if (worse(r, worst)) worst = r, inputs = drawn;
   }
-  showing_inputs([&] { return inputs; }, [&] {
-    judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
-                            "step(Pi, R O) = (Pi', R O'): the step commutes with rotating the attitude", worst, T(1), 64);
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
+                                           "step(Pi, R O) = (Pi', R O'): the step commutes with rotating the attitude",
+                                           worst, T(1), 64);
+                 });
 }
 
 // n = 3..6: entries of products summed over n terms, scale n.
@@ -149,11 +154,13 @@ void manakov_integrator_equivariant(const Subject<T>&, const Integrator<T>& in, 
     const T r = std::max(max_abs(MatX<T>(b.M - a.M)), max_abs(MatX<T>(b.O - R * a.O))) / T(n);
     if (worse(r, worst)) worst = r, inputs = drawn;
   }
-  showing_inputs([&] { return inputs; }, [&] {
-    judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
-                            "Manakov step(M, R O) = (M', R O'): the step commutes with rotating the attitude (n = 3..6)",
-                            worst, T(1), 64);
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   judge_roundoff_claim<T>(
+                       "equivariant", c.equivariant, in.name,
+                       "Manakov step(M, R O) = (M', R O'): the step commutes with rotating the attitude (n = 3..6)",
+                       worst, T(1), 64);
+                 });
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -221,16 +228,15 @@ void integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const
   const T h = T(1) / T(4);
   const int steps = long_run_steps<T>(c.bounded_energy, 100000, 4000, 1000);
   const std::string inputs = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + "    h = 1/4\n";
-  showing_inputs([&] { return inputs; }, [&] {
-    auto run = runs::rigid_body_steps(in, I, x, h, steps);
-    long_time_energy<T>(
-        in.name, c.bounded_energy, "the energy h (3.4) over a long run", steps,
-        steps == long_run_steps<T>(true, 100000, 4000, 1000), h,
-        [&](int n) {
-          if (n > 0) x = run.next();
-          return dyn::energy(I, x.Pi);
-        });
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   auto run = runs::rigid_body_steps(in, I, x, h, steps);
+                   long_time_energy<T>(in.name, c.bounded_energy, "the energy h (3.4) over a long run", steps,
+                                       steps == long_run_steps<T>(true, 100000, 4000, 1000), h, [&](int n) {
+                                         if (n > 0) x = run.next();
+                                         return dyn::energy(I, x.Pi);
+                                       });
+                 });
 }
 
 // Manakov, n = 3 or 4, h = 1/8: 20000 steps in double, 400 in 50 digits (each step is a
@@ -244,16 +250,16 @@ void manakov_integrator_bounded_energy(const Subject<T>&, const Integrator<T>& i
   const T h = T(1) / T(8);
   const int steps = long_run_steps<T>(c.bounded_energy, 20000, 400, 100);
   const std::string inputs = named("A", A) + named("M", x.M) + named("O", x.O) + "    h = 1/8\n";
-  showing_inputs([&] { return inputs; }, [&] {
-    auto run = runs::manakov_steps(in, A, x, h, steps);
-    long_time_energy<T>(
-        in.name, c.bounded_energy, "the energy -tr(Omega M)/4 over a long run, n = " + std::to_string(n), steps,
-        steps == long_run_steps<T>(true, 20000, 400, 100), h,
-        [&](int s) {
-          if (s > 0) x = run.next();
-          return dyn::manakov_energy(a, x.M);
-        });
-  });
+  showing_inputs([&] { return inputs; },
+                 [&] {
+                   auto run = runs::manakov_steps(in, A, x, h, steps);
+                   long_time_energy<T>(in.name, c.bounded_energy,
+                                       "the energy -tr(Omega M)/4 over a long run, n = " + std::to_string(n), steps,
+                                       steps == long_run_steps<T>(true, 20000, 400, 100), h, [&](int s) {
+                                         if (s > 0) x = run.next();
+                                         return dyn::manakov_energy(a, x.M);
+                                       });
+                 });
 }
 
 }  // namespace
@@ -261,23 +267,27 @@ void manakov_integrator_bounded_energy(const Subject<T>&, const Integrator<T>& i
 #define GM_RB_STRUCT .cases = {.d = 10, .mp = 2, .q = 0}, .step = StepKind::RigidBody
 #define GM_MK_STRUCT .cases = {.d = 5, .mp = 1, .q = 0}, .step = StepKind::Manakov
 
-GM_PROPERTY(integrator_noether, integrator_scalars,
-            {.id = "integrator_noether",
-             .spec = "s2.noether",
-             .title = "rigid-body integrator claiming Noether: the spatial momentum O Pi is kept to round-off (Thm 2.2)",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {},
-             .negative_controls = {"rk4_claims_noether", "midpoint_space_frame_attitude"},
-             GM_RB_STRUCT, .judges = {"noether"}});
+GM_PROPERTY(
+    integrator_noether, integrator_scalars,
+    {.id = "integrator_noether",
+     .spec = "s2.noether",
+     .title = "rigid-body integrator claiming Noether: the spatial momentum O Pi is kept to round-off (Thm 2.2)",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {},
+     .negative_controls = {"rk4_claims_noether", "midpoint_space_frame_attitude"},
+     GM_RB_STRUCT,
+     .judges = {"noether"}});
 
-GM_PROPERTY(manakov_integrator_noether, integrator_scalars,
-            {.id = "manakov_integrator_noether",
-             .spec = "s2.noether",
-             .title = "Manakov integrator claiming Noether: the spatial momentum O M O^T is kept to round-off (n = 3..6)",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {},
-             .negative_controls = {"rk4_claims_noether", "midpoint_space_frame_attitude"},
-             GM_MK_STRUCT, .judges = {"noether"}});
+GM_PROPERTY(
+    manakov_integrator_noether, integrator_scalars,
+    {.id = "manakov_integrator_noether",
+     .spec = "s2.noether",
+     .title = "Manakov integrator claiming Noether: the spatial momentum O M O^T is kept to round-off (n = 3..6)",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {},
+     .negative_controls = {"rk4_claims_noether", "midpoint_space_frame_attitude"},
+     GM_MK_STRUCT,
+     .judges = {"noether"}});
 
 GM_PROPERTY(integrator_equivariant, integrator_scalars,
             {.id = "integrator_equivariant",
@@ -286,7 +296,8 @@ GM_PROPERTY(integrator_equivariant, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"midpoint_space_frame_attitude"},
-             GM_RB_STRUCT, .judges = {"equivariant"}});
+             GM_RB_STRUCT,
+             .judges = {"equivariant"}});
 
 GM_PROPERTY(manakov_integrator_equivariant, integrator_scalars,
             {.id = "manakov_integrator_equivariant",
@@ -295,7 +306,8 @@ GM_PROPERTY(manakov_integrator_equivariant, integrator_scalars,
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
              .negative_controls = {"midpoint_space_frame_attitude"},
-             GM_MK_STRUCT, .judges = {"equivariant"}});
+             GM_MK_STRUCT,
+             .judges = {"equivariant"}});
 
 GM_PROPERTY(integrator_bounded_energy, integrator_scalars,
             {.id = "integrator_bounded_energy",
@@ -305,17 +317,20 @@ GM_PROPERTY(integrator_bounded_energy, integrator_scalars,
              .needs = {},
              .negative_controls = {"explicit_euler_claims_bounded_energy", "backward_euler_claims_bounded_energy"},
              .cases = {.d = 2, .mp = 1, .q = 0},
-             .step = StepKind::RigidBody, .judges = {"bounded_energy"}});
+             .step = StepKind::RigidBody,
+             .judges = {"bounded_energy"}});
 
-GM_PROPERTY(manakov_integrator_bounded_energy, integrator_scalars,
-            {.id = "manakov_integrator_bounded_energy",
-             .spec = "s2.manakov-flow",
-             .title = "Manakov integrator claiming bounded energy: no secular drift of -tr(Omega M)/4 over 2 10^4 steps",
-             .tolerance = ToleranceClass::Truncation,
-             .needs = {},
-             .negative_controls = {"explicit_euler_claims_bounded_energy", "backward_euler_claims_bounded_energy"},
-             .cases = {.d = 2, .mp = 1, .q = 0},
-             .step = StepKind::Manakov, .judges = {"bounded_energy"}});
+GM_PROPERTY(
+    manakov_integrator_bounded_energy, integrator_scalars,
+    {.id = "manakov_integrator_bounded_energy",
+     .spec = "s2.manakov-flow",
+     .title = "Manakov integrator claiming bounded energy: no secular drift of -tr(Omega M)/4 over 2 10^4 steps",
+     .tolerance = ToleranceClass::Truncation,
+     .needs = {},
+     .negative_controls = {"explicit_euler_claims_bounded_energy", "backward_euler_claims_bounded_energy"},
+     .cases = {.d = 2, .mp = 1, .q = 0},
+     .step = StepKind::Manakov,
+     .judges = {"bounded_energy"}});
 
 #undef GM_RB_STRUCT
 #undef GM_MK_STRUCT

@@ -69,9 +69,8 @@ void ad_star_components_exercise(const Subject<T>& s) {
   {
     const VecX<T> xi = *gen::vec<T>(6, kCoordMax, kCoordBits).as("xi");
     const VecX<T> mu = *gen::vec<T>(6, kCoordMax, kCoordBits).as("mu");
-    const auto c = structure_constants<T>(6, [&s](const VecX<T>& x, const VecX<T>& y) {
-      return VecX<T>(s.so4_bracket_R6(Vec6<T>(x), Vec6<T>(y)));
-    });
+    const auto c = structure_constants<T>(
+        6, [&s](const VecX<T>& x, const VecX<T>& y) { return VecX<T>(s.so4_bracket_R6(Vec6<T>(x), Vec6<T>(y))); });
     require_close("so(4) = R^6: (ad*_xi mu)_k = xi^j mu_i c^i_jk with c from so4_bracket_R6",
                   VecX<T>(s.ad_star_so4_R6(Vec6<T>(xi), Vec6<T>(mu))), ad_star_components(c, xi, mu),
                   T(T(72) * norm_inf(xi) * norm_inf(mu)), 38);

@@ -34,10 +34,10 @@ void left_invariance_definition_1_1(const Subject<T>& s) {
   require_close("(2.10): dO/dt = O Omega_hat", O_dot, (O * truth::skew_of(W)).eval(), T(T(6) * norm_inf(W)), 6);
   const T l = s.lagrangian_2_5(I, W);
   const Mat3<T> RO = R * O, RO_dot = R * O_dot;
-  require_close("L(O, dO/dt) = l(O^-1 dO/dt) = l(Omega)", s.lagrangian_2_13(I, (O.transpose() * O_dot).eval()), l, scale,
-                24);
-  require_close("left translation: reconstruction(R O, Omega) = R reconstruction(O, Omega)", s.reconstruction_2_10(RO, W),
-                RO_dot, T(T(18) * norm_inf(W)), 12);
+  require_close("L(O, dO/dt) = l(O^-1 dO/dt) = l(Omega)", s.lagrangian_2_13(I, (O.transpose() * O_dot).eval()), l,
+                scale, 24);
+  require_close("left translation: reconstruction(R O, Omega) = R reconstruction(O, Omega)",
+                s.reconstruction_2_10(RO, W), RO_dot, T(T(18) * norm_inf(W)), 12);
   require_close("Definition 1.1: L(R O, R dO/dt) = L(O, dO/dt)", s.lagrangian_2_13(I, (RO.transpose() * RO_dot).eval()),
                 l, scale, 24);
   const Mat3<T> OR = O * R, OR_dot = O_dot * R;
@@ -72,8 +72,8 @@ void right_invariant_sign_1_1(const Subject<T>& s) {
   const Mat3<T> O_dot = s.reconstruction_2_10(O, Omega);
   const Vec3<T> eta = vee_of<T>((O_dot.transpose() * O).eval());
   require_close("h = O^-1: eta = h' h^-1 = -Omega", eta, (-P.cwiseQuotient(I)).eval(), T(T(9) * Hs), 12);
-  const Vec3<T> mu = truth::gradient_of_quadratic<T>(
-      [&](const Vec3<T>& y) { return s.lagrangian_2_5(I, (-y).eval()); }, eta);
+  const Vec3<T> mu =
+      truth::gradient_of_quadratic<T>([&](const Vec3<T>& y) { return s.lagrangian_2_5(I, (-y).eval()); }, eta);
   require_close("the right-invariant Lagrangian l(-eta) has dl/deta = -Pi", mu, (-P).eval(),
                 T(norm_inf(I) * (norm_inf(eta) + T(1)) * (norm_inf(eta) + T(1))), 32);
   const Vec3<T> mu_dot = -s.euler_3_8(I, P);
@@ -104,7 +104,8 @@ GM_PROPERTY(right_invariant_sign_1_1, all_scalars,
              .title = "(1.1): for h = O^-1 (right-invariant), d/dt dl/deta = -ad*_eta dl/deta with eta = h' h^-1",
              .tolerance = ToleranceClass::Exact,
              .needs = {"omega_3_5", "reconstruction_2_10", "lagrangian_2_5", "euler_3_8", "ad_star"},
-             .negative_controls = {"reconstruction_2_10_right_trivialized", "ad_star_is_ad", "euler_3_8_cross_reversed"}});
+             .negative_controls = {"reconstruction_2_10_right_trivialized", "ad_star_is_ad",
+                                   "euler_3_8_cross_reversed"}});
 
 }  // namespace properties_invariance
 }  // namespace gm

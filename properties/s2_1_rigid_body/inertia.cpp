@@ -27,8 +27,8 @@ enum class BodyShape { generic, planar, collinear };
 
 template <class T>
 struct Body {
-  VecX<T> m;   // masses
-  MatX<T> X;   // 3 x N positions
+  VecX<T> m;  // masses
+  MatX<T> X;  // 3 x N positions
   BodyShape shape = BodyShape::generic;
 };
 
@@ -44,24 +44,24 @@ rc::Gen<Body<T>> body() {
   return rc::gen::mapcat(rc::gen::pair(rc::gen::inRange(1, 5), rc::gen::inRange(0, 3)), [](std::pair<int, int> nk) {
     const int N = nk.first;
     const auto shape = static_cast<BodyShape>(nk.second);
-    return rc::gen::map(rc::gen::tuple(rc::gen::container<std::vector<int>>(static_cast<std::size_t>(N), rc::gen::inRange(1, 5)),
-                                       gen::mat<T>(3, N, 4, 1), gen::vec3<T>(2, 1), gen::vec3<T>(2, 1),
-                                       gen::mat<T>(2, N, 2, 0)),
-                        [N, shape](const std::tuple<std::vector<int>, MatX<T>, Vec3<T>, Vec3<T>, MatX<T>>& t) {
-                          const auto& [ms, Xg, u, v, st] = t;
-                          Body<T> b;
-                          b.shape = shape;
-                          b.m = VecX<T>(N);
-                          for (int k = 0; k < N; ++k) b.m(k) = T(ms[static_cast<std::size_t>(k)]);
-                          if (shape == BodyShape::generic) {
-                            b.X = Xg;
-                          } else {
-                            b.X = MatX<T>(3, N);
-                            for (int k = 0; k < N; ++k)
-                              b.X.col(k) = st(0, k) * u + (shape == BodyShape::planar ? Vec3<T>(st(1, k) * v) : Vec3<T>::Zero());
-                          }
-                          return b;
-                        });
+    return rc::gen::map(
+        rc::gen::tuple(rc::gen::container<std::vector<int>>(static_cast<std::size_t>(N), rc::gen::inRange(1, 5)),
+                       gen::mat<T>(3, N, 4, 1), gen::vec3<T>(2, 1), gen::vec3<T>(2, 1), gen::mat<T>(2, N, 2, 0)),
+        [N, shape](const std::tuple<std::vector<int>, MatX<T>, Vec3<T>, Vec3<T>, MatX<T>>& t) {
+          const auto& [ms, Xg, u, v, st] = t;
+          Body<T> b;
+          b.shape = shape;
+          b.m = VecX<T>(N);
+          for (int k = 0; k < N; ++k) b.m(k) = T(ms[static_cast<std::size_t>(k)]);
+          if (shape == BodyShape::generic) {
+            b.X = Xg;
+          } else {
+            b.X = MatX<T>(3, N);
+            for (int k = 0; k < N; ++k)
+              b.X.col(k) = st(0, k) * u + (shape == BodyShape::planar ? Vec3<T>(st(1, k) * v) : Vec3<T>::Zero());
+          }
+          return b;
+        });
   });
 }
 
@@ -138,8 +138,8 @@ void inertia_positive_definite(const Subject<T>& s) {
   const int k = 16;  // the entries' own rounding (~8) plus the minor's products and sums
   for (std::size_t i = 0; i < minors.size(); ++i) {
     const T allowed = is_exact_v<T> ? T(0) : T(T(k) * eps<T>() * scales[i]);
-    require("principal minor " + std::to_string(i) + " of I is >= 0 (I positive semidefinite)",
-            minors[i] >= -allowed, "minor = " + to_string_full(minors[i]));
+    require("principal minor " + std::to_string(i) + " of I is >= 0 (I positive semidefinite)", minors[i] >= -allowed,
+            "minor = " + to_string_full(minors[i]));
   }
   const T det = minors[6];
   if (rank >= 2) {
@@ -187,13 +187,14 @@ GM_PROPERTY(inertia_bilinear_form_2_3, all_scalars,
              .needs = {"inertia_bilinear_2_3", "inertia_tensor_2_3"},
              .negative_controls = {"inertia_bilinear_dot_for_cross", "inertia_tensor_missing_identity"}});
 
-GM_PROPERTY(inertia_positive_definite, all_scalars,
-            {.id = "inertia_positive_definite",
-             .spec = "s2.inertia",
-             .title = "(2.3): I symmetric, positive semidefinite; definite iff the masses are not on one line through 0",
-             .tolerance = ToleranceClass::Exact,
-             .needs = {"inertia_tensor_2_3"},
-             .negative_controls = {"inertia_tensor_missing_identity"}});
+GM_PROPERTY(
+    inertia_positive_definite, all_scalars,
+    {.id = "inertia_positive_definite",
+     .spec = "s2.inertia",
+     .title = "(2.3): I symmetric, positive semidefinite; definite iff the masses are not on one line through 0",
+     .tolerance = ToleranceClass::Exact,
+     .needs = {"inertia_tensor_2_3"},
+     .negative_controls = {"inertia_tensor_missing_identity"}});
 
 GM_PROPERTY(inertia_triangle_inequalities, all_scalars,
             {.id = "inertia_triangle_inequalities",

@@ -21,7 +21,6 @@ namespace gm {
 namespace properties_noether_reconstruction {
 namespace {
 
-
 // Subject flows of the 12-dimensional (Pi, O) system cost ~4x the 3-dimensional one.
 template <class T>
 T attitude_horizon() {
@@ -46,8 +45,14 @@ void noether_spatial_momentum_conserved(const Subject<T>& s) {
   const Vec3<T> pi_notes = x0.O * x0.Pi;  // Ad*_{O^-1} Pi = O Pi at t = 0 (2.29)-(2.30)
   const T lambda = dyn::rigid_body_rate(I, x0.Pi);
   const T size = dyn::at_least_one(norm_inf(x0.Pi));
-  Series ser{"Noether: spatial momentum", std::string("|pi(t) - pi(0)| (") + ScalarInfo<T>::name + ")", "t",
-             "residual", false, true, {}, 0};
+  Series ser{"Noether: spatial momentum",
+             std::string("|pi(t) - pi(0)| (") + ScalarInfo<T>::name + ")",
+             "t",
+             "residual",
+             false,
+             true,
+             {},
+             0};
   for (std::size_t i = 0; i < times.size(); ++i) {
     const Vec3<T> pi = s.spatial_momentum(xs[i].O, xs[i].Pi);
     // O Pi is an invariant of degree 2 of the oracle's flow: k = 128 (support/dynamics.hpp).
@@ -55,8 +60,8 @@ void noether_spatial_momentum_conserved(const Subject<T>& s) {
                   T(size * dyn::growth(lambda, times[i])), 128);
     // The same drift bound: O(t) Pi(t) - O(0) Pi(0) is the drift of the same degree-2 invariant,
     // plus the slot's own rounding of a 3-term product (far below it): k = 128.
-    require_close("spatial_momentum(O(t), Pi(t)) = O(0) Pi(0), the conserved pi = Ad*_{O^-1} Pi of (2.29)-(2.30)",
-                  pi, pi_notes, T(size * dyn::growth(lambda, times[i])), 128);
+    require_close("spatial_momentum(O(t), Pi(t)) = O(0) Pi(0), the conserved pi = Ad*_{O^-1} Pi of (2.29)-(2.30)", pi,
+                  pi_notes, T(size * dyn::growth(lambda, times[i])), 128);
     ser.points.emplace_back(to_double(times[i]), to_double(max_abs((pi - pi0).eval())));
   }
   record_series(ser);
@@ -121,14 +126,20 @@ void reconstruction_stays_in_so3(const Subject<T>& s) {
   const auto times = dyn::times_to(attitude_horizon<T>(), 10);
   const auto xs = dyn::subject_rigid_body(s, I, x0, times);
   const T lambda = dyn::rigid_body_rate(I, x0.Pi);
-  Series ser{"reconstruction: orthogonality", std::string("|O^T O - Id| (") + ScalarInfo<T>::name + ")", "t",
-             "residual", false, true, {}, 0};
+  Series ser{"reconstruction: orthogonality",
+             std::string("|O^T O - Id| (") + ScalarInfo<T>::name + ")",
+             "t",
+             "residual",
+             false,
+             true,
+             {},
+             0};
   for (std::size_t i = 0; i < times.size(); ++i) {
     const Mat3<T>& O = xs[i].O;
     const T g = dyn::growth(lambda, times[i]);
     // O^T O (degree 2) and det O (degree 3) of a flow accurate to round-off per step.
-    require_close("O(t)^T O(t) = Id along the subject's (2.10)", (O.transpose() * O).eval(), Mat3<T>::Identity().eval(), g,
-                  128);
+    require_close("O(t)^T O(t) = Id along the subject's (2.10)", (O.transpose() * O).eval(), Mat3<T>::Identity().eval(),
+                  g, 128);
     require_close("det O(t) = 1 along the subject's (2.10)", O.determinant(), T(1), g, 192);
     ser.points.emplace_back(to_double(times[i]), to_double(max_abs((O.transpose() * O - Mat3<T>::Identity()).eval())));
   }
@@ -192,8 +203,9 @@ void ad_star_identity_for(const Subject<T>& s, LieAlgebraId g) {
   const VecX<T> rhs = ad_star_inverse(G, Ginv, (dmu - s.ad_star(g, s.lie_vee(g, Omega), mu)).eval());
   // Round-off of the difference quotient: roundoff_factor8 eps |f|; truncation is below it.
   const T scale = dyn::at_least_one(norm_inf(f(T(0)))) * deriv::roundoff_factor8<T>();
-  require_close(std::string("(2.32) on ") + lie_algebra_name(g) + ": d/dt Ad*_{g^-1} mu = Ad*_{g^-1}(dmu/dt - ad*_Omega mu)",
-                lhs, rhs, scale, 16);
+  require_close(
+      std::string("(2.32) on ") + lie_algebra_name(g) + ": d/dt Ad*_{g^-1} mu = Ad*_{g^-1}(dmu/dt - ad*_Omega mu)", lhs,
+      rhs, scale, 16);
 }
 
 template <class T>
@@ -242,7 +254,8 @@ void hamilton_pontryagin_and_clebsch_are_one_motion(const Subject<T>& s) {
     // Against the oracle, the same two-flow bounds.
     require_close("Pi(t) of the subject's (2.20) = Pi(t) of the oracle's (3.8)", hp[i].Pi, ref[i].Pi,
                   T(size * g * kappa), 64);
-    require_close("O(t) of the subject's (2.20) = O(t) of the oracle's (2.10)", hp[i].O, ref[i].O, T(g * g * kappa), 64);
+    require_close("O(t) of the subject's (2.20) = O(t) of the oracle's (2.10)", hp[i].O, ref[i].O, T(g * g * kappa),
+                  64);
     require_close("P(t) x Q(t) of the subject's (3.21) = Pi(t) of the oracle's (3.8)", truth::cross(P, Q), ref[i].Pi,
                   T(size * g * kappa), 64);
     require_close("Q(t) of the subject's (3.21) = O(t)^-1 Q(0) with the oracle's O (3.20)", Q,
@@ -252,14 +265,15 @@ void hamilton_pontryagin_and_clebsch_are_one_motion(const Subject<T>& s) {
 
 }  // namespace
 
-GM_PROPERTY(noether_spatial_momentum_conserved, float_scalars,
-            {.id = "noether_spatial_momentum_conserved",
-             .spec = "s2.noether",
-             .title = "Theorem 2.2: the subject's spatial momentum is constant along the motion (2.20) and equals pi = O Pi",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {"spatial_momentum"},
-             .negative_controls = {"spatial_momentum_as_printed_2_30", "spatial_momentum_constant"},
-             .cases = {.d = 20, .mp = 2, .q = 0}});
+GM_PROPERTY(
+    noether_spatial_momentum_conserved, float_scalars,
+    {.id = "noether_spatial_momentum_conserved",
+     .spec = "s2.noether",
+     .title = "Theorem 2.2: the subject's spatial momentum is constant along the motion (2.20) and equals pi = O Pi",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {"spatial_momentum"},
+     .negative_controls = {"spatial_momentum_as_printed_2_30", "spatial_momentum_constant"},
+     .cases = {.d = 20, .mp = 2, .q = 0}});
 
 GM_PROPERTY(noether_endpoint_term_2_28, all_scalars,
             {.id = "noether_endpoint_term_2_28",

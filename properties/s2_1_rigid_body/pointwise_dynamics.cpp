@@ -30,13 +30,15 @@ void reconstruction_is_left_invariant(const Subject<T>& s) {
 template <class T>
 MatX<T> draw_inertia_matrix(int n) {
   const bool diagonal = *rc::gen::arbitrary<bool>().as("A diagonal");
-  const VecX<Rational> a = *rc::gen::map(rc::gen::container<std::vector<int>>(static_cast<std::size_t>(n), rc::gen::inRange(1, 65)),
-                                           [](const std::vector<int>& ks) {
-                                             VecX<Rational> v(static_cast<Eigen::Index>(ks.size()));
-                                             for (std::size_t i = 0; i < ks.size(); ++i)
-                                               v(static_cast<Eigen::Index>(i)) = Rational(ks[i]) / Rational(4);
-                                             return v;
-                                           }).as("a (A = R diag(a) R^T)");
+  const VecX<Rational> a =
+      *rc::gen::map(rc::gen::container<std::vector<int>>(static_cast<std::size_t>(n), rc::gen::inRange(1, 65)),
+                    [](const std::vector<int>& ks) {
+                      VecX<Rational> v(static_cast<Eigen::Index>(ks.size()));
+                      for (std::size_t i = 0; i < ks.size(); ++i)
+                        v(static_cast<Eigen::Index>(i)) = Rational(ks[i]) / Rational(4);
+                      return v;
+                    })
+           .as("a (A = R diag(a) R^T)");
   MatX<Rational> A = a.asDiagonal();
   if (!diagonal) {
     const MatX<Rational> R = *gen::rotation<Rational>(n).as("R (A = R diag(a) R^T)");
@@ -56,8 +58,9 @@ void manakov_omega_solves_2_34(const Subject<T>& s) {
   const MatX<T> A = draw_inertia_matrix<T>(n);
   const MatX<T> M = *gen::skew<T>(n).as("M");
   const MatX<T> W = s.manakov_Omega(A, M);
-  require("manakov_Omega(A, M) is n x n", W.rows() == n && W.cols() == n,
-          "got a " + std::to_string(W.rows()) + " x " + std::to_string(W.cols()) + " matrix for n = " + std::to_string(n));
+  require(
+      "manakov_Omega(A, M) is n x n", W.rows() == n && W.cols() == n,
+      "got a " + std::to_string(W.rows()) + " x " + std::to_string(W.cols()) + " matrix for n = " + std::to_string(n));
   const T scale = T(2 * n) * norm_inf(A) * norm_inf(W);
   require_close("A Omega + Omega A = M for Omega = manakov_Omega(A, M)", (A * W + W * A).eval(), M, scale,
                 n * n + 2 * n);
@@ -65,13 +68,14 @@ void manakov_omega_solves_2_34(const Subject<T>& s) {
 
 }  // namespace
 
-GM_PROPERTY(reconstruction_is_left_invariant, all_scalars,
-            {.id = "reconstruction_is_left_invariant",
-             .spec = "s2.reconstruction-formula",
-             .title = "(2.10): dO/dt = O hat(Omega), so O^-1 dO/dt = hat(Omega) (left-invariant, body angular velocity)",
-             .tolerance = ToleranceClass::Exact,
-             .needs = {"reconstruction_2_10"},
-             .negative_controls = {"reconstruction_right_invariant"}});
+GM_PROPERTY(
+    reconstruction_is_left_invariant, all_scalars,
+    {.id = "reconstruction_is_left_invariant",
+     .spec = "s2.reconstruction-formula",
+     .title = "(2.10): dO/dt = O hat(Omega), so O^-1 dO/dt = hat(Omega) (left-invariant, body angular velocity)",
+     .tolerance = ToleranceClass::Exact,
+     .needs = {"reconstruction_2_10"},
+     .negative_controls = {"reconstruction_right_invariant"}});
 
 GM_PROPERTY(manakov_omega_solves_2_34, all_scalars,
             {.id = "manakov_omega_solves_2_34",

@@ -53,23 +53,25 @@ void manakov_clebsch_variations_in_Q_and_P(const Subject<T>& s) {
                     i + 1, j + 1, i + 1, j + 1);
       require_close(what, dQ(i, j), QW(i, j), scale, 64);
       // delta Q = E_ij: tr((dP/dt)^T E_ij) + tr(P^T E_ij Omega) = (dP/dt)_ij + (Omega P^T)_ji.
-      std::snprintf(what, sizeof what,
-                    "closing exercise: delta S / delta Q along E_%d%d = -(dP/dt + (Omega P^T)^T)_%d%d = 0 (second of (3.23))",
-                    i + 1, j + 1, i + 1, j + 1);
+      std::snprintf(
+          what, sizeof what,
+          "closing exercise: delta S / delta Q along E_%d%d = -(dP/dt + (Omega P^T)^T)_%d%d = 0 (second of (3.23))",
+          i + 1, j + 1, i + 1, j + 1);
       require_close(what, T(dP(i, j) + WPt(j, i)), T(0), scale, 64);
     }
 }
 
 }  // namespace
 
-GM_PROPERTY(manakov_clebsch_variations_in_Q_and_P, all_scalars,
-            {.id = "manakov_clebsch_variations_in_Q_and_P",
-             .spec = "mm.manakov-clebsch",
-             .title = "closing exercise: the variations of S in P and in Q give dQ/dt = Q Omega and dP/dt = P Omega (3.23)",
-             .tolerance = ToleranceClass::Exact,
-             .needs = {"manakov_clebsch_3_23"},
-             .negative_controls = {"manakov_clebsch_P_left_multiplied", "manakov_clebsch_M_as_printed"},
-             .cases = {.d = 50, .mp = 10, .q = 10}});
+GM_PROPERTY(
+    manakov_clebsch_variations_in_Q_and_P, all_scalars,
+    {.id = "manakov_clebsch_variations_in_Q_and_P",
+     .spec = "mm.manakov-clebsch",
+     .title = "closing exercise: the variations of S in P and in Q give dQ/dt = Q Omega and dP/dt = P Omega (3.23)",
+     .tolerance = ToleranceClass::Exact,
+     .needs = {"manakov_clebsch_3_23"},
+     .negative_controls = {"manakov_clebsch_P_left_multiplied", "manakov_clebsch_M_as_printed"},
+     .cases = {.d = 50, .mp = 10, .q = 10}});
 
 }  // namespace properties_manakov_clebsch_variations
 }  // namespace gm

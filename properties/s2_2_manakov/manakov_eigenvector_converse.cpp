@@ -61,7 +61,7 @@ void manakov_eigenvector_system_gives_2_36(const Subject<T>& s) {
   };
   flow::Gbs<T> g([&](const T&, const VecX<T>& v) {
     const MatX<T> R = unpack(v);
-    const MatX<T> M = R * D * R.transpose();  // M psi = lambda psi, in real form M R = R D
+    const MatX<T> M = R * D * R.transpose();        // M psi = lambda psi, in real form M R = R D
     const MatX<T> dR = -s.manakov_Omega(A, M) * R;  // dpsi/dt = -Omega psi, for every column
     VecX<T> d(nn);
     for (int i = 0; i < n; ++i)

@@ -129,7 +129,8 @@ void manakov_eigenvectors_follow(const Subject<T>& s) {
     // Residuals of degree 2 in (M, psi), transported by the flow: k = 128 n (n-term products).
     require_close("Re(M psi - i mu psi) = M psi_r + mu psi_i = 0 (Proposition 2.5)", (M * pr).eval(), (-mu * pi).eval(),
                   T(size * gr), 128 * n);
-    require_close("Im(M psi - i mu psi) = M psi_i - mu psi_r = 0", (M * pi).eval(), (mu * pr).eval(), T(size * gr), 128 * n);
+    require_close("Im(M psi - i mu psi) = M psi_i - mu psi_r = 0", (M * pi).eval(), (mu * pr).eval(), T(size * gr),
+                  128 * n);
     require_close("psi(t) = O(t)^-1 psi(0), dpsi/dt = -Omega psi", pr, (O.transpose() * pr0).eval(), gr, 128 * n);
   }
 }
@@ -157,7 +158,8 @@ QP<T> draw_qp() {
 }
 
 template <class T>
-std::vector<std::pair<MatX<T>, MatX<T>>> subject_qp_flow(const Subject<T>& s, const QP<T>& d, const std::vector<T>& times) {
+std::vector<std::pair<MatX<T>, MatX<T>>> subject_qp_flow(const Subject<T>& s, const QP<T>& d,
+                                                         const std::vector<T>& times) {
   const int n = d.n, nn = n * n;
   auto pack = [&](const MatX<T>& Q, const MatX<T>& P) {
     VecX<T> v(2 * nn);
@@ -230,9 +232,10 @@ void manakov_clebsch_momentum_is_dl_dOmega(const Subject<T>& s) {
       const T dl = (s.manakov_lagrangian(d.A, (W + E).eval()) - s.manakov_lagrangian(d.A, (W - E).eval())) / T(2);
       const T dc = (PQ * E).trace();
       char what[160];
-      std::snprintf(what, sizeof what,
-                    "dS/dOmega = 0 along E_%d%d: d/de l(Omega + e E) = tr(P^T Q E) at the Omega of the subject's (3.23)",
-                    i + 1, j + 1);
+      std::snprintf(
+          what, sizeof what,
+          "dS/dOmega = 0 along E_%d%d: d/de l(Omega + e E) = tr(P^T Q E) at the Omega of the subject's (3.23)", i + 1,
+          j + 1);
       require_close(what, dl, dc, scale, 64);
     }
 }
@@ -252,8 +255,8 @@ void manakov_clebsch_momentum_follows_manakov(const Subject<T>& s) {
   for (std::size_t i = 0; i < times.size(); ++i) {
     const T g = dyn::growth(lambda, times[i]);
     // Two flows compared: k = 64 (1 + lambda t)^2 (support/dynamics.hpp).
-    require_close("M = Q^T P - P^T Q along the subject's (3.23) = Manakov's flow (2.34) of M(0)", M_of(qp[i].first, qp[i].second),
-                  exact[i].M, T(size * T(d.n) * g * g), 64);
+    require_close("M = Q^T P - P^T Q along the subject's (3.23) = Manakov's flow (2.34) of M(0)",
+                  M_of(qp[i].first, qp[i].second), exact[i].M, T(size * T(d.n) * g * g), 64);
   }
 }
 
@@ -305,15 +308,16 @@ void matrix_euler_poincare_trace_pairing(const Subject<T>& s) {
 
 }  // namespace
 
-GM_PROPERTY(manakov_flow_is_isospectral, float_scalars,
-            {.id = "manakov_flow_is_isospectral",
-             .spec = "s2.isospectral",
-             .title = "(2.36), n = 3..6: tr(M^k) for k = 1..n and the eigenvalues of M are constant along the subject's "
-                      "Manakov flow",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {"manakov_2_34"},
-             .negative_controls = {"manakov_2_34_one_sided"},
-             .cases = {.d = 20, .mp = 10, .q = 0}});
+GM_PROPERTY(
+    manakov_flow_is_isospectral, float_scalars,
+    {.id = "manakov_flow_is_isospectral",
+     .spec = "s2.isospectral",
+     .title = "(2.36), n = 3..6: tr(M^k) for k = 1..n and the eigenvalues of M are constant along the subject's "
+              "Manakov flow",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {"manakov_2_34"},
+     .negative_controls = {"manakov_2_34_one_sided"},
+     .cases = {.d = 20, .mp = 10, .q = 0}});
 
 GM_PROPERTY(manakov_coadjoint_similarity, float_scalars,
             {.id = "manakov_coadjoint_similarity",
@@ -333,14 +337,15 @@ GM_PROPERTY(manakov_eigenvectors_follow, float_scalars,
              .negative_controls = {"manakov_commutator_reversed"},
              .cases = {.d = 20, .mp = 8, .q = 0}});
 
-GM_PROPERTY(manakov_clebsch_momentum_is_coadjoint, float_scalars,
-            {.id = "manakov_clebsch_momentum_is_coadjoint",
-             .spec = "mm.manakov-clebsch",
-             .title = "closing exercise: under the subject's (3.23), M = (P^T Q - Q^T P)/2 satisfies dM/dt = [M, Omega]",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {"manakov_clebsch_3_23"},
-             .negative_controls = {"manakov_clebsch_P_left_multiplied"},
-             .cases = {.d = 20, .mp = 4, .q = 0}});
+GM_PROPERTY(
+    manakov_clebsch_momentum_is_coadjoint, float_scalars,
+    {.id = "manakov_clebsch_momentum_is_coadjoint",
+     .spec = "mm.manakov-clebsch",
+     .title = "closing exercise: under the subject's (3.23), M = (P^T Q - Q^T P)/2 satisfies dM/dt = [M, Omega]",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {"manakov_clebsch_3_23"},
+     .negative_controls = {"manakov_clebsch_P_left_multiplied"},
+     .cases = {.d = 20, .mp = 4, .q = 0}});
 
 GM_PROPERTY(manakov_clebsch_momentum_is_dl_dOmega, all_scalars,
             {.id = "manakov_clebsch_momentum_is_dl_dOmega",

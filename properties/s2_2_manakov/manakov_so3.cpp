@@ -25,8 +25,8 @@ void manakov_so3_is_euler(const Subject<T>& s) {
   require_close("n = 3: M = A Omega + Omega A = hat(I Omega), I1 = a2 + a3 (cyclically)", M,
                 MatX<T>(truth::skew_of(Pi)), scale, 4);
   const MatX<T> M_dot = s.manakov_2_34(A, M);
-  require_close("n = 3: dM/dt = [M, Omega] is hat(Pi x Omega)", M_dot,
-                MatX<T>(truth::skew_of(truth::cross(Pi, W))), scale, 16);
+  require_close("n = 3: dM/dt = [M, Omega] is hat(Pi x Omega)", M_dot, MatX<T>(truth::skew_of(truth::cross(Pi, W))),
+                scale, 16);
   require_close("n = 3: dM/dt = [M, Omega] is Euler's equation (3.8)", M_dot,
                 MatX<T>(truth::skew_of(s.euler_3_8(I, Pi))), scale, 24);
   const T l = s.manakov_lagrangian(A, W_hat);
@@ -37,14 +37,15 @@ void manakov_so3_is_euler(const Subject<T>& s) {
 
 }  // namespace
 
-GM_PROPERTY(manakov_so3_is_euler, all_scalars,
-            {.id = "manakov_so3_is_euler",
-             .spec = "s2.manakov-so3",
-             .title = "(2.34) for n = 3: M = hat(I Omega) with I1 = a2 + a3 etc., dM/dt = [M, Omega] is (3.8), l is (2.5)",
-             .tolerance = ToleranceClass::Exact,
-             .needs = {"manakov_M", "manakov_2_34", "manakov_lagrangian", "euler_3_8", "lagrangian_2_5"},
-             .negative_controls = {"manakov_2_34_commutator_reversed", "manakov_lagrangian_sign_flipped",
-                                   "manakov_M_one_sided"}});
+GM_PROPERTY(
+    manakov_so3_is_euler, all_scalars,
+    {.id = "manakov_so3_is_euler",
+     .spec = "s2.manakov-so3",
+     .title = "(2.34) for n = 3: M = hat(I Omega) with I1 = a2 + a3 etc., dM/dt = [M, Omega] is (3.8), l is (2.5)",
+     .tolerance = ToleranceClass::Exact,
+     .needs = {"manakov_M", "manakov_2_34", "manakov_lagrangian", "euler_3_8", "lagrangian_2_5"},
+     .negative_controls = {"manakov_2_34_commutator_reversed", "manakov_lagrangian_sign_flipped",
+                           "manakov_M_one_sided"}});
 
 }  // namespace properties_manakov_so3
 }  // namespace gm

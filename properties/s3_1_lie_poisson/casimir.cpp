@@ -18,9 +18,11 @@ namespace {
 template <class T>
 void definition_casimir(const Subject<T>& s) {
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
-  showing_inputs([&] { return named("Pi", P); }, [&] {
-    require_close("slot casimir: c(Pi) = |Pi|^2 / 2, (2.27)", s.casimir(P), T(P.dot(P) / T(2)), T(P.squaredNorm()), 4);
-  });
+  showing_inputs([&] { return named("Pi", P); },
+                 [&] {
+                   require_close("slot casimir: c(Pi) = |Pi|^2 / 2, (2.27)", s.casimir(P), T(P.dot(P) / T(2)),
+                                 T(P.squaredNorm()), 4);
+                 });
 }
 
 template <class T>
@@ -36,10 +38,11 @@ void casimir_commutes_3_6(const Subject<T>& s) {
   const Vec3<T> df = *gen::regime_vec3<T>().as("df/dPi");
   const Vec3<T> dc = grad_c(s, P);
   const T size = T((norm_inf(P) + T(1)) * (norm_inf(P) + T(1)));
-  showing_inputs([&] { return named("Pi", P) + named("df/dPi", df); }, [&] {
-    require_close("casimir and lie_poisson_3_6: {c, f} = -Pi . (grad c x df) = 0, section 3.3", s.lie_poisson_3_6(P, dc, df),
-                  T(0), T(norm_inf(P) * size * norm_inf(df)), 24);
-  });
+  showing_inputs([&] { return named("Pi", P) + named("df/dPi", df); },
+                 [&] {
+                   require_close("casimir and lie_poisson_3_6: {c, f} = -Pi . (grad c x df) = 0, section 3.3",
+                                 s.lie_poisson_3_6(P, dc, df), T(0), T(norm_inf(P) * size * norm_inf(df)), 24);
+                 });
 }
 
 // dc/dt = grad c . dPi/dt = 0 along (3.8).
@@ -49,10 +52,11 @@ void casimir_conserved_by_euler(const Subject<T>& s) {
   const Vec3<T> P = *gen::regime_vec3<T>().as("Pi");
   const Vec3<T> dc = grad_c(s, P);
   const T size = T((norm_inf(P) + T(1)) * (norm_inf(P) + T(1)));
-  showing_inputs([&] { return named("I", I) + named("Pi", P); }, [&] {
-    require_close("casimir and euler_3_8: dc/dt = grad c . dPi/dt = 0, (3.8)", T(dc.dot(s.euler_3_8(I, P))), T(0),
-                  T(size * P.squaredNorm() / I.minCoeff()), 32);
-  });
+  showing_inputs([&] { return named("I", I) + named("Pi", P); },
+                 [&] {
+                   require_close("casimir and euler_3_8: dc/dt = grad c . dPi/dt = 0, (3.8)",
+                                 T(dc.dot(s.euler_3_8(I, P))), T(0), T(size * P.squaredNorm() / I.minCoeff()), 32);
+                 });
 }
 
 }  // namespace

@@ -20,7 +20,6 @@ namespace gm {
 namespace properties_euler_flow {
 namespace {
 
-
 template <class T>
 Vec3<T> exact_at(const oracle::FreeRigidBodySolution<T>& sol, const T& t) {
   const auto p = sol(t);
@@ -38,10 +37,22 @@ void euler_flow_conserves_casimir_and_energy(const Subject<T>& s) {
   // Invariants of degree 2: k = 64 * 2 (support/dynamics.hpp). Scales: |Pi|^2 for C; for h the
   // error is |Pi . I^-1 dPi| <= |Pi| |dPi| / min I.
   const T size = dyn::at_least_one(norm_inf(Pi0));
-  Series sc{"euler flow: invariants", std::string("|C(t) - C(0)| (") + ScalarInfo<T>::name + ")", "t",
-            "residual", false, true, {}, 0};
-  Series sh{"euler flow: invariants", std::string("|h(t) - h(0)| (") + ScalarInfo<T>::name + ")", "t",
-            "residual", false, true, {}, 0};
+  Series sc{"euler flow: invariants",
+            std::string("|C(t) - C(0)| (") + ScalarInfo<T>::name + ")",
+            "t",
+            "residual",
+            false,
+            true,
+            {},
+            0};
+  Series sh{"euler flow: invariants",
+            std::string("|h(t) - h(0)| (") + ScalarInfo<T>::name + ")",
+            "t",
+            "residual",
+            false,
+            true,
+            {},
+            0};
   for (std::size_t i = 0; i < times.size(); ++i) {
     const T g = dyn::growth(lambda, times[i]);
     require_close("|Pi(t)|^2 = |Pi(0)|^2 along the subject's (3.8)", dyn::casimir(Pi[i]), C0, T(size * size * g), 128);
@@ -86,9 +97,9 @@ void euler_flow_is_elliptic_solution(const Subject<T>& s) {
   const T kappa = dyn::rigid_body_conditioning(I, Pi0, t_end);
   const T size = dyn::at_least_one(norm_inf(Pi0));
   for (std::size_t i = 0; i < times.size(); ++i)
-    require_close(std::string("Pi(t) of the subject's (3.8) = elliptic solution (") + oracle::regime_name(exact.regime()) +
-                      ")",
-                  Pi[i], exact_at(exact, times[i]), T(size * dyn::growth(lambda, times[i]) * kappa), 64);
+    require_close(
+        std::string("Pi(t) of the subject's (3.8) = elliptic solution (") + oracle::regime_name(exact.regime()) + ")",
+        Pi[i], exact_at(exact, times[i]), T(size * dyn::growth(lambda, times[i]) * kappa), 64);
 }
 
 // s2.manakov-so3: Manakov's flow for n = 3 is Euler's flow with I = (a2 + a3, a3 + a1, a1 + a2).
@@ -109,8 +120,9 @@ void manakov_n3_flow_is_euler_flow(const Subject<T>& s) {
     require_close("M(t) of the subject's (2.34), n = 3, is skew", Mt, (-Mt.transpose()).eval(),
                   T(size * dyn::growth(lambda, times[i]) * kappa), 64);
     // vee through the entries below the diagonal (the truth of (2.11)).
-    require_close("vee(M(t)) = elliptic Pi(t) with I1 = a2 + a3 (and cyclically)", Vec3<T>(Mt(2, 1), Mt(0, 2), Mt(1, 0)),
-                  exact_at(exact, times[i]), T(size * dyn::growth(lambda, times[i]) * kappa), 64);
+    require_close("vee(M(t)) = elliptic Pi(t) with I1 = a2 + a3 (and cyclically)",
+                  Vec3<T>(Mt(2, 1), Mt(0, 2), Mt(1, 0)), exact_at(exact, times[i]),
+                  T(size * dyn::growth(lambda, times[i]) * kappa), 64);
   }
 }
 
@@ -125,15 +137,16 @@ GM_PROPERTY(euler_flow_conserves_casimir_and_energy, float_scalars,
              .negative_controls = {"euler_3_8_I_not_inverted", "euler_3_8_second_component_sign"},
              .cases = {.d = 20, .mp = 2, .q = 0}});
 
-GM_PROPERTY(euler_flow_is_elliptic_solution, float_scalars,
-            {.id = "euler_flow_is_elliptic_solution",
-             .spec = "s3.euler-flow",
-             .title = "the flow of the subject's (3.8) is the exact solution in Jacobi elliptic functions (all regimes, "
-                      "separatrix included)",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {"euler_3_8"},
-             .negative_controls = {"euler_3_8_cross_reversed", "euler_3_8_I_not_inverted"},
-             .cases = {.d = 20, .mp = 2, .q = 0}});
+GM_PROPERTY(
+    euler_flow_is_elliptic_solution, float_scalars,
+    {.id = "euler_flow_is_elliptic_solution",
+     .spec = "s3.euler-flow",
+     .title = "the flow of the subject's (3.8) is the exact solution in Jacobi elliptic functions (all regimes, "
+              "separatrix included)",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {"euler_3_8"},
+     .negative_controls = {"euler_3_8_cross_reversed", "euler_3_8_I_not_inverted"},
+     .cases = {.d = 20, .mp = 2, .q = 0}});
 
 GM_PROPERTY(manakov_n3_flow_is_euler_flow, float_scalars,
             {.id = "manakov_n3_flow_is_euler_flow",

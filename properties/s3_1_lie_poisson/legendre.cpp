@@ -88,10 +88,10 @@ void legendre_matrix_2_21(const Subject<T>& s) {
                   (norm_inf(P) + T(1)) * (norm_inf(P) + T(1)) / min_entry(I);
   require_close("hamiltonian_2_21(I, hat(Pi)) = (1/2) Pi . I^-1 Pi", s.hamiltonian_2_21(I, truth::skew_of(P)),
                 kinetic_energy_2_5(I, W), scale, 16);
-  const Vec3<T> dl = truth::gradient_of_quadratic<T>(
-      [&](const Vec3<T>& x) { return s.lagrangian_2_13(I, truth::skew_of(x)); }, W);
-  const Vec3<T> dh = truth::gradient_of_quadratic<T>(
-      [&](const Vec3<T>& x) { return s.hamiltonian_2_21(I, truth::skew_of(x)); }, P);
+  const Vec3<T> dl =
+      truth::gradient_of_quadratic<T>([&](const Vec3<T>& x) { return s.lagrangian_2_13(I, truth::skew_of(x)); }, W);
+  const Vec3<T> dh =
+      truth::gradient_of_quadratic<T>([&](const Vec3<T>& x) { return s.hamiltonian_2_21(I, truth::skew_of(x)); }, P);
   require_close("dl/dOmega_hat = Pi (fibre derivative, first equation of (2.20))", dl, P, scale, 32);
   require_close("dh/dPi = Omega_hat (answer to the exercise (2.21))", dh, W, scale, 32);
 }

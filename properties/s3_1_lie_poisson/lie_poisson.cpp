@@ -39,9 +39,7 @@ template <class T>
 void lie_poisson_table_3_11(const Subject<T>& s) {
   const Vec3<T> P = *gen::vec3<T>().as("Pi");
   Mat3<T> table;
-  table << T(0), -P(2), P(1),
-           P(2), T(0), -P(0),
-           -P(1), P(0), T(0);
+  table << T(0), -P(2), P(1), P(2), T(0), -P(0), -P(1), P(0), T(0);
   const Mat3<T> P_hat = truth::skew_of(P);
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) {
@@ -123,8 +121,8 @@ void lie_poisson_matrix_2_22_2_23(const Subject<T>& s) {
   const VecX<T> x = *gen::point<T>(3).as("x");
   const Vec3<T> P(x);
   const Mat3<T> P_hat = truth::skew_of(P);
-  const Vec3<T> dh = truth::gradient_of_quadratic<T>(
-      [&](const Vec3<T>& y) { return s.hamiltonian_2_21(I, truth::skew_of(y)); }, P);
+  const Vec3<T> dh =
+      truth::gradient_of_quadratic<T>([&](const Vec3<T>& y) { return s.hamiltonian_2_21(I, truth::skew_of(y)); }, P);
   const Mat3<T> dh_hat = truth::skew_of(dh);
   const T Hs = hamiltonian_scale(I, P);
   const Mat3<T> P_dot = s.euler_matrix_2_12(I, P_hat);
@@ -179,13 +177,14 @@ GM_PROPERTY(lie_poisson_casimir, all_scalars,
              .needs = {"lie_poisson_3_6", "lie_poisson_2_23"},
              .negative_controls = {"lie_poisson_3_6_cyclic_index_slip", "lie_poisson_2_23_cyclic_index_slip"}});
 
-GM_PROPERTY(lie_poisson_hat_map_2_25, all_scalars,
-            {.id = "lie_poisson_hat_map_2_25",
-             .spec = "s2.lie-poisson-r3",
-             .title = "(2.25): the matrix bracket (2.23) is -Pi . df x dh through the hat map; (2.26): {Pi, h} = -dh x Pi",
-             .tolerance = ToleranceClass::Exact,
-             .needs = {"lie_poisson_3_6", "lie_poisson_2_23"},
-             .negative_controls = {"lie_poisson_2_23_one_sided_product", "lie_poisson_3_6_sign_flipped"}});
+GM_PROPERTY(
+    lie_poisson_hat_map_2_25, all_scalars,
+    {.id = "lie_poisson_hat_map_2_25",
+     .spec = "s2.lie-poisson-r3",
+     .title = "(2.25): the matrix bracket (2.23) is -Pi . df x dh through the hat map; (2.26): {Pi, h} = -dh x Pi",
+     .tolerance = ToleranceClass::Exact,
+     .needs = {"lie_poisson_3_6", "lie_poisson_2_23"},
+     .negative_controls = {"lie_poisson_2_23_one_sided_product", "lie_poisson_3_6_sign_flipped"}});
 
 GM_PROPERTY(lie_poisson_matrix_2_22_2_23, all_scalars,
             {.id = "lie_poisson_matrix_2_22_2_23",

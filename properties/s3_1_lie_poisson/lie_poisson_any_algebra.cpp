@@ -38,9 +38,7 @@ PointBracket<T> lie_poisson_ad_star(const Subject<T>& s, LieAlgebraId g) {
   const int d = algebra_dim(g);
   PointBracket<T> B;
   B.name = std::string("(3.10) on ") + lie_algebra_name(g) + " via ad*";
-  B.at = [&s, g](const VecX<T>& mu, const VecX<T>& dF, const VecX<T>& dG) {
-    return T(-dG.dot(s.ad_star(g, dF, mu)));
-  };
+  B.at = [&s, g](const VecX<T>& mu, const VecX<T>& dF, const VecX<T>& dG) { return T(-dG.dot(s.ad_star(g, dF, mu))); };
   B.structure_degree = 1;
   const int C = structure_constant_bound(g);
   B.bound = [d, C](const T& R, const T& a, const T& b) { return T(T(d * d * d * C) * R * a * b); };

@@ -84,22 +84,38 @@ void jacobi_body(const Subject<T>& s, MakeBracket make) {
 }
 
 template <class T>
-void lie_poisson_3_6_bilinear(const Subject<T>& s) { bilinear_body(s, lie_poisson_r3<T>); }
+void lie_poisson_3_6_bilinear(const Subject<T>& s) {
+  bilinear_body(s, lie_poisson_r3<T>);
+}
 template <class T>
-void lie_poisson_3_6_skew(const Subject<T>& s) { skew_body(s, lie_poisson_r3<T>); }
+void lie_poisson_3_6_skew(const Subject<T>& s) {
+  skew_body(s, lie_poisson_r3<T>);
+}
 template <class T>
-void lie_poisson_3_6_leibniz(const Subject<T>& s) { leibniz_body(s, lie_poisson_r3<T>); }
+void lie_poisson_3_6_leibniz(const Subject<T>& s) {
+  leibniz_body(s, lie_poisson_r3<T>);
+}
 template <class T>
-void lie_poisson_3_6_jacobi(const Subject<T>& s) { jacobi_body(s, lie_poisson_r3<T>); }
+void lie_poisson_3_6_jacobi(const Subject<T>& s) {
+  jacobi_body(s, lie_poisson_r3<T>);
+}
 
 template <class T>
-void lie_poisson_2_23_bilinear(const Subject<T>& s) { bilinear_body(s, lie_poisson_matrix<T>); }
+void lie_poisson_2_23_bilinear(const Subject<T>& s) {
+  bilinear_body(s, lie_poisson_matrix<T>);
+}
 template <class T>
-void lie_poisson_2_23_skew(const Subject<T>& s) { skew_body(s, lie_poisson_matrix<T>); }
+void lie_poisson_2_23_skew(const Subject<T>& s) {
+  skew_body(s, lie_poisson_matrix<T>);
+}
 template <class T>
-void lie_poisson_2_23_leibniz(const Subject<T>& s) { leibniz_body(s, lie_poisson_matrix<T>); }
+void lie_poisson_2_23_leibniz(const Subject<T>& s) {
+  leibniz_body(s, lie_poisson_matrix<T>);
+}
 template <class T>
-void lie_poisson_2_23_jacobi(const Subject<T>& s) { jacobi_body(s, lie_poisson_matrix<T>); }
+void lie_poisson_2_23_jacobi(const Subject<T>& s) {
+  jacobi_body(s, lie_poisson_matrix<T>);
+}
 
 }  // namespace
 

@@ -124,7 +124,9 @@ void nambu_vector_fields_theorem_3_1(const Subject<T>& s) {
   const auto H = *gen::polynomial<T>(3).as("H");
   const VecX<T> x = *gen::point<T>(3).as("x");
   auto field = [&s, &c](const Polynomial<T>& F) {
-    return [&s, &c, F](const VecX<T>& y) { return Vec3<T>(s.nambu_motion_3_14(Vec3<T>(c.gradient(y)), Vec3<T>(F.gradient(y)))); };
+    return [&s, &c, F](const VecX<T>& y) {
+      return Vec3<T>(s.nambu_motion_3_14(Vec3<T>(c.gradient(y)), Vec3<T>(F.gradient(y))));
+    };
   };
   const auto X_G = field(G), X_H = field(H);
   const int dc = std::max(c.degree() - 1, 0);
@@ -137,27 +139,30 @@ void nambu_vector_fields_theorem_3_1(const Subject<T>& s) {
       for (int j = 0; j < 3; ++j) {
         VecX<T> e = VecX<T>::Zero(3);
         e(j) = T(1);
-        D(i, j) = line_derivative(name + ", component " + std::to_string(i + 1),
-                                  [&X, i](const VecX<T>& y) { return X(y)(i); }, x, e, nodes, Phi, k_field);
+        D(i, j) = line_derivative(
+            name + ", component " + std::to_string(i + 1), [&X, i](const VecX<T>& y) { return X(y)(i); }, x, e, nodes,
+            Phi, k_field);
       }
     return D;
   };
-  const T Phi_G = T(2) * c.gradient_bound(R) * G.gradient_bound(R), Phi_H = T(2) * c.gradient_bound(R) * H.gradient_bound(R);
+  const T Phi_G = T(2) * c.gradient_bound(R) * G.gradient_bound(R),
+          Phi_H = T(2) * c.gradient_bound(R) * H.gradient_bound(R);
   const Mat3<T> DX_G = jacobian(X_G, Phi_G, "X_G"), DX_H = jacobian(X_H, Phi_H, "X_H");
   const Vec3<T> lie_bracket = (DX_H * X_G(x) - DX_G * X_H(x)).eval();
   const auto B = nambu(s, c);
   const CentralNodes<T> gh_nodes = central_nodes<T>(dc + std::max(G.degree() - 1, 0) + std::max(H.degree() - 1, 0));
   const T R_gh = r + gh_nodes.radius();
   const T Phi_GH = B.bound_of(G, H, R_gh);
-  const VecX<T> dGH = line_gradient(B.name + ": {G, H}", [&](const VecX<T>& y) { return B(G, H, y); }, x, gh_nodes,
-                                    Phi_GH, B.ops_of(G, H));
+  const VecX<T> dGH = line_gradient(
+      B.name + ": {G, H}", [&](const VecX<T>& y) { return B(G, H, y); }, x, gh_nodes, Phi_GH, B.ops_of(G, H));
   const Vec3<T> X_GH = s.nambu_motion_3_14(Vec3<T>(c.gradient(x)), Vec3<T>(dGH));
-  const T scale = T(3) * nodes.W * (Phi_H * T(2) * c.gradient_bound(r) * G.gradient_bound(r) +
-                                    Phi_G * T(2) * c.gradient_bound(r) * H.gradient_bound(r)) +
+  const T scale = T(3) * nodes.W *
+                      (Phi_H * T(2) * c.gradient_bound(r) * G.gradient_bound(r) +
+                       Phi_G * T(2) * c.gradient_bound(r) * H.gradient_bound(r)) +
                   T(2) * c.gradient_bound(r) * gh_nodes.W * Phi_GH;
   const int k = std::max(k_field + nodes.ops() + 3, B.ops_of(G, H) + gh_nodes.ops() + 2 + c.eval_ops()) + 2;
-  require_close("proof of Theorem 3.1: [X_G, X_H] = -X_{G,H}, X_H = grad c x grad H", lie_bracket, (-X_GH).eval(), scale,
-                k);
+  require_close("proof of Theorem 3.1: [X_G, X_H] = -X_{G,H}, X_H = grad c x grad H", lie_bracket, (-X_GH).eval(),
+                scale, k);
 }
 
 // Exercise (Casimirs of the R^3 bracket): {Phi(c), h} = 0 for every h, for Phi(c) = a0 + a1 c +
@@ -191,7 +196,8 @@ void nambu_motion_3_14_tangent(const Subject<T>& s) {
     require_close("(3.14): dx_" + std::to_string(i + 1) + "/dt = {x_" + std::to_string(i + 1) + ", h}", x_dot(i),
                   s.nambu_3_13(dc, e, dh), T(T(6) * norm_inf(dc) * norm_inf(dh)), 2 * kTripleProductOps);
   }
-  require_close("(3.14): dx/dt = grad c x grad h", x_dot, truth::cross(dc, dh), T(T(2) * norm_inf(dc) * norm_inf(dh)), 4);
+  require_close("(3.14): dx/dt = grad c x grad h", x_dot, truth::cross(dc, dh), T(T(2) * norm_inf(dc) * norm_inf(dh)),
+                4);
   require_close("grad c . dx/dt = 0 (motion on the level sets of c)", T(dc.dot(x_dot)), T(0), scale, 5);
   require_close("grad h . dx/dt = 0 (motion on the level sets of h)", T(dh.dot(x_dot)), T(0), scale, 5);
 }
@@ -301,13 +307,14 @@ GM_PROPERTY(nambu_motion_3_14_tangent, all_scalars,
              .negative_controls = {"nambu_motion_3_14_reversed", "nambu_motion_3_14_half_cross",
                                    "nambu_3_13_sign_flipped"}});
 
-GM_PROPERTY(nambu_motion_recombination, all_scalars,
-            {.id = "nambu_motion_recombination",
-             .spec = "s3.nambu-recombination",
-             .title = "(3.14) is unchanged under (c, h) -> (alpha c + beta h, gamma c + delta h), alpha delta - beta gamma = 1",
-             .tolerance = ToleranceClass::Exact,
-             .needs = {"nambu_motion_3_14"},
-             .negative_controls = {"nambu_motion_3_14_half_cross"}});
+GM_PROPERTY(
+    nambu_motion_recombination, all_scalars,
+    {.id = "nambu_motion_recombination",
+     .spec = "s3.nambu-recombination",
+     .title = "(3.14) is unchanged under (c, h) -> (alpha c + beta h, gamma c + delta h), alpha delta - beta gamma = 1",
+     .tolerance = ToleranceClass::Exact,
+     .needs = {"nambu_motion_3_14"},
+     .negative_controls = {"nambu_motion_3_14_half_cross"}});
 
 }  // namespace properties_nambu_bracket
 }  // namespace gm

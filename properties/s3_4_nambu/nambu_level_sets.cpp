@@ -61,11 +61,15 @@ void nambu_level_sphere_bracket_is_canonical(const Subject<T>& s) {
   const Vec3<T> grad_q(T(0), T(0), T(1));
   const Vec3<T> grad_p(-P.x(1) / (P.rho * P.rho), P.x(0) / (P.rho * P.rho), T(0));
   showing_inputs(
-      [&] { return named("x (grad c = x)", P.x) + named("x_3", P.q) + named("rho", P.rho) + named("grad f", a) + named("grad h", b); },
       [&] {
-        require_close("with c = |x|^2/2, on the sphere through x: {f, h} of (3.13) equals the canonical bracket "
-                      "df~/dq dh~/dp - df~/dp dh~/dq in (q, p) = (x_3, azimuth)",
-                      s.nambu_3_13(P.x, a, b), canonical, T(norm_inf(P.x) * norm_inf(a) * norm_inf(b)), 32);
+        return named("x (grad c = x)", P.x) + named("x_3", P.q) + named("rho", P.rho) + named("grad f", a) +
+               named("grad h", b);
+      },
+      [&] {
+        require_close(
+            "with c = |x|^2/2, on the sphere through x: {f, h} of (3.13) equals the canonical bracket "
+            "df~/dq dh~/dp - df~/dp dh~/dq in (q, p) = (x_3, azimuth)",
+            s.nambu_3_13(P.x, a, b), canonical, T(norm_inf(P.x) * norm_inf(a) * norm_inf(b)), 32);
         require_close("with c = |x|^2/2: {x_3, azimuth} = 1 (q = x_3 and p = azimuth are canonical)",
                       s.nambu_3_13(P.x, grad_q, grad_p), T(1), T(1), 16);
       });
@@ -82,14 +86,15 @@ void nambu_level_sphere_motion_is_canonical(const Subject<T>& s) {
   const Vec3<T> v = s.nambu_motion_3_14(P.x, dh);
   const T size_x = norm_inf(P.x), size_h = norm_inf(dh);
   const T dp_dt = (P.x(0) * v(1) - P.x(1) * v(0)) / (P.rho * P.rho);
-  showing_inputs([&] { return named("x (grad c = x)", P.x) + named("grad h", dh) + named("dx/dt", v); }, [&] {
-    require_close("with c = |x|^2/2, (3.14) is tangent to the sphere: x . dx/dt = 0", T(P.x.dot(v)), T(0),
-                  T(size_x * size_x * size_h), 8);
-    require_close("with c = |x|^2/2, (3.14) on the sphere is Hamilton's dq/dt = dh~/dp (q = x_3)", v(2),
-                  T(dh.dot(P.e_p)), T(size_x * size_h), 8);
-    require_close("with c = |x|^2/2, (3.14) on the sphere is Hamilton's dp/dt = -dh~/dq (p = azimuth)", dp_dt,
-                  T(-dh.dot(P.e_q)), T(size_h * (T(1) + size_x / P.rho)), 32);
-  });
+  showing_inputs([&] { return named("x (grad c = x)", P.x) + named("grad h", dh) + named("dx/dt", v); },
+                 [&] {
+                   require_close("with c = |x|^2/2, (3.14) is tangent to the sphere: x . dx/dt = 0", T(P.x.dot(v)),
+                                 T(0), T(size_x * size_x * size_h), 8);
+                   require_close("with c = |x|^2/2, (3.14) on the sphere is Hamilton's dq/dt = dh~/dp (q = x_3)", v(2),
+                                 T(dh.dot(P.e_p)), T(size_x * size_h), 8);
+                   require_close("with c = |x|^2/2, (3.14) on the sphere is Hamilton's dp/dt = -dh~/dq (p = azimuth)",
+                                 dp_dt, T(-dh.dot(P.e_q)), T(size_h * (T(1) + size_x / P.rho)), 32);
+                 });
 }
 
 }  // namespace

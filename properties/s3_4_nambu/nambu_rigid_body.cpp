@@ -18,7 +18,8 @@ inline constexpr int kGradientOfH = 16;  // central-difference gradient of h (se
 template <class T>
 Polynomial<T> half_square_norm() {
   Polynomial<T> c(3);
-  for (int i = 0; i < 3; ++i) c = c + (Polynomial<T>::coordinate(3, i) * Polynomial<T>::coordinate(3, i)).scaled(T(1) / T(2));
+  for (int i = 0; i < 3; ++i)
+    c = c + (Polynomial<T>::coordinate(3, i) * Polynomial<T>::coordinate(3, i)).scaled(T(1) / T(2));
   return c;
 }
 
@@ -136,8 +137,7 @@ void system_3_16_is_rigid_body(const Subject<T>& s) {
   // The coefficients c of (3.16) and of (3.7) read off the subject at x = (1, 1, 1).
   const Vec3<T> ones(T(1), T(1), T(1));
   const Vec3<T> c_316 = s.nambu_3_16(a, ones);
-  require("(3.16): c1 c2 c3 = (a1 a2 a3)^2 > 0", c_316(0) * c_316(1) * c_316(2) > T(0),
-          "c = " + show_value(c_316));
+  require("(3.16): c1 c2 c3 = (a1 a2 a3)^2 > 0", c_316(0) * c_316(1) * c_316(2) > T(0), "c = " + show_value(c_316));
   const Vec3<T> c_37 = s.euler_3_7(Vec3<T>(T(1), T(1) / T(2), T(1) / T(3)), ones);
   require("I = diag(1, 1/2, 1/3): (3.7) has c1 c2 c3 < 0, so it is not a (3.16) with real a unless an axis is reversed",
           c_37(0) * c_37(1) * c_37(2) < T(0), "c = " + show_value(c_37));
@@ -184,13 +184,14 @@ GM_PROPERTY(rigid_body_sphere_energy_ellipsoid, all_scalars,
              .needs = {"hamiltonian_3_4", "euler_3_8", "nambu_motion_3_14"},
              .negative_controls = {"energy_ellipsoid_x_I_x", "nambu_motion_3_14_reversed"}});
 
-GM_PROPERTY(rigid_body_hyperbolic_cylinders, all_scalars,
-            {.id = "rigid_body_hyperbolic_cylinders",
-             .spec = "s3.nambu-hyperbolic-cylinders",
-             .title = "I = diag(1, 1/2, 1/3): (3.7) keeps x1^2 - x3^2 and |x|^2; motion = grad c x grad (x3^2 - x1^2)/2",
-             .tolerance = ToleranceClass::Exact,
-             .needs = {"euler_3_7", "euler_3_8", "nambu_motion_3_14", "hamiltonian_3_4"},
-             .negative_controls = {"euler_3_7_index_slip", "euler_3_8_I_not_inverted", "nambu_motion_3_14_reversed"}});
+GM_PROPERTY(
+    rigid_body_hyperbolic_cylinders, all_scalars,
+    {.id = "rigid_body_hyperbolic_cylinders",
+     .spec = "s3.nambu-hyperbolic-cylinders",
+     .title = "I = diag(1, 1/2, 1/3): (3.7) keeps x1^2 - x3^2 and |x|^2; motion = grad c x grad (x3^2 - x1^2)/2",
+     .tolerance = ToleranceClass::Exact,
+     .needs = {"euler_3_7", "euler_3_8", "nambu_motion_3_14", "hamiltonian_3_4"},
+     .negative_controls = {"euler_3_7_index_slip", "euler_3_8_I_not_inverted", "nambu_motion_3_14_reversed"}});
 
 GM_PROPERTY(system_3_16_is_rigid_body, all_scalars,
             {.id = "system_3_16_is_rigid_body",

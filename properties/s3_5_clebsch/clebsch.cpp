@@ -21,7 +21,8 @@ std::vector<Polynomial<T>> clebsch_Pi() {
       for (int c = 0; c < 3; ++c) {
         const int e = truth::levi_civita(a, b, c);
         if (!e) continue;
-        Pi[static_cast<std::size_t>(a)] = Pi[static_cast<std::size_t>(a)] +
+        Pi[static_cast<std::size_t>(a)] =
+            Pi[static_cast<std::size_t>(a)] +
             (Polynomial<T>::coordinate(6, 3 + b) * Polynomial<T>::coordinate(6, c)).scaled(T(e));
       }
   return Pi;
@@ -56,8 +57,8 @@ void clebsch_map_is_poisson(const Subject<T>& s) {
     }
   const Polynomial<T> F = substitute(f, Pi_of), H = substitute(h, Pi_of);
   const VecX<T> Pi_x(Pi);
-  const T scale = T(6) * F.gradient_bound(R) * H.gradient_bound(R) +
-                  T(6) * R_Pi * f.gradient_bound(R_Pi) * h.gradient_bound(R_Pi);
+  const T scale =
+      T(6) * F.gradient_bound(R) * H.gradient_bound(R) + T(6) * R_Pi * f.gradient_bound(R_Pi) * h.gradient_bound(R_Pi);
   const int k = 4 + std::max(F.eval_ops(), H.eval_ops()) + kTripleProductOps + std::max(f.eval_ops(), h.eval_ops()) + 2;
   require_close("(3.22): {f(P x Q), h(P x Q)}_canonical = {f, h}_(3.6) at Pi = P x Q", canonical_of(F, H),
                 s.lie_poisson_3_6(Pi, Vec3<T>(f.gradient(Pi_x)), Vec3<T>(h.gradient(Pi_x))), scale, k);

@@ -105,7 +105,8 @@ void momentum_map_right_action_equivariance(const Subject<T>& s) {
     const MatX<T> P = dyn::pick<T>(gen::mat<T>(n, n, 32, 6), "P");
     const VecX<T> x = dyn::pick<T>(gen::vec<T>(d, 32, 6), "x");
     const MatX<T> xi = s.lie_hat(g, x);
-    const MatX<T> J = J_right<T>(Q, P), J_dot = (J_right<T>((Q * xi).eval(), P) + J_right<T>(Q, (P * xi).eval())).eval();
+    const MatX<T> J = J_right<T>(Q, P),
+                  J_dot = (J_right<T>((Q * xi).eval(), P) + J_right<T>(Q, (P * xi).eval())).eval();
     VecX<T> mu(d), mu_dot(d);
     for (int k = 0; k < d; ++k) {
       VecX<T> e = VecX<T>::Zero(d);
@@ -126,14 +127,15 @@ void momentum_map_right_action_equivariance(const Subject<T>& s) {
 
 }  // namespace
 
-GM_PROPERTY(momentum_map_right_action_generates_lift, all_scalars,
-            {.id = "momentum_map_right_action_generates_lift",
-             .spec = "mm.second-action",
-             .title = "SO(n) on R^{n x n} by Q -> Q g, n = 3..6: J^xi = <Q^T P - P^T Q, xi> generates Q' = Q xi, P' = P xi",
-             .tolerance = ToleranceClass::Exact,
-             .needs = {"pairing", "canonical_bracket"},
-             .negative_controls = {"pairing_without_half", "canonical_bracket_sign_flipped"},
-             .cases = {.d = 100, .mp = 10, .q = 5}});
+GM_PROPERTY(
+    momentum_map_right_action_generates_lift, all_scalars,
+    {.id = "momentum_map_right_action_generates_lift",
+     .spec = "mm.second-action",
+     .title = "SO(n) on R^{n x n} by Q -> Q g, n = 3..6: J^xi = <Q^T P - P^T Q, xi> generates Q' = Q xi, P' = P xi",
+     .tolerance = ToleranceClass::Exact,
+     .needs = {"pairing", "canonical_bracket"},
+     .negative_controls = {"pairing_without_half", "canonical_bracket_sign_flipped"},
+     .cases = {.d = 100, .mp = 10, .q = 5}});
 
 GM_PROPERTY(momentum_map_right_action_equivariance, all_scalars,
             {.id = "momentum_map_right_action_equivariance",

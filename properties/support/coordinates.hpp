@@ -48,18 +48,20 @@ inline std::vector<std::pair<int, int>> free_entries(int n, bool skew) {
 
 template <class T>
 struct Basis {
-  int n = 0;          // matrix size
-  bool skew = true;   // so(n) (true) or sl(2, R)
+  int n = 0;         // matrix size
+  bool skew = true;  // so(n) (true) or sl(2, R)
   std::vector<MatX<T>> E;
-  MatX<T> S_inverse;  // free entries -> coordinates
-  T condition = T(1); // |S|_inf |S^-1|_inf: 1 for a signed permutation
+  MatX<T> S_inverse;   // free entries -> coordinates
+  T condition = T(1);  // |S|_inf |S^-1|_inf: 1 for a signed permutation
   bool documented = true;
   std::string origin;  // "the documented coordinates", "your hat_n", ...
 
   int dimension() const { return static_cast<int>(E.size()); }
 
   // For check titles: "the documented coordinates" or "your coordinates (from hat_n(e_k, 4))".
-  std::string name() const { return documented ? std::string("the documented coordinates") : "your coordinates (from " + origin + ")"; }
+  std::string name() const {
+    return documented ? std::string("the documented coordinates") : "your coordinates (from " + origin + ")";
+  }
 
   MatX<T> matrix(const VecX<T>& v) const {
     MatX<T> m = MatX<T>::Zero(n, n);
@@ -83,7 +85,8 @@ struct Basis {
       if (skew) {
         for (int i = 0; i < n; ++i)
           for (int j = 0; j < n; ++j)
-            if (E[k](i, j) == T(1)) out += "v" + std::to_string(k + 1) + " = m(" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ")";
+            if (E[k](i, j) == T(1))
+              out += "v" + std::to_string(k + 1) + " = m(" + std::to_string(i + 1) + "," + std::to_string(j + 1) + ")";
       } else {
         out += "e" + std::to_string(k + 1) + " = " + show_value(E[k]);
       }
@@ -94,7 +97,8 @@ struct Basis {
 
 // A basis from its matrices, or the reason it is not an accepted one (see the top of this file).
 template <class T>
-std::optional<Basis<T>> make_basis(int n, bool skew, std::vector<MatX<T>> E, const std::string& origin, std::string* why) {
+std::optional<Basis<T>> make_basis(int n, bool skew, std::vector<MatX<T>> E, const std::string& origin,
+                                   std::string* why) {
   auto refuse = [&](const std::string& reason) -> std::optional<Basis<T>> {
     if (why) *why = reason;
     return std::nullopt;
@@ -121,12 +125,14 @@ std::optional<Basis<T>> make_basis(int n, bool skew, std::vector<MatX<T>> E, con
       for (int i = 0; i < n && skew_ok; ++i)
         for (int j = 0; j < n && skew_ok; ++j) skew_ok = e(i, j) == -e(j, i);
       if (!skew_ok)
-        return refuse(which + " is " + show_value(e) + ": not plus or minus one elementary skew matrix e_i e_j^T - e_j e_i^T " +
-                      "(the order and signs of the coordinates of so(" + std::to_string(n) + ") are yours to choose, but " +
-                      "each coordinate is one entry of the matrix above the diagonal, with its negative below)");
+        return refuse(
+            which + " is " + show_value(e) + ": not plus or minus one elementary skew matrix e_i e_j^T - e_j e_i^T " +
+            "(the order and signs of the coordinates of so(" + std::to_string(n) + ") are yours to choose, but " +
+            "each coordinate is one entry of the matrix above the diagonal, with its negative below)");
       if (used[found])
-        return refuse(origin + " gives two coordinates the same entry (" + std::to_string(entries[found].first + 1) + "," +
-                      std::to_string(entries[found].second + 1) + "): not a basis of so(" + std::to_string(n) + ")");
+        return refuse(origin + " gives two coordinates the same entry (" + std::to_string(entries[found].first + 1) +
+                      "," + std::to_string(entries[found].second + 1) + "): not a basis of so(" + std::to_string(n) +
+                      ")");
       used[found] = true;
     } else if (e(0, 0) + e(1, 1) != T(0)) {
       return refuse(which + " is " + show_value(e) + ": not traceless, so not in sl(2, R)");
@@ -138,9 +144,10 @@ std::optional<Basis<T>> make_basis(int n, bool skew, std::vector<MatX<T>> E, con
   b.E = std::move(E);
   b.origin = origin;
   if (!skew) {
-    const T det = S(0, 0) * (S(1, 1) * S(2, 2) - S(1, 2) * S(2, 1)) - S(0, 1) * (S(1, 0) * S(2, 2) - S(1, 2) * S(2, 0)) +
-                  S(0, 2) * (S(1, 0) * S(2, 1) - S(1, 1) * S(2, 0));
-    if (det == T(0)) return refuse(origin + ": the matrices of e1, e2, e3 are linearly dependent, not a basis of sl(2, R)");
+    const T det = S(0, 0) * (S(1, 1) * S(2, 2) - S(1, 2) * S(2, 1)) -
+                  S(0, 1) * (S(1, 0) * S(2, 2) - S(1, 2) * S(2, 0)) + S(0, 2) * (S(1, 0) * S(2, 1) - S(1, 1) * S(2, 0));
+    if (det == T(0))
+      return refuse(origin + ": the matrices of e1, e2, e3 are linearly dependent, not a basis of sl(2, R)");
   }
   b.S_inverse = Eigen::FullPivLU<MatX<T>>(S).inverse();
   b.condition = max_abs(S) * max_abs(b.S_inverse) * T(d);
@@ -204,16 +211,18 @@ std::optional<Basis<T>> basis_of_hat(int n, bool skew, int d, Hat&& hat, const s
 template <class T>
 std::optional<Basis<T>> learned_so_n(const Subject<T>& s, int n, std::string* why = nullptr) {
   if (!s.hat_n) return std::nullopt;
-  return basis_of_hat<T>(n, true, truth::so_dimension(n), [&](const VecX<T>& e) { return MatX<T>(s.hat_n(e, n)); },
-                         "hat_n(e_k, " + std::to_string(n) + ")", why);
+  return basis_of_hat<T>(
+      n, true, truth::so_dimension(n), [&](const VecX<T>& e) { return MatX<T>(s.hat_n(e, n)); },
+      "hat_n(e_k, " + std::to_string(n) + ")", why);
 }
 
 template <class T>
 std::optional<Basis<T>> learned_algebra(const Subject<T>& s, LieAlgebraId g, std::string* why = nullptr) {
   if (!s.lie_hat) return std::nullopt;
-  return basis_of_hat<T>(matrix_size(g), g != LieAlgebraId::sl2, truth::algebra_dimension(g),
-                         [&](const VecX<T>& e) { return MatX<T>(s.lie_hat(g, e)); },
-                         std::string("lie_hat(") + lie_algebra_name(g) + ", e_k)", why);
+  return basis_of_hat<T>(
+      matrix_size(g), g != LieAlgebraId::sl2, truth::algebra_dimension(g),
+      [&](const VecX<T>& e) { return MatX<T>(s.lie_hat(g, e)); },
+      std::string("lie_hat(") + lie_algebra_name(g) + ", e_k)", why);
 }
 
 // The coordinates a coordinate slot is checked in: the student's own (from hat_n / lie_hat) when
@@ -288,11 +297,12 @@ std::string basis_hint(const std::string& slot, const std::string& hat_slot, con
     bool holds = false;
     try {
       holds = holds_in(*alt);
-    } catch (...) {
-    }
+    } catch (...) {}
     if (holds)
-      return "your coordinates of " + algebra + " are ordered or signed differently from the suite's documented ones: in "
-             "the coordinates " + alt->origin + " uses (" + alt->describe() + ") " + slot + " is right. Give " + hat_slot +
+      return "your coordinates of " + algebra +
+             " are ordered or signed differently from the suite's documented ones: in "
+             "the coordinates " +
+             alt->origin + " uses (" + alt->describe() + ") " + slot + " is right. Give " + hat_slot +
              " too, so that the suite checks " + slot + " in your coordinates, or use the documented ones (" +
              documented.describe() + ")\n";
   }

@@ -58,8 +58,12 @@ struct HyperDual {
   HyperDual() = default;
   HyperDual(const T& a_) : a(a_) {}
   HyperDual(const T& a_, const T& b_, const T& c_, const T& d_) : a(a_), b(b_), c(c_), d(d_) {}
-  friend HyperDual operator+(const HyperDual& x, const HyperDual& y) { return {x.a + y.a, x.b + y.b, x.c + y.c, x.d + y.d}; }
-  friend HyperDual operator-(const HyperDual& x, const HyperDual& y) { return {x.a - y.a, x.b - y.b, x.c - y.c, x.d - y.d}; }
+  friend HyperDual operator+(const HyperDual& x, const HyperDual& y) {
+    return {x.a + y.a, x.b + y.b, x.c + y.c, x.d + y.d};
+  }
+  friend HyperDual operator-(const HyperDual& x, const HyperDual& y) {
+    return {x.a - y.a, x.b - y.b, x.c - y.c, x.d - y.d};
+  }
   friend HyperDual operator-(const HyperDual& x) { return {-x.a, -x.b, -x.c, -x.d}; }
   friend HyperDual operator*(const HyperDual& x, const HyperDual& y) {
     return {x.a * y.a, x.a * y.b + x.b * y.a, x.a * y.c + x.c * y.a, x.a * y.d + x.b * y.c + x.c * y.b + x.d * y.a};

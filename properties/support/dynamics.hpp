@@ -116,7 +116,9 @@ Mat3<T> draw_attitude() {
   // Near +1 and -1 (the identity), and near w = 0 (pi) from both sides: the quaternion given to a
   // step kept in one is q or -q (core/state_form.hpp, quaternion_sign_given).
   quaternion_sign_given() =
-      pick<T>(rc::gen::inRange(0, 2), "sign of the quaternion given to a step kept in one (0: w >= 0; 1: -q, w <= 0)") ? -1 : 1;
+      pick<T>(rc::gen::inRange(0, 2), "sign of the quaternion given to a step kept in one (0: w >= 0; 1: -q, w <= 0)")
+          ? -1
+          : 1;
   static const int axes[5][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 2, 2}, {2, -1, 2}};  // / 1 or / 3: unit
   const auto unit = [](int k) {
     const Rational d = k < 3 ? Rational(1) : Rational(3);
@@ -126,7 +128,8 @@ Mat3<T> draw_attitude() {
   // Cayley of S = hat(a) t turns by 2 atan(t): t = 2^-(m+1) turns by about 2^-m rad.
   const Rational t = Rational(1) / Rational(boost::multiprecision::cpp_int(1) << (m + 1));
   MatX<Rational> S = MatX<Rational>::Zero(3, 3);
-  S(0, 1) = -a(2) * t, S(0, 2) = a(1) * t, S(1, 0) = a(2) * t, S(1, 2) = -a(0) * t, S(2, 0) = -a(1) * t, S(2, 1) = a(0) * t;
+  S(0, 1) = -a(2) * t, S(0, 2) = a(1) * t, S(1, 0) = a(2) * t, S(1, 2) = -a(0) * t, S(2, 0) = -a(1) * t,
+       S(2, 1) = a(0) * t;
   MatX<Rational> R = gen::cayley_rational(S);
   if (regime == 3) {
     const Vec3<Rational> n = unit(pick<T>(rc::gen::inRange(0, 5), "axis of the rotation by pi (one of 5)"));
@@ -422,8 +425,8 @@ std::vector<MatX<T>> subject_manakov_M(const Subject<T>& s, const MatX<T>& A, co
 
 // Pi alone under the subject's (3.8). Needs euler_3_8.
 template <class T>
-std::vector<Vec3<T>> subject_euler(const Subject<T>& s, const Vec3<T>& I, const Vec3<T>& Pi0, const std::vector<T>& times,
-                                   long* steps = nullptr) {
+std::vector<Vec3<T>> subject_euler(const Subject<T>& s, const Vec3<T>& I, const Vec3<T>& Pi0,
+                                   const std::vector<T>& times, long* steps = nullptr) {
   flow::Gbs<T> g([&](const T&, const VecX<T>& v) { return VecX<T>(s.euler_3_8(I, Vec3<T>(v))); });
   std::vector<Vec3<T>> out;
   for (const auto& v : g.sample(VecX<T>(Pi0), T(0), times)) out.push_back(Vec3<T>(v));
@@ -465,32 +468,32 @@ std::vector<T> times_to(const T& t_end, int count) {
 // The draws and the flows are instantiated once, in dynamics.cpp, for double and Real50: each
 // drags in RapidCheck's generators, the Taylor oracle or the extrapolation integrator over a
 // multiprecision type, which every dynamic property file would otherwise compile again.
-#define GM_DYNAMICS_FOR(PREFIX, T)                                                                          \
-  PREFIX template Vec3<T> draw_inertia<T>();                                                                \
-  PREFIX template Vec3<T> draw_triaxial_inertia<T>();                                                       \
-  PREFIX template Vec3<T> draw_momentum<T>();                                                               \
-  PREFIX template Mat3<T> draw_rotation<T>();                                                               \
-  PREFIX template Mat3<T> draw_attitude<T>();                                                               \
-  PREFIX template Vec3<T> draw_generic_inertia<T>();                                                        \
-  PREFIX template T generic_entry<T>();                                                                     \
-  PREFIX template Vec3<T> draw_generic_momentum<T>();                                                       \
-  PREFIX template std::vector<T> draw_generic_manakov_a<T>(int);                                            \
-  PREFIX template MatX<T> draw_generic_skew<T>(int);                                                        \
-  PREFIX template std::vector<T> draw_manakov_a<T>(int);                                                    \
-  PREFIX template MatX<T> draw_skew<T>(int, int);                                                           \
-  PREFIX template T rigid_body_conditioning<T>(const Vec3<T>&, const Vec3<T>&, const T&);                   \
+#define GM_DYNAMICS_FOR(PREFIX, T)                                                                              \
+  PREFIX template Vec3<T> draw_inertia<T>();                                                                    \
+  PREFIX template Vec3<T> draw_triaxial_inertia<T>();                                                           \
+  PREFIX template Vec3<T> draw_momentum<T>();                                                                   \
+  PREFIX template Mat3<T> draw_rotation<T>();                                                                   \
+  PREFIX template Mat3<T> draw_attitude<T>();                                                                   \
+  PREFIX template Vec3<T> draw_generic_inertia<T>();                                                            \
+  PREFIX template T generic_entry<T>();                                                                         \
+  PREFIX template Vec3<T> draw_generic_momentum<T>();                                                           \
+  PREFIX template std::vector<T> draw_generic_manakov_a<T>(int);                                                \
+  PREFIX template MatX<T> draw_generic_skew<T>(int);                                                            \
+  PREFIX template std::vector<T> draw_manakov_a<T>(int);                                                        \
+  PREFIX template MatX<T> draw_skew<T>(int, int);                                                               \
+  PREFIX template T rigid_body_conditioning<T>(const Vec3<T>&, const Vec3<T>&, const T&);                       \
   PREFIX template std::vector<RigidBodyState<T>> oracle_rigid_body<T>(const Vec3<T>&, const RigidBodyState<T>&, \
-                                                                      const std::vector<T>&);               \
+                                                                      const std::vector<T>&);                   \
   PREFIX template std::vector<ManakovState<T>> oracle_manakov<T>(const std::vector<T>&, const ManakovState<T>&, \
-                                                                 const std::vector<T>&);                    \
-  PREFIX template std::vector<RigidBodyState<T>> subject_rigid_body<T>(                                     \
-      const Subject<T>&, const Vec3<T>&, const RigidBodyState<T>&, const std::vector<T>&, long*);           \
-  PREFIX template std::vector<MatX<T>> subject_manakov_M<T>(const Subject<T>&, const MatX<T>&, const MatX<T>&, \
-                                                            const std::vector<T>&, long*);                  \
-  PREFIX template std::vector<Vec3<T>> subject_euler<T>(const Subject<T>&, const Vec3<T>&, const Vec3<T>&,   \
-                                                        const std::vector<T>&, long*);                      \
-  PREFIX template std::vector<ManakovState<T>> subject_manakov<T>(const Subject<T>&, const MatX<T>&,         \
-                                                                  const ManakovState<T>&, const std::vector<T>&, long*);
+                                                                 const std::vector<T>&);                        \
+  PREFIX template std::vector<RigidBodyState<T>> subject_rigid_body<T>(                                         \
+      const Subject<T>&, const Vec3<T>&, const RigidBodyState<T>&, const std::vector<T>&, long*);               \
+  PREFIX template std::vector<MatX<T>> subject_manakov_M<T>(const Subject<T>&, const MatX<T>&, const MatX<T>&,  \
+                                                            const std::vector<T>&, long*);                      \
+  PREFIX template std::vector<Vec3<T>> subject_euler<T>(const Subject<T>&, const Vec3<T>&, const Vec3<T>&,      \
+                                                        const std::vector<T>&, long*);                          \
+  PREFIX template std::vector<ManakovState<T>> subject_manakov<T>(                                              \
+      const Subject<T>&, const MatX<T>&, const ManakovState<T>&, const std::vector<T>&, long*);
 
 GM_DYNAMICS_FOR(extern, double)
 GM_DYNAMICS_FOR(extern, Real50)

@@ -11,8 +11,8 @@
 namespace gm {
 
 struct Series {
-  std::string figure;   // series with the same figure name are drawn together
-  std::string name;     // legend entry
+  std::string figure;  // series with the same figure name are drawn together
+  std::string name;    // legend entry
   std::string x_label;
   std::string y_label;
   bool log_x = false;

@@ -112,8 +112,8 @@ class Gbs {
  private:
   struct Attempt {
     bool accepted = false;
-    int row = 0;               // row of the accepted extrapolant
-    std::vector<T> err;        // err[r] = |T_rr - T_r,r-1|, r >= 1
+    int row = 0;         // row of the accepted extrapolant
+    std::vector<T> err;  // err[r] = |T_rr - T_r,r-1|, r >= 1
     VecX<T> x;
     T tol{0};
   };

@@ -23,9 +23,7 @@ inline constexpr int kBits = 6;
 // 0, 1, -1, 2, -2, ... : index 0 is 0, so shrinking toward index 0 shrinks toward 0.
 inline int zigzag(int i) { return (i % 2) ? (i + 1) / 2 : -(i / 2); }
 
-inline rc::Gen<int> signed_int(int max_abs) {
-  return rc::gen::map(rc::gen::inRange(0, 2 * max_abs + 1), zigzag);
-}
+inline rc::Gen<int> signed_int(int max_abs) { return rc::gen::map(rc::gen::inRange(0, 2 * max_abs + 1), zigzag); }
 
 template <class T>
 T dyadic(int k, int bits) {
@@ -51,7 +49,8 @@ rc::Gen<VecX<T>> vec(int n, int max_abs = kMaxInt, int bits = kBits) {
   return rc::gen::map(rc::gen::container<std::vector<int>>(static_cast<std::size_t>(n), signed_int(max_abs)),
                       [bits](const std::vector<int>& ks) {
                         VecX<T> v(static_cast<Eigen::Index>(ks.size()));
-                        for (std::size_t i = 0; i < ks.size(); ++i) v(static_cast<Eigen::Index>(i)) = dyadic<T>(ks[i], bits);
+                        for (std::size_t i = 0; i < ks.size(); ++i)
+                          v(static_cast<Eigen::Index>(i)) = dyadic<T>(ks[i], bits);
                         return v;
                       });
 }
@@ -133,9 +132,8 @@ MatX<Rational> cayley_rational(const MatX<Rational>& S);
 
 template <class T>
 rc::Gen<MatX<T>> rotation(int n) {
-  return rc::gen::map(skew<Rational>(n, 8, 2), [](const MatX<Rational>& S) {
-    return convert_matrix<T>(cayley_rational(S)).eval();
-  });
+  return rc::gen::map(skew<Rational>(n, 8, 2),
+                      [](const MatX<Rational>& S) { return convert_matrix<T>(cayley_rational(S)).eval(); });
 }
 
 template <class T>
@@ -176,22 +174,22 @@ rc::Gen<Mat3<T>> inertia_tensor() {
 // Each generator is instantiated once, in generators.cpp, for the three scalars: without this,
 // every property file would instantiate RapidCheck's generator machinery over Real50 and Rational
 // again (measured: ~3 s of compilation per file).
-#define GM_GENERATORS_FOR(PREFIX, T)                                    \
-  PREFIX template rc::Gen<T> scalar<T>(int, int);                       \
-  PREFIX template rc::Gen<T> positive<T>(int, int);                     \
-  PREFIX template rc::Gen<VecX<T>> vec<T>(int, int, int);               \
-  PREFIX template rc::Gen<Vec3<T>> vec3<T>(int, int);                   \
-  PREFIX template rc::Gen<Vec6<T>> vec6<T>(int, int);                   \
-  PREFIX template rc::Gen<Vec3<T>> nonzero_vec3<T>(int, int);           \
-  PREFIX template rc::Gen<MatX<T>> mat<T>(int, int, int, int);          \
-  PREFIX template rc::Gen<Mat3<T>> mat3<T>(int, int);                   \
-  PREFIX template rc::Gen<MatX<T>> skew<T>(int, int, int);              \
-  PREFIX template rc::Gen<Mat3<T>> skew3<T>(int, int);                  \
-  PREFIX template rc::Gen<MatX<T>> symmetric<T>(int, int, int);         \
-  PREFIX template rc::Gen<MatX<T>> rotation<T>(int);                    \
-  PREFIX template rc::Gen<Mat3<T>> rotation3<T>();                      \
-  PREFIX template rc::Gen<Vec3<T>> inertia<T>(int, int);                \
-  PREFIX template rc::Gen<Vec3<T>> triaxial_inertia<T>(int, int);       \
+#define GM_GENERATORS_FOR(PREFIX, T)                              \
+  PREFIX template rc::Gen<T> scalar<T>(int, int);                 \
+  PREFIX template rc::Gen<T> positive<T>(int, int);               \
+  PREFIX template rc::Gen<VecX<T>> vec<T>(int, int, int);         \
+  PREFIX template rc::Gen<Vec3<T>> vec3<T>(int, int);             \
+  PREFIX template rc::Gen<Vec6<T>> vec6<T>(int, int);             \
+  PREFIX template rc::Gen<Vec3<T>> nonzero_vec3<T>(int, int);     \
+  PREFIX template rc::Gen<MatX<T>> mat<T>(int, int, int, int);    \
+  PREFIX template rc::Gen<Mat3<T>> mat3<T>(int, int);             \
+  PREFIX template rc::Gen<MatX<T>> skew<T>(int, int, int);        \
+  PREFIX template rc::Gen<Mat3<T>> skew3<T>(int, int);            \
+  PREFIX template rc::Gen<MatX<T>> symmetric<T>(int, int, int);   \
+  PREFIX template rc::Gen<MatX<T>> rotation<T>(int);              \
+  PREFIX template rc::Gen<Mat3<T>> rotation3<T>();                \
+  PREFIX template rc::Gen<Vec3<T>> inertia<T>(int, int);          \
+  PREFIX template rc::Gen<Vec3<T>> triaxial_inertia<T>(int, int); \
   PREFIX template rc::Gen<Mat3<T>> inertia_tensor<T>();
 
 GM_GENERATORS_FOR(extern, double)

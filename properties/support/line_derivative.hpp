@@ -43,15 +43,15 @@ inline constexpr int kLineStepBits = 3;  // h = 1/8
 
 template <class T>
 struct CentralNodes {
-  int m = 0;               // nodes s_k = k h, k = -m..m: exact for polynomials of degree <= 2m
-  T h;                     // node spacing
-  std::vector<T> s;        // the 2m + 1 nodes, in order k = -m..m
-  std::vector<T> w;        // derivative weights at 0 (divided by h)
-  std::vector<T> l;        // Lagrange weights of the value at the certificate node (m + 1) h
-  T s_check;               // the certificate node
-  T W;                     // sum |w_k|, rounded up to no less than the exact value
-  T L;                     // sum |l_k|
-  int ops() const { return 2 * m + 2; }  // roundings added by the weighted sum
+  int m = 0;                                 // nodes s_k = k h, k = -m..m: exact for polynomials of degree <= 2m
+  T h;                                       // node spacing
+  std::vector<T> s;                          // the 2m + 1 nodes, in order k = -m..m
+  std::vector<T> w;                          // derivative weights at 0 (divided by h)
+  std::vector<T> l;                          // Lagrange weights of the value at the certificate node (m + 1) h
+  T s_check;                                 // the certificate node
+  T W;                                       // sum |w_k|, rounded up to no less than the exact value
+  T L;                                       // sum |l_k|
+  int ops() const { return 2 * m + 2; }      // roundings added by the weighted sum
   T radius() const { return T(m + 1) * h; }  // how far the nodes (and the check node) reach
 };
 
@@ -107,8 +107,8 @@ CentralNodes<T> central_nodes(int degree) {
 // `k_phi` is the length of phi's rounding chain. Returns the derivative; the certificate is a
 // require_close, so a failing certificate fails the property with `what` in its message.
 template <class T, class F>
-T line_derivative(std::string_view what, const F& phi, const VecX<T>& x, const VecX<T>& v,
-                  const CentralNodes<T>& nodes, const T& Phi, int k_phi) {
+T line_derivative(std::string_view what, const F& phi, const VecX<T>& x, const VecX<T>& v, const CentralNodes<T>& nodes,
+                  const T& Phi, int k_phi) {
   std::vector<T> values;
   values.reserve(nodes.s.size());
   for (const T& s : nodes.s) values.push_back(phi(VecX<T>(x + s * v)));
@@ -126,8 +126,8 @@ T line_derivative(std::string_view what, const F& phi, const VecX<T>& x, const V
 
 // Gradient of phi at x from line derivatives along the coordinate axes.
 template <class T, class F>
-VecX<T> line_gradient(std::string_view what, const F& phi, const VecX<T>& x, const CentralNodes<T>& nodes,
-                      const T& Phi, int k_phi) {
+VecX<T> line_gradient(std::string_view what, const F& phi, const VecX<T>& x, const CentralNodes<T>& nodes, const T& Phi,
+                      int k_phi) {
   const Eigen::Index n = x.size();
   VecX<T> g(n);
   for (Eigen::Index i = 0; i < n; ++i) {

@@ -44,12 +44,11 @@ void recognising_erratum(Matches&& matches_printed, const char* entry, const cha
     bool matches = false;
     try {
       matches = matches_printed();
-    } catch (...) {
-    }
+    } catch (...) {}
     if (matches)
       r.description = std::string("your result is the formula as printed in the notes, ") + printed +
-                      ", which is an erratum: see spec/CATALOGUE.md, entry " + entry + " (what holds instead is below)\n" +
-                      r.description;
+                      ", which is an erratum: see spec/CATALOGUE.md, entry " + entry +
+                      " (what holds instead is below)\n" + r.description;
     throw;
   }
 }

@@ -58,16 +58,16 @@ T box_radius(const VecX<T>& x) {
 // Bilinearity in each argument: {a F1 + b F2, G} = a {F1, G} + b {F2, G} and
 // {G, a F1 + b F2} = a {G, F1} + b {G, F2}, with a F1 + b F2 formed symbolically.
 template <class T>
-void check_bilinear(const PointBracket<T>& B, const Polynomial<T>& F1, const Polynomial<T>& F2,
-                    const Polynomial<T>& G, const T& a, const T& b, const VecX<T>& x) {
+void check_bilinear(const PointBracket<T>& B, const Polynomial<T>& F1, const Polynomial<T>& F2, const Polynomial<T>& G,
+                    const T& a, const T& b, const VecX<T>& x) {
   const Polynomial<T> F = F1.scaled(a) + F2.scaled(b);
   const T R = box_radius(x);
   const T scale = B.bound_of(F, G, R) + abs_value(a) * B.bound_of(F1, G, R) + abs_value(b) * B.bound_of(F2, G, R);
   const int k = std::max({B.ops_of(F, G), B.ops_of(F1, G), B.ops_of(F2, G)}) + 3;  // + a*, b*, +
-  require_close(B.name + ": {a F1 + b F2, G} = a {F1, G} + b {F2, G}", B(F, G, x),
-                T(a * B(F1, G, x) + b * B(F2, G, x)), scale, k);
-  require_close(B.name + ": {G, a F1 + b F2} = a {G, F1} + b {G, F2}", B(G, F, x),
-                T(a * B(G, F1, x) + b * B(G, F2, x)), scale, k);
+  require_close(B.name + ": {a F1 + b F2, G} = a {F1, G} + b {F2, G}", B(F, G, x), T(a * B(F1, G, x) + b * B(F2, G, x)),
+                scale, k);
+  require_close(B.name + ": {G, a F1 + b F2} = a {G, F1} + b {G, F2}", B(G, F, x), T(a * B(G, F1, x) + b * B(G, F2, x)),
+                scale, k);
 }
 
 // Bilinearity on drawn functions F1, F2, G of `dim` variables (degree <= 3), scalars a, b and a
@@ -94,14 +94,14 @@ void check_skew(const PointBracket<T>& B, const Polynomial<T>& F, const Polynomi
 // Leibniz rule: {F G, H} = {F, H} G + F {G, H}, with the product F G formed symbolically (so its
 // gradient comes from its own coefficients, not from the product rule).
 template <class T>
-void check_leibniz(const PointBracket<T>& B, const Polynomial<T>& F, const Polynomial<T>& G,
-                   const Polynomial<T>& H, const VecX<T>& x) {
+void check_leibniz(const PointBracket<T>& B, const Polynomial<T>& F, const Polynomial<T>& G, const Polynomial<T>& H,
+                   const VecX<T>& x) {
   const Polynomial<T> FG = F * G;
   const T R = box_radius(x);
   const T scale = B.bound_of(FG, H, R) + B.bound_of(F, H, R) * G.bound(R) + F.bound(R) * B.bound_of(G, H, R);
   const int k = std::max({B.ops_of(FG, H), B.ops_of(F, H) + G.eval_ops(), B.ops_of(G, H) + F.eval_ops()}) + 2;
-  require_close(B.name + ": {F G, H} = {F, H} G + F {G, H}", B(FG, H, x),
-                T(B(F, H, x) * G(x) + F(x) * B(G, H, x)), scale, k);
+  require_close(B.name + ": {F G, H} = {F, H} G + F {G, H}", B(FG, H, x), T(B(F, H, x) * G(x) + F(x) * B(G, H, x)),
+                scale, k);
 }
 
 // Jacobi identity (3.2): {F, {G, H}} + {G, {H, F}} + {H, {F, G}} = 0.

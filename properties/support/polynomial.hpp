@@ -235,9 +235,9 @@ namespace gen {
 // evaluations of a bracket of degree-4 functions) stays well under a second for 25 cases.
 inline constexpr int kPolyMaxDegree = 4;
 inline constexpr int kPolyMaxTerms = 4;
-inline constexpr int kPolyCoefMax = 8;   // coefficients k / 4, |k| <= 8: in [-2, 2]
+inline constexpr int kPolyCoefMax = 8;  // coefficients k / 4, |k| <= 8: in [-2, 2]
 inline constexpr int kPolyCoefBits = 2;
-inline constexpr int kPointMax = 16;     // points k / 8, |k| <= 16: in [-2, 2]^n
+inline constexpr int kPointMax = 16;  // points k / 8, |k| <= 16: in [-2, 2]^n
 inline constexpr int kPointBits = 3;
 
 // A random polynomial in n variables: 1 to max_terms terms c x_{i1} ... x_{id}, d <= max_degree.
@@ -245,23 +245,23 @@ inline constexpr int kPointBits = 3;
 template <class T>
 rc::Gen<Polynomial<T>> polynomial(int n, int max_degree = kPolyMaxDegree, int max_terms = kPolyMaxTerms) {
   using Spec = std::pair<int, std::vector<int>>;  // (coefficient numerator, variable indices)
-  const auto term = rc::gen::pair(
-      signed_int(kPolyCoefMax),
-      rc::gen::mapcat(rc::gen::inRange(0, max_degree + 1), [n](int d) {
-        return rc::gen::container<std::vector<int>>(static_cast<std::size_t>(d), rc::gen::inRange(0, n));
-      }));
-  return rc::gen::map(
-      rc::gen::mapcat(rc::gen::inRange(1, max_terms + 1),
-                      [term](int k) { return rc::gen::container<std::vector<Spec>>(static_cast<std::size_t>(k), term); }),
-      [n](const std::vector<Spec>& specs) {
-        Polynomial<T> p(n);
-        for (const auto& [c, vars] : specs) {
-          Exponents e{};
-          for (int v : vars) ++e[static_cast<std::size_t>(v)];
-          p.add(dyadic<T>(c, kPolyCoefBits), e);
-        }
-        return p;
-      });
+  const auto term =
+      rc::gen::pair(signed_int(kPolyCoefMax), rc::gen::mapcat(rc::gen::inRange(0, max_degree + 1), [n](int d) {
+                      return rc::gen::container<std::vector<int>>(static_cast<std::size_t>(d), rc::gen::inRange(0, n));
+                    }));
+  return rc::gen::map(rc::gen::mapcat(rc::gen::inRange(1, max_terms + 1),
+                                      [term](int k) {
+                                        return rc::gen::container<std::vector<Spec>>(static_cast<std::size_t>(k), term);
+                                      }),
+                      [n](const std::vector<Spec>& specs) {
+                        Polynomial<T> p(n);
+                        for (const auto& [c, vars] : specs) {
+                          Exponents e{};
+                          for (int v : vars) ++e[static_cast<std::size_t>(v)];
+                          p.add(dyadic<T>(c, kPolyCoefBits), e);
+                        }
+                        return p;
+                      });
 }
 
 // A point of [-2, 2]^n on the grid 1/8.
@@ -272,7 +272,7 @@ rc::Gen<VecX<T>> point(int n) {
 
 // Instantiated once, in polynomial.cpp (RapidCheck's generators over Real50 and Rational are
 // expensive to compile).
-#define GM_POLYNOMIAL_GENERATORS_FOR(PREFIX, T)                         \
+#define GM_POLYNOMIAL_GENERATORS_FOR(PREFIX, T)                        \
   PREFIX template rc::Gen<Polynomial<T>> polynomial<T>(int, int, int); \
   PREFIX template rc::Gen<VecX<T>> point<T>(int);
 

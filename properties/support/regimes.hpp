@@ -84,8 +84,7 @@ rc::Gen<Vec3<T>> regime_vec3() {
           return v;
         });
       case 2:  // near a principal axis: off it by 2^-s of the box, s in [20, 60]
-        return rc::gen::map(rc::gen::tuple(uniform(0, 3), uniform(1, kMaxInt + 1), vec3<T>(),
-                                           uniform(20, 61)),
+        return rc::gen::map(rc::gen::tuple(uniform(0, 3), uniform(1, kMaxInt + 1), vec3<T>(), uniform(20, 61)),
                             [](const std::tuple<int, int, Vec3<T>, int>& t) {
                               const auto& [axis, k, w, s] = t;
                               Vec3<T> v = (w * pow2<T>(-s)).eval();
@@ -107,7 +106,8 @@ rc::Gen<Vec3<T>> regime_vec3() {
         return rc::gen::map(rc::gen::pair(vec3<T>(), uniform(-40, 41)),
                             [](const std::pair<Vec3<T>, int>& p) { return Vec3<T>(p.first * pow2<T>(p.second)); });
       case 7:  // thirds: not representable in double
-        return rc::gen::map(vec3<T>(), [](const Vec3<T>& v) { return Vec3<T>(v.unaryExpr([](const T& x) { return third(x); })); });
+        return rc::gen::map(vec3<T>(),
+                            [](const Vec3<T>& v) { return Vec3<T>(v.unaryExpr([](const T& x) { return third(x); })); });
       default:
         return vec3<T>();
     }
@@ -120,7 +120,8 @@ template <class T>
 rc::Gen<VecX<T>> regime_vec(int d) {
   return rc::gen::mapcat(uniform(0, 4), [d](int regime) -> rc::Gen<VecX<T>> {
     if (regime == 3)  // thirds: not representable in double
-      return rc::gen::map(vec<T>(d), [](const VecX<T>& v) { return VecX<T>(v.unaryExpr([](const T& x) { return third(x); })); });
+      return rc::gen::map(vec<T>(d),
+                          [](const VecX<T>& v) { return VecX<T>(v.unaryExpr([](const T& x) { return third(x); })); });
     if (regime == 1)
       return rc::gen::map(rc::gen::pair(vec<T>(d), uniform(-40, 41)),
                           [](const std::pair<VecX<T>, int>& p) { return VecX<T>(p.first * pow2<T>(p.second)); });
@@ -209,25 +210,24 @@ void showValue(const ManakovBody<T>& b, std::ostream& os) {
 template <class T>
 rc::Gen<ManakovBody<T>> manakov_body(int n) {
   return rc::gen::mapcat(uniform(0, 4), [n](int regime) -> rc::Gen<ManakovBody<T>> {
-    return rc::gen::map(rc::gen::tuple(rc::gen::container<std::vector<int>>(static_cast<std::size_t>(n),
-                                                                            uniform(1, 129)),
-                                       skew<Rational>(n, 8, 2), uniform(-20, 21)),
-                        [n, regime](const std::tuple<std::vector<int>, MatX<Rational>, int>& t) {
-                          const auto& [ks, S, s] = t;
-                          VecX<Rational> d(n);
-                          for (int i = 0; i < n; ++i) d(i) = dyadic<Rational>(ks[static_cast<std::size_t>(i)], 2);
-                          if (regime == 2) d(1) = d(0);
-                          if (regime == 3) d *= pow2<Rational>(s);
-                          const MatX<Rational> R =
-                              regime == 0 ? MatX<Rational>(MatX<Rational>::Identity(n, n)) : cayley_rational(S);
-                          const MatX<Rational> A = R * d.asDiagonal() * R.transpose();
-                          ManakovBody<T> b;
-                          b.A = convert_matrix<T>(A);
-                          b.d = convert_matrix<T>(d);
-                          b.R = convert_matrix<T>(R);
-                          b.spread = convert<T>(Rational(d.maxCoeff() / d.minCoeff()));
-                          return b;
-                        });
+    return rc::gen::map(
+        rc::gen::tuple(rc::gen::container<std::vector<int>>(static_cast<std::size_t>(n), uniform(1, 129)),
+                       skew<Rational>(n, 8, 2), uniform(-20, 21)),
+        [n, regime](const std::tuple<std::vector<int>, MatX<Rational>, int>& t) {
+          const auto& [ks, S, s] = t;
+          VecX<Rational> d(n);
+          for (int i = 0; i < n; ++i) d(i) = dyadic<Rational>(ks[static_cast<std::size_t>(i)], 2);
+          if (regime == 2) d(1) = d(0);
+          if (regime == 3) d *= pow2<Rational>(s);
+          const MatX<Rational> R = regime == 0 ? MatX<Rational>(MatX<Rational>::Identity(n, n)) : cayley_rational(S);
+          const MatX<Rational> A = R * d.asDiagonal() * R.transpose();
+          ManakovBody<T> b;
+          b.A = convert_matrix<T>(A);
+          b.d = convert_matrix<T>(d);
+          b.R = convert_matrix<T>(R);
+          b.spread = convert<T>(Rational(d.maxCoeff() / d.minCoeff()));
+          return b;
+        });
   });
 }
 

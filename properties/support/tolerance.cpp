@@ -31,8 +31,8 @@ SideNames& side_names() {
 }
 
 std::string describe_failure(std::string_view what, std::string_view kind, const std::string& lhs,
-                             const std::string& rhs, const std::string& diff, const std::string& residual,
-                             double units, const std::string& allowed) {
+                             const std::string& rhs, const std::string& diff, const std::string& residual, double units,
+                             const std::string& allowed) {
   const SideNames& sides = side_names();
   const bool named = sides.lhs != "lhs";
   const std::string diff_name = named ? "difference" : "lhs-rhs";

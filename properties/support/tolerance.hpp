@@ -37,9 +37,9 @@ namespace gm {
 // The worst residual seen while a property runs, in units of eps * scale: the runner resets it
 // before each property and reports it with the verdict.
 struct ResidualLog {
-  double worst_eps_units = 0.0;   // max over checks of residual / (eps * scale); 0 when exact
-  double worst_absolute = 0.0;    // the absolute residual of that check
-  std::string worst_check;        // the check's description with both sides
+  double worst_eps_units = 0.0;  // max over checks of residual / (eps * scale); 0 when exact
+  double worst_absolute = 0.0;   // the absolute residual of that check
+  std::string worst_check;       // the check's description with both sides
   long checks = 0;
 
   void reset() { *this = ResidualLog{}; }
@@ -110,8 +110,8 @@ struct SideNames {
 SideNames& side_names();
 
 std::string describe_failure(std::string_view what, std::string_view kind, const std::string& lhs,
-                             const std::string& rhs, const std::string& diff, const std::string& residual,
-                             double units, const std::string& allowed);
+                             const std::string& rhs, const std::string& diff, const std::string& residual, double units,
+                             const std::string& allowed);
 
 // A residual of the size of double round-off (relative 1e-19 .. 1e-11) in a 50-digit or
 // exact run means part of the computation is done in double; the message says so. Empty otherwise.
@@ -144,28 +144,27 @@ void require_close_plain(std::string_view what, const X& lhs, const X& rhs, cons
     std::string hint;
     if constexpr (!std::is_same_v<T, double>)
       if (scale != T(0)) hint = double_precision_hint(ScalarInfo<T>::name, to_double(T(residual / scale)));
-    fail(detail::describe_failure(what, is_exact_v<T> ? "exact" : "roundoff", show_value(lhs),
-                                     show_value(rhs), show_value(detail::difference(lhs, rhs)),
-                                     to_string_full(residual), units,
-                                     is_exact_v<T> ? std::string("0 (exact arithmetic)")
-                                                   : to_string_full(allowed) + " = " + std::to_string(k) +
-                                                         " eps * scale, scale = " + to_string_full(scale)) +
+    fail(detail::describe_failure(what, is_exact_v<T> ? "exact" : "roundoff", show_value(lhs), show_value(rhs),
+                                  show_value(detail::difference(lhs, rhs)), to_string_full(residual), units,
+                                  is_exact_v<T> ? std::string("0 (exact arithmetic)")
+                                                : to_string_full(allowed) + " = " + std::to_string(k) +
+                                                      " eps * scale, scale = " + to_string_full(scale)) +
          hint);
   }
 }
 
-#define GM_REQUIRE_CLOSE_FOR(PREFIX, T)                                                                        \
-  PREFIX template void require_close_plain<T, T>(std::string_view, const T&, const T&, const T&, double);     \
-  PREFIX template void require_close_plain<Vec3<T>, T>(std::string_view, const Vec3<T>&, const Vec3<T>&,     \
-                                                       const T&, double);                                     \
-  PREFIX template void require_close_plain<Vec6<T>, T>(std::string_view, const Vec6<T>&, const Vec6<T>&,     \
-                                                       const T&, double);                                     \
-  PREFIX template void require_close_plain<Mat3<T>, T>(std::string_view, const Mat3<T>&, const Mat3<T>&,     \
-                                                       const T&, double);                                     \
-  PREFIX template void require_close_plain<VecX<T>, T>(std::string_view, const VecX<T>&, const VecX<T>&,     \
-                                                       const T&, double);                                     \
-  PREFIX template void require_close_plain<MatX<T>, T>(std::string_view, const MatX<T>&, const MatX<T>&,     \
-                                                       const T&, double);
+#define GM_REQUIRE_CLOSE_FOR(PREFIX, T)                                                                            \
+  PREFIX template void require_close_plain<T, T>(std::string_view, const T&, const T&, const T&, double);          \
+  PREFIX template void require_close_plain<Vec3<T>, T>(std::string_view, const Vec3<T>&, const Vec3<T>&, const T&, \
+                                                       double);                                                    \
+  PREFIX template void require_close_plain<Vec6<T>, T>(std::string_view, const Vec6<T>&, const Vec6<T>&, const T&, \
+                                                       double);                                                    \
+  PREFIX template void require_close_plain<Mat3<T>, T>(std::string_view, const Mat3<T>&, const Mat3<T>&, const T&, \
+                                                       double);                                                    \
+  PREFIX template void require_close_plain<VecX<T>, T>(std::string_view, const VecX<T>&, const VecX<T>&, const T&, \
+                                                       double);                                                    \
+  PREFIX template void require_close_plain<MatX<T>, T>(std::string_view, const MatX<T>&, const MatX<T>&, const T&, \
+                                                       double);
 
 GM_REQUIRE_CLOSE_FOR(extern, double)
 GM_REQUIRE_CLOSE_FOR(extern, Real50)

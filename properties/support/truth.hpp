@@ -54,7 +54,6 @@ Vec3<T> gradient_of_quadratic(F&& f, const Vec3<T>& x) {
   return g;
 }
 
-
 // so(n) coordinates as documented for the slots hat_n / vee_n (`geomech slots`): so(2) is
 // [[0, -v0], [v0, 0]]; for n >= 3 the top-left 3 x 3 block is the hat map (2.11) of (v0, v1, v2),
 // and column c >= 3 above the diagonal holds v(c(c-1)/2 + i) in row i (minus it below). Written

@@ -75,8 +75,8 @@ HDMat<T> inverse_given(const MatX<T>& n0, const MatX<T>& b, const MatX<T>& c, co
 // The chart q -> cay(X(q)) of a matrix group near the identity, read back by the subject's vee.
 template <class T>
 struct CayleyChart {
-  std::vector<MatX<T>> E;                          // the subject's hat of the basis vectors
-  std::function<VecX<T>(const MatX<T>&)> vee;      // the subject's vee
+  std::vector<MatX<T>> E;                      // the subject's hat of the basis vectors
+  std::function<VecX<T>(const MatX<T>&)> vee;  // the subject's vee
   MatX<T> X(const VecX<T>& q) const {
     MatX<T> x = MatX<T>::Zero(E[0].rows(), E[0].cols());
     for (std::size_t k = 0; k < E.size(); ++k) x += q(static_cast<Eigen::Index>(k)) * E[k];
@@ -215,8 +215,9 @@ void check_euler_lagrange(const std::string& where, const CayleyChart<T>& chart,
                named("l: linear term a", l.a) + named("l: K", l.K) + named("l: quartic coefficient c", l.c);
       },
       [&] {
-        require_close(where + ": the Euler-Lagrange equations of L(q, dq/dt) = l(xi) hold, "
-                              "d/dt dL/d(dq/dt) = dL/dq",
+        require_close(where +
+                          ": the Euler-Lagrange equations of L(q, dq/dt) = l(xi) hold, "
+                          "d/dt dL/d(dq/dt) = dL/dq",
                       el.rate_of_momentum, el.force, size, 8);
         // Not a solution: mu changes at dmu/dt + delta.
         const VecX<T> xi_dot_off = H.fullPivLu().solve((mu_dot + delta).eval());
@@ -224,16 +225,18 @@ void check_euler_lagrange(const std::string& where, const CayleyChart<T>& chart,
         const auto off = st.euler_lagrange(qdd_off);
         const VecX<T> el_off = off.rate_of_momentum - off.force;
         const T size_off = size_for(xi_dot_off, qdd_off);
-        require_close(where + ": converse: a curve whose dmu/dt misses the reduced equation by delta misses the "
-                              "Euler-Lagrange equations by B^T delta, B = dxi/d(dq/dt)",
+        require_close(where +
+                          ": converse: a curve whose dmu/dt misses the reduced equation by delta misses the "
+                          "Euler-Lagrange equations by B^T delta, B = dxi/d(dq/dt)",
                       el_off, (st.velocity_matrix().transpose() * delta).eval(), size_off, 8);
         const T residual = max_abs(el_off);
         const T allowed = T(8) * eps<T>() * size_off;
         char detail[200];
         std::snprintf(detail, sizeof detail, "|EL| = %.6g, round-off bound %.6g, |delta| = %.6g", to_double(residual),
                       to_double(allowed), to_double(max_abs(delta)));
-        require(where + ": converse: a curve whose dmu/dt misses the reduced equation by delta != 0 "
-                        "does not satisfy the Euler-Lagrange equations",
+        require(where +
+                    ": converse: a curve whose dmu/dt misses the reduced equation by delta != 0 "
+                    "does not satisfy the Euler-Lagrange equations",
                 residual > T(1000) * allowed, detail);
       });
 }
@@ -251,9 +254,9 @@ template <class T>
 void euler_lagrange_on_group_iff_euler_poincare(const Subject<T>& s) {
   for (LieAlgebraId g : {LieAlgebraId::so3, LieAlgebraId::so4, LieAlgebraId::sl2}) {
     const CayleyChart<T> chart = chart_of(s, g);
-    check_euler_lagrange<T>(std::string("Theorem 1.1 (iv) <=> (ii) on ") + lie_algebra_name(g) +
-                                " with dmu/dt = ad*_xi mu (subject's ad*)",
-                            chart, [&](const VecX<T>& xi, const VecX<T>& mu) { return s.ad_star(g, xi, mu); });
+    check_euler_lagrange<T>(
+        std::string("Theorem 1.1 (iv) <=> (ii) on ") + lie_algebra_name(g) + " with dmu/dt = ad*_xi mu (subject's ad*)",
+        chart, [&](const VecX<T>& xi, const VecX<T>& mu) { return s.ad_star(g, xi, mu); });
   }
 }
 
@@ -261,9 +264,9 @@ template <class T>
 void matrix_euler_poincare_any_lagrangian(const Subject<T>& s) {
   for (LieAlgebraId g : {LieAlgebraId::so3, LieAlgebraId::so4, LieAlgebraId::sl2}) {
     const CayleyChart<T> chart = chart_of(s, g);
-    check_euler_lagrange<T>(std::string("Theorem 2.3 on ") + lie_algebra_name(g) +
-                                " with dM/dt = [M, Omega], M representing mu in tr(A B)",
-                            chart, matrix_commutator_rate(chart));
+    check_euler_lagrange<T>(
+        std::string("Theorem 2.3 on ") + lie_algebra_name(g) + " with dM/dt = [M, Omega], M representing mu in tr(A B)",
+        chart, matrix_commutator_rate(chart));
   }
 }
 
@@ -304,15 +307,17 @@ GM_PROPERTY(matrix_euler_poincare_any_lagrangian, all_scalars,
              .negative_controls = {"lie_vee_sl2_transposed", "lie_hat_sl2_transposed"},
              .cases = {.d = 100, .mp = 25, .q = 10}});
 
-GM_PROPERTY(matrix_euler_poincare_any_lagrangian_so_n, all_scalars,
-            {.id = "matrix_euler_poincare_any_lagrangian_so_n",
-             .spec = "s2.matrix-euler-poincare",
-             .title = "Theorem 2.3 on SO(n), n = 3..6 (3..5 exact), l neither quadratic nor diagonal: the Euler-Lagrange equations "
-                      "on SO(n) in a Cayley chart hold iff dM/dt = [M, Omega] (subject's hat_n, vee_n)",
-             .tolerance = ToleranceClass::Exact,
-             .needs = {"hat_n", "vee_n"},
-             .negative_controls = {"hat_n_written_for_so4", "vee_n_written_for_so4"},
-             .cases = {.d = 100, .mp = 25, .q = 5}});
+GM_PROPERTY(
+    matrix_euler_poincare_any_lagrangian_so_n, all_scalars,
+    {.id = "matrix_euler_poincare_any_lagrangian_so_n",
+     .spec = "s2.matrix-euler-poincare",
+     .title =
+         "Theorem 2.3 on SO(n), n = 3..6 (3..5 exact), l neither quadratic nor diagonal: the Euler-Lagrange equations "
+         "on SO(n) in a Cayley chart hold iff dM/dt = [M, Omega] (subject's hat_n, vee_n)",
+     .tolerance = ToleranceClass::Exact,
+     .needs = {"hat_n", "vee_n"},
+     .negative_controls = {"hat_n_written_for_so4", "vee_n_written_for_so4"},
+     .cases = {.d = 100, .mp = 25, .q = 5}});
 
 }  // namespace properties_euler_lagrange_on_group
 }  // namespace gm

@@ -183,8 +183,8 @@ void euler_variational_principle(const Subject<T>& s) {
     fp.push_back(integrand((W + bump.at(t) / T(8)).eval(), t));
     big = std::max(big, T(norm_inf(W) * (norm_inf(xi.rate(t)) + norm_inf(W) * norm_inf(xi.at(t)))));
   }
-  const T scale = kT<T> * I.maxCoeff() * dyn::at_least_one(big) * dyn::growth(dyn::rigid_body_rate(I, Pi0), kT<T>, steps) *
-                  dyn::rigid_body_conditioning(I, Pi0, kT<T>);
+  const T scale = kT<T> * I.maxCoeff() * dyn::at_least_one(big) *
+                  dyn::growth(dyn::rigid_body_rate(I, Pi0), kT<T>, steps) * dyn::rigid_body_conditioning(I, Pi0, kT<T>);
   var::require_first_variation_vanishes<T>("Theorem 2.1, Euler's equations (2.1) and l (2.5)", grid, f, fp, scale, 64);
 }
 
@@ -329,7 +329,8 @@ void hamilton_pontryagin_variation(const Subject<T>& s) {
     const Mat3<T> dW_hat = truth::skew_of(Vec3<T>(dW.at(t) + dW.c0));  // arbitrary, non-zero at the ends
     const Mat3<T> dP_hat = truth::skew_of(Vec3<T>(dP.at(t) + dP.c1));
     const Mat3<T> X = truth::skew_of(xi.at(t)), dX = truth::skew_of(xi.rate(t));
-    const T dl = (s.lagrangian_2_13(h.I, (W_hat + dW_hat).eval()) - s.lagrangian_2_13(h.I, (W_hat - dW_hat).eval())) / T(2);
+    const T dl =
+        (s.lagrangian_2_13(h.I, (W_hat + dW_hat).eval()) - s.lagrangian_2_13(h.I, (W_hat - dW_hat).eval())) / T(2);
     return T(dl - pairing(P, dW_hat) + pairing(dP_hat, (body - W_hat).eval()) +
              pairing(P, (dX + body * X - X * body).eval()));
   };
@@ -339,7 +340,8 @@ void hamilton_pontryagin_variation(const Subject<T>& s) {
     const T t = grid.times[i];
     f.push_back(integrand(h.Pi[i], h.O[i], t));
     fp.push_back(integrand((h.Pi[i] + truth::skew_of(Vec3<T>(bump.at(t) / T(8)))).eval(), h.O[i], t));
-    big = std::max(big, T(norm_inf(h.Pi[i]) * (T(1) + norm_inf(h.Pi[i])) * (T(1) + norm_inf(xi.rate(t)) + norm_inf(xi.at(t)))));
+    big = std::max(
+        big, T(norm_inf(h.Pi[i]) * (T(1) + norm_inf(h.Pi[i])) * (T(1) + norm_inf(xi.rate(t)) + norm_inf(xi.at(t)))));
   }
   const T gr = dyn::growth(h.lambda, kT<T>, h.steps);
   var::require_first_variation_vanishes<T>("Proposition 2.3, the Hamilton-Pontryagin action (2.16)", grid, f, fp,
@@ -369,7 +371,8 @@ void hp_hamiltonian_action_variation(const Subject<T>& s) {
     const T t = grid.times[i];
     f.push_back(integrand(h.Pi[i], h.O[i], t));
     fp.push_back(integrand((h.Pi[i] + truth::skew_of(Vec3<T>(bump.at(t) / T(8)))).eval(), h.O[i], t));
-    big = std::max(big, T(norm_inf(h.Pi[i]) * (T(1) + norm_inf(h.Pi[i])) * (T(1) + norm_inf(xi.rate(t)) + norm_inf(xi.at(t)))));
+    big = std::max(
+        big, T(norm_inf(h.Pi[i]) * (T(1) + norm_inf(h.Pi[i])) * (T(1) + norm_inf(xi.rate(t)) + norm_inf(xi.at(t)))));
   }
   const T gr = dyn::growth(h.lambda, kT<T>, h.steps);
   var::require_first_variation_vanishes<T>("exercise (2.24), the action <Pi, O^-1 dO/dt> - h(Pi)", grid, f, fp,
@@ -401,7 +404,8 @@ void clebsch_variational_principle(const Subject<T>& s) {
     const Vec3<T> Qdot = s.clebsch_3_21(I, Q, P).first;
     const Vec3<T> dw = dW.at(t) + dW.c0, dp = dP.at(t) + dP.c1, dq = dQ.at(t), dq_rate = dQ.rate(t);
     const T dl = (s.lagrangian_2_5(I, (W + dw).eval()) - s.lagrangian_2_5(I, (W - dw).eval())) / T(2);
-    return T(dl + P.dot(truth::cross(dw, Q)) + dp.dot(Qdot + truth::cross(W, Q)) + P.dot(dq_rate + truth::cross(W, dq)));
+    return T(dl + P.dot(truth::cross(dw, Q)) + dp.dot(Qdot + truth::cross(W, Q)) +
+             P.dot(dq_rate + truth::cross(W, dq)));
   };
   std::vector<T> f, fp;
   T big(0);
@@ -414,10 +418,9 @@ void clebsch_variational_principle(const Subject<T>& s) {
   }
   const Vec3<T> Pi0 = truth::cross(P0, Q0);
   const T gr = dyn::growth(dyn::rigid_body_rate(I, Pi0), kT<T>, steps);
-  var::require_first_variation_vanishes<T>("Proposition 3.1, the Clebsch action (3.18)", grid, f, fp,
-                                           T(kT<T> * I.maxCoeff() * dyn::at_least_one(big) * gr * gr *
-                                             dyn::rigid_body_conditioning(I, Pi0, kT<T>)),
-                                           64);
+  var::require_first_variation_vanishes<T>(
+      "Proposition 3.1, the Clebsch action (3.18)", grid, f, fp,
+      T(kT<T> * I.maxCoeff() * dyn::at_least_one(big) * gr * gr * dyn::rigid_body_conditioning(I, Pi0, kT<T>)), 64);
 }
 
 // The skew n x n matrix with upper triangle v (row by row): the suite's own so(n) coordinates, used
@@ -466,7 +469,7 @@ void manakov_variational_principle(const Subject<T>& s) {
   }
   const T gr = dyn::growth(dyn::manakov_rate(a, M0), kT<T>, steps);
   var::require_first_variation_vanishes_iff<T>("Proposition 2.4, Manakov's l = -tr(Omega A Omega)/2", grid, f, fp,
-                                           T(kT<T> * T(n * n) * dyn::at_least_one(big) * gr * gr), 64);
+                                               T(kT<T> * T(n * n) * dyn::at_least_one(big) * gr * gr), 64);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -543,9 +546,10 @@ void hamilton_pontryagin_variation_so_n(const Subject<T>& s) {
     motion = std::max(motion, T(M_size * (norm_inf(xi.rate(t)) + T(2 * n) * W_size * norm_inf(xi.at(t)))));
   }
   const T gr = dyn::growth(T(sqrt(T(M0.squaredNorm())) / (T(2) * d_min)), kT<T>, steps);
-  var::require_first_variation_vanishes_iff<T>("Proposition 2.3 on SO(n), the Hamilton-Pontryagin action (2.16) for "
-                                               "Manakov's l = -tr(Omega A Omega)/2",
-                                               grid, f, fp, T(kT<T> * T(n * n) * b.spread * (legendre + motion * gr * gr)), 64);
+  var::require_first_variation_vanishes_iff<T>(
+      "Proposition 2.3 on SO(n), the Hamilton-Pontryagin action (2.16) for "
+      "Manakov's l = -tr(Omega A Omega)/2",
+      grid, f, fp, T(kT<T> * T(n * n) * b.spread * (legendre + motion * gr * gr)), 64);
 }
 
 // cay(S(t)) = (Id - S)^-1 (Id + S) and its time derivative (Id - S)^-1 dS/dt (cay(S) + Id).
@@ -594,7 +598,8 @@ void reconstruction_solves_euler_lagrange(const Subject<T>& s) {
     std::vector<T> f;
     for (std::size_t i = 0; i < grid.times.size(); ++i) {
       const T t = grid.times[i];
-      f.push_back(deriv::central8<T>([&](const T& e) { return lagrangian(xs[i], t, e, perturbed); }, deriv::step8<T>()));
+      f.push_back(
+          deriv::central8<T>([&](const T& e) { return lagrangian(xs[i], t, e, perturbed); }, deriv::step8<T>()));
     }
     return f;
   };
@@ -603,8 +608,9 @@ void reconstruction_solves_euler_lagrange(const Subject<T>& s) {
   const T gr = dyn::growth(dyn::rigid_body_rate(I, x0.Pi), kT<T>, steps);
   const T scale = kT<T> * dyn::at_least_one(big) * I.maxCoeff() * deriv::roundoff_factor8<T>() * gr * gr *
                   dyn::rigid_body_conditioning(I, x0.Pi, kT<T>);
-  var::require_first_variation_vanishes<T>("section 1: g(t) reconstructed by dg/dt = g xi solves Hamilton's principle on G",
-                                           grid, first_variation(false), first_variation(true), scale, 64);
+  var::require_first_variation_vanishes<T>(
+      "section 1: g(t) reconstructed by dg/dt = g xi solves Hamilton's principle on G", grid, first_variation(false),
+      first_variation(true), scale, 64);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -655,7 +661,8 @@ void right_invariant_for(const Subject<T>& s, LieAlgebraId g) {
       for (int j = 0; j < m; ++j) G(i, j) = v(3 + m * i + j);
     MatX<T> dG = s.lie_hat(g, mu.cwiseQuotient(K)) * G;
     if (perturbed) {
-      const auto [B, dB] = cayley_and_rate<T>((s.lie_hat(g, bump.at(t)) / T(8)).eval(), (s.lie_hat(g, bump.rate(t)) / T(8)).eval());
+      const auto [B, dB] =
+          cayley_and_rate<T>((s.lie_hat(g, bump.at(t)) / T(8)).eval(), (s.lie_hat(g, bump.rate(t)) / T(8)).eval());
       dG = (dB * G + B * dG).eval();
       G = (B * G).eval();
     }
@@ -669,7 +676,8 @@ void right_invariant_for(const Subject<T>& s, LieAlgebraId g) {
     std::vector<T> f;
     for (std::size_t i = 0; i < grid.times.size(); ++i) {
       const T t = grid.times[i];
-      f.push_back(deriv::central8<T>([&](const T& e) { return lagrangian(vs[i], t, e, perturbed); }, deriv::step8<T>()));
+      f.push_back(
+          deriv::central8<T>([&](const T& e) { return lagrangian(vs[i], t, e, perturbed); }, deriv::step8<T>()));
     }
     return f;
   };
@@ -679,9 +687,9 @@ void right_invariant_for(const Subject<T>& s, LieAlgebraId g) {
   const T lam = T(4) * dyn::at_least_one(norm_inf(right[0]));
   const T gr = two_flow_growth(lam, steps);
   const T scale = kT<T> * dyn::at_least_one(big) * deriv::roundoff_factor8<T>() * gr;
-  var::require_first_variation_vanishes<T>(std::string("Remark 1.1 on ") + lie_algebra_name(g) +
-                                               ": dmu/dt = -ad*_xi mu with dg/dt = xi g",
-                                           grid, first_variation(right, false), first_variation(right, true), scale, 64);
+  var::require_first_variation_vanishes<T>(
+      std::string("Remark 1.1 on ") + lie_algebra_name(g) + ": dmu/dt = -ad*_xi mu with dg/dt = xi g", grid,
+      first_variation(right, false), first_variation(right, true), scale, 64);
   const auto left = solve(T(1));
   const auto fl = first_variation(left, false);
   const T with_left_sign = var::integrate(grid, grid.rules.size() - 1, fl);
@@ -693,7 +701,6 @@ template <class T>
 void right_invariant_ep_sign(const Subject<T>& s) {
   for (LieAlgebraId g : {LieAlgebraId::so3, LieAlgebraId::sl2}) right_invariant_for(s, g);
 }
-
 
 // ---------------------------------------------------------------------------------------------
 // s1.ep-product-space, the exercise on G x Y: for L on T(G x Y) invariant under
@@ -805,9 +812,9 @@ void ep_product_space_for(const Subject<T>& s, LieAlgebraId g) {
   // As for Theorem 1.1 (iii): rates of at most ~4 |state| here, (1 + lambda T)^2 for two flows.
   const T lam = T(4) * dyn::at_least_one(norm_inf(ws[0]));
   const T gr = two_flow_growth(lam, flow.stats().steps);
-  var::require_first_variation_vanishes<T>(std::string("the G x Y exercise with G = ") + lie_algebra_name(g) +
-                                               ", Y = R^2",
-                                           grid, f, fp, T(kT<T> * big * gr), 64);
+  var::require_first_variation_vanishes<T>(
+      std::string("the G x Y exercise with G = ") + lie_algebra_name(g) + ", Y = R^2", grid, f, fp, T(kT<T> * big * gr),
+      64);
 }
 
 template <class T>
@@ -827,14 +834,15 @@ GM_PROPERTY(restricted_variation_2_8, all_scalars,
              .negative_controls = {"vee_reads_upper_triangle"},
              .cases = {.d = 100, .mp = 25, .q = 10}});
 
-GM_PROPERTY(euler_variational_principle, float_scalars,
-            {.id = "euler_variational_principle",
-             .spec = "s2.euler-variational",
-             .title = "Theorem 2.1: along the subject's (2.1), delta int l dt = 0 for delta Omega = dXi/dt + Omega x Xi",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {"euler_2_1", "lagrangian_2_5"},
-             .negative_controls = {"euler_2_1_sign_error", "euler_2_1_missing_division"},
-             .cases = {.d = 10, .mp = 10, .q = 0}});
+GM_PROPERTY(
+    euler_variational_principle, float_scalars,
+    {.id = "euler_variational_principle",
+     .spec = "s2.euler-variational",
+     .title = "Theorem 2.1: along the subject's (2.1), delta int l dt = 0 for delta Omega = dXi/dt + Omega x Xi",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {"euler_2_1", "lagrangian_2_5"},
+     .negative_controls = {"euler_2_1_sign_error", "euler_2_1_missing_division"},
+     .cases = {.d = 10, .mp = 10, .q = 0}});
 
 GM_PROPERTY(ep_reduced_variation_vanishes, float_scalars,
             {.id = "ep_reduced_variation_vanishes",
@@ -885,15 +893,16 @@ GM_PROPERTY(clebsch_variational_principle, float_scalars,
              .negative_controls = {"clebsch_3_21_Q_sign"},
              .cases = {.d = 10, .mp = 10, .q = 0}});
 
-GM_PROPERTY(manakov_variational_principle, float_scalars,
-            {.id = "manakov_variational_principle",
-             .spec = "s2.manakov",
-             .title = "Proposition 2.4, both directions: along the subject's (2.34), delta int -tr(Omega A Omega)/2 dt = 0 "
-                      "for delta Omega = dXi/dt + [Omega, Xi], and a perturbed curve is not stationary",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {"manakov_2_34", "manakov_Omega", "manakov_lagrangian"},
-             .negative_controls = {"manakov_commutator_reversed", "manakov_lagrangian_constant"},
-             .cases = {.d = 10, .mp = 10, .q = 0}});
+GM_PROPERTY(
+    manakov_variational_principle, float_scalars,
+    {.id = "manakov_variational_principle",
+     .spec = "s2.manakov",
+     .title = "Proposition 2.4, both directions: along the subject's (2.34), delta int -tr(Omega A Omega)/2 dt = 0 "
+              "for delta Omega = dXi/dt + [Omega, Xi], and a perturbed curve is not stationary",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {"manakov_2_34", "manakov_Omega", "manakov_lagrangian"},
+     .negative_controls = {"manakov_commutator_reversed", "manakov_lagrangian_constant"},
+     .cases = {.d = 10, .mp = 10, .q = 0}});
 
 GM_PROPERTY(reconstruction_solves_euler_lagrange, float_scalars,
             {.id = "reconstruction_solves_euler_lagrange",
@@ -905,15 +914,16 @@ GM_PROPERTY(reconstruction_solves_euler_lagrange, float_scalars,
              .negative_controls = {"euler_3_8_cross_reversed", "reconstruction_right_multiplied"},
              .cases = {.d = 10, .mp = 10, .q = 0}});
 
-GM_PROPERTY(right_invariant_ep_sign, float_scalars,
-            {.id = "right_invariant_ep_sign",
-             .spec = "s1.right-invariant-sign",
-             .title = "Remark 1.1 on so(3), sl(2,R): for right-invariant l, dmu/dt = -ad*_xi mu with dg/dt = xi g makes "
-                      "the unreduced action stationary",
-             .tolerance = ToleranceClass::Roundoff,
-             .needs = {"ad_star", "lie_hat", "lie_vee"},
-             .negative_controls = {"ad_star_sign_flipped"},
-             .cases = {.d = 10, .mp = 5, .q = 0}});
+GM_PROPERTY(
+    right_invariant_ep_sign, float_scalars,
+    {.id = "right_invariant_ep_sign",
+     .spec = "s1.right-invariant-sign",
+     .title = "Remark 1.1 on so(3), sl(2,R): for right-invariant l, dmu/dt = -ad*_xi mu with dg/dt = xi g makes "
+              "the unreduced action stationary",
+     .tolerance = ToleranceClass::Roundoff,
+     .needs = {"ad_star", "lie_hat", "lie_vee"},
+     .negative_controls = {"ad_star_sign_flipped"},
+     .cases = {.d = 10, .mp = 5, .q = 0}});
 
 GM_PROPERTY(ep_product_space_variation, float_scalars,
             {.id = "ep_product_space_variation",

@@ -66,18 +66,18 @@ namespace gm::student {
 
 // What an integrator claims about itself; the harness verifies each claim.
 struct Claims {
-  int order = 0;               // order of accuracy (0: no claim)
-  bool symmetric = false;      // step(h) followed by step(-h) is the identity
-  bool casimir = false;        // |Pi|^2 (rigid body) is preserved to round-off
-  bool energy = false;         // the energy is preserved to round-off
-  bool orthogonality = false;  // O stays orthogonal to round-off
-  bool spectrum = false;       // Manakov: the eigenvalues of M are preserved to round-off
-  bool poisson = false;        // the step is a Poisson map of the Lie-Poisson bracket
-  bool noether = false;        // the spatial momentum O Pi (Manakov: O M O^T) is kept to round-off
-  bool equivariant = false;    // step(Pi, R O) = (Pi', R O'): commutes with rotating the attitude
-  bool bounded_energy = false; // over long runs the energy error stays bounded (no secular drift)
-  bool symplectic = false;     // canonical steps (clebsch_step, manakov_clebsch_step) preserve dQ ^ dP
-  bool unit_quaternion = false; // an attitude kept as a quaternion (`state`): |q| = 1 is kept to round-off
+  int order = 0;                 // order of accuracy (0: no claim)
+  bool symmetric = false;        // step(h) followed by step(-h) is the identity
+  bool casimir = false;          // |Pi|^2 (rigid body) is preserved to round-off
+  bool energy = false;           // the energy is preserved to round-off
+  bool orthogonality = false;    // O stays orthogonal to round-off
+  bool spectrum = false;         // Manakov: the eigenvalues of M are preserved to round-off
+  bool poisson = false;          // the step is a Poisson map of the Lie-Poisson bracket
+  bool noether = false;          // the spatial momentum O Pi (Manakov: O M O^T) is kept to round-off
+  bool equivariant = false;      // step(Pi, R O) = (Pi', R O'): commutes with rotating the attitude
+  bool bounded_energy = false;   // over long runs the energy error stays bounded (no secular drift)
+  bool symplectic = false;       // canonical steps (clebsch_step, manakov_clebsch_step) preserve dQ ^ dP
+  bool unit_quaternion = false;  // an attitude kept as a quaternion (`state`): |q| = 1 is kept to round-off
 };
 
 // Where an integrator's step is meant to work (optional), as
@@ -91,12 +91,12 @@ struct Domain {
 
 // What one translation unit registered for one scalar (filled by GEOMECH_STUDENT).
 struct PartInfo {
-  std::string registration;                          // the macro's arguments, as written
-  std::string description;                           // Impl::description, if given
-  std::map<std::string, std::string> slot_notes;     // slot -> why it is not filled
+  std::string registration;                       // the macro's arguments, as written
+  std::string description;                        // Impl::description, if given
+  std::map<std::string, std::string> slot_notes;  // slot -> why it is not filled
   std::vector<IntegratorClaims> claims;
   std::vector<std::string> warnings;
-  std::vector<std::string> unchecked;                // written, but cannot be called as its slot expects
+  std::vector<std::string> unchecked;  // written, but cannot be called as its slot expects
 };
 
 void register_part(std::shared_ptr<const Subject<double>> s, PartInfo info);
@@ -145,13 +145,17 @@ constexpr bool listed(std::string_view list, std::string_view name) {
       return Impl::template name<T>(std::forward<A>(a)...);                                          \
     }                                                                                                \
     template <class Impl, class... A>                                                                \
-    static auto call_plain(A&&... a) -> decltype(Impl::name(std::forward<A>(a)...)) {               \
+    static auto call_plain(A&&... a) -> decltype(Impl::name(std::forward<A>(a)...)) {                \
       return Impl::name(std::forward<A>(a)...);                                                      \
     }                                                                                                \
     template <class Impl, class T>                                                                   \
-    static constexpr bool named_template = requires { &Impl::template name<T>; };                    \
+    static constexpr bool named_template = requires {                                                \
+      &Impl::template name<T>;                                                                       \
+    };                                                                                               \
     template <class Impl>                                                                            \
-    static constexpr bool named = requires { &Impl::name; };                                         \
+    static constexpr bool named = requires {                                                         \
+      &Impl::name;                                                                                   \
+    };                                                                                               \
     template <class T>                                                                               \
     static auto& member(Subject<T>& s) {                                                             \
       return s.name;                                                                                 \
@@ -231,7 +235,7 @@ void fill_all(Subject<T>& s, PartInfo& info) {
 
 template <class Int>
 constexpr bool has_name = requires {
-  { std::string_view(Int::name) };
+  {std::string_view(Int::name)};
 };
 
 // "computes in double (stated: the engine is built in double)".
@@ -239,15 +243,17 @@ template <class Int>
 std::string stated_precision_note() {
   std::string why;
   if constexpr (requires { std::string_view(Int::precision_reason); }) why = Int::precision_reason;
-  return "computes in " + std::string(Int::precision) + (why.empty() ? std::string(" (stated, without a reason)")
-                                                                      : " (stated: " + why + ")");
+  return "computes in " + std::string(Int::precision) +
+         (why.empty() ? std::string(" (stated, without a reason)") : " (stated: " + why + ")");
 }
 
 // Whether the integrator states precision = "double" where the compiler can read it (a constexpr
 // member, as the docs write it): then its steps are compiled in double only.
 template <class Int>
 constexpr bool states_double() {
-  if constexpr (requires { typename std::bool_constant<std::string_view(Int::precision) == std::string_view("double")>; })
+  if constexpr (requires {
+                  typename std::bool_constant<std::string_view(Int::precision) == std::string_view("double")>;
+                })
     return std::string_view(Int::precision) == std::string_view("double");
   else
     return false;
@@ -265,98 +271,113 @@ void gm_integrator_of(Subject<T>& s, PartInfo& info) {
     // Stated "double": nothing of it is compiled for T (the compile of a file of engines in double
     // costs what one scalar costs); the steps it has as templates on T are noted with the reason.
     const std::pair<bool, const char*> steps[] = {
-        {requires(const Vec3<T>& a, const RS& x, const T& h) { Int::template rigid_body_step<T>(a, x, h); } ||
-             requires(const Vec3<T>& a, const EngineState<T>& x, const T& h) { Int::template rigid_body_step<T>(a, x, h); },
-         "rigid_body_step"},
-        {requires(const MatX<T>& a, const MS& x, const T& h) { Int::template manakov_step<T>(a, x, h); }, "manakov_step"},
-        {requires(const Vec3<T>& a, const Vec3Pair<T>& x, const T& h) { Int::template clebsch_step<T>(a, x, h); },
-         "clebsch_step"},
-        {requires(const MatX<T>& a, const MatXPair<T>& x, const T& h) { Int::template manakov_clebsch_step<T>(a, x, h); },
-         "manakov_clebsch_step"}};
-    for (const auto& [has, step] : steps)
-      if (has) {
-        std::string key = Int::name;  // appended, not `+`: GCC 12 warns wrongly (-Warray-bounds) on that
-        key.append(".").append(step);
-        info.slot_notes[key] = stated_precision_note<Int>();
-      }
-    return;
+        {requires(const Vec3<T>& a, const RS& x, const T& h){Int::template rigid_body_step<T>(a, x, h);
   }
-  Integrator<T> in;
-  in.name = std::string(Int::name);
-  // Each step is detected like a slot: a template on the scalar, or (double only) a plain function.
-#define GM_INTEGRATOR_STEP(step, ArgT, StateT)                                                            \
-  if constexpr (requires(const ArgT& a, const StateT& x, const T& h) {                                    \
-                  { Int::template step<T>(a, x, h) } -> std::convertible_to<StateT>;                      \
-                })                                                                                         \
+  || requires(const Vec3<T>& a, const EngineState<T>& x, const T& h) { Int::template rigid_body_step<T>(a, x, h); }
+  , "rigid_body_step"
+}
+, {requires(const MatX<T>& a, const MS& x, const T& h){Int::template manakov_step<T>(a, x, h);
+}  // namespace detail
+, "manakov_step"
+}  // namespace gm::student
+, {requires(const Vec3<T>& a, const Vec3Pair<T>& x, const T& h){Int::template clebsch_step<T>(a, x, h);
+}
+, "clebsch_step"
+}
+, {
+  requires(const MatX<T>& a, const MatXPair<T>& x, const T& h) { Int::template manakov_clebsch_step<T>(a, x, h); }
+  , "manakov_clebsch_step"
+}
+}
+;
+for (const auto& [has, step] : steps)
+  if (has) {
+    std::string key = Int::name;  // appended, not `+`: GCC 12 warns wrongly (-Warray-bounds) on that
+    key.append(".").append(step);
+    info.slot_notes[key] = stated_precision_note<Int>();
+  }
+return;
+}
+Integrator<T> in;
+in.name = std::string(Int::name);
+// Each step is detected like a slot: a template on the scalar, or (double only) a plain function.
+#define GM_INTEGRATOR_STEP(step, ArgT, StateT)                                                                     \
+  if constexpr (requires(const ArgT& a, const StateT& x, const T& h) {                                             \
+                  { Int::template step<T>(a, x, h) } -> std::convertible_to<StateT>;                               \
+                })                                                                                                 \
     in.step = [](const ArgT& a, const StateT& x, const T& h) -> StateT { return Int::template step<T>(a, x, h); }; \
-  else if constexpr (std::is_same_v<T, double> && requires(const ArgT& a, const StateT& x, const T& h) {   \
-                       { Int::step(a, x, h) } -> std::convertible_to<StateT>;                             \
-                     })                                                                                    \
+  else if constexpr (std::is_same_v<T, double> && requires(const ArgT& a, const StateT& x, const T& h) {           \
+                       { Int::step(a, x, h) } -> std::convertible_to<StateT>;                                      \
+                     })                                                                                            \
     in.step = [](const ArgT& a, const StateT& x, const T& h) -> StateT { return Int::step(a, x, h); };
-  GM_INTEGRATOR_STEP(rigid_body_step, Vec3<T>, RS)
-  // A step kept in a declared form (`state`): the suite converts (core/declared_step.hpp).
-  if constexpr (requires { std::string_view(Int::state); }) {
-    using ES = EngineState<T>;
-    StateForm form;
-    std::string bad;
-    try {
-      form = parse_state_form(Int::state);
-    } catch (const std::exception& e) {
-      bad = e.what();
-    }
-    if (!bad.empty()) {
-      if constexpr (std::is_same_v<T, double>)
-        info.unchecked.push_back("integrator '" + std::string(Int::name) + "' declares state = \"" +
-                                 std::string(Int::state) + "\": " + bad);
-    } else if (in.rigid_body_step && !form.is_notes()) {
-      if constexpr (std::is_same_v<T, double>)
-        info.unchecked.push_back("integrator '" + std::string(Int::name) + "' declares state = \"" + std::string(Int::state) +
-                                 "\" but its rigid_body_step takes the notes' RigidBodyState; take and return "
-                                 "EngineState<T> (its members " + attitude_key(form.attitude) + " and " +
-                                 angular_key(form.angular) + ")");
-      in.rigid_body_step = {};
-    } else if (!in.rigid_body_step) {
-      if constexpr (requires(const Vec3<T>& a, const ES& x, const T& h) {
-                      { Int::template rigid_body_step<T>(a, x, h) } -> std::convertible_to<ES>;
-                    })
-        in.declared_step = [](const Vec3<T>& a, const ES& x, const T& h) -> ES { return Int::template rigid_body_step<T>(a, x, h); };
-      else if constexpr (std::is_same_v<T, double> && requires(const Vec3<T>& a, const ES& x, const T& h) {
-                           { Int::rigid_body_step(a, x, h) } -> std::convertible_to<ES>;
-                         })
-        in.declared_step = [](const Vec3<T>& a, const ES& x, const T& h) -> ES { return Int::rigid_body_step(a, x, h); };
-      if (in.declared_step) {
-        in.form = form;
-        adapt_declared_step(in);
-      }
+GM_INTEGRATOR_STEP(rigid_body_step, Vec3<T>, RS)
+// A step kept in a declared form (`state`): the suite converts (core/declared_step.hpp).
+if constexpr (requires { std::string_view(Int::state); }) {
+  using ES = EngineState<T>;
+  StateForm form;
+  std::string bad;
+  try {
+    form = parse_state_form(Int::state);
+  } catch (const std::exception& e) {
+    bad = e.what();
+  }
+  if (!bad.empty()) {
+    if constexpr (std::is_same_v<T, double>)
+      info.unchecked.push_back("integrator '" + std::string(Int::name) + "' declares state = \"" +
+                               std::string(Int::state) + "\": " + bad);
+  } else if (in.rigid_body_step && !form.is_notes()) {
+    if constexpr (std::is_same_v<T, double>)
+      info.unchecked.push_back("integrator '" + std::string(Int::name) + "' declares state = \"" +
+                               std::string(Int::state) +
+                               "\" but its rigid_body_step takes the notes' RigidBodyState; take and return "
+                               "EngineState<T> (its members " +
+                               attitude_key(form.attitude) + " and " + angular_key(form.angular) + ")");
+    in.rigid_body_step = {};
+  } else if (!in.rigid_body_step) {
+    if constexpr (requires(const Vec3<T>& a, const ES& x, const T& h) {
+                    { Int::template rigid_body_step<T>(a, x, h) } -> std::convertible_to<ES>;
+                  })
+      in.declared_step = [](const Vec3<T>& a, const ES& x, const T& h) -> ES {
+        return Int::template rigid_body_step<T>(a, x, h);
+      };
+    else if constexpr (std::is_same_v<T, double> && requires(const Vec3<T>& a, const ES& x, const T& h) {
+                         { Int::rigid_body_step(a, x, h) } -> std::convertible_to<ES>;
+                       })
+      in.declared_step = [](const Vec3<T>& a, const ES& x, const T& h) -> ES { return Int::rigid_body_step(a, x, h); };
+    if (in.declared_step) {
+      in.form = form;
+      adapt_declared_step(in);
     }
   }
-  GM_INTEGRATOR_STEP(manakov_step, MatX<T>, MS)
-  GM_INTEGRATOR_STEP(clebsch_step, Vec3<T>, Vec3Pair<T>)
-  GM_INTEGRATOR_STEP(manakov_clebsch_step, MatX<T>, MatXPair<T>)
+}
+GM_INTEGRATOR_STEP(manakov_step, MatX<T>, MS)
+GM_INTEGRATOR_STEP(clebsch_step, Vec3<T>, Vec3Pair<T>)
+GM_INTEGRATOR_STEP(manakov_clebsch_step, MatX<T>, MatXPair<T>)
 #undef GM_INTEGRATOR_STEP
-  if constexpr (requires { std::string_view(Int::precision); }) {
-    // A stated precision: "double" runs the steps in double only, and the report says why.
-    if constexpr (!std::is_same_v<T, double>)
-      if (std::string_view(Int::precision) == "double") {
-        const std::pair<bool, const char*> steps[] = {{static_cast<bool>(in.rigid_body_step), "rigid_body_step"},
-                                                      {static_cast<bool>(in.manakov_step), "manakov_step"},
-                                                      {static_cast<bool>(in.clebsch_step), "clebsch_step"},
-                                                      {static_cast<bool>(in.manakov_clebsch_step), "manakov_clebsch_step"}};
-        for (const auto& [has, step] : steps)
-          if (has) info.slot_notes[std::string(Int::name) + "." + step] = stated_precision_note<Int>();
-        return;
-      }
-  }
-  if (in.rigid_body_step || in.manakov_step || in.clebsch_step || in.manakov_clebsch_step)
-    s.integrators.push_back(std::move(in));
-  else if constexpr (std::is_same_v<T, double>)
-    info.unchecked.push_back("integrator '" + std::string(Int::name) +
-                             "' has none of rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h), "
-                             "manakov_step(const MatX<T>& A, const ManakovState<T>& x, const T& h), "
-                             "clebsch_step(const Vec3<T>& I, const Vec3Pair<T>& QP, const T& h) or "
-                             "manakov_clebsch_step(const MatX<T>& A, const MatXPair<T>& QP, const T& h) with the "
-                             "expected signature (see `geomech slots`; a step taking EngineState<T> declares its "
-                             "`state`), so none of its claims can be checked");
+if constexpr (requires { std::string_view(Int::precision); }) {
+  // A stated precision: "double" runs the steps in double only, and the report says why.
+  if constexpr (!std::is_same_v<T, double>)
+    if (std::string_view(Int::precision) == "double") {
+      const std::pair<bool, const char*> steps[] = {
+          {static_cast<bool>(in.rigid_body_step), "rigid_body_step"},
+          {static_cast<bool>(in.manakov_step), "manakov_step"},
+          {static_cast<bool>(in.clebsch_step), "clebsch_step"},
+          {static_cast<bool>(in.manakov_clebsch_step), "manakov_clebsch_step"}};
+      for (const auto& [has, step] : steps)
+        if (has) info.slot_notes[std::string(Int::name) + "." + step] = stated_precision_note<Int>();
+      return;
+    }
+}
+if (in.rigid_body_step || in.manakov_step || in.clebsch_step || in.manakov_clebsch_step)
+  s.integrators.push_back(std::move(in));
+else if constexpr (std::is_same_v<T, double>)
+  info.unchecked.push_back("integrator '" + std::string(Int::name) +
+                           "' has none of rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h), "
+                           "manakov_step(const MatX<T>& A, const ManakovState<T>& x, const T& h), "
+                           "clebsch_step(const Vec3<T>& I, const Vec3Pair<T>& QP, const T& h) or "
+                           "manakov_clebsch_step(const MatX<T>& A, const MatXPair<T>& QP, const T& h) with the "
+                           "expected signature (see `geomech slots`; a step taking EngineState<T> declares its "
+                           "`state`), so none of its claims can be checked");
 }
 
 template <class Int>
@@ -426,6 +447,6 @@ int register_all(const char* registration) {
 #ifndef GEOMECH_STUDENT_SCALARS
 #define GEOMECH_STUDENT_SCALARS -1
 #endif
-#define GEOMECH_STUDENT(...)                                                                                 \
-  [[maybe_unused]] static const int geomech_student_registration_ =                                         \
+#define GEOMECH_STUDENT(...)                                        \
+  [[maybe_unused]] static const int geomech_student_registration_ = \
       ::gm::student::detail::register_all<GEOMECH_STUDENT_SCALARS, __VA_ARGS__>(#__VA_ARGS__)

@@ -46,8 +46,7 @@ using nlohmann::json;
 // ---- the kinds of a slot's signature (docs/PROTOCOL.md: the type names before `<`) -------------
 
 std::string kind_of(std::string text) {
-  for (auto at = text.find("const"); at != std::string::npos; at = text.find("const"))
-    text.erase(at, 5);
+  for (auto at = text.find("const"); at != std::string::npos; at = text.find("const")) text.erase(at, 5);
   std::size_t b = text.find_first_not_of(" \t");
   if (b == std::string::npos) return "";
   std::size_t e = b;
@@ -99,7 +98,8 @@ bool read_number(const std::string& s, double& v) {
 
 double number_in(const json& j) {
   double v;
-  if (j.is_string()) return read_number(j.get_ref<const std::string&>(), v) ? v : std::numeric_limits<double>::quiet_NaN();
+  if (j.is_string())
+    return read_number(j.get_ref<const std::string&>(), v) ? v : std::numeric_limits<double>::quiet_NaN();
   if (j.is_number()) return j.get<double>();
   throw std::runtime_error("an argument entry that is neither a number nor a decimal string: " + j.dump());
 }
@@ -149,8 +149,10 @@ octave_value decode_kind(const std::string& kind, const json& j) {
 
 void put_number(std::string& out, double x) {
   out += '"';
-  if (std::isnan(x)) out += "NaN";  // as Octave's sprintf('%.17g') spells them
-  else if (std::isinf(x)) out += x > 0 ? "Inf" : "-Inf";
+  if (std::isnan(x))
+    out += "NaN";  // as Octave's sprintf('%.17g') spells them
+  else if (std::isinf(x))
+    out += x > 0 ? "Inf" : "-Inf";
   else {
     char buf[32];
     const auto r = std::to_chars(buf, buf + sizeof buf, x);  // shortest text that reads back exactly
@@ -182,7 +184,8 @@ void put_vector(std::string& out, const octave_value& x) {
 
 void put_matrix(std::string& out, const octave_value& x) {
   const NDArray a = real_array(x);
-  if (a.ndims() > 2) throw std::runtime_error("expected a matrix, got an array of " + std::to_string(a.ndims()) + " dimensions");
+  if (a.ndims() > 2)
+    throw std::runtime_error("expected a matrix, got an array of " + std::to_string(a.ndims()) + " dimensions");
   const octave_idx_type rows = a.rows(), cols = a.columns();
   if (rows == 0 || cols == 0) {
     out += "[]";
@@ -210,7 +213,8 @@ void put(std::string& out, const std::string& kind, const octave_value& x) {
   if (kind == "T") {
     if (x.numel() != 1) {
       const dim_vector d = x.dims();
-      throw std::runtime_error("expected a scalar, got a " + std::to_string(d(0)) + "x" + std::to_string(d(1)) + " array");
+      throw std::runtime_error("expected a scalar, got a " + std::to_string(d(0)) + "x" + std::to_string(d(1)) +
+                               " array");
     }
     put_number(out, real_array(x)(0));
   } else if (kind == "Vec3" || kind == "Vec6" || kind == "VecX") {
@@ -237,13 +241,16 @@ void put(std::string& out, const std::string& kind, const octave_value& x) {
       b = field_of(x, body, "state");
       o = field_of(x, "O", "state");
     } else {
-      throw std::runtime_error(std::string("expected a state as a struct with fields ") + body + " and O, or a cell {" + body + ", O}");
+      throw std::runtime_error(std::string("expected a state as a struct with fields ") + body + " and O, or a cell {" +
+                               body + ", O}");
     }
     out += "{\"";
     out += body;
     out += "\":";
-    if (kind == "RigidBodyState") put_vector(out, b);
-    else put_matrix(out, b);
+    if (kind == "RigidBodyState")
+      put_vector(out, b);
+    else
+      put_matrix(out, b);
     out += ",\"O\":";
     put_matrix(out, o);
     out += '}';
@@ -264,11 +271,14 @@ void put_declared(std::string& out, const std::string& a, const std::string& w, 
     av = field_of(x, a.c_str(), "state");
     wv = field_of(x, w.c_str(), "state");
   } else {
-    throw std::runtime_error("expected a state as a struct with fields " + a + " and " + w + ", or a cell {" + a + ", " + w + "}");
+    throw std::runtime_error("expected a state as a struct with fields " + a + " and " + w + ", or a cell {" + a +
+                             ", " + w + "}");
   }
   out += "{\"" + a + "\":";
-  if (a == "O") put_matrix(out, av);
-  else put_vector(out, av);
+  if (a == "O")
+    put_matrix(out, av);
+  else
+    put_vector(out, av);
   out += ",\"" + w + "\":";
   put_vector(out, wv);
   out += '}';
@@ -288,7 +298,7 @@ struct Server {
   std::string target, tmp;  // tmp: the copy of a single file that was sourced (its line 1 added)
   std::map<std::string, Kinds> slot_kinds, step_kinds;
   std::vector<Integrator> integrators;
-  std::string buffer;       // what stdin gave beyond the last line read
+  std::string buffer;  // what stdin gave beyond the last line read
 
   void send(std::string line) {
     line += '\n';
@@ -368,8 +378,10 @@ struct Server {
       const Integrator* which = nullptr;
       // The result as its kind says, or a rigid-body state in the integrator's declared form.
       auto write = [&](std::string& o, const octave_value& v) {
-        if (which && !which->state_a.empty() && slot == "rigid_body_step") put_declared(o, which->state_a, which->state_w, v);
-        else put(o, kinds.result, v);
+        if (which && !which->state_a.empty() && slot == "rigid_body_step")
+          put_declared(o, which->state_a, which->state_w, v);
+        else
+          put(o, kinds.result, v);
       };
       if (stepping) {
         const std::string& name = call["integrator"].get_ref<const std::string&>();
@@ -382,7 +394,8 @@ struct Server {
           // read back as the next step's argument, as if the harness had made the calls one by one.
           const json& n = call["repeat"];
           if (!n.is_number() || n.get<double>() < 1 || a.size() != 3)
-            throw std::runtime_error("\"repeat\" needs an integrator's step, its three arguments and a count of at least 1");
+            throw std::runtime_error(
+                "\"repeat\" needs an integrator's step, its three arguments and a count of at least 1");
           out += ",{\"ok\":[";
           const long count = n.get<long>();
           for (long s = 0; s < count; ++s) {
@@ -427,7 +440,11 @@ struct Server {
     interp->feval("profile", octave_value_list(octave_value("off")), 0);
     const octave_value info = interp->feval("profile", octave_value_list(octave_value("info")), 1)(0);
     const octave_map t = info.scalar_map_value().getfield("FunctionTable").map_value();
-    struct Row { double seconds; double calls; std::string name; };
+    struct Row {
+      double seconds;
+      double calls;
+      std::string name;
+    };
     std::vector<Row> rows;
     const Cell total = t.contents("TotalTime"), calls = t.contents("NumCalls"), names = t.contents("FunctionName");
     for (octave_idx_type k = 0; k < t.numel(); ++k)
@@ -477,7 +494,8 @@ struct Server {
             }
             if (where && *where) write_profile(where);
             std::fflush(nullptr);
-            std::_Exit(77);  // ended by request or at the end of input; 77, so that the student's exit(0) is not taken for it
+            std::_Exit(
+                77);  // ended by request or at the end of input; 77, so that the student's exit(0) is not taken for it
           }
           buffer.clear();  // the copy read what followed the request; it is not this process's to answer
           int status = 0;
@@ -486,10 +504,9 @@ struct Server {
             continue;
           }
           if (!(WIFEXITED(status) && WEXITSTATUS(status) == 77)) {
-            const std::string how = WIFSIGNALED(status)
-                                        ? "was killed by signal " + std::to_string(WTERMSIG(status))
-                                        : "exited with status " + std::to_string(WEXITSTATUS(status)) +
-                                              " (exit() called in the implementation?)";
+            const std::string how = WIFSIGNALED(status) ? "was killed by signal " + std::to_string(WTERMSIG(status))
+                                                        : "exited with status " + std::to_string(WEXITSTATUS(status)) +
+                                                              " (exit() called in the implementation?)";
             send("{\"id\":null,\"died\":" + json(how).dump() + "}");
           }
           continue;
@@ -586,8 +603,8 @@ struct Server {
           }
           std::string domain = "{}";  // where the step is meant to work
           if (it.isfield("domain") && !it.getfield("domain").isempty()) domain = jsonencode(it.getfield("domain"));
-          ijson += std::string(ijson.empty() ? "" : ",") + "{\"name\":" + json(in.name).dump() + ",\"steps\":[" + steps +
-                   "],\"scalars\":[\"double\"],\"claims\":" + claims + ",\"domain\":" + domain + extra + "}";
+          ijson += std::string(ijson.empty() ? "" : ",") + "{\"name\":" + json(in.name).dump() + ",\"steps\":[" +
+                   steps + "],\"scalars\":[\"double\"],\"claims\":" + claims + ",\"domain\":" + domain + extra + "}";
           integrators.push_back(std::move(in));
         }
       }
@@ -599,8 +616,8 @@ struct Server {
     }
     send("{\"protocol\":\"geomech-slots\",\"version\":2,\"language\":\"octave\",\"language_version\":" +
          json(std::string(OCTAVE_VERSION)).dump() +
-         ",\"interpreter\":\"geomech-octave-server (the system's Octave linked in)\",\"description\":" + json(desc).dump() +
-         ",\"slots\":{\"double\":[" + have + "]},\"integrators\":[" + ijson +
+         ",\"interpreter\":\"geomech-octave-server (the system's Octave linked in)\",\"description\":" +
+         json(desc).dump() + ",\"slots\":{\"double\":[" + have + "]},\"integrators\":[" + ijson +
          "],\"notes\":{},\"warnings\":[],\"sessions\":true,\"repeat\":true}");
     return true;
   }
@@ -615,8 +632,10 @@ int main(int argc, char** argv) {
   }
   Server s;
   s.target = argv[argc - 1];
-  if (const char* fd = std::getenv("GEOMECH_REPLY_FD"); fd && *fd) s.out = std::atoi(fd);
-  else s.out = 1;
+  if (const char* fd = std::getenv("GEOMECH_REPLY_FD"); fd && *fd)
+    s.out = std::atoi(fd);
+  else
+    s.out = 1;
   std::vector<std::string> slot_names;
   try {
     const char* table_text = std::getenv("GEOMECH_SLOT_TABLE");
@@ -626,7 +645,8 @@ int main(int argc, char** argv) {
       slot_names.push_back(slot.at("name").get<std::string>());
       s.slot_kinds[slot_names.back()] = kinds_of(slot.at("signature").get<std::string>());
     }
-    for (const auto& [step, signature] : table.at("steps").items()) s.step_kinds[step] = kinds_of(signature.get<std::string>());
+    for (const auto& [step, signature] : table.at("steps").items())
+      s.step_kinds[step] = kinds_of(signature.get<std::string>());
   } catch (const std::exception& e) {
     s.send(s.handshake_fatal(std::string("the slot table: ") + e.what()));
     return 1;

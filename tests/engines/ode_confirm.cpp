@@ -69,8 +69,10 @@ struct Ode {
     dBodySetGyroscopicMode(body, gyro ? 1 : 0);
     dBodySetQuaternion(body, x.q.data());
     dBodySetAngularVel(body, x.omega[0], x.omega[1], x.omega[2]);
-    if (quick) dWorldQuickStep(world, h);
-    else dWorldStep(world, h);
+    if (quick)
+      dWorldQuickStep(world, h);
+    else
+      dWorldStep(world, h);
     const dReal* q = dBodyGetQuaternion(body);
     const dReal* a = dBodyGetAngularVel(body);
     return {{q[0], q[1], q[2], q[3]}, {a[0], a[1], a[2]}};
@@ -108,13 +110,14 @@ State reference(const State& x0, double t, int n) {  // classical RK4, n steps
 
 double distance(const State& a, const State& b) {  // q and -q are one attitude
   double plus = 0, minus = 0, w = 0;
-  for (int i = 0; i < 4; ++i) plus = std::max(plus, std::fabs(a.q[i] - b.q[i])), minus = std::max(minus, std::fabs(a.q[i] + b.q[i]));
+  for (int i = 0; i < 4; ++i)
+    plus = std::max(plus, std::fabs(a.q[i] - b.q[i])), minus = std::max(minus, std::fabs(a.q[i] + b.q[i]));
   for (int i = 0; i < 3; ++i) w = std::max(w, std::fabs(a.omega[i] - b.omega[i]));
   return std::max(std::min(plus, minus), w);
 }
 
 struct Own {
-  std::map<std::string, bool> holds;  // unit_quaternion, energy, casimir, noether
+  std::map<std::string, bool> holds;    // unit_quaternion, energy, casimir, noether
   std::map<std::string, double> drift;  // the largest change over the 64 steps
   double order = 0;
 };
@@ -194,7 +197,8 @@ int main(int argc, char** argv) {
       if (status.empty() || status == "-") continue;  // not run in this report
       const bool suite = status.rfind("holds (not claimed)", 0) == 0 || status.rfind("verified", 0) == 0;
       ++compared;
-      std::cout << w.name << " " << claim << ": suite '" << status << "', this test " << (holds ? "holds" : "does not hold")
+      std::cout << w.name << " " << claim << ": suite '" << status << "', this test "
+                << (holds ? "holds" : "does not hold")
                 << " (largest change over 64 steps of h = 1/8: " << own.drift.at(claim) << ")"
                 << (suite == holds ? "" : "  <-- DISAGREE") << "\n";
       disagreements += suite != holds;
@@ -214,8 +218,8 @@ int main(int argc, char** argv) {
         const double suite = (n * sxy - sx * sy) / (n * sxx - sx * sx);
         ++compared;
         const bool agree = std::fabs(suite - own.order) <= 0.2;
-        std::printf("%s order: suite %.3f (%s), this test %.3f%s\n", w.name, suite, v.value("scalar", "").c_str(), own.order,
-                    agree ? "" : "  <-- DISAGREE");
+        std::printf("%s order: suite %.3f (%s), this test %.3f%s\n", w.name, suite, v.value("scalar", "").c_str(),
+                    own.order, agree ? "" : "  <-- DISAGREE");
         disagreements += !agree;
       }
     }
@@ -231,8 +235,8 @@ int main(int argc, char** argv) {
         a = ode.step(a, 1.0 / 16, false, gyro), b = ode.step(b, 1.0 / 16, true, gyro);
         most = std::max(most, distance(a, b));
       }
-      std::printf("dWorldQuickStep against dWorldStep, gyroscopic %s, 100 steps: largest difference %g\n", gyro ? "on" : "off",
-                  most);
+      std::printf("dWorldQuickStep against dWorldStep, gyroscopic %s, 100 steps: largest difference %g\n",
+                  gyro ? "on" : "off", most);
       if (most != 0) {
         std::cout << "  <-- the README says they agree to the last bit for a free body: it no longer holds\n";
         ++disagreements;

@@ -92,8 +92,7 @@ GM_MUTANT(ad_star_sign_flipped, "ad* with the opposite sign (the right-invariant
 // The literal reading of Theorem 2.3 / Remark 2.8 with the trace pairing (2.15): for sl(2, R)
 // the transpose pairing is not ad-invariant, and this ad* is not the coadjoint action.
 GM_MUTANT(ad_star_sl2_transpose_pairing,
-          "ad* of sl(2,R) taken as [M, Omega] with M identified through the transpose pairing (2.15)",
-          [](auto& s) {
+          "ad* of sl(2,R) taken as [M, Omega] with M identified through the transpose pairing (2.15)", [](auto& s) {
             using T = scalar_of<decltype(s)>;
             s.ad_star = [](LieAlgebraId g, const VecX<T>& xi, const VecX<T>& mu) -> VecX<T> {
               if (g == LieAlgebraId::sl2) return ad_star_sl2_through_transpose_pairing<T>(xi, mu);
@@ -110,13 +109,12 @@ GM_MUTANT(clebsch_3_21_Q_sign, "(3.21) with dQ/dt = +Omega x Q", [](auto& s) {
   };
 });
 
-GM_MUTANT(manakov_2_34_one_sided, "(2.34) written dM/dt = M Omega (the -Omega M of the commutator lost)",
-          [](auto& s) {
-            using T = scalar_of<decltype(s)>;
-            s.manakov_2_34 = [](const MatX<T>& A, const MatX<T>& M) -> MatX<T> {
-              return (M * ref::manakov_Omega<T>(A, M)).eval();
-            };
-          });
+GM_MUTANT(manakov_2_34_one_sided, "(2.34) written dM/dt = M Omega (the -Omega M of the commutator lost)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.manakov_2_34 = [](const MatX<T>& A, const MatX<T>& M) -> MatX<T> {
+    return (M * ref::manakov_Omega<T>(A, M)).eval();
+  };
+});
 
 GM_MUTANT(manakov_commutator_reversed, "(2.34) written dM/dt = [Omega, M]", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -124,8 +122,8 @@ GM_MUTANT(manakov_commutator_reversed, "(2.34) written dM/dt = [Omega, M]", [](a
 });
 
 // The erratum of the closing exercise: Omega determined by the printed M = (P^T Q - Q^T P)/2.
-GM_MUTANT(manakov_clebsch_M_as_printed,
-          "closing exercise as printed: Omega from A Omega + Omega A = (P^T Q - Q^T P)/2", [](auto& s) {
+GM_MUTANT(manakov_clebsch_M_as_printed, "closing exercise as printed: Omega from A Omega + Omega A = (P^T Q - Q^T P)/2",
+          [](auto& s) {
             using T = scalar_of<decltype(s)>;
             s.manakov_clebsch_3_23 = [](const MatX<T>& A, const MatX<T>& Q, const MatX<T>& P) -> MatXPair<T> {
               const MatX<T> W = ref::manakov_Omega<T>(A, ((P.transpose() * Q - Q.transpose() * P) / T(2)).eval());
@@ -161,26 +159,27 @@ GM_MUTANT(splitting_lie_trotter,
             }
           });
 
-GM_MUTANT(midpoint_one_iteration,
-          "implicit midpoint whose nonlinear solve stops after one fixed-point iteration (that is explicit "
-          "Euler), still claiming the midpoint rule's order, symmetry and invariants",
-          [](auto& s) {
-            using T = scalar_of<decltype(s)>;
-            if constexpr (!is_exact_v<T>) {
-              if (auto* i = find_integrator(s, "implicit_midpoint")) {
-                i->rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
-                  const Vec3<T> P = x.Pi + h / T(2) * ref::cross<T>(x.Pi, x.Pi.cwiseQuotient(I));
-                  return RigidBodyState<T>{(T(2) * P - x.Pi).eval(),
-                                           (x.O * ref::cayley3<T>((h / T(2) * P.cwiseQuotient(I)).eval())).eval()};
-                };
-                i->manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) {
-                  const MatX<T> Mmid = x.M + h / T(2) * ref::commutator(x.M, ref::manakov_Omega<T>(A, x.M));
-                  const MatX<T> W = ref::manakov_Omega<T>(A, Mmid);
-                  return ManakovState<T>{(T(2) * Mmid - x.M).eval(), (x.O * ref::cayley_half<T>((h * W).eval())).eval()};
-                };
-              }
-            }
-          });
+GM_MUTANT(
+    midpoint_one_iteration,
+    "implicit midpoint whose nonlinear solve stops after one fixed-point iteration (that is explicit "
+    "Euler), still claiming the midpoint rule's order, symmetry and invariants",
+    [](auto& s) {
+      using T = scalar_of<decltype(s)>;
+      if constexpr (!is_exact_v<T>) {
+        if (auto* i = find_integrator(s, "implicit_midpoint")) {
+          i->rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
+            const Vec3<T> P = x.Pi + h / T(2) * ref::cross<T>(x.Pi, x.Pi.cwiseQuotient(I));
+            return RigidBodyState<T>{(T(2) * P - x.Pi).eval(),
+                                     (x.O * ref::cayley3<T>((h / T(2) * P.cwiseQuotient(I)).eval())).eval()};
+          };
+          i->manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) {
+            const MatX<T> Mmid = x.M + h / T(2) * ref::commutator(x.M, ref::manakov_Omega<T>(A, x.M));
+            const MatX<T> W = ref::manakov_Omega<T>(A, Mmid);
+            return ManakovState<T>{(T(2) * Mmid - x.M).eval(), (x.O * ref::cayley_half<T>((h * W).eval())).eval()};
+          };
+        }
+      }
+    });
 
 GM_MUTANT(manakov_isospectral_explicit,
           "isospectral Cayley step with U = cay(h Omega(M_n)) (explicit, order 1), still claiming order 2, symmetry "

@@ -27,7 +27,9 @@ static std::map<std::string, std::vector<ScalarKind>>& restrictions() {
   return r;
 }
 
-void mutant_wrong_only_in(const std::string& name, std::vector<ScalarKind> kinds) { restrictions()[name] = std::move(kinds); }
+void mutant_wrong_only_in(const std::string& name, std::vector<ScalarKind> kinds) {
+  restrictions()[name] = std::move(kinds);
+}
 
 bool mutant_wrong_in(const std::string& name, ScalarKind k) {
   auto it = restrictions().find(name);

@@ -40,7 +40,9 @@ void mutant_wrong_only_in(const std::string& name, std::vector<ScalarKind> kinds
 // Whether the mutant is wrong in scalar k (true unless restricted).
 bool mutant_wrong_in(const std::string& name, ScalarKind k);
 struct MutantScalarsRegistrar {
-  MutantScalarsRegistrar(const char* name, std::vector<ScalarKind> kinds) { mutant_wrong_only_in(name, std::move(kinds)); }
+  MutantScalarsRegistrar(const char* name, std::vector<ScalarKind> kinds) {
+    mutant_wrong_only_in(name, std::move(kinds));
+  }
 };
 
 struct MutantRegistrar {
@@ -69,9 +71,11 @@ struct MutantSetRegistrar {
 // Already defined only when tests/unity/compiles_alone.py parses a file alone (parse_only.hpp).
 #ifndef GM_MUTANT
 #define GM_MUTANT(name, description, ...) \
-  static const ::gm::MutantRegistrar gm_mutant_##name{#name, description, __VA_ARGS__}
-#define GM_MUTANT_WRONG_ONLY_IN(name, ...) \
-  static const ::gm::MutantScalarsRegistrar gm_mutant_scalars_##name{#name, {__VA_ARGS__}}
+  static const ::gm::MutantRegistrar gm_mutant_##name { #name, description, __VA_ARGS__ }
+#define GM_MUTANT_WRONG_ONLY_IN(name, ...)                             \
+  static const ::gm::MutantScalarsRegistrar gm_mutant_scalars_##name { \
+#name, { __VA_ARGS__ }                                             \
+  }
 #define GM_MUTANT_SET(name, description, ...) \
-  static const ::gm::MutantSetRegistrar gm_mutant_set_##name{#name, description, __VA_ARGS__}
+  static const ::gm::MutantSetRegistrar gm_mutant_set_##name { #name, description, __VA_ARGS__ }
 #endif

@@ -96,9 +96,7 @@ GM_MUTANT_WRONG_ONLY_IN(omega_3_5_through_double, ScalarKind::MP50, ScalarKind::
 // Precision: the energy with a constant written as a double literal, 0.1 * 5 for the 1/2.
 GM_MUTANT(hamiltonian_3_4_double_constant, "(3.4) with the 1/2 written as the double constant 0.1 * 5", [](auto& s) {
   using T = scalar_of<decltype(s)>;
-  s.hamiltonian_3_4 = [](const Vec3<T>& I, const Vec3<T>& P) -> T {
-    return T(0.1) * T(5) * P.dot(P.cwiseQuotient(I));
-  };
+  s.hamiltonian_3_4 = [](const Vec3<T>& I, const Vec3<T>& P) -> T { return T(0.1) * T(5) * P.dot(P.cwiseQuotient(I)); };
 });
 GM_MUTANT_WRONG_ONLY_IN(hamiltonian_3_4_double_constant, ScalarKind::MP50, ScalarKind::Exact);
 

@@ -39,11 +39,12 @@ bool maybe_write_ctest_script(int argc, char** argv, const LabelFn& labels_for, 
       const auto* info = suite->GetTestInfo(t);
       const std::string suite_name = suite->name(), name = info->name();
       const std::string full = suite_name + "." + name;
-      script << "add_test(" << bracket(full) << " " << bracket(exe) << " " << bracket("--gtest_filter=" + full) << ")\n";
+      script << "add_test(" << bracket(full) << " " << bracket(exe) << " " << bracket("--gtest_filter=" + full)
+             << ")\n";
       std::string labels;
       for (const auto& l : labels_for(suite_name, name)) labels += (labels.empty() ? "" : ";") + l;
-      script << "set_tests_properties(" << bracket(full) << " PROPERTIES LABELS " << bracket(labels)
-             << " TIMEOUT " << timeout_seconds
+      script << "set_tests_properties(" << bracket(full) << " PROPERTIES LABELS " << bracket(labels) << " TIMEOUT "
+             << timeout_seconds
 #ifdef GM_TEST_PYTHON
              // The interpreter the project installed its Python packages for (tests/CMakeLists.txt).
              << " ENVIRONMENT " << bracket(std::string("GEOMECH_PYTHON=") + GM_TEST_PYTHON)

@@ -20,11 +20,15 @@ inline std::string stall_words(const std::vector<double>& err, double last_floor
   const double first = err.front(), last = err.back();
   if (!std::isfinite(last)) return "the error at the smallest step is not finite";
   if (std::isfinite(first) && last < first)
-    std::snprintf(line, sizeof line, "error %.3g at the smallest step, %.3g times its round-off floor, having fallen only %.3g times from the largest step",
+    std::snprintf(line, sizeof line,
+                  "error %.3g at the smallest step, %.3g times its round-off floor, having fallen only %.3g times from "
+                  "the largest step",
                   last, last / last_floor, first / last);
   else
-    std::snprintf(line, sizeof line, "error %.3g at the smallest step, %.3g times its round-off floor, and not smaller than at the largest step",
-                  last, last / last_floor);
+    std::snprintf(
+        line, sizeof line,
+        "error %.3g at the smallest step, %.3g times its round-off floor, and not smaller than at the largest step",
+        last, last / last_floor);
   return line;
 }
 

@@ -33,27 +33,31 @@ enum class EnergyKind { Conserved, Oscillating, Losing, Gaining };
 
 inline const char* kind_name(EnergyKind k) {
   switch (k) {
-    case EnergyKind::Conserved: return "conserved to round-off";
-    case EnergyKind::Oscillating: return "bounded: oscillates with no trend";
-    case EnergyKind::Losing: return "loses energy (dissipative)";
-    case EnergyKind::Gaining: return "gains energy (secular growth)";
+    case EnergyKind::Conserved:
+      return "conserved to round-off";
+    case EnergyKind::Oscillating:
+      return "bounded: oscillates with no trend";
+    case EnergyKind::Losing:
+      return "loses energy (dissipative)";
+    case EnergyKind::Gaining:
+      return "gains energy (secular growth)";
   }
   return "?";
 }
 
 struct EnergyClassification {
   EnergyKind kind = EnergyKind::Conserved;
-  double max_error = 0;   // max |e|
-  double final_error = 0; // e at the end of the run (signed)
-  double trend = 0;       // D: mean of the last quarter minus mean of the first
-  double oscillation = 0; // R: the widest range of e within a quarter
+  double max_error = 0;    // max |e|
+  double final_error = 0;  // e at the end of the run (signed)
+  double trend = 0;        // D: mean of the last quarter minus mean of the first
+  double oscillation = 0;  // R: the widest range of e within a quarter
   double budget = 0;
   long steps = 0;
-  long changed = 0;       // steps that changed H beyond round-off
-  long fell = 0, rose = 0;  // of those, how many lowered it and how many raised it
+  long changed = 0;                 // steps that changed H beyond round-off
+  long fell = 0, rose = 0;          // of those, how many lowered it and how many raised it
   double fell_by = 0, rose_by = 0;  // the total variation of e downwards and upwards
-  bool not_finite = false;     // e is not finite at step `steps` (a NaN or infinite H)
-  double last_finite = 0;      // |e| at the step before, the last finite one
+  bool not_finite = false;          // e is not finite at step `steps` (a NaN or infinite H)
+  double last_finite = 0;           // |e| at the step before, the last finite one
   bool holds() const { return kind == EnergyKind::Conserved || kind == EnergyKind::Oscillating; }
 
   // "loses energy at 100% of the steps that change it: 51.3% after 10^4 steps (dissipative)"
@@ -62,7 +66,8 @@ struct EnergyClassification {
     const auto pct = [](double x) { return 100.0 * std::abs(x); };
     switch (kind) {
       case EnergyKind::Conserved:
-        std::snprintf(buf, sizeof buf, "conserved to round-off: max |H - H0| / |H0| = %.3g over %ld steps", max_error, steps);
+        std::snprintf(buf, sizeof buf, "conserved to round-off: max |H - H0| / |H0| = %.3g over %ld steps", max_error,
+                      steps);
         break;
       case EnergyKind::Oscillating:
         std::snprintf(buf, sizeof buf, "oscillates within %.3g of H0 (relative) with no trend over %ld steps (bounded)",
@@ -88,7 +93,8 @@ struct EnergyClassification {
                         losing ? "loses" : "gains", pct(final_error), losing ? "lost" : "gained", steps,
                         losing ? "dissipative" : "secular growth");
         } else if (changed > 0 && way >= 0.99 * static_cast<double>(changed)) {
-          std::snprintf(buf, sizeof buf, "%s energy at %.1f%% of the steps that change it: %.3g%% %s after %ld steps (%s)",
+          std::snprintf(buf, sizeof buf,
+                        "%s energy at %.1f%% of the steps that change it: %.3g%% %s after %ld steps (%s)",
                         losing ? "loses" : "gains", 100.0 * static_cast<double>(way) / static_cast<double>(changed),
                         pct(final_error), losing ? "lost" : "gained", steps, losing ? "dissipative" : "secular growth");
         } else if (std::abs(trend) > oscillation) {
@@ -159,7 +165,8 @@ inline EnergyClassification classify_energy_error(const std::vector<double>& t, 
   for (int q = 0; q < 4; ++q) {
     const std::size_t lo = n * q / 4, hi = std::max(lo + 1, n * (q + 1) / 4);
     double lo_e = e[lo], hi_e = e[lo], sum = 0;
-    for (std::size_t k = lo; k < hi && k < n; ++k) lo_e = std::min(lo_e, e[k]), hi_e = std::max(hi_e, e[k]), sum += e[k];
+    for (std::size_t k = lo; k < hi && k < n; ++k)
+      lo_e = std::min(lo_e, e[k]), hi_e = std::max(hi_e, e[k]), sum += e[k];
     mean[q] = sum / static_cast<double>(hi - lo);
     c.oscillation = std::max(c.oscillation, hi_e - lo_e);
   }

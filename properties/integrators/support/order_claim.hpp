@@ -60,15 +60,16 @@ inline void judge_order_claim(const std::string& integrator, int claimed, const 
   if (conv::at_roundoff_everywhere(errs, floors)) {
     // Exact for this problem: an error at round-off at every step size contradicts no
     // order; a claimed one holds, and the note says why no slope was measured.
-    const std::string exact = integrator + ": exact for this problem (error at round-off for every step size" +
-                              where + "); any claimed order holds" + scalar;
+    const std::string exact = integrator + ": exact for this problem (error at round-off for every step size" + where +
+                              "); any claimed order holds" + scalar;
     judge_claim("order", claimed > 0, true, exact, "exact for this problem (error at round-off)");
     record_note(exact);
     return;
   }
   if (fit.used < 3) {
     // Not measurable: the finding is incomplete, a claim is not verified by it.
-    const std::string why = integrator + ": fewer than three step sizes above round-off" + where + "; order not measurable" + scalar;
+    const std::string why =
+        integrator + ": fewer than three step sizes above round-off" + where + "; order not measurable" + scalar;
     judge_claim("order", claimed > 0, true, why, "not measurable (fewer than three step sizes above round-off)", false);
     record_note(why);
     return;

@@ -22,11 +22,12 @@ void judge_roundoff_claim(const char* claim, bool claimed, const std::string& in
   const bool holds = is_finite(residual) && residual <= T(k) * eps<T>() * scale;
   const std::string units =
       is_finite(residual) ? fmt("%.3g eps * scale", to_double(T(residual / (eps<T>() * scale)))) : "not finite";
-  const std::string evidence = integrator + ": " + what + ": residual " + units + ", allowed " + fmt("%g eps * scale", k) +
-                               ", scale " + to_string_full(scale) + scalar;
+  const std::string evidence = integrator + ": " + what + ": residual " + units + ", allowed " +
+                               fmt("%g eps * scale", k) + ", scale " + to_string_full(scale) + scalar;
   judge_claim(claim, claimed, holds, evidence, "residual " + units);
   if (!claimed && holds) record_note(integrator + ": " + what + " holds although not claimed (residual " + units + ")");
-  if (!claimed && !holds) record_note(integrator + ": " + what + " does not hold (not claimed): residual " + units + scalar);
+  if (!claimed && !holds)
+    record_note(integrator + ": " + what + " does not hold (not claimed): residual " + units + scalar);
 }
 
 }  // namespace gm

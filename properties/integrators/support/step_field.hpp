@@ -34,9 +34,9 @@ namespace gm::stepfield {
 
 template <class T>
 struct Field {
-  Vec3<T> Pi_dot;  // dPi/dt the step follows
-  Vec3<T> Omega;   // the body angular velocity it turns O with
-  T spread = T(0); // the last two extrapolated estimates' difference: how well the field is known
+  Vec3<T> Pi_dot;   // dPi/dt the step follows
+  Vec3<T> Omega;    // the body angular velocity it turns O with
+  T spread = T(0);  // the last two extrapolated estimates' difference: how well the field is known
 };
 
 // Neville's extrapolation to h = 0 of values v[k] at h[k] (polynomial in h).
@@ -130,15 +130,15 @@ std::string v(const Vec3<T>& x) {
 }
 
 struct Diagnosis {
-  bool field_right = false;   // both parts agree with the notes
-  std::string text;           // the explanation, in the notes' terms (one or two sentences each)
+  bool field_right = false;  // both parts agree with the notes
+  std::string text;          // the explanation, in the notes' terms (one or two sentences each)
 };
 
 // The step's field at x against (3.8) and (2.10)/(3.5).
 template <class T>
 Diagnosis diagnose(const Field<T>& f, const Vec3<T>& I, const RigidBodyState<T>& x) {
-  const Vec3<T> Omega = x.Pi.cwiseQuotient(I);             // (3.5)
-  const Vec3<T> rhs = truth::cross(x.Pi, Omega);           // (3.8)
+  const Vec3<T> Omega = x.Pi.cwiseQuotient(I);    // (3.5)
+  const Vec3<T> rhs = truth::cross(x.Pi, Omega);  // (3.8)
   const T size_pi = max_abs(rhs) + max_abs(x.Pi) * max_abs(Omega);
   const T size_om = max_abs(Omega);
   Diagnosis d;
@@ -151,8 +151,9 @@ Diagnosis diagnose(const Field<T>& f, const Vec3<T>& I, const RigidBodyState<T>&
       pi_text = "your step follows dPi/dt = Omega x Pi = " + v(f.Pi_dot) + "; (3.8) is Pi x Omega = " + v(rhs) +
                 ": the cross product is reversed";
     else if (agrees(f.Pi_dot, truth::cross(x.Pi, I_Pi), size_pi + max_abs(x.Pi) * max_abs(I_Pi)))
-      pi_text = "your step follows dPi/dt = Pi x (I Pi) = " + v(f.Pi_dot) + "; (3.8) is Pi x Omega with Omega = I^-1 Pi, " +
-                v(rhs) + ": the inertia is applied instead of its inverse";
+      pi_text = "your step follows dPi/dt = Pi x (I Pi) = " + v(f.Pi_dot) +
+                "; (3.8) is Pi x Omega with Omega = I^-1 Pi, " + v(rhs) +
+                ": the inertia is applied instead of its inverse";
     else if (max_abs(f.Pi_dot) <= agree_tolerance<T>() * size_pi)
       pi_text = "your step leaves Pi unchanged (dPi/dt = 0); (3.8) gives dPi/dt = Pi x Omega = " + v(rhs);
     else
@@ -161,24 +162,30 @@ Diagnosis diagnose(const Field<T>& f, const Vec3<T>& I, const RigidBodyState<T>&
   if (!om_ok) {
     const Vec3<T> space_with_body_inertia = Vec3<T>(x.O.transpose() * (x.O * x.Pi).cwiseQuotient(I));
     if (agrees(f.Omega, Vec3<T>(-Omega), size_om))
-      om_text = "your step turns the body with Omega = " + v(f.Omega) + ", the opposite of (3.5)'s I^-1 Pi = " + v(Omega) +
+      om_text = "your step turns the body with Omega = " + v(f.Omega) +
+                ", the opposite of (3.5)'s I^-1 Pi = " + v(Omega) +
                 ": (2.10) is dO/dt = O Omega_hat, not O Omega_hat^T";
     else if (agrees(f.Omega, space_with_body_inertia, size_om + max_abs(space_with_body_inertia)))
       om_text = "your step turns the body with Omega = " + v(f.Omega) + " where (3.5) gives I^-1 Pi = " + v(Omega) +
                 ": it applies the body's I^-1 to the spatial momentum O Pi (the inertia is not rotated into space, "
                 "I_space = O I O^T, Remark 2.1); they agree only when I is spherical";
     else if (agrees(f.Omega, Vec3<T>(x.O.transpose() * Omega), size_om))
-      om_text = "your step turns the body with dO/dt = Omega_hat O (body angular velocity applied on the left, as if it "
-                "were the spatial one); (2.10) is dO/dt = O Omega_hat, with Omega = I^-1 Pi = " + v(Omega);
+      om_text =
+          "your step turns the body with dO/dt = Omega_hat O (body angular velocity applied on the left, as if it "
+          "were the spatial one); (2.10) is dO/dt = O Omega_hat, with Omega = I^-1 Pi = " +
+          v(Omega);
     else
-      om_text = "your step turns the body with Omega = vee(O^-1 dO/dt) = " + v(f.Omega) + " where (2.10) and (3.5) give " +
-                "I^-1 Pi = " + v(Omega);
+      om_text = "your step turns the body with Omega = vee(O^-1 dO/dt) = " + v(f.Omega) +
+                " where (2.10) and (3.5) give " + "I^-1 Pi = " + v(Omega);
   }
   d.field_right = pi_ok && om_ok;
   if (d.field_right)
-    d.text = "your step's vector field is right: it follows (3.8) and (2.10) (the extrapolated (step(x, h) - x)/h "
-             "agrees with Pi x I^-1 Pi = " + v(rhs) + " and Omega = I^-1 Pi = " + v(Omega) + "): the equation is not "
-             "the cause, and this reading identifies no other (the measurement is the evidence)";
+    d.text =
+        "your step's vector field is right: it follows (3.8) and (2.10) (the extrapolated (step(x, h) - x)/h "
+        "agrees with Pi x I^-1 Pi = " +
+        v(rhs) + " and Omega = I^-1 Pi = " + v(Omega) +
+        "): the equation is not "
+        "the cause, and this reading identifies no other (the measurement is the evidence)";
   else
     d.text = pi_text + (pi_text.empty() || om_text.empty() ? "" : "; ") + om_text;
   return d;
@@ -240,7 +247,8 @@ void explaining_at(States&& states, Diagnose&& diagnose_at, Judge&& judge) {
 // The same reading in the integrator's own variables, leading this one, for a step kept in a declared
 // form (a quaternion, omega, ...: step_field_form.hpp).
 template <class T>
-Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x, const Diagnosis& notes);
+Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x,
+                           const Diagnosis& notes);
 
 // What the rigid-body step does at the states `xs` (the first is the case's), in words:
 // a precision below the scalar's, a step that does not reduce to the identity, one that returns its
@@ -274,15 +282,17 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
   // The failing steps in the units of the k-th probed state (the last one is rescaled by l: the same
   // motion is run with steps h / l there).
   const double h_failing = hs.empty() ? 0.0 : *std::min_element(hs.begin(), hs.end());
-  const double last_scale = probed.size() > xs.size() + 1 ? to_double(T(max_abs(probed.back().Pi) / max_abs(x0.Pi))) : 1.0;
+  const double last_scale =
+      probed.size() > xs.size() + 1 ? to_double(T(max_abs(probed.back().Pi) / max_abs(x0.Pi))) : 1.0;
   std::string guard_seen;  // a guard found below every failing step: evidence, not the cause
   for (std::size_t k = 0; k < probed.size(); ++k) {
     const auto& x = probed[k];
     const auto small = stepprobe::small_steps(in, I, x, precision);
     if (small.not_identity) {
       // In the integrator's own variables too, for a step kept in a declared form.
-      const std::string own =
-          in.form.is_notes() ? std::string() : "; " + in_declared_form(in, I, x, diagnose(rigid_body_field(in, I, x), I, x)).text;
+      const std::string own = in.form.is_notes()
+                                  ? std::string()
+                                  : "; " + in_declared_form(in, I, x, diagnose(rigid_body_field(in, I, x), I, x)).text;
       return small.not_identity_text + own + scalar_tag<T>();
     }
     if (small.returns_input) {
@@ -294,14 +304,15 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
         still = (y.Pi.array() == x.Pi.array()).all() && (y.O.array() == x.O.array()).all();
       }
       if (still)
-        return small.returns_input_text + fmt("; the failing runs use steps down to h = %.3g, where it returns its input too",
-                                              failing_here) +
+        return small.returns_input_text +
+               fmt("; the failing runs use steps down to h = %.3g, where it returns its input too", failing_here) +
                scalar_tag<T>();
       if (guard_seen.empty())
-        guard_seen = "; besides, " + small.returns_input_text +
-                     (h_failing > 0 ? fmt(", but every failing step is larger (the smallest h = %.3g): not the cause here",
-                                          failing_here)
-                                    : std::string(": the failing steps are not known here, so it is not named the cause"));
+        guard_seen =
+            "; besides, " + small.returns_input_text +
+            (h_failing > 0
+                 ? fmt(", but every failing step is larger (the smallest h = %.3g): not the cause here", failing_here)
+                 : std::string(": the failing steps are not known here, so it is not named the cause"));
     }
   }
   stepfield::Diagnosis d;
@@ -313,7 +324,8 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
     if (!d.field_right) break;
   }
   if (!d.field_right) {
-    const std::string cap = stepprobe::cap_of(I, *at, [&](const RigidBodyState<T>& y) { return rigid_body_field(in, I, y).Pi_dot; });
+    const std::string cap =
+        stepprobe::cap_of(I, *at, [&](const RigidBodyState<T>& y) { return rigid_body_field(in, I, y).Pi_dot; });
     if (!cap.empty()) return cap + scalar_tag<T>();
   }
   return "the step's own equation: " + d.text + guard_seen + scalar_tag<T>();

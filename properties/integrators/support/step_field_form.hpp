@@ -23,19 +23,18 @@ namespace gm::stepfield {
 
 template <class T>
 struct FormField {
-  Vec3<T> angular_dot;    // d/dt of the declared angular vector
-  Vec4<T> q_dot;          // d/dt of the quaternion, in the declared order (a quaternion form only)
-  Vec3<T> angular_jump;   // step(x, h) - x of the angular vector at the smallest h, when it does not shrink
+  Vec3<T> angular_dot;   // d/dt of the declared angular vector
+  Vec4<T> q_dot;         // d/dt of the quaternion, in the declared order (a quaternion form only)
+  Vec3<T> angular_jump;  // step(x, h) - x of the angular vector at the smallest h, when it does not shrink
   Vec4<T> q_jump;
   bool jumps = false;
 };
 
 template <class T>
 Vec4<T> quaternion_times(const Vec4<T>& a, const Vec4<T>& b) {  // Hamilton's product, (w, x, y, z)
-  return Vec4<T>(a(0) * b(0) - a(1) * b(1) - a(2) * b(2) - a(3) * b(3),
-                 a(0) * b(1) + a(1) * b(0) + a(2) * b(3) - a(3) * b(2),
-                 a(0) * b(2) - a(1) * b(3) + a(2) * b(0) + a(3) * b(1),
-                 a(0) * b(3) + a(1) * b(2) - a(2) * b(1) + a(3) * b(0));
+  return Vec4<T>(
+      a(0) * b(0) - a(1) * b(1) - a(2) * b(2) - a(3) * b(3), a(0) * b(1) + a(1) * b(0) + a(2) * b(3) - a(3) * b(2),
+      a(0) * b(2) - a(1) * b(3) + a(2) * b(0) + a(3) * b(1), a(0) * b(3) + a(1) * b(2) - a(2) * b(1) + a(3) * b(0));
 }
 
 template <class T>
@@ -80,28 +79,38 @@ std::string v4(const Vec4<T>& x) {
 
 // The declared-form reading, leading the notes' one (`notes`, from diagnose() in step_field.hpp).
 template <class T>
-Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x, const Diagnosis& notes) {
+Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x,
+                           const Diagnosis& notes) {
   const StateForm& f = in.form;
   const FormField<T> ff = declared_field(in, I, x);
   const EngineState<T> u = to_declared<T>(f, I, x.O, x.Pi);
-  const Vec3<T> Omega = x.Pi.cwiseQuotient(I);                                  // (3.5)
-  const Vec3<T> Pi_dot = truth::cross(x.Pi, Omega);                             // (3.8)
-  const Vec3<T> Omega_dot = Pi_dot.cwiseQuotient(I);                            // (2.2)
+  const Vec3<T> Omega = x.Pi.cwiseQuotient(I);        // (3.5)
+  const Vec3<T> Pi_dot = truth::cross(x.Pi, Omega);   // (3.8)
+  const Vec3<T> Omega_dot = Pi_dot.cwiseQuotient(I);  // (2.2)
   const Vec3<T> omega = x.O * Omega;
   const char* name = angular_key(f.angular);
   const std::string yours = your_angular(f);
   Vec3<T> expected;
   switch (f.angular) {
-    case Angular::Pi: expected = Pi_dot; break;
-    case Angular::Omega: expected = Omega_dot; break;
-    case Angular::omega: expected = x.O * Omega_dot; break;
-    case Angular::pi: expected = Vec3<T>::Zero(); break;
+    case Angular::Pi:
+      expected = Pi_dot;
+      break;
+    case Angular::Omega:
+      expected = Omega_dot;
+      break;
+    case Angular::omega:
+      expected = x.O * Omega_dot;
+      break;
+    case Angular::pi:
+      expected = Vec3<T>::Zero();
+      break;
   }
-  const T size = max_abs(expected) + max_abs(x.Pi) * max_abs(Omega) / I.minCoeff() + max_abs(u.angular()) * max_abs(Omega);
+  const T size =
+      max_abs(expected) + max_abs(x.Pi) * max_abs(Omega) / I.minCoeff() + max_abs(u.angular()) * max_abs(Omega);
   std::string a_text, q_text;
   bool a_ok = true, q_ok = true;
-  const std::string intro = "your state is " + describe_state_form(f) + " (the suite reads it as the notes' (Pi, O) by " +
-                            state_form_conversion(f) + ")";
+  const std::string intro = "your state is " + describe_state_form(f) +
+                            " (the suite reads it as the notes' (Pi, O) by " + state_form_conversion(f) + ")";
   if (ff.jumps) {
     Diagnosis d;
     d.text = intro + ": your step is not consistent in it: as h -> 0, step(x, h) - x does not shrink but stays near " +
@@ -115,11 +124,12 @@ Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const Rigi
   if (!agrees(ff.angular_dot, expected, size)) {
     a_ok = false;
     const std::string notes_says = f.angular == Angular::pi ? "Theorem 2.2 keeps pi = O Pi constant"
-                                   : f.angular == Angular::Pi ? "(3.8) gives Pi x Omega = " + v(expected)
-                                                              : "(2.2) gives " + std::string(f.angular == Angular::omega
-                                                                                                 ? "O I^-1 ((I Omega) x Omega) = "
-                                                                                                 : "I^-1 ((I Omega) x Omega) = ") +
-                                                                    v(expected);
+                                   : f.angular == Angular::Pi
+                                       ? "(3.8) gives Pi x Omega = " + v(expected)
+                                       : "(2.2) gives " +
+                                             std::string(f.angular == Angular::omega ? "O I^-1 ((I Omega) x Omega) = "
+                                                                                     : "I^-1 ((I Omega) x Omega) = ") +
+                                             v(expected);
     if (max_abs(ff.angular_dot) <= agree_tolerance<T>() * size)
       a_text = yours + " stays constant (d" + name + "/dt = 0) where " + notes_says +
                ": the gyroscopic term (I Omega) x Omega is missing";
@@ -127,7 +137,8 @@ Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const Rigi
       a_text = yours + " follows d" + name + "/dt = " + v(ff.angular_dot) + ", the opposite of what " + notes_says +
                ": the gyroscopic term has the wrong sign";
     else if (f.angular == Angular::omega &&
-             agrees(ff.angular_dot, Vec3<T>(truth::cross(Vec3<T>(I.cwiseProduct(omega)), omega).cwiseQuotient(I)), size))
+             agrees(ff.angular_dot, Vec3<T>(truth::cross(Vec3<T>(I.cwiseProduct(omega)), omega).cwiseQuotient(I)),
+                    size))
       a_text = yours + " follows domega/dt = I^-1 ((I omega) x omega) = " + v(ff.angular_dot) + " where " + notes_says +
                ": the body's inertia is applied to the spatial omega (it is not rotated into space, I_space = O I O^T, "
                "Remark 2.1)";
@@ -139,7 +150,9 @@ Diagnosis in_declared_form(const Integrator<T>& in, const Vec3<T>& I, const Rigi
     const Vec4<T> q_dot = state_form::wxyz<T>(ff.q_dot, f.attitude);
     const Vec4<T> right = quaternion_times<T>(q, pure<T>(Omega)) / T(2);  // (2.10): q (0, Omega) / 2
     const T qsize = max_abs(Omega);
-    auto same = [&](const Vec4<T>& a, const Vec4<T>& b) { return max_abs(Vec4<T>(a - b)) <= agree_tolerance<T>() * qsize; };
+    auto same = [&](const Vec4<T>& a, const Vec4<T>& b) {
+      return max_abs(Vec4<T>(a - b)) <= agree_tolerance<T>() * qsize;
+    };
     const std::string yq = your_attitude(f);
     if (!same(q_dot, right)) {
       q_ok = false;

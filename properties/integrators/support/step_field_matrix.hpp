@@ -84,7 +84,7 @@ template <class T>
 Diagnosis diagnose_manakov(const ManakovField<T>& f, const MatX<T>& A, const ManakovState<T>& x) {
   const auto n = x.M.rows();
   const MatX<T> Omega = ref::manakov_Omega<T>(A, x.M);  // (2.34)
-  const MatX<T> rhs = bracket(x.M, Omega);               // (2.36)
+  const MatX<T> rhs = bracket(x.M, Omega);              // (2.36)
   const T size_m = max_abs(rhs) + T(n) * max_abs(x.M) * max_abs(Omega);
   const T size_w = max_abs(Omega) + max_abs(MatX<T>(A.inverse() * x.M));
   const MatX<T> commuting = A.inverse() * x.M / T(2), one_sided = A.inverse() * x.M;
@@ -93,29 +93,38 @@ Diagnosis diagnose_manakov(const ManakovField<T>& f, const MatX<T>& A, const Man
       f.M_dot,
       {{MatX<T>(-rhs), "your step follows dM/dt = [Omega, M] = " + m(f.M_dot) + "; (2.36) is [M, Omega] = " + m(rhs) +
                            ": the commutator is reversed"},
-       {bracket(x.M, commuting), "your step follows dM/dt = [M, Omega] with Omega = A^-1 M / 2, as if A and Omega "
-                                 "commuted; " + omega_is + ": the commutator form is right, its Omega is not"},
-       {bracket(x.M, one_sided), "your step follows dM/dt = [M, Omega] with Omega = A^-1 M, one side of (2.34); " +
-                                     omega_is},
+       {bracket(x.M, commuting),
+        "your step follows dM/dt = [M, Omega] with Omega = A^-1 M / 2, as if A and Omega "
+        "commuted; " +
+            omega_is + ": the commutator form is right, its Omega is not"},
+       {bracket(x.M, one_sided),
+        "your step follows dM/dt = [M, Omega] with Omega = A^-1 M, one side of (2.34); " + omega_is},
        {MatX<T>(MatX<T>::Zero(n, n)), "your step leaves M unchanged (dM/dt = 0); (2.36) gives [M, Omega] = " + m(rhs)}},
-      size_m, "your step follows dM/dt = " + m(f.M_dot) + "; (2.36) gives [M, Omega] = " + m(rhs) + " with " + omega_is);
+      size_m,
+      "your step follows dM/dt = " + m(f.M_dot) + "; (2.36) gives [M, Omega] = " + m(rhs) + " with " + omega_is);
   const bool pi_ok = agrees(f.M_dot, rhs, size_m);
   const bool om_ok = agrees(f.Omega, Omega, size_w);
   const std::string om_text = read_field<T>(
       f.Omega,
-      {{MatX<T>(-Omega), "your step turns the body with dO/dt = -O Omega, the opposite of dO/dt = O Omega ((2.10) on "
-                         "SO(n)), " + omega_is},
-       {MatX<T>(x.O.transpose() * Omega * x.O), "your step turns the body with dO/dt = Omega O (Omega applied on the "
-                                                "left); the reconstruction is dO/dt = O Omega ((2.10) on SO(n)), " +
-                                                    omega_is},
+      {{MatX<T>(-Omega),
+        "your step turns the body with dO/dt = -O Omega, the opposite of dO/dt = O Omega ((2.10) on "
+        "SO(n)), " +
+            omega_is},
+       {MatX<T>(x.O.transpose() * Omega * x.O),
+        "your step turns the body with dO/dt = Omega O (Omega applied on the "
+        "left); the reconstruction is dO/dt = O Omega ((2.10) on SO(n)), " +
+            omega_is},
        {commuting, "your step turns the body with Omega = A^-1 M / 2, as if A and Omega commuted; " + omega_is},
        {one_sided, "your step turns the body with Omega = A^-1 M, one side of (2.34); " + omega_is}},
       size_w, "your step turns the body with Omega = O^T dO/dt = " + m(f.Omega) + " where (2.34) gives " + m(Omega));
   Diagnosis d;
   d.field_right = pi_ok && om_ok;
   if (d.field_right)
-    d.text = "your step's vector field is right: it follows (2.36) and dO/dt = O Omega (the extrapolated (step(x, h) - x)/h "
-             "agrees with [M, Omega] = " + m(rhs) + " and " + omega_is + "): the equation is not the cause, and this reading identifies no other (the measurement is the evidence)";
+    d.text =
+        "your step's vector field is right: it follows (2.36) and dO/dt = O Omega (the extrapolated (step(x, h) - x)/h "
+        "agrees with [M, Omega] = " +
+        m(rhs) + " and " + omega_is +
+        "): the equation is not the cause, and this reading identifies no other (the measurement is the evidence)";
   else
     d.text = (pi_ok ? "" : pi_text) + (pi_ok || om_ok ? "" : "; ") + (om_ok ? "" : om_text);
   return d;
@@ -145,10 +154,14 @@ Diagnosis diagnose_canonical(const MatX<T>& field, const MatX<T>& truth, std::ve
   Diagnosis d;
   d.field_right = agrees(field, truth, size);
   if (d.field_right)
-    d.text = "your step's vector field is right: it follows " + system + " (the extrapolated (step(Z, h) - Z)/h agrees "
-             "with " + qp(truth) + "): the equation is not the cause, and this reading identifies no other (the measurement is the evidence)";
+    d.text = "your step's vector field is right: it follows " + system +
+             " (the extrapolated (step(Z, h) - Z)/h agrees "
+             "with " +
+             qp(truth) +
+             "): the equation is not the cause, and this reading identifies no other (the measurement is the evidence)";
   else
-    d.text = read_field<T>(field, readings, size, "your step follows " + qp(field) + "; " + system + " gives " + qp(truth));
+    d.text =
+        read_field<T>(field, readings, size, "your step follows " + qp(field) + "; " + system + " gives " + qp(truth));
   return d;
 }
 
@@ -158,13 +171,16 @@ Diagnosis diagnose_clebsch(const MatX<T>& field, const Vec3<T>& I, const MatX<T>
   const auto [Q, P] = ref::unstack3<T>(Z);
   const MatX<T> F = ref::clebsch_field<T>(I, Z);
   const Vec3<T> Omega_I = I.cwiseProduct(truth::cross(P, Q));  // I Pi for I^-1 Pi
-  const MatX<T> inertia = ref::stack<T>(Vec3Pair<T>{Vec3<T>(-truth::cross(Omega_I, Q)), Vec3<T>(-truth::cross(Omega_I, P))});
+  const MatX<T> inertia =
+      ref::stack<T>(Vec3Pair<T>{Vec3<T>(-truth::cross(Omega_I, Q)), Vec3<T>(-truth::cross(Omega_I, P))});
   return diagnose_canonical<T>(
       field, F,
-      {{MatX<T>(-F), "your step follows dQ/dt = Omega x Q, dP/dt = Omega x P (" + qp(field) + "); (3.21) is dQ/dt = "
-                     "-Omega x Q, dP/dt = -Omega x P with Pi = P x Q (a sign, or Pi taken as Q x P)"},
-       {inertia, "your step turns Q and P with Omega = I Pi; (3.5) is Omega = I^-1 Pi (Pi = P x Q): the inertia is "
-                 "applied instead of its inverse"}},
+      {{MatX<T>(-F), "your step follows dQ/dt = Omega x Q, dP/dt = Omega x P (" + qp(field) +
+                         "); (3.21) is dQ/dt = "
+                         "-Omega x Q, dP/dt = -Omega x P with Pi = P x Q (a sign, or Pi taken as Q x P)"},
+       {inertia,
+        "your step turns Q and P with Omega = I Pi; (3.5) is Omega = I^-1 Pi (Pi = P x Q): the inertia is "
+        "applied instead of its inverse"}},
       "(3.21)");
 }
 
@@ -177,15 +193,19 @@ Diagnosis diagnose_manakov_clebsch(const MatX<T>& field, const MatX<T>& A, const
   const MatX<T> left = ref::stack<T>(MatXPair<T>{MatX<T>(Omega * Q), MatX<T>(Omega * P)});
   return diagnose_canonical<T>(
       field, F,
-      {{MatX<T>(-F / T(2)), "your step's momentum is the notes' printed M = (P^T Q - Q^T P)/2, which is an erratum (see "
-                            "spec/CATALOGUE.md, entry mm.manakov-clebsch): Hamilton's principle identifies M = Q^T P - "
-                            "P^T Q, so your Omega has the opposite sign and half the size"},
-       {MatX<T>(-F), "your step's Omega has the opposite sign: its M is P^T Q - Q^T P; the M of (3.23) is Q^T P - P^T Q "
-                     "(mm.manakov-clebsch)"},
-       {MatX<T>(F / T(2)), "your step's Omega is half of (3.23)'s: its M is (Q^T P - P^T Q)/2; Omega solves A Omega + "
-                           "Omega A = Q^T P - P^T Q"},
-       {left, "your step follows dQ/dt = Omega Q, dP/dt = Omega P (Omega on the left); (3.23) is dQ/dt = Q Omega, "
-              "dP/dt = P Omega"}},
+      {{MatX<T>(-F / T(2)),
+        "your step's momentum is the notes' printed M = (P^T Q - Q^T P)/2, which is an erratum (see "
+        "spec/CATALOGUE.md, entry mm.manakov-clebsch): Hamilton's principle identifies M = Q^T P - "
+        "P^T Q, so your Omega has the opposite sign and half the size"},
+       {MatX<T>(-F),
+        "your step's Omega has the opposite sign: its M is P^T Q - Q^T P; the M of (3.23) is Q^T P - P^T Q "
+        "(mm.manakov-clebsch)"},
+       {MatX<T>(F / T(2)),
+        "your step's Omega is half of (3.23)'s: its M is (Q^T P - P^T Q)/2; Omega solves A Omega + "
+        "Omega A = Q^T P - P^T Q"},
+       {left,
+        "your step follows dQ/dt = Omega Q, dP/dt = Omega P (Omega on the left); (3.23) is dQ/dt = Q Omega, "
+        "dP/dt = P Omega"}},
       "(3.23)");
 }
 

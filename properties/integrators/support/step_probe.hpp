@@ -100,7 +100,8 @@ std::string precision_words(double followed) {
     name = fmt("about %.0f significant digits (round-off ~%.1g relative)", -std::log10(followed), followed);
   return "your step computes in " + name + ", below the " + fmt("%.2g", own) +
          " of the scalar it is checked in: step(x + delta, h) - step(x, h) follows delta down to " +
-         fmt("%.1g", followed) + " of |Pi| and no further, so what looks like a truncation error below that is the "
+         fmt("%.1g", followed) +
+         " of |Pi| and no further, so what looks like a truncation error below that is the "
          "step's own round-off (no vector field is read from it)";
 }
 
@@ -128,9 +129,9 @@ std::string quaternion_sign_cause(const Integrator<T>& in, const Vec3<T>& I, con
   const bool plus_ok = move[0] <= limit, minus_ok = move[1] <= limit;
   if (plus_ok == minus_ok) return {};
   return std::string("your step treats q and -q as two attitudes, by experiment: given the same attitude as q with ") +
-         (plus_ok ? "w <= 0 (-q)" : "w >= 0") + " it moves the state by " + fmt("%.3g", to_double(plus_ok ? move[1] : move[0])) +
-         " however small h is, given it with " + (plus_ok ? "w >= 0" : "w <= 0 (-q)") + " by " +
-         fmt("%.1g", to_double(plus_ok ? move[0] : move[1])) +
+         (plus_ok ? "w <= 0 (-q)" : "w >= 0") + " it moves the state by " +
+         fmt("%.3g", to_double(plus_ok ? move[1] : move[0])) + " however small h is, given it with " +
+         (plus_ok ? "w >= 0" : "w <= 0 (-q)") + " by " + fmt("%.1g", to_double(plus_ok ? move[0] : move[1])) +
          ", as a consistent step does; q and -q are one attitude, so a part of the step assumes a sign of w (|w| "
          "where w is meant, w = sqrt(1 - |v|^2), a log map or an angle 2 acos(w) without the sign test)";
 }
@@ -176,13 +177,14 @@ SmallSteps small_steps(const Integrator<T>& in, const Vec3<T>& I, const RigidBod
         s.not_identity_text = sign + "; measured at\n" + named("I", I) + named("Pi", x.Pi) + named("O", x.O);
         return s;
       }
-      s.not_identity_text = "your step does not reduce to the identity as h -> 0: |step(x, h) - x| = " +
-                            fmt("%.3g", to_double(m)) + " of the state at h = " + fmt("%.3g", to_double(T(expected / rate))) +
-                            " (h |Omega| = 2^-" + std::to_string(smallest) + "), where a consistent step moves it by about " +
-                            fmt("%.1g", to_double(expected)) +
-                            ": something changes the state by a fixed amount however small h is (what, this "
-                            "measurement does not tell); measured at\n" +
-                            named("I", I) + named("Pi", x.Pi) + named("O", x.O);
+      s.not_identity_text =
+          "your step does not reduce to the identity as h -> 0: |step(x, h) - x| = " + fmt("%.3g", to_double(m)) +
+          " of the state at h = " + fmt("%.3g", to_double(T(expected / rate))) + " (h |Omega| = 2^-" +
+          std::to_string(smallest) + "), where a consistent step moves it by about " +
+          fmt("%.1g", to_double(expected)) +
+          ": something changes the state by a fixed amount however small h is (what, this "
+          "measurement does not tell); measured at\n" +
+          named("I", I) + named("Pi", x.Pi) + named("O", x.O);
     }
   }
   if (first_still > 4) {
@@ -248,7 +250,8 @@ std::string cap_of(const Vec3<T>& I, const RigidBodyState<T>& x, Field&& field) 
     return abs_value(T(a - b)) <= T(1e-6) * abs_value(b) + T(4) * noise;
   };
   std::size_t from = 0;
-  while (from < at.size() && near(at[from].ratio, T(1), T(at[from].noise / (at[from].force / abs_value(at[from].ratio)))))
+  while (from < at.size() &&
+         near(at[from].ratio, T(1), T(at[from].noise / (at[from].force / abs_value(at[from].ratio)))))
     ++from;
   const std::size_t here = static_cast<std::size_t>(-kFirst / kStride);  // j = 0: the failing state
   if (from == 0 || from == at.size() || here >= at.size() || here < from) return {};
@@ -261,8 +264,8 @@ std::string cap_of(const Vec3<T>& I, const RigidBodyState<T>& x, Field&& field) 
     return true;
   };
   const std::string range = " for every |Pi| >= " + fmt("%.3g", to_double(at[from].pi)) + ", this state's " +
-                            fmt("%.3g", to_double(size)) + " among them, and exactly (3.8) up to |Pi| = " +
-                            fmt("%.3g", to_double(at[from - 1].pi));
+                            fmt("%.3g", to_double(size)) +
+                            " among them, and exactly (3.8) up to |Pi| = " + fmt("%.3g", to_double(at[from - 1].pi));
   if (constant([](const Point& p) { return p.ratio; }, [](const Point& p) { return T(abs_value(p.ratio) / p.force); }))
     return "a cap, by experiment: your step's field is " + fmt("%.4g", to_double(at[here].ratio)) + " x (3.8)" + range +
            ": (3.8) shrunk to a constant fraction beyond a size (a cap on the angular velocity or the momentum)";

@@ -26,8 +26,13 @@ class StepStream {
 
   // `total` steps at most will be asked for; chunks never go beyond it.
   StepStream(Step step, Run run, Param p, State x, T h, int total, int chunk = 512)
-      : step_(std::move(step)), run_(std::move(run)), p_(std::move(p)), x_(std::move(x)), h_(std::move(h)),
-        left_(total), chunk_(chunk) {}
+      : step_(std::move(step)),
+        run_(std::move(run)),
+        p_(std::move(p)),
+        x_(std::move(x)),
+        h_(std::move(h)),
+        left_(total),
+        chunk_(chunk) {}
 
   // The state after the next step.
   const State& next() {
@@ -73,13 +78,13 @@ class StepStream {
 
 template <class T>
 StepStream<RigidBodyState<T>, Vec3<T>, T> rigid_body_steps(const Integrator<T>& in, const Vec3<T>& I,
-                                                            const RigidBodyState<T>& x, const T& h, int total) {
+                                                           const RigidBodyState<T>& x, const T& h, int total) {
   return {in.rigid_body_step, in.rigid_body_run, I, x, h, total};
 }
 
 template <class T>
-StepStream<ManakovState<T>, MatX<T>, T> manakov_steps(const Integrator<T>& in, const MatX<T>& A, const ManakovState<T>& x,
-                                                      const T& h, int total) {
+StepStream<ManakovState<T>, MatX<T>, T> manakov_steps(const Integrator<T>& in, const MatX<T>& A,
+                                                      const ManakovState<T>& x, const T& h, int total) {
   return {in.manakov_step, in.manakov_run, A, x, h, total};
 }
 

@@ -53,9 +53,7 @@ struct GeneralLagrangian {
     return (*this)(x);
   }
   // dl(xi) . v, the first variation of l at xi in the direction v.
-  T derivative(const VecX<T>& xi, const VecX<T>& v) const {
-    return seeded(xi, v, VecX<T>::Zero(xi.size())).b;
-  }
+  T derivative(const VecX<T>& xi, const VecX<T>& v) const { return seeded(xi, v, VecX<T>::Zero(xi.size())).b; }
   VecX<T> gradient(const VecX<T>& xi) const {  // mu = dl/dxi
     const auto n = xi.size();
     VecX<T> g(n);
@@ -82,7 +80,7 @@ struct GeneralLagrangian {
 template <class T>
 GeneralLagrangian<T> draw_lagrangian(int d) {
   GeneralLagrangian<T> l{*gen::vec<T>(d, 8, 3).as("a (l(xi) = a . xi + xi.K xi / 2 + c (xi.K xi)^2 / 8)"),
-                          MatX<T>::Zero(d, d), T(*rc::gen::inRange(0, 5).as("4 c")) / T(4)};
+                         MatX<T>::Zero(d, d), T(*rc::gen::inRange(0, 5).as("4 c")) / T(4)};
   for (int i = 0; i < d; ++i) {
     l.K(i, i) = T(*rc::gen::inRange(8, 17).as("4 K_ii")) / T(4);
     for (int j = 0; j < i; ++j) l.K(i, j) = l.K(j, i) = *gen::scalar<T>(d <= 8 ? 4 : 1, 4).as("K_ij");

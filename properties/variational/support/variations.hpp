@@ -29,9 +29,9 @@ namespace gm::var {
 
 template <class T>
 struct GaussGrid {
-  std::vector<int> ns;                                            // points of each rule
-  std::vector<T> times;                                           // all nodes, ascending
-  std::vector<std::vector<std::pair<std::size_t, T>>> rules;      // per rule: (index in times, weight)
+  std::vector<int> ns;                                        // points of each rule
+  std::vector<T> times;                                       // all nodes, ascending
+  std::vector<std::vector<std::pair<std::size_t, T>>> rules;  // per rule: (index in times, weight)
 };
 
 template <class T>
@@ -77,8 +77,14 @@ void require_vanishing_and_convergence(const std::string& what, const GaussGrid<
   const T allowed = T(k) * eps<T>() * scale;
   std::vector<T> values;
   for (std::size_t r = 0; r < g.rules.size(); ++r) values.push_back(integrate(g, r, f));
-  Series ser{"first variation: " + what, std::string("|delta S| (") + ScalarInfo<T>::name + ")", "Gauss points",
-             "|delta S|", true, true, {}, 0};
+  Series ser{"first variation: " + what,
+             std::string("|delta S| (") + ScalarInfo<T>::name + ")",
+             "Gauss points",
+             "|delta S|",
+             true,
+             true,
+             {},
+             0};
   for (std::size_t r = 0; r < values.size(); ++r) ser.points.emplace_back(g.ns[r], to_double(abs_value(values[r])));
   record_series(ser);
   std::string table;

@@ -74,7 +74,8 @@ struct LooseMidpoint {
       for (auto& i : s.integrators)
         if (i.name == "clebsch_midpoint") {
           i.clebsch_step = [solve](const Vec3<T>& I, const Vec3Pair<T>& z, const T& h) {
-            return ref::unstack3<T>(solve(ref::stack<T>(z), h, [&](const MatX<T>& Z) { return ref::clebsch_field<T>(I, Z); }));
+            return ref::unstack3<T>(
+                solve(ref::stack<T>(z), h, [&](const MatX<T>& Z) { return ref::clebsch_field<T>(I, Z); }));
           };
           i.manakov_clebsch_step = [solve](const MatX<T>& A, const MatXPair<T>& z, const T& h) {
             return ref::unstack_n<T>(

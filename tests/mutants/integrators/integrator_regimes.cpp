@@ -44,7 +44,8 @@ GM_MUTANT(principal_axis_fast_path,
             if constexpr (!is_exact_v<T>) {
               for (auto& in : s.integrators)
                 if (in.name == "implicit_midpoint")
-                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
+                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x,
+                                          const T& h) -> RigidBodyState<T> {
                     const int axis = principal_axis_of(x.Pi);
                     if (axis < 0) return ref::implicit_midpoint_step<T>(I, x, h);
                     const T omega = x.Pi(axis) / I(axis);
@@ -62,8 +63,10 @@ GM_MUTANT(symmetric_top_branch,
             if constexpr (!is_exact_v<T>) {
               for (auto& in : s.integrators)
                 if (in.name == "lie_poisson_splitting")
-                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
-                    if (I(0) != I(1) && I(1) != I(2) && I(0) != I(2)) return ref::lie_poisson_splitting_step<T>(I, x, h);
+                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x,
+                                          const T& h) -> RigidBodyState<T> {
+                    if (I(0) != I(1) && I(1) != I(2) && I(0) != I(2))
+                      return ref::lie_poisson_splitting_step<T>(I, x, h);
                     const T mean = (I(0) + I(1) + I(2)) / T(3);
                     const Vec3<T> sphere(mean, mean, mean);
                     return ref::lie_poisson_splitting_step<T>(sphere, x, h);
@@ -103,7 +106,8 @@ GM_MUTANT(midpoint_at_rest_below_1e_10, "implicit midpoint that leaves a body wi
             if constexpr (!is_exact_v<T>) {
               for (auto& in : s.integrators)
                 if (in.name == "implicit_midpoint") {
-                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
+                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x,
+                                          const T& h) -> RigidBodyState<T> {
                     if (x.Pi.cwiseAbs().maxCoeff() < T(1e-10)) return x;
                     return ref::implicit_midpoint_step<T>(I, x, h);
                   };
@@ -149,31 +153,31 @@ X iterate_to_absolute_tolerance(X x, const F& F_) {
 // slowly turning body the first change is already below eps, so the step is one iteration from
 // the explicit half step: second order still, but neither symmetric nor keeping |Pi|^2 or the
 // energy. Generic states (|Pi_i| >= 1/8) never show it; the invariant claims' scaled states do.
-GM_MUTANT(midpoint_absolute_tolerance, "implicit midpoint iterated until the change is below 4 eps (1 + |Pi|)",
-          [](auto& s) {
-            using T = scalar_of<decltype(s)>;
-            if constexpr (!is_exact_v<T>) {
-              for (auto& in : s.integrators)
-                if (in.name == "implicit_midpoint") {
-                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
-                    const T half = h / T(2);
-                    auto F = [&](const Vec3<T>& P) { return Vec3<T>(x.Pi + half * P.cross(Vec3<T>(P.cwiseQuotient(I)))); };
-                    const Vec3<T> P = iterate_to_absolute_tolerance(F(x.Pi), F);
-                    return {(T(2) * P - x.Pi).eval(), (x.O * ref::cayley3<T>(Vec3<T>(half * P.cwiseQuotient(I)))).eval()};
-                  };
-                  in.manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) -> ManakovState<T> {
-                    const T half = h / T(2);
-                    auto F = [&](const MatX<T>& P) {
-                      const MatX<T> W = ref::manakov_Omega<T>(A, P);
-                      return MatX<T>(x.M + half * (P * W - W * P));
-                    };
-                    const MatX<T> Mmid = iterate_to_absolute_tolerance(F(x.M), F);
-                    const MatX<T> W = ref::manakov_Omega<T>(A, Mmid);
-                    return {(T(2) * Mmid - x.M).eval(), (x.O * ref::cayley_half<T>((h * W).eval())).eval()};
-                  };
-                }
-            }
-          });
+GM_MUTANT(
+    midpoint_absolute_tolerance, "implicit midpoint iterated until the change is below 4 eps (1 + |Pi|)", [](auto& s) {
+      using T = scalar_of<decltype(s)>;
+      if constexpr (!is_exact_v<T>) {
+        for (auto& in : s.integrators)
+          if (in.name == "implicit_midpoint") {
+            in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) -> RigidBodyState<T> {
+              const T half = h / T(2);
+              auto F = [&](const Vec3<T>& P) { return Vec3<T>(x.Pi + half * P.cross(Vec3<T>(P.cwiseQuotient(I)))); };
+              const Vec3<T> P = iterate_to_absolute_tolerance(F(x.Pi), F);
+              return {(T(2) * P - x.Pi).eval(), (x.O * ref::cayley3<T>(Vec3<T>(half * P.cwiseQuotient(I)))).eval()};
+            };
+            in.manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) -> ManakovState<T> {
+              const T half = h / T(2);
+              auto F = [&](const MatX<T>& P) {
+                const MatX<T> W = ref::manakov_Omega<T>(A, P);
+                return MatX<T>(x.M + half * (P * W - W * P));
+              };
+              const MatX<T> Mmid = iterate_to_absolute_tolerance(F(x.M), F);
+              const MatX<T> W = ref::manakov_Omega<T>(A, Mmid);
+              return {(T(2) * Mmid - x.M).eval(), (x.O * ref::cayley_half<T>((h * W).eval())).eval()};
+            };
+          }
+      }
+    });
 
 // The time step kept in a float (a `float dt` field, a single-precision setting): h is rounded to
 // 24 bits before the step, a relative change of up to 2^-24 that the dyadic steps 1/4 and 1/N of

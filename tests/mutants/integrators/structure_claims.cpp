@@ -22,7 +22,8 @@ struct SpaceFrameAttitude {
       for (auto& i : s.integrators)
         if (i.name == "implicit_midpoint") {
           i.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
-            const RigidBodyState<T> y = ref::implicit_midpoint_step<T>(I, RigidBodyState<T>{x.Pi, Mat3<T>::Identity()}, h);
+            const RigidBodyState<T> y =
+                ref::implicit_midpoint_step<T>(I, RigidBodyState<T>{x.Pi, Mat3<T>::Identity()}, h);
             return RigidBodyState<T>{y.Pi, (y.O * x.O).eval()};
           };
           i.manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) {

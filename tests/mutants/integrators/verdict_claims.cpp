@@ -20,7 +20,8 @@ struct RaisesWhenFast {
       for (auto& i : s.integrators)
         if (i.name == "implicit_midpoint") {
           i.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x, const T& h) {
-            if (max_abs(Vec3<T>(x.Pi.cwiseQuotient(I))) >= T(1 << 20)) throw std::runtime_error("angular velocity out of range");
+            if (max_abs(Vec3<T>(x.Pi.cwiseQuotient(I))) >= T(1 << 20))
+              throw std::runtime_error("angular velocity out of range");
             return ref::implicit_midpoint_step<T>(I, x, h);
           };
           i.manakov_step = [](const MatX<T>& A, const ManakovState<T>& x, const T& h) {

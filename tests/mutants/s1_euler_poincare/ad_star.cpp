@@ -36,17 +36,16 @@ GM_MUTANT(ad_star_transposed_structure_constants, "(ad*_xi mu)_k = xi^j mu_i c^i
             };
           });
 
-GM_MUTANT(ad_star_so4_R6_sign_slip, "so(4) ad* in R^6 with mu_u x xi_v - mu_v x xi_u in the second half",
-          [](auto& s) {
-            using T = scalar_of<decltype(s)>;
-            s.ad_star_so4_R6 = [](const Vec6<T>& xi, const Vec6<T>& mu) -> Vec6<T> {
-              Vec6<T> out = ref::ad_star_so4_R6<T>(xi, mu);
-              const Vec3<T> xu = xi.template head<3>(), xv = xi.template tail<3>();
-              const Vec3<T> mu_u = mu.template head<3>(), mu_v = mu.template tail<3>();
-              out.template tail<3>() = ref::cross<T>(mu_u, xv) - ref::cross<T>(mu_v, xu);
-              return out;
-            };
-          });
+GM_MUTANT(ad_star_so4_R6_sign_slip, "so(4) ad* in R^6 with mu_u x xi_v - mu_v x xi_u in the second half", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.ad_star_so4_R6 = [](const Vec6<T>& xi, const Vec6<T>& mu) -> Vec6<T> {
+    Vec6<T> out = ref::ad_star_so4_R6<T>(xi, mu);
+    const Vec3<T> xu = xi.template head<3>(), xv = xi.template tail<3>();
+    const Vec3<T> mu_u = mu.template head<3>(), mu_v = mu.template tail<3>();
+    out.template tail<3>() = ref::cross<T>(mu_u, xv) - ref::cross<T>(mu_v, xu);
+    return out;
+  };
+});
 
 GM_MUTANT(so4_bracket_R6_sign_slip, "so(4) bracket in R^6 with u1 x v2 + u2 x v1 in the second half", [](auto& s) {
   using T = scalar_of<decltype(s)>;
@@ -99,8 +98,8 @@ GM_MUTANT(lie_vee_sl2_transposed, "lie_vee for sl(2, R) reading (m00, m10, m01) 
 // (c^0_01 = 1, c^0_10 = -1). On so(3): [e_1, [e_2, e_3]] + ... = [e_3, e_1] = e_2 != 0 in the
 // notes' numbering. The Lie-Poisson bracket (3.10) built from it is still bilinear, skew and
 // Leibniz, and fails only Jacobi (3.2).
-GM_MUTANT(ad_star_not_a_lie_algebra, "ad* from structure constants with an extra c^0_01 = 1 (skew, but no Jacobi identity)",
-          [](auto& s) {
+GM_MUTANT(ad_star_not_a_lie_algebra,
+          "ad* from structure constants with an extra c^0_01 = 1 (skew, but no Jacobi identity)", [](auto& s) {
             using T = scalar_of<decltype(s)>;
             s.ad_star = [](LieAlgebraId g, const VecX<T>& xi, const VecX<T>& mu) -> VecX<T> {
               VecX<T> out = ref::ad_star<T>(g, xi, mu);

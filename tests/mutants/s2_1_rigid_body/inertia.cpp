@@ -29,9 +29,7 @@ GM_MUTANT(inertia_tensor_missing_identity, "inertia tensor without the |X|^2 Id 
 
 GM_MUTANT(inertia_space_inverted, "I_space written O^-1 I O (the conjugation inverted)", [](auto& s) {
   using T = scalar_of<decltype(s)>;
-  s.inertia_space = [](const Mat3<T>& O, const Vec3<T>& I) -> Mat3<T> {
-    return O.transpose() * I.asDiagonal() * O;
-  };
+  s.inertia_space = [](const Mat3<T>& O, const Vec3<T>& I) -> Mat3<T> { return O.transpose() * I.asDiagonal() * O; };
 });
 
 }  // namespace mutants_inertia

@@ -39,9 +39,7 @@ GM_MUTANT(euler_2_1_sign_error, "(2.1) with (I3 - I2) in the first component", [
 
 GM_MUTANT(euler_2_1_missing_division, "(2.1) returning I dOmega/dt instead of dOmega/dt", [](auto& s) {
   using T = scalar_of<decltype(s)>;
-  s.euler_2_1 = [](const Vec3<T>& I, const Vec3<T>& W) -> Vec3<T> {
-    return ref::euler_2_1<T>(I, W).cwiseProduct(I);
-  };
+  s.euler_2_1 = [](const Vec3<T>& I, const Vec3<T>& W) -> Vec3<T> { return ref::euler_2_1<T>(I, W).cwiseProduct(I); };
 });
 
 GM_MUTANT(euler_2_2_cross_reversed, "(2.2) written I dOmega/dt = Omega x I Omega", [](auto& s) {
@@ -129,10 +127,13 @@ GM_MUTANT(casimir_without_half, "the Casimir written |Pi|^2 without the 1/2 of (
 
 // The energy of the notes' body I = diag(1, 1/2, 1/3) in place of the Casimir: conserved by that
 // body's motion, but not a Casimir (it does not commute with every function).
-GM_MUTANT(casimir_weighted, "the Casimir written (Pi1^2 + 2 Pi2^2 + 3 Pi3^2)/2 (an energy, not a Casimir)", [](auto& s) {
-  using T = scalar_of<decltype(s)>;
-  s.casimir = [](const Vec3<T>& P) -> T { return (P(0) * P(0) + T(2) * P(1) * P(1) + T(3) * P(2) * P(2)) / T(2); };
-});
+GM_MUTANT(casimir_weighted, "the Casimir written (Pi1^2 + 2 Pi2^2 + 3 Pi3^2)/2 (an energy, not a Casimir)",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            s.casimir = [](const Vec3<T>& P) -> T {
+              return (P(0) * P(0) + T(2) * P(1) * P(1) + T(3) * P(2) * P(2)) / T(2);
+            };
+          });
 
 }  // namespace mutants_so3_and_euler
 }  // namespace gm

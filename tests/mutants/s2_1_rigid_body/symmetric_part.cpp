@@ -7,16 +7,15 @@ namespace gm {
 namespace mutants_symmetric_part {
 
 // Equal to (2.15) on skew matrices, so it passes every check made with skew arguments only.
-GM_MUTANT(pairing_upper_triangle, "pairing computed as sum_{i<j} A_ij B_ij (right on skew matrices only)",
-          [](auto& s) {
-            using T = scalar_of<decltype(s)>;
-            s.pairing = [](const MatX<T>& a, const MatX<T>& b) -> T {
-              T sum(0);
-              for (Eigen::Index i = 0; i < a.rows(); ++i)
-                for (Eigen::Index j = i + 1; j < a.cols(); ++j) sum += a(i, j) * b(i, j);
-              return sum;
-            };
-          });
+GM_MUTANT(pairing_upper_triangle, "pairing computed as sum_{i<j} A_ij B_ij (right on skew matrices only)", [](auto& s) {
+  using T = scalar_of<decltype(s)>;
+  s.pairing = [](const MatX<T>& a, const MatX<T>& b) -> T {
+    T sum(0);
+    for (Eigen::Index i = 0; i < a.rows(); ++i)
+      for (Eigen::Index j = i + 1; j < a.cols(); ++j) sum += a(i, j) * b(i, j);
+    return sum;
+  };
+});
 
 GM_MUTANT(euler_matrix_anticommutator, "(2.12) with the anticommutator, dPi/dt = -(Omega_hat Pi + Pi Omega_hat)",
           [](auto& s) {

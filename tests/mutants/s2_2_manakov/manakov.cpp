@@ -24,10 +24,11 @@ GM_MUTANT(manakov_M_one_sided, "(2.34) with M = A Omega (the term Omega A forgot
 // depends on Omega: with l constant every curve is stationary, so a curve that does not solve
 // (2.34) has delta S = 0 for every variation. The forward direction still holds (delta S = 0 along
 // the solution); only the converse assertion of manakov_variational_principle catches it.
-GM_MUTANT(manakov_lagrangian_constant, "Manakov's Lagrangian returning a constant (every curve stationary)", [](auto& s) {
-  using T = scalar_of<decltype(s)>;
-  s.manakov_lagrangian = [](const MatX<T>& A, const MatX<T>&) -> T { return T(A.trace()); };
-});
+GM_MUTANT(manakov_lagrangian_constant, "Manakov's Lagrangian returning a constant (every curve stationary)",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            s.manakov_lagrangian = [](const MatX<T>& A, const MatX<T>&) -> T { return T(A.trace()); };
+          });
 
 }  // namespace mutants_manakov
 }  // namespace gm

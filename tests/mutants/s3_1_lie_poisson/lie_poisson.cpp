@@ -26,8 +26,7 @@ GM_MUTANT(lie_poisson_3_6_cyclic_index_slip, "(3.6) evaluated with Pi read as (P
           });
 
 GM_MUTANT(lie_poisson_3_6_affine_in_df,
-          "(3.6) with a term that does not involve f, {f, h} = -Pi . df x dh + Pi . dh (not linear in f)",
-          [](auto& s) {
+          "(3.6) with a term that does not involve f, {f, h} = -Pi . df x dh + Pi . dh (not linear in f)", [](auto& s) {
             using T = scalar_of<decltype(s)>;
             s.lie_poisson_3_6 = [](const Vec3<T>& P, const Vec3<T>& df, const Vec3<T>& dh) -> T {
               return ref::lie_poisson_3_6<T>(P, df, dh) + P.dot(dh);
@@ -35,8 +34,7 @@ GM_MUTANT(lie_poisson_3_6_affine_in_df,
           });
 
 GM_MUTANT(lie_poisson_3_6_with_symmetric_part,
-          "(3.6) plus a symmetric (metriplectic-like) term df . dh: bilinear and Leibniz, not skew",
-          [](auto& s) {
+          "(3.6) plus a symmetric (metriplectic-like) term df . dh: bilinear and Leibniz, not skew", [](auto& s) {
             using T = scalar_of<decltype(s)>;
             s.lie_poisson_3_6 = [](const Vec3<T>& P, const Vec3<T>& df, const Vec3<T>& dh) -> T {
               return ref::lie_poisson_3_6<T>(P, df, dh) + df.dot(dh);
@@ -72,8 +70,8 @@ GM_MUTANT(lie_poisson_2_23_affine_in_df,
             };
           });
 
-GM_MUTANT(lie_poisson_2_23_with_symmetric_part,
-          "(2.23) plus a symmetric term <df, dh>: bilinear and Leibniz, not skew", [](auto& s) {
+GM_MUTANT(lie_poisson_2_23_with_symmetric_part, "(2.23) plus a symmetric term <df, dh>: bilinear and Leibniz, not skew",
+          [](auto& s) {
             using T = scalar_of<decltype(s)>;
             s.lie_poisson_2_23 = [](const Mat3<T>& P, const Mat3<T>& df, const Mat3<T>& dh) -> T {
               return ref::lie_poisson_2_23<T>(P, df, dh) + ref::pairing3<T>(df, dh);
