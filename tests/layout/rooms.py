@@ -38,6 +38,18 @@ TOP = re.compile(r"^Top level may include:\s*(.*)$")
 SOURCE = (".cpp", ".hpp")
 
 
+def declared(readme, pattern, is_room):
+    """The rooms a README.md's line matching `pattern` names (the words `is_room` accepts: a room
+    list reads "no other room." for none), or None when it has no such line."""
+    if os.path.isfile(readme):
+        with open(readme, encoding="utf-8") as f:
+            for line in f:
+                m = pattern.match(line.strip())
+                if m:
+                    return {w for w in (w.strip().rstrip(".") for w in m.group(1).split(",")) if w and is_room(w)}
+    return None
+
+
 def read_rooms(root):
     """{room folder: set of rooms it may include}, and problems with the declarations."""
     rooms, problems = {}, []
@@ -49,15 +61,7 @@ def read_rooms(root):
             folder = f"{tree}/{name}"
             if not os.path.isdir(os.path.join(root, folder)) or name == "support":
                 continue
-            readme = os.path.join(root, folder, "README.md")
-            allowed = None
-            if os.path.isfile(readme):
-                with open(readme, encoding="utf-8") as f:
-                    for line in f:
-                        m = MAY.match(line.strip())
-                        if m:
-                            allowed = {w.strip().rstrip(".") for w in m.group(1).split(",")}
-                            allowed = {w for w in allowed if "/" in w}
+            allowed = declared(os.path.join(root, folder, "README.md"), MAY, lambda w: "/" in w)
             if allowed is None:
                 problems.append((f"{folder}/README.md", 1, "no `May include:` line: every folder of "
                                  f"{tree}/ is a room that says which rooms it may include"))
@@ -118,17 +122,6 @@ def holds_sources(folder):
     return False
 
 
-def top_line(readme):
-    if os.path.isfile(readme):
-        with open(readme, encoding="utf-8") as f:
-            for line in f:
-                m = TOP.match(line.strip())
-                if m:
-                    words = {w.strip().rstrip(".") for w in m.group(1).split(",")}
-                    return {w for w in words if w and " " not in w}
-    return None
-
-
 def read_top_rooms(root):
     """{top-level room: set of top-level rooms it may include}, and problems with the declarations."""
     tops, problems = {}, []
@@ -138,14 +131,14 @@ def read_top_rooms(root):
             continue
         if not holds_sources(folder):
             continue
-        allowed = top_line(os.path.join(folder, "README.md"))
+        allowed = declared(os.path.join(folder, "README.md"), TOP, lambda w: " " not in w)
         if allowed is None:
             problems.append((f"{name}/README.md", 1, "no `Top level may include:` line: every top-level folder "
                              "holding C++ sources is a room that says which others it may include"))
             continue
         tops[name] = allowed
     for nested in NESTED_TOPS:
-        found = top_line(os.path.join(root, nested, "README.md"))
+        found = declared(os.path.join(root, nested, "README.md"), TOP, lambda w: " " not in w)
         if found is not None:
             tops[nested] = found
         elif os.path.isdir(os.path.join(root, nested)):
