@@ -7,6 +7,7 @@
 #include "harness/isolation/isolate.hpp"
 #include "harness/remote/protocol_codec.hpp"
 #include "harness/remote/remote_subject.hpp"
+#include "harness/submissions/languages.hpp"
 
 #include <gtest/gtest.h>
 
@@ -24,6 +25,9 @@
 
 namespace gm::protocol {
 namespace {
+
+using harness::octave_server_program;
+using harness::server_command;
 
 std::shared_ptr<Connection> connect(const std::string& path) {
   std::string language, why;

@@ -5,6 +5,7 @@
 #include "harness/class/feedback_files.hpp"
 #include "harness/class/grader_machine.hpp"
 #include "harness/remote/remote_subject.hpp"
+#include "harness/submissions/languages.hpp"
 #include "harness/remote/slot_names.hpp"
 #include "harness/class/gradebook.hpp"
 #include "harness/isolation/sandbox.hpp"
@@ -133,8 +134,8 @@ std::string check_conditions(const ClassOptions& o, const std::string& extension
   }
   // The interpreter that runs a Python or Octave file: another one (GEOMECH_PYTHON set after a
   // refusal, a venv) checks it again.
-  if (extension == ".py") text += std::string("\0python\0") + protocol::python_interpreter();
-  if (extension == ".m" || extension.empty()) text += std::string("\0octave\0") + protocol::octave_interpreter();
+  if (extension == ".py") text += std::string("\0python\0") + python_interpreter();
+  if (extension == ".m" || extension.empty()) text += std::string("\0octave\0") + octave_interpreter();
   return text;
 }
 

@@ -4,6 +4,7 @@
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/sandboxed_interpreter.hpp"
 #include "harness/remote/remote_subject.hpp"
+#include "harness/submissions/languages.hpp"
 
 #include <filesystem>
 #include <unistd.h>
@@ -66,8 +67,8 @@ std::vector<std::string> grader_machine_problems(const GraderNeeds& needs) {
     return problems;  // nothing else can be tried inside it
   }
   if (!needs.cache_dir.empty()) try_cache(needs.cache_dir, problems);
-  if (needs.python) try_interpreter("python", protocol::python_interpreter(), "GEOMECH_PYTHON", problems);
-  if (needs.octave) try_interpreter("octave", protocol::octave_interpreter(), "GEOMECH_OCTAVE", problems);
+  if (needs.python) try_interpreter("python", python_interpreter(), "GEOMECH_PYTHON", problems);
+  if (needs.octave) try_interpreter("octave", octave_interpreter(), "GEOMECH_OCTAVE", problems);
   return problems;
 }
 

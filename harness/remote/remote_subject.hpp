@@ -184,21 +184,6 @@ RemoteDescription parse_hello(const json& hello);
 // each process that calls a slot starts its own.
 SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::string& name, harness::SubjectInfo& info);
 
-// How to start the server for an implementation file, from its extension (.py, .m, or a folder of
-// .m files); empty when the extension is not one of these. `why` says what is missing.
-std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why);
-
-// The Octave server with Octave's interpreter linked in (student/octave/octave_server.cpp), beside
-// this program when liboctave-dev was installed at build time; empty when it is not there, or when
-// $GEOMECH_OCTAVE_SERVER=script or $GEOMECH_OCTAVE (an octave-cli to run) asks for the script
-// server. Both answer alike; the linked one costs a half to a quarter of the time per call.
-std::string octave_server_program();
-
-// The interpreters a .py or .m file runs in: $GEOMECH_PYTHON, else the python3 first on
-// PATH (a venv or pyenv works), else /usr/bin/python3; $GEOMECH_OCTAVE, else octave-cli from PATH.
-// Absolute paths where found.
-std::string python_interpreter();
-std::string octave_interpreter();
 // `program` found on PATH (absolute), itself if it names a path, "" if not found.
 std::string on_path(const std::string& program);
 

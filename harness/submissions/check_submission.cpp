@@ -1,0 +1,292 @@
+#include "harness/submissions/check_submission.hpp"
+
+#include "harness/isolation/inert_text.hpp"
+#include "harness/isolation/isolate.hpp"
+#include "harness/isolation/private_copy.hpp"
+#include "harness/isolation/process.hpp"
+#include "harness/isolation/sandbox.hpp"
+#include "harness/isolation/sandboxed_interpreter.hpp"
+#include "harness/isolation/submission_intake.hpp"
+#include "harness/program/library_flags.hpp"
+#include "harness/program/student_registry.hpp"
+#include "harness/remote/remote_subject.hpp"
+#include "harness/remote/slot_names.hpp"
+#include "harness/submissions/languages.hpp"
+
+#include <chrono>
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <thread>
+
+namespace gm::harness {
+namespace {
+
+// The build options a replay of a C++ file's check needs to build the same program: its libraries
+// (--pkg, --cxxflags, --ldflags), " --pkg ode" and the like; "" when none.
+std::string replay_build_options(const BuildOptions& bo) {
+  std::string out;
+  for (const auto& a : library_args(bo.libraries)) out += " " + a;
+  return out;
+}
+
+// `geomech check FILE.cpp`: compile only the student's file against the prebuilt library, then
+// run its check program (which isolates every property in a child process).
+int run_student_check(const SubmissionRequest& r) {
+  const std::string& file = r.file;
+  CheckCliOptions o = r.check;
+  const BuildOptions& bo = r.build;
+  const auto t0 = std::chrono::steady_clock::now();
+  const Toolchain tc = load_toolchain(default_toolchain_path());
+  const bool narrowed_run = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" ||
+                            !o.integrator.empty() || !o.reproduce.empty() || o.definitions_only;
+  // The first look: from an empty cache the three instantiations take 11-20 s to
+  // compile. The double one alone compiles first and its program checks every slot's own
+  // definition in double, its failures printed as they come, while the 50-digit and exact ones
+  // compile; the full check follows. When the double program is up to date there is nothing to wait
+  // for, and no first look.
+  std::thread first_look;
+  if (!narrowed_run && bo.mp50 && bo.exact) {
+    BuildOptions quick = bo;
+    quick.mp50 = quick.exact = false;
+    quick.program_name = "check-double";
+    const BuildResult q = build_student(file, tc, quick);
+    if (q.ok && !q.cached) {
+      std::cerr << "geomech: compiled the double instantiation in " << std::fixed << std::setprecision(1) << q.seconds
+                << " s: a first look at every slot in double while the 50-digit and exact ones compile\n";
+      std::vector<std::string> argv{q.program,
+                                    "--definitions",
+                                    "--jobs",
+                                    "1",
+                                    "--name",
+                                    q.name,
+                                    "--source",
+                                    file,
+                                    "--build-notes",
+                                    q.notes_file,
+                                    "--reproduce-prefix",
+                                    r.front_door + " check " + shell_quote(file) + replay_build_options(bo)};
+      first_look = std::thread([argv] { run_process(ProcessSpec{argv, {}, true}); });
+    }
+  }
+  const BuildResult b = build_student(file, tc, bo);
+  if (first_look.joinable()) first_look.join();
+  for (const auto& line : b.log) std::cerr << "geomech: " << line << "\n";
+  if (!b.ok) {
+    std::cerr << "geomech check: " << file << ": " << b.message << "\n";
+    return 2;
+  }
+  std::cerr << "geomech: built " << b.name << (b.cached ? " (up to date)" : "") << " in " << std::fixed
+            << std::setprecision(1) << b.seconds << " s\n";
+  // A full check writes its report by default; a narrowed one (a replay, one property) only when asked,
+  // so that replaying a failure never replaces the full report.
+  const bool narrowed = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" || !o.integrator.empty() ||
+                        !o.reproduce.empty();
+  if (o.report_dir.empty() && !narrowed) o.report_dir = "geomech-reports/" + b.name;
+  std::vector<std::string> argv{b.program};
+  const auto args = to_args(o);
+  argv.insert(argv.end(), args.begin(), args.end());
+  argv.insert(argv.end(), {"--name", b.name, "--source", file, "--build-notes", b.notes_file, "--reproduce-prefix",
+                           r.front_door + " check " + shell_quote(file) + replay_build_options(bo)});
+  const ProcessResult pr = run_process(ProcessSpec{argv, {}, true});
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::cerr << "geomech: checked " << b.name << " in " << std::fixed << std::setprecision(1) << total << " s (build "
+            << b.seconds << " s, check " << pr.seconds << " s)\n";
+  if (!pr.started) {
+    std::cerr << "geomech check: " << pr.output << "\n";
+    return 2;
+  }
+  if (pr.signal) {
+    std::cerr << "geomech check: the check program was " << describe_signal(pr.signal) << "\n";
+    return 2;
+  }
+  return pr.exit_code;
+}
+
+// `geomech check mine.py` / `mine.m` / a folder of .m files: the implementation runs as a child
+// process speaking docs/PROTOCOL.md; the check runs here, with the remote subject.
+bool is_remote_file(const std::string& file) {
+  std::string language, why;
+  return !server_command(file, &language, &why).empty();
+}
+
+// The check of an implementation that runs as its own process (`cmd`, speaking the protocol).
+// `build_notes` is what compiling it found (C++ in untrusted mode), `how` the reproduce command's options.
+int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string>& cmd, const std::string& language,
+                       const nlohmann::json& build_notes, const std::string& how,
+                       std::chrono::steady_clock::time_point t0, const std::string& name_in = "") {
+  const std::string& file = r.file;
+  CheckCliOptions o = r.check;
+  auto conn = std::make_shared<protocol::Connection>(cmd, language);
+  SubjectInfo info;
+  info.source = file;
+  info.reproduce_prefix =
+      r.reproduce_prefix.empty() ? r.front_door + " check " + shell_quote(file) + how : r.reproduce_prefix;
+  const std::string name = !name_in.empty() ? name_in
+                           : std::filesystem::path(file).lexically_normal().stem().string().empty()
+                               ? std::filesystem::path(file).lexically_normal().parent_path().filename().string()
+                               : std::filesystem::path(file).lexically_normal().stem().string();
+  student::apply_build_notes(info, build_notes);  // what the compiler found
+  SubjectSet s;
+  try {
+    s = protocol::remote_subject(conn, name, info);
+  } catch (const std::exception& e) {
+    // What the implementation said when it could not start is a stranger's text.
+    std::cerr << "geomech check: " << file << ": " << inert_text(bounded_text(e.what())) << "\n";
+    return 2;
+  }
+  if (language == "c++") {  // functions named like a slot but not one
+    try {
+      for (const auto& advice :
+           slot_name_advice(cpp_function_names(read_stranger_file(file))))
+        info.warnings.push_back(advice);
+    } catch (const RefusedEntry&) {
+      // not read: no advice
+    }
+  }
+  std::cerr << "geomech: " << language << " implementation " << file << " started and described itself in "
+            << std::fixed << std::setprecision(2)
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+  const bool narrowed = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" || !o.integrator.empty() ||
+                        !o.reproduce.empty();
+  if (o.report_dir.empty() && !narrowed) o.report_dir = "geomech-reports/" + name;
+  const int status = run_check_cli(s, info, o);
+  std::cerr << "geomech: checked " << name << " in " << std::fixed << std::setprecision(1)
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
+  return status;
+}
+
+int run_remote_check(const SubmissionRequest& r) {
+  const std::string& file = r.file;
+  const auto t0 = std::chrono::steady_clock::now();
+  std::string language, why;
+  const auto cmd = server_command(file, &language, &why);
+  std::error_code ec;
+  if (!std::filesystem::exists(file, ec)) {
+    std::cerr << "geomech check: " << file << ": no such file\n";
+    return 2;
+  }
+  return run_protocol_check(r, cmd, language, nlohmann::json(), "", t0);
+}
+
+// Untrusted mode: the implementation runs as its own process in the sandbox, behind the
+// protocol; a C++ file is compiled (sandboxed too) into a protocol server that links the student's
+// code and nothing of the judge. Verdicts are computed here alone.
+int run_untrusted_check(const SubmissionRequest& r) {
+  const std::string& file = r.file;
+  BuildOptions bo = r.build;
+  const auto t0 = std::chrono::steady_clock::now();
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(file, ec)) {
+    std::cerr << "geomech check: " << file << ": no such file\n";
+    return 2;
+  }
+  if (const std::string why = sandbox_unavailable(); !why.empty()) {
+    std::cerr << "geomech check: " << why << "\n";
+    return 2;
+  }
+  // A submission is a stranger's: never followed through a link, never a FIFO or device opened
+  // (harness/isolation/submission_intake.hpp). A folder (Octave) is looked at whole, within the limits.
+  try {
+    const fs::path p = fs::path(file).lexically_normal();
+    const std::string parent = p.has_parent_path() ? p.parent_path().string() : ".";
+    const StrangerFolder folder(parent);
+    const auto entry = folder.look(p.filename().string());
+    if (entry.kind == EntryKind::Folder)
+      (void)read_submission(folder, p.filename().string());
+    else
+      (void)read_stranger_file(file);
+  } catch (const RefusedEntry& e) {
+    std::cerr << "geomech check: " << inert_text(e.what()) << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+    return 2;
+  }
+  SandboxSpec spec;
+  // The sandbox clears the environment: what the harness sets for the server is passed again (the
+  // reply descriptor itself, 3, is inherited through bubblewrap like 0, 1 and 2).
+  spec.env = {{"GEOMECH_SLOT_TABLE", protocol::slot_table_json()}, {"GEOMECH_REPLY_FD", "3"}};
+  std::string language, why;
+  std::vector<std::string> cmd = server_command(file, &language, &why);
+  nlohmann::json notes;
+  // What the sandbox sees of this machine besides the system: a private copy of the submission
+  // and of the suite's server, under neutral names (harness/isolation/private_copy.hpp).
+  std::optional<PrivateCopy> copy;
+  try {
+    copy.emplace();
+  } catch (const std::exception& e) {
+    std::cerr << "geomech check: " << e.what() << "\n";
+    return 2;
+  }
+  if (!cmd.empty()) {
+    // Python or Octave: the interpreter and its libraries are in /usr, or shown read-only where they
+    // are (a venv, pyenv: harness/isolation/sandboxed_interpreter.hpp); the server script and the student's
+    // file (or folder) are the last two arguments.
+    if (cmd.size() > 2) {
+      const SandboxedInterpreter si = interpreter_for_sandbox(language, cmd[0]);
+      if (!si.error.empty()) {  // the grader's set-up, not the submission
+        std::cerr << "geomech check: " << file << ": the grader's machine: " << si.error << "\n";
+        return kExitMachine;
+      }
+      cmd[0] = si.program;
+      spec.read_only.insert(spec.read_only.end(), si.read_only.begin(), si.read_only.end());
+    }
+    try {
+      cmd[cmd.size() - 2] = copy->add(cmd[cmd.size() - 2], "geomech");
+      cmd.back() = copy->add(cmd.back(), "submission");
+    } catch (const std::exception& e) {
+      std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+      return 2;
+    }
+  } else if (fs::path(file).extension() == ".cpp" || fs::path(file).extension() == ".cc") {
+    const Toolchain tc = load_toolchain(default_toolchain_path());
+    bo.server = true;
+    bo.sandbox = true;
+    const BuildResult b = build_student(file, tc, bo);
+    for (const auto& line : b.log) std::cerr << "geomech: " << line << " (sandboxed)\n";
+    if (!b.ok) {
+      std::cerr << "geomech check: " << file << ": " << b.message << "\n";
+      return b.machine_fault.empty() ? 2 : kExitMachine;
+    }
+    std::cerr << "geomech: built " << b.name << "'s protocol server" << (b.cached ? " (up to date)" : "") << " in "
+              << std::fixed << std::setprecision(1) << b.seconds << " s\n";
+    notes = b.notes;
+    language = "c++";
+    // Its libraries under a folder the grader trusts are loaded inside the sandbox (build_student vetted it).
+    for (const auto& root : trusted_library_roots()) spec.read_only.push_back(root);
+    try {
+      cmd = {copy->add(b.program, "submission", IntakeLimits{}.program_bytes)};
+    } catch (const std::exception& e) {
+      std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+      return 2;
+    }
+    for (const auto& f : tc.flags)
+      if (f.find("-fsanitize=") == 0 && f.find("address") != std::string::npos) spec.limits.memory_mb = 0;
+  } else {
+    std::cerr << "geomech check: " << file << ": untrusted mode checks .cpp, .py and .m files\n";
+    return 2;
+  }
+  spec.mounts = copy->mounts();
+  return run_protocol_check(r, sandboxed(cmd, spec), language, notes,
+                            " --untrusted" + replay_build_options(bo), t0, bo.name);
+}
+
+}  // namespace
+
+int check_submission(const SubmissionRequest& r) {
+  if (r.sandboxed) return run_untrusted_check(r);
+  if (is_remote_file(r.file)) return run_remote_check(r);
+  return run_student_check(r);
+}
+
+int check_builtin_subject(const SubjectSet& subject, const std::string& name, const SubmissionRequest& r) {
+  SubjectInfo info;
+  info.reproduce_prefix = r.front_door + " check --subject " + name;
+  return run_check_cli(subject, info, r.check);
+}
+
+}  // namespace gm::harness
