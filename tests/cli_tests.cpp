@@ -4,6 +4,8 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <string>
 #include <sys/wait.h>
 #include <vector>
@@ -57,6 +59,13 @@ TEST(cli_arguments, NonsenseIsRefusedWithTheArgumentNamed) {
   expect_bad({"check", "--subject", "no_such_subject"}, "no_such_subject");
   expect_bad({"check", "/nonexistent/student.cpp"}, "/nonexistent/student.cpp");
   expect_bad({"check", "--reproduce", "%%%not-a-reproduce-string"}, "reproduce");
+  {  // a file of no language is said to be one, not compiled as C++ (the link error it gave)
+    const std::string notes = (std::filesystem::temp_directory_path() / "geomech-cli-notes.txt").string();
+    std::ofstream(notes) << "notes\n";
+    expect_bad({"check", notes}, notes + ": not a .cpp, .cc, .py or .m file, nor a folder of .m files");
+    expect_bad({"check", "--untrusted", notes}, notes + ": not a .cpp, .cc, .py or .m file");
+    std::filesystem::remove(notes);
+  }
   expect_bad({"check-trajectory"}, "files");
   expect_bad({"check-trajectory", "/nonexistent/run.txt"}, "/nonexistent/run.txt");
   expect_bad({"check-class", "/nonexistent/folder"}, "/nonexistent/folder");

@@ -215,13 +215,18 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
   EXPECT_EQ(lay_out_submission((root / "cpp").string(), (root / "c3").string()), "erin");
   EXPECT_TRUE(fs::is_regular_file(root / "c3" / "erin" / "so3.hpp"));
   EXPECT_TRUE(fs::is_symlink(root / "c3" / "erin" / "secret.hpp"));  // copied as a link, never read through
+  // A C++ file is C++ by either of its extensions, as in `geomech check` (the language table).
+  write_file(root / "cc" / "fay.cc", "GEOMECH_STUDENT(F);\n");
+  EXPECT_EQ(lay_out_submission((root / "cc").string(), (root / "c5").string()), "fay");
+  EXPECT_TRUE(fs::is_regular_file(root / "c5" / "fay" / "fay.cc"));
   write_file(root / "two" / "a.py", "");
   write_file(root / "two" / "b.py", "");
   try {
     lay_out_submission((root / "two").string(), (root / "c4").string());
     ADD_FAILURE() << "two Python files were taken as one implementation";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("the submission holds 2 .py, 0 .cpp and 0 .m files; expected one .py file"),
+    EXPECT_NE(std::string(e.what()).find("the submission holds 0 .cpp, 0 .cc, 2 .py and 0 .m files; expected one .cpp or .cc file using "
+                                         "GEOMECH_STUDENT"),
               std::string::npos)
         << e.what();
   }

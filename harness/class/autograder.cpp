@@ -1,4 +1,5 @@
 #include "harness/class/autograder.hpp"
+#include "harness/submissions/languages.hpp"
 
 #include "core/data_path.hpp"
 #include "core/subject.hpp"
@@ -8,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -327,13 +329,10 @@ std::string lay_out_submission(const std::string& submission, const std::string&
     const auto top = entries(root);
     if (top.size() == 1 && fs::is_directory(fs::symlink_status(top[0], ec))) root = top[0];
   }
-  std::vector<fs::path> py, cpp, m;
-  for (const auto& e : entries(root)) {
-    const std::string ext = e.extension().string();
-    if (ext == ".py") py.push_back(e);
-    if (ext == ".cpp") cpp.push_back(e);
-    if (ext == ".m") m.push_back(e);
-  }
+  // The files of each language at the top of the submission (harness/submissions/languages.hpp).
+  std::map<const Language*, std::vector<fs::path>> files;
+  for (const auto& e : entries(root))
+    if (const Language* l = language_of_extension(e.extension().string())) files[l].push_back(e);
   fs::create_directories(class_dir, ec);
   auto copy_folder = [&](const fs::path& to) {
     fs::create_directories(to, ec);
@@ -343,32 +342,54 @@ std::string lay_out_submission(const std::string& submission, const std::string&
       if (ec) throw std::runtime_error("cannot copy " + e.string() + ": " + ec.message());
     }
   };
-  auto stem_of = [](const fs::path& p) { return p.stem().string(); };
-  if (py.size() == 1 && cpp.empty()) {
-    const std::string name = stem_of(py[0]);
-    fs::copy(py[0], fs::path(class_dir) / py[0].filename(), fs::copy_options::copy_symlinks, ec);
-    if (ec) throw std::runtime_error("cannot copy " + py[0].string() + ": " + ec.message());
-    return name;
-  }
-  if (cpp.size() == 1 && py.empty()) {
-    const std::string name = stem_of(cpp[0]);
-    copy_folder(fs::path(class_dir) / name);
-    return name;
-  }
-  if (m.size() == 1 && py.empty() && cpp.empty()) {
-    const std::string name = stem_of(m[0]);
-    fs::copy(m[0], fs::path(class_dir) / m[0].filename(), fs::copy_options::copy_symlinks, ec);
-    if (ec) throw std::runtime_error("cannot copy " + m[0].string() + ": " + ec.message());
-    return name;
-  }
-  if (m.size() > 1 && py.empty() && cpp.empty()) {
-    copy_folder(fs::path(class_dir) / "submission");  // an Octave folder: one function per file
-    return "submission";
+  // Function files (.m) beside a file of another language are that language's material: the one
+  // other language is the submission.
+  std::vector<const Language*> present;
+  for (const auto& [l, f] : files)
+    if (!l->folder_of_files) present.push_back(l);
+  if (present.empty())
+    for (const auto& [l, f] : files) present.push_back(l);
+  if (present.size() == 1) {
+    const Language* l = present.front();
+    const auto& mine = files[l];
+    if (mine.size() == 1) {
+      const std::string name = mine[0].stem().string();
+      if (l->files_beside) {  // a C++ file with its headers
+        copy_folder(fs::path(class_dir) / name);
+        return name;
+      }
+      fs::copy(mine[0], fs::path(class_dir) / mine[0].filename(), fs::copy_options::copy_symlinks, ec);
+      if (ec) throw std::runtime_error("cannot copy " + mine[0].string() + ": " + ec.message());
+      return name;
+    }
+    if (l->folder_of_files) {
+      copy_folder(fs::path(class_dir) / "submission");  // one function per file
+      return "submission";
+    }
   }
   std::ostringstream why;
-  why << "the submission holds " << py.size() << " .py, " << cpp.size() << " .cpp and " << m.size()
-      << " .m files; expected one .py file, one .cpp file using GEOMECH_STUDENT (with its headers beside it), or "
-         "Octave: one .m file, or a folder of function files (one function per .m file)";
+  why << "the submission holds ";
+  std::vector<std::string> counts, expected;
+  for (const auto& l : languages()) {
+    for (const auto& ext : l.extensions) {
+      std::size_t k = 0;
+      for (const auto& f : files[&l]) k += f.extension() == ext;
+      counts.push_back(std::to_string(k) + " " + ext);
+    }
+    std::string exts;
+    for (const auto& ext : l.extensions) exts += (exts.empty() ? "" : " or ") + ext;
+    std::string one = "one " + exts + " file";
+    if (!l.marker.empty()) one += " using " + l.marker.substr(0, l.marker.find('('));
+    if (l.files_beside) one += " (with its headers beside it)";
+    if (l.folder_of_files) one = l.name + ": " + one + ", or a folder of function files (one function per " +
+                                 l.extensions.front() + " file)";
+    expected.push_back(one);
+  }
+  for (std::size_t i = 0; i < counts.size(); ++i)
+    why << (i == 0 ? "" : i + 1 == counts.size() ? " and " : ", ") << counts[i];
+  why << " files; expected ";
+  for (std::size_t i = 0; i < expected.size(); ++i)
+    why << (i == 0 ? "" : i + 1 == expected.size() ? ", or " : ", ") << expected[i];
   throw std::runtime_error(why.str());
 }
 

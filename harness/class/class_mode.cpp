@@ -128,14 +128,18 @@ struct Fingerprint {
 std::string check_conditions(const ClassOptions& o, const std::string& extension) {
   std::string text = o.untrusted ? "untrusted" : "trusted";
   for (const auto& a : to_args(o.check)) text += '\0' + a;
-  if (extension == ".cpp") {
+  // An extension of no language is a folder (of function files).
+  const Language* l = language_of_extension(extension);
+  if (!l)
+    for (const auto& f : languages())
+      if (f.folder_of_files) l = &f;
+  if (l && l->route == Route::Compiled) {
     text += "\0libraries";
     for (const auto& a : library_args(o.build.libraries)) text += '\0' + a;
   }
-  // The interpreter that runs a Python or Octave file: another one (GEOMECH_PYTHON set after a
-  // refusal, a venv) checks it again.
-  if (extension == ".py") text += std::string("\0python\0") + python_interpreter();
-  if (extension == ".m" || extension.empty()) text += std::string("\0octave\0") + octave_interpreter();
+  // The interpreter that runs a served file: another one (GEOMECH_PYTHON set after a refusal, a
+  // venv) checks it again.
+  if (l && l->interpreter) text += '\0' + l->id + '\0' + l->interpreter();
   return text;
 }
 
@@ -197,7 +201,7 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
   if (!fs::is_directory(dir, ec)) throw std::runtime_error(dir + " is not a folder");
   const StrangerFolder folder(dir);
   std::vector<Implementation> out;
-  auto is_source = [](const std::string& ext) { return ext == ".cpp" || ext == ".py" || ext == ".m"; };
+  auto is_source = [](const std::string& ext) { return language_of_extension(ext) != nullptr; };
   for (const auto& e : folder.list()) {
     const fs::path p(e.name);
     const std::string ext = p.extension().string();
@@ -211,30 +215,33 @@ std::vector<Implementation> find_implementations(const std::string& dir) {
       if (!is_source(ext)) continue;
       impl.name = p.stem().string();
     } else if (e.kind == EntryKind::Folder) {
-      // A student's folder: one .cpp that registers a student, else one .py, else .m files (an
-      // Octave implementation may be a folder of function files). Looked at without following
-      // anything: a link, FIFO, socket or device in it refuses the submission, naming the entry.
+      // A student's folder: one file of a language that marks its implementation (a .cpp that
+      // registers a student), else the one file of a language without a marker (a .py), else a
+      // folder of function files (Octave). Looked at without following anything: a link, FIFO,
+      // socket or device in it refuses the submission, naming the entry.
       impl.name = e.name;
-      std::vector<std::string> sources, python;
-      bool octave = false;
+      std::vector<std::string> marked, single;
+      bool function_files = false;
       try {
         for (const auto& f : folder.list(e.name)) {
           if (f.name[0] == '.' || f.name == "__pycache__") continue;
           const std::string rel = e.name + "/" + f.name;
           if (f.kind != EntryKind::File && f.kind != EntryKind::Folder) throw RefusedEntry(rel, describe(f.kind));
           if (f.kind != EntryKind::File) continue;
-          const std::string fext = fs::path(f.name).extension().string();
-          if (fext == ".cpp" &&
-              folder.read(rel, IntakeLimits{}.file_bytes).find("GEOMECH_STUDENT(") != std::string::npos)
-            sources.push_back(rel);
-          if (fext == ".py") python.push_back(rel);
-          if (fext == ".m") octave = true;
+          const Language* l = language_of_extension(fs::path(f.name).extension().string());
+          if (!l) continue;
+          if (l->folder_of_files)
+            function_files = true;
+          else if (l->marker.empty())
+            single.push_back(rel);
+          else if (folder.read(rel, IntakeLimits{}.file_bytes).find(l->marker) != std::string::npos)
+            marked.push_back(rel);
         }
-        if (sources.size() == 1)
-          impl.origin = sources.front();
-        else if (sources.empty() && python.size() == 1)
-          impl.origin = python.front();
-        else if (sources.empty() && python.empty() && octave)
+        if (marked.size() == 1)
+          impl.origin = marked.front();
+        else if (marked.empty() && single.size() == 1)
+          impl.origin = single.front();
+        else if (marked.empty() && single.empty() && function_files)
           impl.origin = e.name;
         else
           continue;  // not a submission (a folder of shared material, an empty folder)
@@ -538,9 +545,12 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     needs.untrusted = o.untrusted;
     needs.cache_dir = o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir;
     for (const auto& impl : impls) {
-      const std::string ext = fs::path(impl.origin).extension().string();
-      needs.python = needs.python || ext == ".py";
-      needs.octave = needs.octave || ext == ".m" || (ext.empty() && impl.refused.empty());
+      if (!impl.refused.empty()) continue;
+      const Language* l = language_of_extension(fs::path(impl.origin).extension().string());
+      if (!l)  // a folder of function files
+        for (const auto& f : languages())
+          if (f.folder_of_files) l = &f;
+      if (l && l->route == Route::Served) needs.served.insert(l->id);
     }
     if (const auto problems = grader_machine_problems(needs); !problems.empty())
       throw MachineError(grader_machine_message(problems));
@@ -615,7 +625,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
       continue;
     }
     const std::string ext = fs::path(impl.origin).extension().string();
-    if (ext == ".cpp")  // headers shared on purpose; a file of the student's own name stays theirs
+    const Language* lang = language_of_extension(ext);
+    if (lang && lang->files_beside)  // headers shared on purpose; a file of the student's own name stays theirs
       for (const auto& [name, text] : shared.files)
         if (std::none_of(tree.files.begin(), tree.files.end(), [&](const auto& f) { return f.first == name; }))
           tree.files.emplace_back(name, text);
@@ -690,9 +701,8 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
       // just its parent): tools/geomech.cpp reads this.
       ::setenv("GEOMECH_DIE_WITH_PARENT", "1", 1);
       json j;
-      const std::string ext = fs::path(impl.source).extension().string();
-      std::error_code dir_ec;
-      const bool other_language = ext == ".py" || ext == ".m" || fs::is_directory(impl.source, dir_ec);
+      const Language* lang = language_of(impl.source);
+      const bool other_language = !lang || lang->route == Route::Served;
       if (o.untrusted && !other_language) {
         // C++ in untrusted mode: the protocol server is compiled here (sandboxed), so that a file
         // that does not compile is reported as such; `geomech check --untrusted` then finds it built.
@@ -728,7 +738,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
         if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
         const auto args = to_args(co);
         argv.insert(argv.end(), args.begin(), args.end());
-        if (fs::path(impl.source).extension() == ".cpp" || fs::path(impl.source).extension() == ".cc") {
+        if (lang && lang->route == Route::Compiled) {
           const auto libs = library_args(o.build.libraries);  // --pkg, --cxxflags, --ldflags
           argv.insert(argv.end(), libs.begin(), libs.end());
         }

@@ -36,25 +36,28 @@ void try_cache(const std::string& cache_dir, std::vector<std::string>& problems)
                      "`, or --cache-dir DIR in a folder every user may pass");
 }
 
-void try_interpreter(const std::string& language, const std::string& program, const std::string& variable,
-                     std::vector<std::string>& problems) {
+void try_interpreter(const Language& language, std::vector<std::string>& problems) {
+  const std::string program = language.interpreter();
   std::error_code ec;
   if (!fs::path(program).is_absolute() || !fs::exists(program, ec))
     return;  // not installed: each check says so in its own words (a missing interpreter is not a sandbox's fault)
-  const SandboxedInterpreter si = interpreter_for_sandbox(language, program);
+  const SandboxedInterpreter si = interpreter_for_sandbox(language.id, program);
   if (!si.error.empty()) {
     problems.push_back(si.error);
     return;
   }
-  if (language != "python") return;  // Octave's start is tried by its first check
+  if (language.start_probe.empty()) return;  // its start is tried by its first check (Octave)
   // Started inside the sandbox, as a check starts it.
   SandboxSpec spec;
   spec.read_only = si.read_only;
-  const ProcessResult r = run_process(ProcessSpec{sandboxed({si.program, "-c", "import sys"}, spec), {}, false}, 60);
+  std::vector<std::string> argv{si.program};
+  argv.insert(argv.end(), language.start_probe.begin(), language.start_probe.end());
+  const ProcessResult r = run_process(ProcessSpec{sandboxed(argv, spec), {}, false}, 60);
   if (!r.started || r.exit_code != 0)
-    problems.push_back("the Python interpreter " + si.program + " does not start in the sandbox (as " + who() +
-                       "): " + r.output.substr(0, 600) + ". Fix: " + variable +
-                       "=/usr/bin/python3 (the system's), or an interpreter whose folders every user may read");
+    problems.push_back("the " + language.name + " interpreter " + si.program + " does not start in the sandbox (as " +
+                       who() + "): " + r.output.substr(0, 600) + ". Fix: " + language.interpreter_variable +
+                       "=" + language.system_interpreter +
+                       " (the system's), or an interpreter whose folders every user may read");
 }
 
 }  // namespace
@@ -67,8 +70,8 @@ std::vector<std::string> grader_machine_problems(const GraderNeeds& needs) {
     return problems;  // nothing else can be tried inside it
   }
   if (!needs.cache_dir.empty()) try_cache(needs.cache_dir, problems);
-  if (needs.python) try_interpreter("python", python_interpreter(), "GEOMECH_PYTHON", problems);
-  if (needs.octave) try_interpreter("octave", octave_interpreter(), "GEOMECH_OCTAVE", problems);
+  for (const auto& l : languages())
+    if (l.route == Route::Served && needs.served.count(l.id)) try_interpreter(l, problems);
   return problems;
 }
 

@@ -5,6 +5,7 @@
 // grader's, said once with its fix; no student is checked, so none is graded for it.
 #pragma once
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -13,8 +14,7 @@ namespace gm::harness {
 struct GraderNeeds {
   bool untrusted = true;  // trusted runs in-process: nothing of the sandbox is needed
   std::string cache_dir;  // the compilers' cache (made if missing)
-  bool python = false;    // a Python submission is to be checked
-  bool octave = false;    // an Octave one
+  std::set<std::string> served;  // the served languages (harness/submissions/languages.hpp) to be checked
 };
 
 // Each problem in words: what fails, where, and the fix. Empty: the machine can check.

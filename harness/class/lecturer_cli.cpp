@@ -138,14 +138,14 @@ void add_lecturer_commands(CLI::App& app) {
       GraderNeeds needs;
       needs.untrusted = !st->trusted;
       needs.cache_dir = st->cache_dir.empty() ? load_toolchain(default_toolchain_path()).cache_dir : st->cache_dir;
-      needs.python = !st->no_python;
-      needs.octave = st->octave;
+      if (!st->no_python) needs.served.insert("python");
+      if (st->octave) needs.served.insert("octave");
       const auto problems = grader_machine_problems(needs);
       if (!problems.empty()) throw MachineError(grader_machine_message(problems));
       std::cout << "geomech self-test: this machine can check submissions"
                 << (needs.untrusted ? " sandboxed (the sandbox starts, the cache " + needs.cache_dir +
-                                          " is within its reach" + (needs.python ? ", Python starts in it" : "") +
-                                          (needs.octave ? ", Octave can be shown to it" : "") + ")"
+                                          " is within its reach" + (needs.served.count("python") ? ", Python starts in it" : "") +
+                                          (needs.served.count("octave") ? ", Octave can be shown to it" : "") + ")"
                                     : " in-process (trusted)")
                 << "\n";
       return 0;

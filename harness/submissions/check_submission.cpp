@@ -108,8 +108,8 @@ int run_student_check(const SubmissionRequest& r) {
 // `geomech check mine.py` / `mine.m` / a folder of .m files: the implementation runs as a child
 // process speaking docs/PROTOCOL.md; the check runs here, with the remote subject.
 bool is_remote_file(const std::string& file) {
-  std::string language, why;
-  return !server_command(file, &language, &why).empty();
+  const Language* l = language_of(file);
+  return l && l->route == Route::Served;
 }
 
 // The check of an implementation that runs as its own process (`cmd`, speaking the protocol).
@@ -242,7 +242,7 @@ int run_untrusted_check(const SubmissionRequest& r) {
       std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
       return 2;
     }
-  } else if (fs::path(file).extension() == ".cpp" || fs::path(file).extension() == ".cc") {
+  } else if (const Language* l = language_of(file); l && l->route == Route::Compiled) {
     const Toolchain tc = load_toolchain(default_toolchain_path());
     bo.server = true;
     bo.sandbox = true;
@@ -255,7 +255,7 @@ int run_untrusted_check(const SubmissionRequest& r) {
     std::cerr << "geomech: built " << b.name << "'s protocol server" << (b.cached ? " (up to date)" : "") << " in "
               << std::fixed << std::setprecision(1) << b.seconds << " s\n";
     notes = b.notes;
-    language = "c++";
+    language = l->id;
     // Its libraries under a folder the grader trusts are loaded inside the sandbox (build_student vetted it).
     for (const auto& root : trusted_library_roots()) spec.read_only.push_back(root);
     try {
@@ -267,7 +267,8 @@ int run_untrusted_check(const SubmissionRequest& r) {
     for (const auto& f : tc.flags)
       if (f.find("-fsanitize=") == 0 && f.find("address") != std::string::npos) spec.limits.memory_mb = 0;
   } else {
-    std::cerr << "geomech check: " << file << ": untrusted mode checks .cpp, .py and .m files\n";
+    std::cerr << "geomech check: " << file << ": not a " << extensions_in_words() << " file" << folder_in_words()
+              << "\n";
     return 2;
   }
   spec.mounts = copy->mounts();
@@ -278,6 +279,12 @@ int run_untrusted_check(const SubmissionRequest& r) {
 }  // namespace
 
 int check_submission(const SubmissionRequest& r) {
+  std::error_code ec;
+  if (!language_of(r.file) && std::filesystem::exists(r.file, ec)) {  // what no row of the table reads
+    std::cerr << "geomech check: " << r.file << ": not a " << extensions_in_words() << " file" << folder_in_words()
+              << "\n";
+    return 2;
+  }
   if (r.sandboxed) return run_untrusted_check(r);
   if (is_remote_file(r.file)) return run_remote_check(r);
   return run_student_check(r);

@@ -4,6 +4,7 @@
 #include "harness/remote/remote_subject.hpp"
 
 #include <cstdlib>
+#include <string_view>
 #include <filesystem>
 
 namespace gm::harness {
@@ -48,26 +49,114 @@ std::string octave_server_program() {
   return fs::exists(server, ec) ? server.string() : "";
 }
 
-std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why) {
-  const fs::path p(file);
+namespace {
+
+std::vector<std::string> python_server(const std::string& file) {
+  // -B: no __pycache__ written beside the student's file or in the source tree.
+  return {python_interpreter(), "-u", "-B", suite_data_path("student/python/geomech_server.py"), file};
+}
+
+std::vector<std::string> octave_server(const std::string& file) {
+  if (const std::string embedded = octave_server_program(); !embedded.empty()) return {embedded, file};
+  return {octave_interpreter(),
+          "--no-gui",
+          "--quiet",
+          "--no-init-file",
+          "--no-history",
+          suite_data_path("student/octave/geomech_server.m"),
+          file};
+}
+
+}  // namespace
+
+const std::vector<Language>& languages() {
+  static const std::vector<Language> table = [] {
+    Language cpp;
+    cpp.id = "c++";
+    cpp.name = "C++";
+    cpp.extensions = {".cpp", ".cc"};
+    cpp.route = Route::Compiled;
+    cpp.marker = "GEOMECH_STUDENT(";
+    cpp.files_beside = true;
+
+    Language python;
+    python.id = "python";
+    python.name = "Python";
+    python.extensions = {".py"};
+    python.route = Route::Served;
+    python.interpreter_variable = "GEOMECH_PYTHON";
+    python.system_interpreter = "/usr/bin/python3";
+    python.interpreter = python_interpreter;
+    python.start_probe = {"-c", "import sys"};
+    python.server = python_server;
+
+    Language octave;
+    octave.id = "octave";
+    octave.name = "Octave";
+    octave.extensions = {".m"};
+    octave.route = Route::Served;
+    octave.folder_of_files = true;
+    octave.interpreter_variable = "GEOMECH_OCTAVE";
+    octave.system_interpreter = "/usr/bin/octave-cli";
+    octave.interpreter = octave_interpreter;
+    octave.server = octave_server;  // its start is tried by its first check
+    return std::vector<Language>{cpp, python, octave};
+  }();
+  return table;
+}
+
+const Language* language_of_extension(std::string_view extension) {
+  for (const auto& l : languages())
+    for (const auto& e : l.extensions)
+      if (e == extension) return &l;
+  return nullptr;
+}
+
+const Language* language_of(const std::string& path) {
+  const fs::path p(path);
+  if (const Language* l = language_of_extension(p.extension().string())) return l;
   std::error_code ec;
-  if (p.extension() == ".py") {
-    if (language) *language = "python";
-    // -B: no __pycache__ written beside the student's file or in the source tree.
-    return {python_interpreter(), "-u", "-B", suite_data_path("student/python/geomech_server.py"), file};
+  if (fs::is_directory(p, ec) && !fs::is_empty(p, ec))
+    for (const auto& l : languages())
+      if (l.folder_of_files) return &l;
+  return nullptr;
+}
+
+const Language* language_named(std::string_view id) {
+  for (const auto& l : languages())
+    if (l.id == id) return &l;
+  return nullptr;
+}
+
+std::string extensions_in_words() {
+  std::vector<std::string> all;
+  for (const auto& l : languages()) all.insert(all.end(), l.extensions.begin(), l.extensions.end());
+  std::string out;
+  for (std::size_t i = 0; i < all.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + all[i];
+  return out;
+}
+
+std::string folder_in_words() {
+  std::string out;
+  for (const auto& l : languages())
+    if (l.folder_of_files) out += ", nor a folder of " + l.extensions.front() + " files";
+  return out;
+}
+
+std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why) {
+  const Language* l = language_of(file);
+  if (l && l->route == Route::Served) {
+    if (language) *language = l->id;
+    return l->server(file);
   }
-  if (p.extension() == ".m" || (fs::is_directory(p, ec) && !fs::is_empty(p, ec))) {
-    if (language) *language = "octave";
-    if (const std::string embedded = octave_server_program(); !embedded.empty()) return {embedded, file};
-    return {octave_interpreter(),
-            "--no-gui",
-            "--quiet",
-            "--no-init-file",
-            "--no-history",
-            suite_data_path("student/octave/geomech_server.m"),
-            file};
+  if (why) {
+    std::string served;
+    for (const auto& s : languages())
+      if (s.route == Route::Served)
+        for (const auto& e : s.extensions) served += (served.empty() ? "" : " or ") + e;
+    *why = "not a " + served + " file" + folder_in_words();
   }
-  if (why) *why = "not a .py or .m file (nor a folder of .m files)";
   return {};
 }
 
