@@ -61,10 +61,6 @@
 namespace gm {
 namespace {
 
-// The command a report prints for replaying a check, when the caller names it (--reproduce-prefix:
-// a class run gives the student's own command, "geomech check bob.py").
-std::string g_reproduce_prefix;
-
 // How the user called us, for the commands we print: the front-door script sets GEOMECH_FRONT_DOOR.
 std::string front_door() {
   if (const char* f = std::getenv("GEOMECH_FRONT_DOOR"); f && *f) return f;
@@ -331,12 +327,7 @@ int run_catalogue(bool markdown, bool check, const std::string& path) {
 int main(int argc, char** argv) {
   // A check started by a class run dies with it (harness/class/class_mode.cpp): an interrupted class
   // leaves no check running behind it, writing into the reports a resumed run is writing.
-  if (std::getenv("GEOMECH_DIE_WITH_PARENT")) {
-    const pid_t parent = ::getppid();
-    ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-    if (::getppid() != parent) return 2;
-    ::unsetenv("GEOMECH_DIE_WITH_PARENT");
-  }
+  if (!gm::harness::die_with_parent_when_asked()) return 2;
   CLI::App app{"geomech: the rigid-body lecture notes as an executable specification"};
   app.require_subcommand(1);
 
@@ -356,9 +347,15 @@ int main(int argc, char** argv) {
   check->add_option("--cache-dir", bo.cache_dir,
                     "where compiled implementations are kept (default: in the build tree)");
   check->add_option("--name", bo.name, "the implementation's name in the report (default: the file's name)");
-  check->add_option("--reproduce-prefix", gm::g_reproduce_prefix,
+  std::string reproduce_prefix;
+  check->add_option("--reproduce-prefix", reproduce_prefix,
                     "the command the report prints to replay a check (default: this one; check-class gives the "
                     "student's own, e.g. \"geomech check bob.py\")");
+  std::string outcome_file;
+  check->add_option("--outcome", outcome_file, "write how the check ended (JSON) here, for a class row")->group("");
+  check->add_option("--compile-jobs", bo.jobs, "compilers at once (default: the cores, at least 3)")
+      ->check(CLI::Range(1, 256))
+      ->group("");
   bool untrusted = false;
   check->add_flag("--untrusted", untrusted,
                   "run the implementation as its own sandboxed process behind the slot protocol (docs/UNTRUSTED.md): "
@@ -563,7 +560,9 @@ int main(int argc, char** argv) {
         r.check = co;
         r.build = bo;
         r.front_door = gm::front_door();
-        r.reproduce_prefix = gm::g_reproduce_prefix;
+        r.reproduce_prefix = reproduce_prefix;
+        r.first_look = !co.quiet;
+        r.outcome_file = outcome_file;
         return gm::harness::check_submission(r);
       }
       return gm::run_builtin_check(subject, co);

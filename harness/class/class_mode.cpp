@@ -5,6 +5,7 @@
 #include "harness/class/feedback_files.hpp"
 #include "harness/class/grader_machine.hpp"
 #include "harness/remote/remote_subject.hpp"
+#include "harness/submissions/check_submission.hpp"
 #include "harness/submissions/languages.hpp"
 #include "harness/remote/slot_names.hpp"
 #include "harness/class/gradebook.hpp"
@@ -561,10 +562,11 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   std::cerr << ", " << o.jobs << " at a time\n";
   // How one implementation's check ended, into its row's JSON: status 0 or 1 is a verdict, anything
   // else (a crash, a refusal, a bad option) is a problem shown in the summary.
-  auto record_check = [](json& j, const ProcessResult& pr, const std::string& what) {
+  // `check_seconds` is the check's own time (its outcome's), else the whole process's.
+  auto record_check = [](json& j, const ProcessResult& pr, const std::string& what, double check_seconds) {
     j["exit_code"] = pr.exit_code;
-    j["check_seconds"] = pr.seconds;
-    if (pr.exit_code == kExitMachine)  // the set-up's (tools/geomech.cpp): said with its fix
+    j["check_seconds"] = check_seconds;
+    if (pr.exit_code == kExitMachine)  // the set-up's (harness/submissions/check_submission.cpp): said with its fix
       j["machine_fault"] = pr.output.substr(0, 2000);
     else if (pr.exit_code != 0 && pr.exit_code != 1)
       j["problem"] = what + " ended with " +
@@ -601,6 +603,10 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
                                 return f.hex();
                               }()) /
                              "submissions";
+  // Where each check writes its outcome (harness/submissions/check_submission.hpp).
+  const fs::path outcomes = snapshots.parent_path() / "outcomes";
+  fs::create_directories(outcomes, ec);
+  if (ec) throw std::runtime_error("cannot create " + outcomes.string() + ": " + ec.message());
   for (std::size_t i = 0; i < impls.size(); ++i) {
     Implementation& impl = impls[i];
     if (!impl.refused.empty()) {
@@ -698,72 +704,57 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     const Implementation& impl = impls[i];
     tasks.push_back([&, impl]() {
       // A check started here dies with this run (a Ctrl-C or a killed job stops the class, not
-      // just its parent): tools/geomech.cpp reads this.
+      // just its parent): harness/isolation/process.hpp, die_with_parent_when_asked.
       ::setenv("GEOMECH_DIE_WITH_PARENT", "1", 1);
-      json j;
-      const Language* lang = language_of(impl.source);
-      const bool other_language = !lang || lang->route == Route::Served;
-      if (o.untrusted && !other_language) {
-        // C++ in untrusted mode: the protocol server is compiled here (sandboxed), so that a file
-        // that does not compile is reported as such; `geomech check --untrusted` then finds it built.
-        BuildOptions bo = o.build;
-        bo.jobs = 1;
-        bo.name = impl.name;
-        bo.server = bo.sandbox = true;
-        const BuildResult b = build_student(impl.source, tc, bo);
-        if (!b.ok && !b.machine_fault.empty()) {  // the sandbox could not start the compiler: the set-up's
-          j["built"] = true;
-          j["machine_fault"] = b.machine_fault;
-          j["build_seconds"] = b.seconds;
-          return j.dump(-1, ' ', false, json::error_handler_t::replace);
-        }
-        if (!b.ok) {
-          j["built"] = false;
-          j["build_message"] = b.message;
-          j["build_seconds"] = b.seconds;
-          return j.dump(-1, ' ', false, json::error_handler_t::replace);
-        }
-        j["build_seconds"] = b.seconds;
-      }
-      if (other_language || o.untrusted) {
-        // Python and Octave, and every language in untrusted mode: `geomech check FILE` runs the
-        // implementation as a protocol server (docs/PROTOCOL.md), sandboxed when untrusted.
-        CheckCliOptions co = o.check;
-        co.jobs = check_jobs;
-        co.quiet = true;
-        co.report_dir = (fs::path(report_dir) / impl.name).string();
-        std::vector<std::string> argv{fs::read_symlink("/proc/self/exe").string(), "check", impl.source,
-                                      "--reproduce-prefix", student_command(impl)};
-        if (o.untrusted) argv.insert(argv.end(), {"--untrusted", "--name", impl.name});
-        if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
-        const auto args = to_args(co);
-        argv.insert(argv.end(), args.begin(), args.end());
-        if (lang && lang->route == Route::Compiled) {
-          const auto libs = library_args(o.build.libraries);  // --pkg, --cxxflags, --ldflags
-          argv.insert(argv.end(), libs.begin(), libs.end());
-        }
-        j["built"] = true;
-        if (!j.contains("build_seconds")) j["build_seconds"] = 0.0;  // the sandboxed build above, if any
-        return record_check(j, run_process(ProcessSpec{argv, {}, false}), "the check");
-      }
-      BuildOptions bo = o.build;
-      bo.jobs = 1;
-      bo.name = impl.name;
-      const BuildResult b = build_student(impl.source, tc, bo);
-      j["built"] = b.ok;
-      j["build_message"] = b.message;
-      j["build_seconds"] = b.seconds;
-      if (!b.ok) return j.dump(-1, ' ', false, json::error_handler_t::replace);
+      // Every route through the one entry (harness/submissions/check_submission.hpp), as the
+      // student's own `geomech check` takes it: a C++ file built and checked (sandboxed when
+      // untrusted), a Python or Octave file behind the protocol. Its outcome says whether the file
+      // compiled and whether the set-up failed; the exit status is the verdict.
+      const fs::path outcome = outcomes / (impl.name + ".json");
+      std::error_code rm_ec;
+      fs::remove(outcome, rm_ec);
       CheckCliOptions co = o.check;
       co.jobs = check_jobs;
       co.quiet = true;
       co.report_dir = (fs::path(report_dir) / impl.name).string();
-      std::vector<std::string> argv{b.program};
+      std::vector<std::string> argv{fs::read_symlink("/proc/self/exe").string(),
+                                    "check",
+                                    impl.source,
+                                    "--reproduce-prefix",
+                                    student_command(impl),
+                                    "--name",
+                                    impl.name,
+                                    "--outcome",
+                                    outcome.string(),
+                                    "--compile-jobs",
+                                    "1"};
+      if (o.untrusted) argv.push_back("--untrusted");
+      if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
       const auto args = to_args(co);
       argv.insert(argv.end(), args.begin(), args.end());
-      argv.insert(argv.end(), {"--name", impl.name, "--source", impl.source, "--build-notes", b.notes_file,
-                               "--reproduce-prefix", student_command(impl)});
-      return record_check(j, run_process(ProcessSpec{argv, {}, false}), "the check program");
+      if (const Language* lang = language_of(impl.source); lang && lang->route == Route::Compiled) {
+        const auto libs = library_args(o.build.libraries);  // --pkg, --cxxflags, --ldflags
+        argv.insert(argv.end(), libs.begin(), libs.end());
+      }
+      const ProcessResult pr = run_process(ProcessSpec{argv, {}, false});
+      json j;
+      j["built"] = true;
+      j["build_seconds"] = 0.0;
+      if (const auto out = read_outcome(outcome.string())) {
+        j["built"] = out->built;
+        j["build_seconds"] = out->build_seconds;
+        if (!out->built) {  // the file does not compile: its row says so, with the compiler's words
+          j["build_message"] = out->build_message;
+          return j.dump(-1, ' ', false, json::error_handler_t::replace);
+        }
+        if (!out->machine_fault.empty()) {  // the set-up's, said with its fix
+          j["machine_fault"] = out->machine_fault;
+          j["check_seconds"] = out->check_seconds;
+          return j.dump(-1, ' ', false, json::error_handler_t::replace);
+        }
+        return record_check(j, pr, "the check", out->check_seconds);
+      }
+      return record_check(j, pr, "the check", pr.seconds);  // it ended before saying how (a crash, a signal)
     });
   }
   IsolationOptions io;

@@ -1,6 +1,7 @@
 #include "harness/isolation/process.hpp"
 
 #include <cerrno>
+#include <cstdlib>
 #include <chrono>
 #include <cstring>
 #include <fstream>
@@ -10,6 +11,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -169,6 +171,13 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
     if (!any && !running.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   return results;
+}
+
+bool die_with_parent_when_asked() {
+  if (!std::getenv("GEOMECH_DIE_WITH_PARENT")) return true;
+  const pid_t parent = ::getppid();
+  ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+  return ::getppid() == parent;
 }
 
 ProcessResult run_process(const ProcessSpec& spec, double timeout_seconds) {

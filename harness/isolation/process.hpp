@@ -34,6 +34,12 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
 
 ProcessResult run_process(const ProcessSpec& spec, double timeout_seconds = 0);
 
+// A program started by a class run dies with the process that started it when
+// $GEOMECH_DIE_WITH_PARENT is set (class mode sets it for each check): an interrupted or timed-out
+// class leaves no check running behind it. The variable stays set, so that what this program starts
+// (the check program a `geomech check` runs) does the same. False when the parent is already gone.
+bool die_with_parent_when_asked();
+
 // The command as a shell would need it typed (for messages and reproduce lines).
 std::string shell_quote(const std::string& s);
 std::string shell_join(const std::vector<std::string>& argv);

@@ -1,5 +1,6 @@
 #include "harness/program/student_parts.hpp"
 
+#include "harness/isolation/process.hpp"
 #include "harness/program/cli.hpp"
 #include "harness/remote/slot_names.hpp"
 
@@ -12,6 +13,7 @@
 namespace gm::student {
 
 int student_main(int argc, char** argv) {
+  if (!harness::die_with_parent_when_asked()) return 2;  // a class run's check, whose run has ended
   CLI::App app{"check a student implementation against the geomech properties"};
   harness::CheckCliOptions o;
   harness::add_check_options(app, o);

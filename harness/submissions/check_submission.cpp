@@ -11,10 +11,12 @@
 #include "harness/program/student_registry.hpp"
 #include "harness/remote/remote_subject.hpp"
 #include "harness/remote/slot_names.hpp"
+#include "harness/reports/report.hpp"
 #include "harness/submissions/languages.hpp"
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -34,12 +36,15 @@ std::string replay_build_options(const BuildOptions& bo) {
 
 // `geomech check FILE.cpp`: compile only the student's file against the prebuilt library, then
 // run its check program (which isolates every property in a child process).
-int run_student_check(const SubmissionRequest& r) {
+int run_student_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   const std::string& file = r.file;
   CheckCliOptions o = r.check;
   const BuildOptions& bo = r.build;
   const auto t0 = std::chrono::steady_clock::now();
   const Toolchain tc = load_toolchain(default_toolchain_path());
+  const std::string reproduce = r.reproduce_prefix.empty()
+                                    ? r.front_door + " check " + shell_quote(file) + replay_build_options(bo)
+                                    : r.reproduce_prefix;
   const bool narrowed_run = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" ||
                             !o.integrator.empty() || !o.reproduce.empty() || o.definitions_only;
   // The first look: from an empty cache the three instantiations take 11-20 s to
@@ -48,7 +53,7 @@ int run_student_check(const SubmissionRequest& r) {
   // compile; the full check follows. When the double program is up to date there is nothing to wait
   // for, and no first look.
   std::thread first_look;
-  if (!narrowed_run && bo.mp50 && bo.exact) {
+  if (r.first_look && !narrowed_run && bo.mp50 && bo.exact) {
     BuildOptions quick = bo;
     quick.mp50 = quick.exact = false;
     quick.program_name = "check-double";
@@ -67,15 +72,22 @@ int run_student_check(const SubmissionRequest& r) {
                                     "--build-notes",
                                     q.notes_file,
                                     "--reproduce-prefix",
-                                    r.front_door + " check " + shell_quote(file) + replay_build_options(bo)};
+                                    reproduce};
       first_look = std::thread([argv] { run_process(ProcessSpec{argv, {}, true}); });
     }
   }
   const BuildResult b = build_student(file, tc, bo);
   if (first_look.joinable()) first_look.join();
   for (const auto& line : b.log) std::cerr << "geomech: " << line << "\n";
+  out.build_seconds = b.seconds;
   if (!b.ok) {
     std::cerr << "geomech check: " << file << ": " << b.message << "\n";
+    if (!b.machine_fault.empty()) {
+      out.machine_fault = b.machine_fault;
+      return kExitMachine;
+    }
+    out.built = false;
+    out.build_message = b.message;
     return 2;
   }
   std::cerr << "geomech: built " << b.name << (b.cached ? " (up to date)" : "") << " in " << std::fixed
@@ -88,9 +100,10 @@ int run_student_check(const SubmissionRequest& r) {
   std::vector<std::string> argv{b.program};
   const auto args = to_args(o);
   argv.insert(argv.end(), args.begin(), args.end());
-  argv.insert(argv.end(), {"--name", b.name, "--source", file, "--build-notes", b.notes_file, "--reproduce-prefix",
-                           r.front_door + " check " + shell_quote(file) + replay_build_options(bo)});
+  argv.insert(argv.end(),
+              {"--name", b.name, "--source", file, "--build-notes", b.notes_file, "--reproduce-prefix", reproduce});
   const ProcessResult pr = run_process(ProcessSpec{argv, {}, true});
+  out.check_seconds = pr.seconds;
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::cerr << "geomech: checked " << b.name << " in " << std::fixed << std::setprecision(1) << total << " s (build "
             << b.seconds << " s, check " << pr.seconds << " s)\n";
@@ -116,7 +129,8 @@ bool is_remote_file(const std::string& file) {
 // `build_notes` is what compiling it found (C++ in untrusted mode), `how` the reproduce command's options.
 int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string>& cmd, const std::string& language,
                        const nlohmann::json& build_notes, const std::string& how,
-                       std::chrono::steady_clock::time_point t0, const std::string& name_in = "") {
+                       std::chrono::steady_clock::time_point t0, SubmissionOutcome& out,
+                       const std::string& name_in = "") {
   const std::string& file = r.file;
   CheckCliOptions o = r.check;
   auto conn = std::make_shared<protocol::Connection>(cmd, language);
@@ -152,13 +166,15 @@ int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string
   const bool narrowed = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" || !o.integrator.empty() ||
                         !o.reproduce.empty();
   if (o.report_dir.empty() && !narrowed) o.report_dir = "geomech-reports/" + name;
+  const auto check_start = std::chrono::steady_clock::now();
   const int status = run_check_cli(s, info, o);
+  out.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count();
   std::cerr << "geomech: checked " << name << " in " << std::fixed << std::setprecision(1)
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
   return status;
 }
 
-int run_remote_check(const SubmissionRequest& r) {
+int run_remote_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   const std::string& file = r.file;
   const auto t0 = std::chrono::steady_clock::now();
   std::string language, why;
@@ -168,13 +184,13 @@ int run_remote_check(const SubmissionRequest& r) {
     std::cerr << "geomech check: " << file << ": no such file\n";
     return 2;
   }
-  return run_protocol_check(r, cmd, language, nlohmann::json(), "", t0);
+  return run_protocol_check(r, cmd, language, nlohmann::json(), "", t0, out);
 }
 
 // Untrusted mode: the implementation runs as its own process in the sandbox, behind the
 // protocol; a C++ file is compiled (sandboxed too) into a protocol server that links the student's
 // code and nothing of the judge. Verdicts are computed here alone.
-int run_untrusted_check(const SubmissionRequest& r) {
+int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   const std::string& file = r.file;
   BuildOptions bo = r.build;
   const auto t0 = std::chrono::steady_clock::now();
@@ -230,6 +246,7 @@ int run_untrusted_check(const SubmissionRequest& r) {
       const SandboxedInterpreter si = interpreter_for_sandbox(language, cmd[0]);
       if (!si.error.empty()) {  // the grader's set-up, not the submission
         std::cerr << "geomech check: " << file << ": the grader's machine: " << si.error << "\n";
+        out.machine_fault = "the grader's machine: " + si.error;
         return kExitMachine;
       }
       cmd[0] = si.program;
@@ -248,9 +265,16 @@ int run_untrusted_check(const SubmissionRequest& r) {
     bo.sandbox = true;
     const BuildResult b = build_student(file, tc, bo);
     for (const auto& line : b.log) std::cerr << "geomech: " << line << " (sandboxed)\n";
+    out.build_seconds = b.seconds;
     if (!b.ok) {
       std::cerr << "geomech check: " << file << ": " << b.message << "\n";
-      return b.machine_fault.empty() ? 2 : kExitMachine;
+      if (!b.machine_fault.empty()) {  // the sandbox could not start the compiler: the set-up's
+        out.machine_fault = b.machine_fault;
+        return kExitMachine;
+      }
+      out.built = false;
+      out.build_message = b.message;
+      return 2;
     }
     std::cerr << "geomech: built " << b.name << "'s protocol server" << (b.cached ? " (up to date)" : "") << " in "
               << std::fixed << std::setprecision(1) << b.seconds << " s\n";
@@ -273,21 +297,53 @@ int run_untrusted_check(const SubmissionRequest& r) {
   }
   spec.mounts = copy->mounts();
   return run_protocol_check(r, sandboxed(cmd, spec), language, notes,
-                            " --untrusted" + replay_build_options(bo), t0, bo.name);
+                            " --untrusted" + replay_build_options(bo), t0, out, bo.name);
 }
 
-}  // namespace
-
-int check_submission(const SubmissionRequest& r) {
+int route(const SubmissionRequest& r, SubmissionOutcome& out) {
   std::error_code ec;
   if (!language_of(r.file) && std::filesystem::exists(r.file, ec)) {  // what no row of the table reads
     std::cerr << "geomech check: " << r.file << ": not a " << extensions_in_words() << " file" << folder_in_words()
               << "\n";
     return 2;
   }
-  if (r.sandboxed) return run_untrusted_check(r);
-  if (is_remote_file(r.file)) return run_remote_check(r);
-  return run_student_check(r);
+  if (r.sandboxed) return run_untrusted_check(r, out);
+  if (is_remote_file(r.file)) return run_remote_check(r, out);
+  return run_student_check(r, out);
+}
+
+}  // namespace
+
+int check_submission(const SubmissionRequest& r) {
+  SubmissionOutcome out;
+  out.exit_code = route(r, out);
+  if (!r.outcome_file.empty()) {
+    const nlohmann::json j{{"format", "geomech-outcome 1"},     {"exit_code", out.exit_code},
+                           {"built", out.built},                {"build_message", out.build_message},
+                           {"build_seconds", out.build_seconds}, {"machine_fault", out.machine_fault},
+                           {"check_seconds", out.check_seconds}};
+    write_file_atomically(r.outcome_file, j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace));
+  }
+  return out.exit_code;
+}
+
+std::optional<SubmissionOutcome> read_outcome(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) return std::nullopt;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(in);
+    if (j.at("format") != "geomech-outcome 1") return std::nullopt;
+    SubmissionOutcome out;
+    out.exit_code = j.at("exit_code");
+    out.built = j.at("built");
+    out.build_message = j.at("build_message");
+    out.build_seconds = j.at("build_seconds");
+    out.machine_fault = j.at("machine_fault");
+    out.check_seconds = j.at("check_seconds");
+    return out;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
 }
 
 int check_builtin_subject(const SubjectSet& subject, const std::string& name, const SubmissionRequest& r) {
