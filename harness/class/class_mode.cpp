@@ -124,16 +124,22 @@ struct Fingerprint {
   }
 };
 
+// The language of a submission by its place in the class folder: its extension, or a folder of
+// function files (an origin without one).
+const Language* language_of_origin(const std::string& origin) {
+  if (const Language* l = language_of_extension(fs::path(origin).extension().string())) return l;
+  for (const auto& f : languages())
+    if (f.folder_of_files) return &f;
+  return nullptr;
+}
+
 }  // namespace
+
 
 std::string check_conditions(const ClassOptions& o, const std::string& extension) {
   std::string text = o.untrusted ? "untrusted" : "trusted";
   for (const auto& a : to_args(o.check)) text += '\0' + a;
-  // An extension of no language is a folder (of function files).
-  const Language* l = language_of_extension(extension);
-  if (!l)
-    for (const auto& f : languages())
-      if (f.folder_of_files) l = &f;
+  const Language* l = language_of_origin("submission" + extension);  // no extension: a folder of function files
   if (l && l->route == Route::Compiled) {
     text += "\0libraries";
     for (const auto& a : library_args(o.build.libraries)) text += '\0' + a;
@@ -511,76 +517,150 @@ std::vector<Implementation> shard_of(const std::vector<Implementation>& all, int
   return out;
 }
 
-int run_class(const ClassOptions& o, const Toolchain& tc) {
-  const auto all_impls = find_implementations(o.dir);
+namespace {
+
+// The roster's students with nothing in the class folder get a row each (0, "no submission"), in
+// a run of the whole class (a shard does not know the other shards' names; merge-class adds them).
+std::vector<std::string> roster_without_submission(const ClassOptions& o, const Grades& grades,
+                                                   const std::vector<Implementation>& all_impls) {
+  std::vector<std::string> no_submission;
+  if (grades.roster && o.shard_n == 1)
+    for (const auto& [name, entry] : *grades.roster)
+      if (std::none_of(all_impls.begin(), all_impls.end(), [&](const Implementation& i) { return i.name == name; }))
+        no_submission.push_back(name);
+  return no_submission;
+}
+
+// The shard and the names to regrade, said before anything runs.
+void refuse_a_bad_request(const ClassOptions& o, const std::vector<Implementation>& all_impls) {
   if (o.shard_n < 1 || o.shard_k < 1 || o.shard_k > o.shard_n)
     throw std::runtime_error("--shard K/N needs 1 <= K <= N (got " + std::to_string(o.shard_k) + "/" +
                              std::to_string(o.shard_n) + ")");
-  for (const auto& name : o.regrade)  // a regrade names a student of the class, said before anything runs
+  for (const auto& name : o.regrade)  // a regrade names a student of the class
     if (std::none_of(all_impls.begin(), all_impls.end(), [&](const Implementation& i) { return i.name == name; })) {
       std::vector<std::string> names;
       for (const auto& i : all_impls) names.push_back(i.name);
       throw std::runtime_error("--regrade " + name + ": no implementation of that name in " + o.dir +
                                did_you_mean(name, names) + " (names are the files' stems or the folders' names)");
     }
-  auto impls = shard_of(all_impls, o.shard_k, o.shard_n);
-  const std::string report_dir = o.report_dir.empty() ? default_class_report_dir(o.dir) : o.report_dir;
-  // A bad rubric or roster is said before anything runs, and before the report folder is made (a
-  // refused rubric leaves no empty report folder behind).
-  const auto grades = load_grades(o.grades);
-  std::error_code ec;
-  fs::create_directories(report_dir, ec);
-  if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
+}
 
-  // The roster's students with nothing in the class folder get a row each (0, "no submission"), in
-  // a run of the whole class (a shard does not know the other shards' names; merge-class adds them).
-  std::vector<std::string> no_submission;
-  if (grades.roster && o.shard_n == 1)
-    for (const auto& [name, entry] : *grades.roster)
-      if (std::none_of(all_impls.begin(), all_impls.end(), [&](const Implementation& i) { return i.name == name; }))
-        no_submission.push_back(name);
-  // The grader's machine, checked once, first: a fault there is one refusal with its fix, not a
-  // grade for every student (harness/class/grader_machine.hpp).
-  {
-    GraderNeeds needs;
-    needs.untrusted = o.untrusted;
-    needs.cache_dir = o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir;
-    for (const auto& impl : impls) {
-      if (!impl.refused.empty()) continue;
-      const Language* l = language_of_extension(fs::path(impl.origin).extension().string());
-      if (!l)  // a folder of function files
-        for (const auto& f : languages())
-          if (f.folder_of_files) l = &f;
-      if (l && l->route == Route::Served) needs.served.insert(l->id);
-    }
-    if (const auto problems = grader_machine_problems(needs); !problems.empty())
-      throw MachineError(grader_machine_message(problems));
+// The grader's machine, checked once, first: a fault there is one refusal with its fix, not a
+// grade for every student (harness/class/grader_machine.hpp).
+void refuse_on_the_graders_machine(const ClassOptions& o, const Toolchain& tc, const std::vector<Implementation>& impls) {
+  GraderNeeds needs;
+  needs.untrusted = o.untrusted;
+  needs.cache_dir = o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir;
+  for (const auto& impl : impls) {
+    if (!impl.refused.empty()) continue;
+    const Language* l = language_of_origin(impl.origin);
+    if (l && l->route == Route::Served) needs.served.insert(l->id);
   }
-  std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir
-            << (o.untrusted ? " (untrusted mode: each sandboxed)" : " (trusted: in-process)");
-  if (o.shard_n > 1) std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << all_impls.size() << ")";
-  std::cerr << ", " << o.jobs << " at a time\n";
-  // How one implementation's check ended, into its row's JSON: status 0 or 1 is a verdict, anything
-  // else (a crash, a refusal, a bad option) is a problem shown in the summary.
-  // `check_seconds` is the check's own time (its outcome's), else the whole process's.
-  auto record_check = [](json& j, const ProcessResult& pr, const std::string& what, double check_seconds) {
-    j["exit_code"] = pr.exit_code;
-    j["check_seconds"] = check_seconds;
-    if (pr.exit_code == kExitMachine)  // the set-up's (harness/submissions/check_submission.cpp): said with its fix
-      j["machine_fault"] = pr.output.substr(0, 2000);
-    else if (pr.exit_code != 0 && pr.exit_code != 1)
-      j["problem"] = what + " ended with " +
-                     (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
-                     pr.output.substr(0, 2000);
-    return j.dump(-1, ' ', false, json::error_handler_t::replace);
-  };
+  if (const auto problems = grader_machine_problems(needs); !problems.empty())
+    throw MachineError(grader_machine_message(problems));
+}
+
+// How one implementation's check ended, into its row's JSON: status 0 or 1 is a verdict, anything
+// else (a crash, a refusal, a bad option) is a problem shown in the summary.
+// `check_seconds` is the check's own time (its outcome's), else the whole process's.
+std::string record_check(json& j, const ProcessResult& pr, const std::string& what, double check_seconds) {
+  j["exit_code"] = pr.exit_code;
+  j["check_seconds"] = check_seconds;
+  if (pr.exit_code == kExitMachine)  // the set-up's (harness/submissions/check_submission.cpp): said with its fix
+    j["machine_fault"] = pr.output.substr(0, 2000);
+  else if (pr.exit_code != 0 && pr.exit_code != 1)
+    j["problem"] = what + " ended with " +
+                   (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
+                   pr.output.substr(0, 2000);
+  return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
+
+// The command a student runs on their own file, as the reports print it: their file's
+// name, no folder of the lecturer's, no lecturer's option ("geomech check bob.py", "geomech check
+// dave/" for a folder of Octave files).
+std::string student_command(const Implementation& impl) {
+  const fs::path origin(impl.origin);
+  const bool octave_folder = impl.origin.find('/') == std::string::npos && origin.extension().empty();
+  return std::string("geomech check ") + shell_quote(octave_folder ? impl.origin + "/" : origin.filename().string());
+}
+
+// One implementation's check, in the task's process: every route through the one entry
+// (harness/submissions/check_submission.hpp), as the student's own `geomech check` takes it: a C++
+// file built and checked (sandboxed when untrusted), a Python or Octave file behind the protocol.
+// Its outcome says whether the file compiled and whether the set-up failed; the exit status is the
+// verdict. The row's JSON.
+std::string check_one(const Implementation& impl, const ClassOptions& o, const std::string& report_dir,
+                      const fs::path& outcomes, int check_jobs) {
+  // A check started here dies with this run (a Ctrl-C or a killed job stops the class, not
+  // just its parent): harness/isolation/process.hpp, die_with_parent_when_asked.
+  ::setenv("GEOMECH_DIE_WITH_PARENT", "1", 1);
+  const fs::path outcome = outcomes / (impl.name + ".json");
+  std::error_code rm_ec;
+  fs::remove(outcome, rm_ec);
+  CheckCliOptions co = o.check;
+  co.jobs = check_jobs;
+  co.quiet = true;
+  co.report_dir = (fs::path(report_dir) / impl.name).string();
+  std::vector<std::string> argv{fs::read_symlink("/proc/self/exe").string(),
+                                "check",
+                                impl.source,
+                                "--reproduce-prefix",
+                                student_command(impl),
+                                "--name",
+                                impl.name,
+                                "--outcome",
+                                outcome.string(),
+                                "--compile-jobs",
+                                "1"};
+  if (o.untrusted) argv.push_back("--untrusted");
+  if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
+  const auto args = to_args(co);
+  argv.insert(argv.end(), args.begin(), args.end());
+  if (const Language* lang = language_of(impl.source); lang && lang->route == Route::Compiled) {
+    const auto libs = library_args(o.build.libraries);  // --pkg, --cxxflags, --ldflags
+    argv.insert(argv.end(), libs.begin(), libs.end());
+  }
+  const ProcessResult pr = run_process(ProcessSpec{argv, {}, false});
+  json j;
+  j["built"] = true;
+  j["build_seconds"] = 0.0;
+  if (const auto out = read_outcome(outcome.string())) {
+    j["built"] = out->built;
+    j["build_seconds"] = out->build_seconds;
+    if (!out->built) {  // the file does not compile: its row says so, with the compiler's words
+      j["build_message"] = out->build_message;
+      return j.dump(-1, ' ', false, json::error_handler_t::replace);
+    }
+    if (!out->machine_fault.empty()) {  // the set-up's, said with its fix
+      j["machine_fault"] = out->machine_fault;
+      j["check_seconds"] = out->check_seconds;
+      return j.dump(-1, ' ', false, json::error_handler_t::replace);
+    }
+    return record_check(j, pr, "the check", out->check_seconds);
+  }
+  return record_check(j, pr, "the check", pr.seconds);  // it ended before saying how (a crash, a signal)
+}
+
+// What this run checks, and what it resumes: each submission's snapshot and fingerprint, and
+// the earlier complete results it keeps.
+struct ClassPlan {
+  std::vector<std::string> prints;           // each implementation's fingerprint
+  std::vector<std::optional<Row>> finished;  // the rows known before any check: refused, resumed
+  std::vector<std::size_t> to_check;         // the implementations checked in this run
+  std::size_t resumed = 0, regraded = 0, not_checked_again = 0;
+  fs::path outcomes;  // where each check writes its outcome
+};
+
+ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::string& report_dir,
+                      std::vector<Implementation>& impls) {
   // Resuming: what each check depends on, and the implementations whose complete result
   // from an earlier run (class-row.json beside the report, written once the check has ended) has
   // the same fingerprint. A check cut off by an interruption left no class-row.json: it runs again.
-  std::vector<std::string> prints(impls.size());
-  std::vector<std::optional<Row>> finished(impls.size());
-  std::vector<std::size_t> to_check;
-  std::size_t resumed = 0, regraded = 0, not_checked_again = 0;
+  ClassPlan plan;
+  plan.prints.resize(impls.size());
+  plan.finished.resize(impls.size());
+  auto& [prints, finished, to_check, resumed, regraded, not_checked_again, outcomes] = plan;
+  std::error_code ec;
   // The files the lecturer shares with every C++ submission (--shared), read once.
   SubmissionTree shared;
   for (const auto& file : o.shared) {
@@ -604,7 +684,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
                               }()) /
                              "submissions";
   // Where each check writes its outcome (harness/submissions/check_submission.hpp).
-  const fs::path outcomes = snapshots.parent_path() / "outcomes";
+  outcomes = snapshots.parent_path() / "outcomes";
   fs::create_directories(outcomes, ec);
   if (ec) throw std::runtime_error("cannot create " + outcomes.string() + ": " + ec.message());
   for (std::size_t i = 0; i < impls.size(); ++i) {
@@ -673,26 +753,67 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     fs::remove(row_file, ec);
     to_check.push_back(i);
   }
-  if (resumed > 0)
-    std::cerr << "geomech check-class: " << resumed << " of " << impls.size()
+  return plan;
+}
+
+// What the plan keeps and checks again, said before the checks start.
+void say_plan(const ClassPlan& plan, std::size_t count, const ClassOptions& o) {
+  if (plan.resumed > 0)
+    std::cerr << "geomech check-class: " << plan.resumed << " of " << count
               << " implementations are unchanged since their last complete check (source, options and suite) and are "
                  "not checked again (--fresh checks everyone)\n";
-  if (regraded > 0 || not_checked_again > 0 || o.not_checked) {
-    std::cerr << "geomech check-class: checked again on request: " << regraded << " named (--regrade), "
-              << not_checked_again << " last NOT CHECKED (--not-checked)";
-    const std::size_t others = to_check.size() - regraded - not_checked_again;
+  if (plan.regraded > 0 || plan.not_checked_again > 0 || o.not_checked) {
+    std::cerr << "geomech check-class: checked again on request: " << plan.regraded << " named (--regrade), "
+              << plan.not_checked_again << " last NOT CHECKED (--not-checked)";
+    const std::size_t others = plan.to_check.size() - plan.regraded - plan.not_checked_again;
     if (others > 0) std::cerr << "; " << others << " more changed or never checked, checked too";
     std::cerr << "\n";
   }
+}
 
-  // The command a student runs on their own file, as the reports print it: their file's
-  // name, no folder of the lecturer's, no lecturer's option ("geomech check bob.py", "geomech check
-  // dave/" for a folder of Octave files).
-  auto student_command = [](const Implementation& impl) {
-    const fs::path origin(impl.origin);
-    const bool octave_folder = impl.origin.find('/') == std::string::npos && origin.extension().empty();
-    return std::string("geomech check ") + shell_quote(octave_folder ? impl.origin + "/" : origin.filename().string());
-  };
+// What a merge needs to rebuild the summary (class-shard.json): the rows, with the class and the
+// shard they belong to.
+void write_shard(const ClassOptions& o, std::size_t implementations, const std::vector<Row>& rows,
+                 const std::vector<std::string>& no_submission, const std::string& report_dir) {
+json shard;
+shard["format"] = "geomech-class-shard 1";
+shard["class"] = o.dir;
+shard["implementations"] = implementations;
+shard["shard"] = {o.shard_k, o.shard_n};
+shard["rows"] = json::array();
+for (const auto& row : rows) shard["rows"].push_back(row_json(row));
+for (const auto& name : no_submission) shard["rows"].push_back(class_row_to_json(no_submission_row(name)));
+write_file_atomically((fs::path(report_dir) / "class-shard.json").string(), shard.dump(1));
+}
+
+}  // namespace
+
+int run_class(const ClassOptions& o, const Toolchain& tc) {
+  const auto all_impls = find_implementations(o.dir);
+  refuse_a_bad_request(o, all_impls);
+  auto impls = shard_of(all_impls, o.shard_k, o.shard_n);
+  const std::string report_dir = o.report_dir.empty() ? default_class_report_dir(o.dir) : o.report_dir;
+  // A bad rubric or roster is said before anything runs, and before the report folder is made (a
+  // refused rubric leaves no empty report folder behind).
+  const auto grades = load_grades(o.grades);
+  std::error_code ec;
+  fs::create_directories(report_dir, ec);
+  if (ec) throw std::runtime_error("cannot create " + report_dir + ": " + ec.message());
+
+  const std::vector<std::string> no_submission = roster_without_submission(o, grades, all_impls);
+  refuse_on_the_graders_machine(o, tc, impls);
+  std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir
+            << (o.untrusted ? " (untrusted mode: each sandboxed)" : " (trusted: in-process)");
+  if (o.shard_n > 1) std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << all_impls.size() << ")";
+  std::cerr << ", " << o.jobs << " at a time\n";
+  ClassPlan plan = plan_checks(o, tc, report_dir, impls);
+  say_plan(plan, impls.size(), o);
+  auto& prints = plan.prints;
+  auto& finished = plan.finished;
+  const auto& to_check = plan.to_check;
+  const std::size_t resumed = plan.resumed;
+  const fs::path& outcomes = plan.outcomes;
+
   std::vector<std::function<std::string()>> tasks;
   // The cores are shared among the checks that run at once: a class of one (a regrade, an
   // autograder's submission) or fewer students than --parallel gives each check more than one
@@ -702,60 +823,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   const int check_jobs = std::max(1, cores / at_once);
   for (std::size_t i : to_check) {
     const Implementation& impl = impls[i];
-    tasks.push_back([&, impl]() {
-      // A check started here dies with this run (a Ctrl-C or a killed job stops the class, not
-      // just its parent): harness/isolation/process.hpp, die_with_parent_when_asked.
-      ::setenv("GEOMECH_DIE_WITH_PARENT", "1", 1);
-      // Every route through the one entry (harness/submissions/check_submission.hpp), as the
-      // student's own `geomech check` takes it: a C++ file built and checked (sandboxed when
-      // untrusted), a Python or Octave file behind the protocol. Its outcome says whether the file
-      // compiled and whether the set-up failed; the exit status is the verdict.
-      const fs::path outcome = outcomes / (impl.name + ".json");
-      std::error_code rm_ec;
-      fs::remove(outcome, rm_ec);
-      CheckCliOptions co = o.check;
-      co.jobs = check_jobs;
-      co.quiet = true;
-      co.report_dir = (fs::path(report_dir) / impl.name).string();
-      std::vector<std::string> argv{fs::read_symlink("/proc/self/exe").string(),
-                                    "check",
-                                    impl.source,
-                                    "--reproduce-prefix",
-                                    student_command(impl),
-                                    "--name",
-                                    impl.name,
-                                    "--outcome",
-                                    outcome.string(),
-                                    "--compile-jobs",
-                                    "1"};
-      if (o.untrusted) argv.push_back("--untrusted");
-      if (!o.build.cache_dir.empty()) argv.insert(argv.end(), {"--cache-dir", o.build.cache_dir});
-      const auto args = to_args(co);
-      argv.insert(argv.end(), args.begin(), args.end());
-      if (const Language* lang = language_of(impl.source); lang && lang->route == Route::Compiled) {
-        const auto libs = library_args(o.build.libraries);  // --pkg, --cxxflags, --ldflags
-        argv.insert(argv.end(), libs.begin(), libs.end());
-      }
-      const ProcessResult pr = run_process(ProcessSpec{argv, {}, false});
-      json j;
-      j["built"] = true;
-      j["build_seconds"] = 0.0;
-      if (const auto out = read_outcome(outcome.string())) {
-        j["built"] = out->built;
-        j["build_seconds"] = out->build_seconds;
-        if (!out->built) {  // the file does not compile: its row says so, with the compiler's words
-          j["build_message"] = out->build_message;
-          return j.dump(-1, ' ', false, json::error_handler_t::replace);
-        }
-        if (!out->machine_fault.empty()) {  // the set-up's, said with its fix
-          j["machine_fault"] = out->machine_fault;
-          j["check_seconds"] = out->check_seconds;
-          return j.dump(-1, ' ', false, json::error_handler_t::replace);
-        }
-        return record_check(j, pr, "the check", out->check_seconds);
-      }
-      return record_check(j, pr, "the check", pr.seconds);  // it ended before saying how (a crash, a signal)
-    });
+    tasks.push_back([&, impl] { return check_one(impl, o, report_dir, outcomes, check_jobs); });
   }
   IsolationOptions io;
   io.jobs = o.jobs;
@@ -835,16 +903,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   std::vector<Row> rows;
   for (auto& r : finished) rows.push_back(*r);
 
-  // What a merge needs to rebuild the summary: the rows, with the class and the shard they belong to.
-  json shard;
-  shard["format"] = "geomech-class-shard 1";
-  shard["class"] = o.dir;
-  shard["implementations"] = all_impls.size();
-  shard["shard"] = {o.shard_k, o.shard_n};
-  shard["rows"] = json::array();
-  for (const auto& row : rows) shard["rows"].push_back(row_json(row));
-  for (const auto& name : no_submission) shard["rows"].push_back(class_row_to_json(no_submission_row(name)));
-  write_file_atomically((fs::path(report_dir) / "class-shard.json").string(), shard.dump(1));
+  write_shard(o, all_impls.size(), rows, no_submission, report_dir);
   if (o.shard_n > 1)
     std::cerr << "geomech check-class: shard " << o.shard_k << "/" << o.shard_n << " written to " << report_dir
               << "; combine the shards with `geomech merge-class OUT SHARD_DIR...`\n";
