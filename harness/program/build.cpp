@@ -7,6 +7,7 @@
 #include "harness/isolation/submission_intake.hpp"
 
 #include <chrono>
+#include <functional>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -371,105 +372,72 @@ std::string hint_for(const std::string& error, const std::string& scalar) {
   return {};
 }
 
-BuildResult build_student(const std::string& source_in, const Toolchain& tc, const BuildOptions& o) {
-  const auto start = std::chrono::steady_clock::now();
-  BuildResult r;
+namespace {
+
+// The file and the headers beside it, copied into dir/src for the sandboxed compiler: in a class,
+// the submission's snapshot holds only the student's own files and the headers the lecturer shares
+// (harness/class/class_mode.hpp); for one file, the headers of its folder. Read as a stranger's: a
+// link, FIFO or device among them is refused by name, never followed or opened; not the other
+// sources of the folder. Returns what went wrong, "" when copied.
+std::string copy_for_the_sandbox(const fs::path& source, const fs::path& dir) {
   std::error_code ec;
-  const fs::path source = fs::canonical(source_in, ec);
-  if (ec || !fs::is_regular_file(source)) {
-    r.message = "cannot read " + source_in + (ec ? ": " + ec.message() : ": not a regular file");
-    return r;
-  }
-  r.source = source.string();
-  r.name = o.name.empty() ? source.stem().string() : o.name;
-  // Absolute: the sandbox binds the folder and runs the compiler in it from its own root, where a
-  // path relative to our working folder would name nothing.
-  const fs::path dir = fs::absolute(o.cache_dir.empty() ? tc.cache_dir : o.cache_dir) /
-                       (r.name + "-" + hex(fnv1a(r.source)) + (o.sandbox ? "-sandboxed" : ""));
-  fs::create_directories(dir, ec);
-  if (ec) {
-    r.message = "cannot create the build directory " + dir.string() + ": " + ec.message();
-    return r;
-  }
-  // Sandboxed (untrusted mode): the compiler sees a copy of the one source file, the
-  // suite's headers and the prebuilt files, and writes only into `dir` (harness/isolation/sandbox.hpp).
-  fs::path compiled_source = source;
-  SandboxSpec sandbox;
-  if (o.sandbox) {
-    if (o.server && tc.server_object.empty()) {
-      r.message = "the toolchain " + tc.path + " has no server_object: rebuild the suite (`./geomech build`)";
-      return r;
-    }
-    // The file and the headers beside it: in a class, the submission's snapshot holds only the
-    // student's own files and the headers the lecturer shares (harness/class/class_mode.hpp); for one file,
-    // the headers of its folder. Read as a stranger's: a link, FIFO or device among them
-    // is refused by name, never followed or opened; not the other sources of the folder.
-    fs::create_directories(dir / "src", ec);
-    compiled_source = dir / "src" / source.filename();
-    std::vector<std::pair<std::string, std::string>> copies;
-    try {
-      const StrangerFolder beside(source.parent_path().string());
-      copies.emplace_back(source.filename().string(),
-                          beside.read(source.filename().string(), IntakeLimits{}.file_bytes));
-      std::uint64_t bytes = copies.back().second.size();
-      for (const auto& e : beside.list()) {
-        const std::string ext = fs::path(e.name).extension().string();
-        if (ext != ".hpp" && ext != ".h") continue;
-        if (e.kind != EntryKind::File) throw RefusedEntry(e.name, describe(e.kind));
-        copies.emplace_back(e.name, beside.read(e.name, IntakeLimits{}.file_bytes));
-        if ((bytes += copies.back().second.size()) > IntakeLimits{}.total_bytes)
-          throw RefusedEntry(e.name, "beyond the size of a submission: " +
-                                         std::to_string(IntakeLimits{}.total_bytes >> 20) + " MiB in all");
-      }
-    } catch (const RefusedEntry& e) {
-      r.message = "the file is not compiled: " + std::string(e.what()) + " (beside " + source.filename().string() + ")";
-      return r;
-    }
-    std::vector<fs::path> stale;
-    for (const auto& e : fs::directory_iterator(dir / "src", ec))
-      if (std::none_of(copies.begin(), copies.end(),
-                       [&](const auto& c) { return c.first == e.path().filename().string(); }))
-        stale.push_back(e.path());
-    for (const auto& p : stale) fs::remove(p, ec);  // a header no longer beside it is no longer there
-    for (const auto& [name, text] : copies) {
-      const fs::path to = dir / "src" / name;
-      std::error_code copy_ec;
-      if (read_text(to) != text) {
-        fs::remove(to, copy_ec);
-        std::ofstream out(to, std::ios::binary | std::ios::trunc);
-        out.write(text.data(), static_cast<std::streamsize>(text.size()));
-        if (!out) {
-          r.message = "cannot copy " + name + " into " + (dir / "src").string();
-          return r;
-        }
-      }
-    }
-    sandbox = compiler_sandbox(tc, dir);
-  }
-  auto run_argv = [&](const std::vector<std::string>& argv) { return o.sandbox ? sandboxed(argv, sandbox) : argv; };
-
-  // The libraries it uses (harness/program/library_flags.hpp): the command line's and the file's
-  // own `// geomech:` lines; a stranger's (sandboxed) are vetted before the compiler sees them.
-  LibraryFlags libs;
-  std::vector<std::string> trusted_roots;  // GEOMECH_LIBRARY_ROOTS
+  fs::create_directories(dir / "src", ec);
+  std::vector<std::pair<std::string, std::string>> copies;
   try {
-    trusted_roots = trusted_library_roots();
-    LibraryRequest wanted = o.libraries;
-    wanted.add(declared_in_source(read_text(compiled_source), source.filename().string()));
-    libs = resolve_library_flags(wanted, o.sandbox);
-    // The folders the grader trusts (GEOMECH_LIBRARY_ROOTS) are shown to the sandboxed compiler.
-    if (o.sandbox)
-      for (const auto& root : trusted_roots) sandbox.read_only.push_back(root);
-  } catch (const std::exception& e) {
-    r.message = e.what();
-    return r;
+    const StrangerFolder beside(source.parent_path().string());
+    copies.emplace_back(source.filename().string(), beside.read(source.filename().string(), IntakeLimits{}.file_bytes));
+    std::uint64_t bytes = copies.back().second.size();
+    for (const auto& e : beside.list()) {
+      const std::string ext = fs::path(e.name).extension().string();
+      if (ext != ".hpp" && ext != ".h") continue;
+      if (e.kind != EntryKind::File) throw RefusedEntry(e.name, describe(e.kind));
+      copies.emplace_back(e.name, beside.read(e.name, IntakeLimits{}.file_bytes));
+      if ((bytes += copies.back().second.size()) > IntakeLimits{}.total_bytes)
+        throw RefusedEntry(e.name, "beyond the size of a submission: " +
+                                       std::to_string(IntakeLimits{}.total_bytes >> 20) + " MiB in all");
+    }
+  } catch (const RefusedEntry& e) {
+    return "the file is not compiled: " + std::string(e.what()) + " (beside " + source.filename().string() + ")";
   }
-  if (o.verbose)
-    for (const auto& d : libs.dropped) r.log.push_back("left out " + d);
+  std::vector<fs::path> stale;
+  for (const auto& e : fs::directory_iterator(dir / "src", ec))
+    if (std::none_of(copies.begin(), copies.end(),
+                     [&](const auto& c) { return c.first == e.path().filename().string(); }))
+      stale.push_back(e.path());
+  for (const auto& p : stale) fs::remove(p, ec);  // a header no longer beside it is no longer there
+  for (const auto& [name, text] : copies) {
+    const fs::path to = dir / "src" / name;
+    std::error_code copy_ec;
+    if (read_text(to) != text) {
+      fs::remove(to, copy_ec);
+      std::ofstream out(to, std::ios::binary | std::ios::trunc);
+      out.write(text.data(), static_cast<std::streamsize>(text.size()));
+      if (!out) return "cannot copy " + name + " into " + (dir / "src").string();
+    }
+  }
+  return "";
+}
 
-  std::vector<std::string> pch_inputs;
-  if (!tc.precompiled_header.empty()) pch_inputs.push_back(tc.precompiled_header + ".gch");
-  auto compile_cmd = [&](int k, const std::set<std::string>& skip, bool skip_integrators) {
+// One scalar's compile (scalar k of kScalars) of the student's file, and what it learnt.
+struct ScalarState {
+  std::set<std::string> skip;
+  std::map<std::string, std::string> skip_reason;
+  bool skip_integrators = false;
+  bool done = false;
+  bool ok = false;
+  std::string unavailable;
+  std::string output;  // compiler output of the final attempt
+};
+
+// What every compile of one file shares: the toolchain, its libraries, the file as compiled and
+// the build folder.
+struct CompileSetting {
+  const Toolchain& tc;
+  const LibraryFlags& libs;
+  fs::path compiled_source;
+  fs::path dir;
+
+  std::vector<std::string> command(int k, const std::set<std::string>& skip, bool skip_integrators) const {
     const std::string scalar = kScalars[k];
     std::vector<std::string> cmd{tc.cxx};
     cmd.insert(cmd.end(), tc.flags.begin(), tc.flags.end());
@@ -499,141 +467,62 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     cmd.push_back("-o");
     cmd.push_back((dir / (scalar + ".o")).string());
     return cmd;
-  };
+  }
+};
 
-  struct State {
-    std::set<std::string> skip;
-    std::map<std::string, std::string> skip_reason;
-    bool skip_integrators = false;
-    bool done = false;
-    bool ok = false;
-    std::string unavailable;
-    std::string output;  // compiler output of the final attempt
-  };
-  State st[3];
-  json per_scalar_notes[3];
-
-  // Cached results: an up-to-date object with its notes.
+// The scalars whose object is up to date with its notes (nothing to compile for them).
+void read_cached_objects(const CompileSetting& cs, const std::vector<std::string>& pch_inputs, ScalarState st[3]) {
   for (int k = 0; k < 3; ++k) {
-    if (o.force) break;
-    const fs::path notes = dir / (std::string(kScalars[k]) + ".json");
+    const fs::path notes = cs.dir / (std::string(kScalars[k]) + ".json");
     if (!fs::exists(notes)) continue;
     try {
       const json n = json::parse(read_text(notes));
       std::set<std::string> skip = n.at("skip").get<std::set<std::string>>();
       const bool skip_int = n.at("skip_integrators").get<bool>();
-      const std::string cmd = shell_join(compile_cmd(k, skip, skip_int));
+      const std::string cmd = shell_join(cs.command(k, skip, skip_int));
       if (n.at("ok").get<bool>() &&
-          object_current(dir / (std::string(kScalars[k]) + ".o"), dir / (std::string(kScalars[k]) + ".d"),
-                         dir / (std::string(kScalars[k]) + ".cmd"), cmd, pch_inputs)) {
+          object_current(cs.dir / (std::string(kScalars[k]) + ".o"), cs.dir / (std::string(kScalars[k]) + ".d"),
+                         cs.dir / (std::string(kScalars[k]) + ".cmd"), cmd, pch_inputs)) {
         st[k].skip = skip;
         st[k].skip_reason = n.at("skip_reason").get<std::map<std::string, std::string>>();
         st[k].skip_integrators = skip_int;
         st[k].done = st[k].ok = true;
         st[k].output = n.value("warnings", "");
-        per_scalar_notes[k] = n;
       }
     } catch (const std::exception&) {
       // unreadable notes: compile again
     }
   }
-  bool compiled_anything = false;
-  // Scalars not asked for (--scalar double) are not compiled at all.
-  const bool wanted[3] = {true, o.mp50, o.exact};
-  for (int k = 1; k < 3; ++k)
-    if (!wanted[k]) {
-      st[k].done = true;
-      st[k].ok = false;
-      st[k].unavailable = std::string("not compiled for ") + kScalars[k] + " in this run (--scalar)";
-    }
+}
 
-  for (int round = 0; round < 5; ++round) {
-    if (st[0].done && !st[0].ok) break;  // the file itself does not compile: nothing else to learn
-    std::vector<int> todo;
-    for (int k = 0; k < 3; ++k)
-      if (!st[k].done) todo.push_back(k);
-    if (todo.empty()) break;
-    std::vector<ProcessSpec> specs;
-    std::vector<std::string> commands;
-    for (int k : todo) {
-      ProcessSpec p;
-      p.argv = compile_cmd(k, st[k].skip, st[k].skip_integrators);
-      commands.push_back(shell_join(p.argv));  // the cache's key: without the sandbox's wrapping
-      p.argv = run_argv(p.argv);
-      p.decisive = k == 0;  // the file does not compile: the other scalars' compiles are stopped
-      specs.push_back(p);
-      const std::string label = std::string("compiling for ") + kScalars[k] +
-                                (st[k].skip.empty() ? "" : " without " + join(st[k].skip)) +
-                                (st[k].skip_integrators ? " (integrators left out)" : "");
-      r.log.push_back(label + (o.verbose ? ": " + shell_join(p.argv) : ""));
+// What a failed mp50 or exact compile teaches: leave out the slots its messages name (or the
+// integrators) in the next round, or, when it names none left, give the scalar up.
+void learn_from_a_failed_compile(ScalarState& st, const std::string& scalar, const std::string& output) {
+  const auto failing = slots_failing_in(output);
+  bool progress = false;
+  for (const auto& [slot, msg] : failing)
+    if (!st.skip.count(slot)) {
+      st.skip.insert(slot);
+      const std::string hint = hint_for(msg, scalar);
+      st.skip_reason[slot] = "does not compile for " + scalar + ": " + msg + (hint.empty() ? "" : " (hint: " + hint + ")");
+      progress = true;
     }
-    compiled_anything = true;
-    const auto results = run_processes(specs, o.jobs, o.compile_timeout_seconds);
-    for (std::size_t i = 0; i < todo.size(); ++i) {
-      const int k = todo[i];
-      const std::string scalar = kScalars[k];
-      const ProcessResult& pr = results[i];
-      if (pr.cancelled) continue;  // stopped when double failed: nothing learnt, nothing kept
-      st[k].output = pr.output;
-      if (pr.timed_out)  // said as an error of the file, so that the summary below shows it
-        st[k].output += "\n" + source.filename().string() + ": error: the compiler was stopped after " +
-                        std::to_string(static_cast<long>(o.compile_timeout_seconds)) +
-                        " s (an #include of a device such as /dev/zero, or a template recursion without end?)\n";
-      std::ofstream(dir / (scalar + ".log"), std::ios::trunc) << shell_join(specs[i].argv) << "\n\n" << pr.output;
-      if (o.sandbox && pr.exit_code != 0) {
-        if (std::string fault = sandbox_start_fault(pr.output, dir); !fault.empty()) {
-          r.machine_fault = r.message = std::move(fault);
-          r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-          return r;
-        }
-      }
-      if (pr.started && pr.exit_code == 0) {
-        st[k].done = st[k].ok = true;
-        std::ofstream(dir / (scalar + ".cmd"), std::ios::trunc) << commands[i];
-        continue;
-      }
-      if (!pr.started) {
-        r.message = pr.output;
-        return r;
-      }
-      if (k == 0) {
-        st[k].done = true;
-        continue;
-      }
-      // mp50 or exact did not compile: leave out what the messages name, or give the scalar up.
-      const auto failing = slots_failing_in(pr.output);
-      bool progress = false;
-      for (const auto& [slot, msg] : failing)
-        if (!st[k].skip.count(slot)) {
-          st[k].skip.insert(slot);
-          const std::string hint = hint_for(msg, scalar);
-          st[k].skip_reason[slot] =
-              "does not compile for " + scalar + ": " + msg + (hint.empty() ? "" : " (hint: " + hint + ")");
-          progress = true;
-        }
-      if (!progress && !st[k].skip_integrators && integrators_failing_in(pr.output)) {
-        st[k].skip_integrators = true;
-        progress = true;
-      }
-      if (!progress) {
-        st[k].done = true;
-        const std::string err = first_error(pr.output);
-        const std::string hint = hint_for(err, scalar);
-        st[k].unavailable = "the implementation does not compile for " + scalar + ": " + err +
-                            (hint.empty() ? "" : " (hint: " + hint + ")");
-      }
-    }
+  if (!progress && !st.skip_integrators && integrators_failing_in(output)) {
+    st.skip_integrators = true;
+    progress = true;
   }
-
-  if (!st[0].ok) {
-    const std::string hint = missing_header_hint(st[0].output);
-    r.message = "the file does not compile:\n" + error_summary(st[0].output, r.source) +
-                (hint.empty() ? "" : "hint: " + hint + "\n") +
-                "the compiler's full output: " + (dir / "double.log").string();
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return r;
+  if (!progress) {
+    st.done = true;
+    const std::string err = first_error(output);
+    const std::string hint = hint_for(err, scalar);
+    st.unavailable =
+        "the implementation does not compile for " + scalar + ": " + err + (hint.empty() ? "" : " (hint: " + hint + ")");
   }
+}
 
+// The build notes (scalar_unavailable, slot_notes, warnings), and each compiled scalar's own notes
+// written beside its object for the next run's cache.
+json notes_of(const ScalarState st[3], const fs::path& dir) {
   json notes;
   notes["scalar_unavailable"] = json::object();
   notes["slot_notes"] = json::object();
@@ -658,77 +547,269 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   }
   if (st[0].output.find("warning:") != std::string::npos)
     notes["warnings"].push_back("the compiler has warnings about this file:\n" + trim_lines(st[0].output, 12));
+  return notes;
+}
 
-  // Link.
-  std::vector<std::string> link{tc.cxx};
-  link.insert(link.end(), tc.link_flags.begin(), tc.link_flags.end());
+// What a failed link says, with a hint where the output names a known cause.
+std::string link_failure(const std::string& output) {
+  std::string hint;
+  if (output.find("multiple definition of `main'") != std::string::npos)
+    hint = "\nhint: the file defines main(); guard it with #ifndef GEOMECH_STUDENT_CHECK ... #endif";
+  if (const std::string lib = dso_missing(output); !lib.empty())
+    hint = "\nhint: the program needs the library " + lib +
+           ", which no flag names (a library that a library you "
+           "use depends on, left out of its pkg-config file): add --ldflags -l" +
+           lib.substr(3, lib.find(".so") - 3) + " (or `// geomech: ldflags -l" + lib.substr(3, lib.find(".so") - 3) +
+           "` in the file)";
+  else if (output.find("undefined reference") != std::string::npos)
+    hint = "\nhint: a function is declared but never defined (or defined in another file: list every file)";
+  return "the program could not be linked:\n" + trim_lines(output, 30) + hint;
+}
+
+// A program's arguments as they are run (wrapped in the sandbox when sandboxed).
+using RunArgv = std::function<std::vector<std::string>(const std::vector<std::string>&)>;
+
+// Rounds of compiles: the scalars not done, at once; a scalar whose compile names slots (or the
+// integrators) that do not compile for it is compiled again without them. False when the build
+// cannot go on (r.message says why: the compiler did not start, or the sandbox did not).
+bool compile_rounds(const CompileSetting& cs, const BuildOptions& o, const fs::path& source, const RunArgv& run_argv,
+                    ScalarState st[3], bool& compiled_anything, BuildResult& r) {
+  for (int round = 0; round < 5; ++round) {
+    if (st[0].done && !st[0].ok) break;  // the file itself does not compile: nothing else to learn
+    std::vector<int> todo;
+    for (int k = 0; k < 3; ++k)
+      if (!st[k].done) todo.push_back(k);
+    if (todo.empty()) break;
+    std::vector<ProcessSpec> specs;
+    std::vector<std::string> commands;
+    for (int k : todo) {
+      ProcessSpec p;
+      p.argv = cs.command(k, st[k].skip, st[k].skip_integrators);
+      commands.push_back(shell_join(p.argv));  // the cache's key: without the sandbox's wrapping
+      p.argv = run_argv(p.argv);
+      p.decisive = k == 0;  // the file does not compile: the other scalars' compiles are stopped
+      specs.push_back(p);
+      const std::string label = std::string("compiling for ") + kScalars[k] +
+                                (st[k].skip.empty() ? "" : " without " + join(st[k].skip)) +
+                                (st[k].skip_integrators ? " (integrators left out)" : "");
+      r.log.push_back(label + (o.verbose ? ": " + shell_join(p.argv) : ""));
+    }
+    compiled_anything = true;
+    const auto results = run_processes(specs, o.jobs, o.compile_timeout_seconds);
+    for (std::size_t i = 0; i < todo.size(); ++i) {
+      const int k = todo[i];
+      const std::string scalar = kScalars[k];
+      const ProcessResult& pr = results[i];
+      if (pr.cancelled) continue;  // stopped when double failed: nothing learnt, nothing kept
+      st[k].output = pr.output;
+      if (pr.timed_out)  // said as an error of the file, so that the summary below shows it
+        st[k].output += "\n" + source.filename().string() + ": error: the compiler was stopped after " +
+                        std::to_string(static_cast<long>(o.compile_timeout_seconds)) +
+                        " s (an #include of a device such as /dev/zero, or a template recursion without end?)\n";
+      std::ofstream(cs.dir / (scalar + ".log"), std::ios::trunc) << shell_join(specs[i].argv) << "\n\n" << pr.output;
+      if (o.sandbox && pr.exit_code != 0) {
+        if (std::string fault = sandbox_start_fault(pr.output, cs.dir); !fault.empty()) {
+          r.machine_fault = r.message = std::move(fault);
+          return false;
+        }
+      }
+      if (pr.started && pr.exit_code == 0) {
+        st[k].done = st[k].ok = true;
+        std::ofstream(cs.dir / (scalar + ".cmd"), std::ios::trunc) << commands[i];
+        continue;
+      }
+      if (!pr.started) {
+        r.message = pr.output;
+        return false;
+      }
+      if (k == 0) {
+        st[k].done = true;
+        continue;
+      }
+      learn_from_a_failed_compile(st[k], scalar, pr.output);
+    }
+  }
+
+  return true;
+}
+
+// The link of the compiled scalars with the check program's main (or the protocol server's), the
+// harness and the properties, unless the program is up to date.
+struct Linked {
+  bool ok = false;
+  bool current = false;  // nothing to link: the program was up to date
+  fs::path program;
+  std::string message, machine_fault, log;
+};
+
+Linked link_program(const CompileSetting& cs, const BuildOptions& o, const ScalarState st[3],
+                    const std::vector<std::string>& trusted_roots, bool compiled_anything, const RunArgv& run_argv) {
+  std::vector<std::string> link{cs.tc.cxx};
+  link.insert(link.end(), cs.tc.link_flags.begin(), cs.tc.link_flags.end());
   for (int k = 0; k < 3; ++k)
-    if (st[k].ok) link.push_back((dir / (std::string(kScalars[k]) + ".o")).string());
+    if (st[k].ok) link.push_back((cs.dir / (std::string(kScalars[k]) + ".o")).string());
   // The check program links the properties (whole archive: their registrations); the protocol
   // server of untrusted mode links only the registry and the protocol from the same libraries.
-  const std::string& main_object = o.server ? tc.server_object : tc.driver_object;
+  const std::string& main_object = o.server ? cs.tc.server_object : cs.tc.driver_object;
   link.push_back(main_object);
-  link.push_back(tc.harness_library);
+  link.push_back(cs.tc.harness_library);
   if (!o.server) link.push_back("-Wl,--whole-archive");
-  link.push_back(tc.property_library);
+  link.push_back(cs.tc.property_library);
   if (!o.server) link.push_back("-Wl,--no-whole-archive");
-  for (const auto& l : tc.other_libraries) link.push_back(l);
-  link.insert(link.end(), libs.link.begin(), libs.link.end());
+  for (const auto& l : cs.tc.other_libraries) link.push_back(l);
+  link.insert(link.end(), cs.libs.link.begin(), cs.libs.link.end());
   // A shared library under a folder the grader trusts is found at run time where it was linked (the
   // suite's own run path: the loader searches only the system's folders).
   for (const auto& root : trusted_roots)
-    for (const auto& f : libs.link)
+    for (const auto& f : cs.libs.link)
       if (f.rfind("-L" + root, 0) == 0 && (f.size() == 2 + root.size() || f[2 + root.size()] == '/'))
         link.push_back("-Wl,-rpath," + f.substr(2));
   const std::string program_name = !o.program_name.empty() ? o.program_name : o.server ? "server" : "check";
-  const fs::path program = dir / program_name;
-  const fs::path link_file = dir / ("link-" + program_name + ".cmd");
+  Linked out;
+  out.program = cs.dir / program_name;
+  const fs::path& program = out.program;
+  const fs::path link_file = cs.dir / ("link-" + program_name + ".cmd");
   link.push_back("-o");
   link.push_back(program.string());
   const std::string link_cmd = shell_join(link);
-  bool link_current = fs::exists(program) && read_text(link_file) == link_cmd && !compiled_anything;
+  bool& link_current = out.current;
+  link_current = fs::exists(program) && read_text(link_file) == link_cmd && !compiled_anything;
   if (link_current) {
     const auto t = mtime(program);
-    for (const auto& in : {main_object, tc.harness_library, tc.property_library})
+    for (const auto& in : {main_object, cs.tc.harness_library, cs.tc.property_library})
       if (mtime(in) > t) link_current = false;
     for (int k = 0; k < 3; ++k)
-      if (st[k].ok && mtime(dir / (std::string(kScalars[k]) + ".o")) > t) link_current = false;
+      if (st[k].ok && mtime(cs.dir / (std::string(kScalars[k]) + ".o")) > t) link_current = false;
   }
   if (!link_current) {
-    r.log.push_back(std::string("linking") + (o.verbose ? ": " + link_cmd : ""));
+    out.log = std::string("linking") + (o.verbose ? ": " + link_cmd : "");
+    std::error_code ec;
     fs::remove(link_file, ec);
     const ProcessResult pr = run_process(ProcessSpec{run_argv(link), {}, false}, o.compile_timeout_seconds);
     if (o.sandbox && pr.exit_code != 0) {
-      if (std::string fault = sandbox_start_fault(pr.output, dir); !fault.empty()) {
-        r.machine_fault = r.message = std::move(fault);
-        return r;
+      if (std::string fault = sandbox_start_fault(pr.output, cs.dir); !fault.empty()) {
+        out.machine_fault = out.message = std::move(fault);
+        return out;
       }
     }
     if (!pr.started || pr.exit_code != 0) {
-      std::string hint;
-      if (pr.output.find("multiple definition of `main'") != std::string::npos)
-        hint = "\nhint: the file defines main(); guard it with #ifndef GEOMECH_STUDENT_CHECK ... #endif";
-      if (const std::string lib = dso_missing(pr.output); !lib.empty())
-        hint = "\nhint: the program needs the library " + lib +
-               ", which no flag names (a library that a library you "
-               "use depends on, left out of its pkg-config file): add --ldflags -l" +
-               lib.substr(3, lib.find(".so") - 3) + " (or `// geomech: ldflags -l" +
-               lib.substr(3, lib.find(".so") - 3) + "` in the file)";
-      else if (pr.output.find("undefined reference") != std::string::npos)
-        hint = "\nhint: a function is declared but never defined (or defined in another file: list every file)";
-      r.message = "the program could not be linked:\n" + trim_lines(pr.output, 30) + hint;
-      return r;
+      out.message = link_failure(pr.output);
+      return out;
     }
     std::ofstream(link_file, std::ios::trunc) << link_cmd;
   }
-  r.cached = !compiled_anything && link_current;
+  out.ok = true;
+  return out;
+}
+
+}  // namespace
+
+BuildResult build_student(const std::string& source_in, const Toolchain& tc, const BuildOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  auto seconds = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  BuildResult r;
+  std::error_code ec;
+  const fs::path source = fs::canonical(source_in, ec);
+  if (ec || !fs::is_regular_file(source)) {
+    r.message = "cannot read " + source_in + (ec ? ": " + ec.message() : ": not a regular file");
+    return r;
+  }
+  r.source = source.string();
+  r.name = o.name.empty() ? source.stem().string() : o.name;
+  // Absolute: the sandbox binds the folder and runs the compiler in it from its own root, where a
+  // path relative to our working folder would name nothing.
+  const fs::path dir = fs::absolute(o.cache_dir.empty() ? tc.cache_dir : o.cache_dir) /
+                       (r.name + "-" + hex(fnv1a(r.source)) + (o.sandbox ? "-sandboxed" : ""));
+  fs::create_directories(dir, ec);
+  if (ec) {
+    r.message = "cannot create the build directory " + dir.string() + ": " + ec.message();
+    return r;
+  }
+  // Sandboxed (untrusted mode): the compiler sees a copy of the one source file, the
+  // suite's headers and the prebuilt files, and writes only into `dir` (harness/isolation/sandbox.hpp).
+  fs::path compiled_source = source;
+  SandboxSpec sandbox;
+  if (o.sandbox) {
+    if (o.server && tc.server_object.empty()) {
+      r.message = "the toolchain " + tc.path + " has no server_object: rebuild the suite (`./geomech build`)";
+      return r;
+    }
+    if (const std::string why = copy_for_the_sandbox(source, dir); !why.empty()) {
+      r.message = why;
+      return r;
+    }
+    compiled_source = dir / "src" / source.filename();
+    sandbox = compiler_sandbox(tc, dir);
+  }
+  const RunArgv run_argv = [&](const std::vector<std::string>& argv) {
+    return o.sandbox ? sandboxed(argv, sandbox) : argv;
+  };
+
+  // The libraries it uses (harness/program/library_flags.hpp): the command line's and the file's
+  // own `// geomech:` lines; a stranger's (sandboxed) are vetted before the compiler sees them.
+  LibraryFlags libs;
+  std::vector<std::string> trusted_roots;  // GEOMECH_LIBRARY_ROOTS
+  try {
+    trusted_roots = trusted_library_roots();
+    LibraryRequest wanted = o.libraries;
+    wanted.add(declared_in_source(read_text(compiled_source), source.filename().string()));
+    libs = resolve_library_flags(wanted, o.sandbox);
+    // The folders the grader trusts (GEOMECH_LIBRARY_ROOTS) are shown to the sandboxed compiler.
+    if (o.sandbox)
+      for (const auto& root : trusted_roots) sandbox.read_only.push_back(root);
+  } catch (const std::exception& e) {
+    r.message = e.what();
+    return r;
+  }
+  if (o.verbose)
+    for (const auto& d : libs.dropped) r.log.push_back("left out " + d);
+
+  std::vector<std::string> pch_inputs;
+  if (!tc.precompiled_header.empty()) pch_inputs.push_back(tc.precompiled_header + ".gch");
+  const CompileSetting cs{tc, libs, compiled_source, dir};
+  ScalarState st[3];
+  if (!o.force) read_cached_objects(cs, pch_inputs, st);
+  // Scalars not asked for (--scalar double) are not compiled at all.
+  const bool wanted[3] = {true, o.mp50, o.exact};
+  for (int k = 1; k < 3; ++k)
+    if (!wanted[k]) {
+      st[k].done = true;
+      st[k].ok = false;
+      st[k].unavailable = std::string("not compiled for ") + kScalars[k] + " in this run (--scalar)";
+    }
+
+  bool compiled_anything = false;
+  if (!compile_rounds(cs, o, source, run_argv, st, compiled_anything, r)) {
+    r.seconds = seconds();
+    return r;
+  }
+
+  if (!st[0].ok) {
+    const std::string hint = missing_header_hint(st[0].output);
+    r.message = "the file does not compile:\n" + error_summary(st[0].output, r.source) +
+                (hint.empty() ? "" : "hint: " + hint + "\n") +
+                "the compiler's full output: " + (dir / "double.log").string();
+    r.seconds = seconds();
+    return r;
+  }
+  const json notes = notes_of(st, dir);
+
+  const Linked linked = link_program(cs, o, st, trusted_roots, compiled_anything, run_argv);
+  if (!linked.log.empty()) r.log.push_back(linked.log);
+  if (!linked.ok) {
+    r.message = linked.message;
+    r.machine_fault = linked.machine_fault;
+    return r;
+  }
+  const fs::path& program = linked.program;
+  r.cached = !compiled_anything && linked.current;
 
   r.notes = notes;
   r.notes_file = (dir / "build-notes.json").string();
   write_file_atomically(r.notes_file, notes.dump(1) + "\n");
   r.program = program.string();
   r.ok = true;
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.seconds = seconds();
   return r;
 }
 
