@@ -321,24 +321,29 @@ int run_catalogue(bool markdown, bool check, const std::string& path) {
   return 0;
 }
 
-}  // namespace
-}  // namespace gm
-
-int main(int argc, char** argv) {
-  // A check started by a class run dies with it (harness/class/class_mode.cpp): an interrupted class
-  // leaves no check running behind it, writing into the reports a resumed run is writing.
-  if (!gm::harness::die_with_parent_when_asked()) return 2;
-  CLI::App app{"geomech: the rigid-body lecture notes as an executable specification"};
-  app.require_subcommand(1);
-
-  gm::harness::CheckCliOptions co;
+// `geomech check`: anyone's implementation (a file, by its route) or a built-in subject.
+struct CheckCommand {
+  CLI::App* app = nullptr;
+  harness::CheckCliOptions co;
   std::string subject = "reference";
   std::string student_file;
-  gm::harness::BuildOptions bo;
-  // Compilers at once: the three scalars of one file compile in parallel even on two cores (the
-  // kernel interleaves them; total wall time is then about their summed CPU time / cores).
-  bo.jobs = static_cast<int>(std::max(3u, std::thread::hardware_concurrency()));
-  auto* check = app.add_subcommand(
+  harness::BuildOptions bo = [] {
+    harness::BuildOptions b;
+    // Compilers at once: the three scalars of one file compile in parallel even on two cores (the
+    // kernel interleaves them; total wall time is then about their summed CPU time / cores).
+    b.jobs = static_cast<int>(std::max(3u, std::thread::hardware_concurrency()));
+    return b;
+  }();
+  std::string reproduce_prefix;
+  std::string outcome_file;
+  bool untrusted = false;
+  harness::LibraryCli check_libs;
+};
+
+void add_check_command(CLI::App& app, CheckCommand& c) {
+  auto& [unused_app, co, subject, student_file, bo, reproduce_prefix, outcome_file, untrusted, check_libs] = c;
+  (void)unused_app;
+  auto* check = c.app = app.add_subcommand(
       "check", "check an implementation: a student's FILE.cpp, or a built-in subject (default: the reference)");
   check->add_option("file", student_file, "a C++ file using GEOMECH_STUDENT (see docs/STUDENTS.md)");
   check->add_option("--subject", subject, "built-in subject when no file is given (default: reference)");
@@ -347,31 +352,70 @@ int main(int argc, char** argv) {
   check->add_option("--cache-dir", bo.cache_dir,
                     "where compiled implementations are kept (default: in the build tree)");
   check->add_option("--name", bo.name, "the implementation's name in the report (default: the file's name)");
-  std::string reproduce_prefix;
   check->add_option("--reproduce-prefix", reproduce_prefix,
                     "the command the report prints to replay a check (default: this one; check-class gives the "
                     "student's own, e.g. \"geomech check bob.py\")");
-  std::string outcome_file;
   check->add_option("--outcome", outcome_file, "write how the check ended (JSON) here, for a class row")->group("");
   check->add_option("--compile-jobs", bo.jobs, "compilers at once (default: the cores, at least 3)")
       ->check(CLI::Range(1, 256))
       ->group("");
-  bool untrusted = false;
   check->add_flag("--untrusted", untrusted,
                   "run the implementation as its own sandboxed process behind the slot protocol (docs/UNTRUSTED.md): "
                   "it cannot touch the verdicts, the machine or other files");
-  gm::harness::add_check_options(*check, co);
-  gm::harness::LibraryCli check_libs, class_libs;
-  gm::harness::add_library_options(*check, check_libs);
+  harness::add_check_options(*check, co);
+  harness::add_library_options(*check, check_libs);
   check->footer(
       "Interpreters: a .py file runs in $GEOMECH_PYTHON, else the python3 first on PATH (a venv or pyenv works), else "
       "/usr/bin/python3; it needs mpmath for the 50-digit checks. A .m file runs in geomech-octave-server (Octave's "
       "interpreter linked in) when the octave-cli on PATH is the system's, else in $GEOMECH_OCTAVE or the octave-cli "
       "on PATH. The report names the interpreter and its version.");
 
-  gm::harness::ClassOptions class_opts;
-  class_opts.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  auto* klass =
+}
+
+int run_check_command(CheckCommand& c) {
+  auto& [check, co, subject, student_file, bo, reproduce_prefix, outcome_file, untrusted, check_libs] = c;
+    if (!student_file.empty()) {
+      if (check->count("--subject"))
+        throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
+      bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
+      bo.exact = co.scalar == "all" || co.scalar == "exact";
+      bo.libraries = check_libs.request();
+      harness::SubmissionRequest r;
+      r.file = student_file;
+      r.sandboxed = untrusted;
+      r.check = co;
+      r.build = bo;
+      r.front_door = front_door();
+      r.reproduce_prefix = reproduce_prefix;
+      r.first_look = !co.quiet;
+      r.outcome_file = outcome_file;
+      return harness::check_submission(r);
+    }
+    return run_builtin_check(subject, co);
+}
+
+// `geomech check-class` and `geomech merge-class`: a folder of submissions, and its shards combined.
+struct ClassCommands {
+  CLI::App* app = nullptr;
+  CLI::App* merge = nullptr;
+  harness::ClassOptions class_opts = [] {
+    harness::ClassOptions o;
+    o.jobs = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    return o;
+  }();
+  harness::LibraryCli class_libs;
+  bool trusted = false;
+  std::string shard;
+  std::vector<std::string> merge_dirs;
+  std::string merge_out;
+  harness::GradeOptions merge_grades;
+};
+
+void add_class_commands(CLI::App& app, ClassCommands& c) {
+  auto& [unused_app, unused_merge, class_opts, class_libs, trusted, shard, merge_dirs, merge_out, merge_grades] = c;
+  (void)unused_app;
+  (void)unused_merge;
+  auto* klass = c.app =
       app.add_subcommand("check-class", "check every implementation in a folder, in parallel, with a summary table");
   klass
       ->add_option("folder", class_opts.dir,
@@ -384,13 +428,11 @@ int main(int argc, char** argv) {
                     "seconds allowed to build and check one implementation (default 1800)");
   klass->add_option("--cache-dir", class_opts.build.cache_dir,
                     "where compiled implementations are kept (default: in the build tree)");
-  bool trusted = false;
   klass->add_flag("--trusted", trusted,
                   "check the implementations in-process, without the sandbox (faster; only for code you trust: "
                   "a submission can then forge its verdicts)");
-  gm::harness::add_check_options(*klass, class_opts.check);
-  gm::harness::add_library_options(*klass, class_libs);
-  std::string shard;
+  harness::add_check_options(*klass, class_opts.check);
+  harness::add_library_options(*klass, class_libs);
   klass->add_option("--shard", shard,
                     "K/N: check only the K-th of N deterministic shares of the folder (CI matrix, Slurm array)");
   klass->add_option("--shared", class_opts.shared,
@@ -406,7 +448,7 @@ int main(int argc, char** argv) {
   klass->add_flag("--not-checked", class_opts.not_checked,
                   "check again the implementations whose last result is NOT CHECKED (a timeout, a check that "
                   "raised); every other is resumed as usual");
-  auto add_grade_options = [](CLI::App& app, gm::harness::GradeOptions& g) {
+  auto add_grade_options = [](CLI::App& app, harness::GradeOptions& g) {
     app.add_option("--grades", g.csv, "write a gradebook CSV for Moodle or Canvas (docs/GRADEBOOK.md)");
     app.add_option("--rubric", g.rubric, "the rubric of --grades, JSON (default: partial credit per correct slot)");
     app.add_option("--roster", g.roster, "CSV: implementation name -> the identifiers the LMS matches students on");
@@ -415,20 +457,59 @@ int main(int argc, char** argv) {
                    "folder came from their download (docs/GRADEBOOK.md)");
   };
   add_grade_options(*klass, class_opts.grades);
-  std::vector<std::string> merge_dirs;
-  std::string merge_out;
-  auto* merge = app.add_subcommand("merge-class",
+  auto* merge = c.merge = app.add_subcommand("merge-class",
                                    "combine the report folders of check-class --shard K/N runs into one class report");
   merge->add_option("out", merge_out, "the folder for the combined report")->required();
   merge->add_option("shards", merge_dirs, "the shards' report folders")->required();
-  gm::harness::GradeOptions merge_grades;
   add_grade_options(*merge, merge_grades);
 
-  gm::harness::TrajectoryCheckOptions tro;
+}
+
+int run_class_command(ClassCommands& c, int argc, char** argv) {
+  auto& [klass, merge, class_opts, class_libs, trusted, shard, merge_dirs, merge_out, merge_grades] = c;
+  if (*merge) return harness::merge_class(merge_dirs, merge_out, merge_grades);
+    if (!shard.empty()) {
+      const auto slash = shard.find('/');
+      try {
+        if (slash == std::string::npos) throw std::invalid_argument("no /");
+        class_opts.shard_k = std::stoi(shard.substr(0, slash));
+        class_opts.shard_n = std::stoi(shard.substr(slash + 1));
+      } catch (const std::exception&) {
+        throw CLI::ValidationError("--shard", "'" + shard + "' is not K/N (for example 2/8)");
+      }
+      if (class_opts.shard_n < 1 || class_opts.shard_k < 1 || class_opts.shard_k > class_opts.shard_n)
+        throw CLI::ValidationError("--shard", "'" + shard + "' needs 1 <= K <= N");
+    }
+    if (class_opts.check.report_dir.size()) class_opts.report_dir = class_opts.check.report_dir;
+    class_opts.check.report_dir.clear();
+    class_opts.front_door = front_door();
+    {  // the command that resumes this run (said on Ctrl-C): this one, without --fresh
+      std::vector<std::string> again{front_door()};
+      for (int a = 1; a < argc; ++a)
+        if (std::string(argv[a]) != "--fresh") again.push_back(argv[a]);
+      class_opts.command = harness::shell_join(again);
+    }
+    class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
+    class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
+    class_opts.untrusted = !trusted;
+    class_opts.build.libraries = class_libs.request();
+    return harness::run_class(class_opts, harness::load_toolchain(harness::default_toolchain_path()));
+}
+
+// `geomech check-trajectory`: trajectory files written by programs in any language.
+struct TrajectoryCommand {
+  CLI::App* app = nullptr;
+  harness::TrajectoryCheckOptions tro;
   std::vector<std::string> trajectory_files, tr_inertia, tr_preserves;
   std::string tr_system, tr_step, tr_report, tr_junit;
   bool tr_quiet = false;
-  auto* traj = app.add_subcommand("check-trajectory",
+};
+
+void add_trajectory_command(CLI::App& app, TrajectoryCommand& c) {
+  auto& [unused_app, tro, trajectory_files, tr_inertia, tr_preserves, tr_system, tr_step, tr_report, tr_junit,
+         tr_quiet] = c;
+  (void)unused_app;
+  auto* traj = c.app = app.add_subcommand("check-trajectory",
                                   "check trajectory files from any language (format: docs/TRAJECTORY_FORMAT.md)");
   traj->add_option("files", trajectory_files,
                    "trajectory files; several runs of one motion at different steps give the order")
@@ -452,28 +533,76 @@ int main(int argc, char** argv) {
   traj->add_flag(
       "--allow-nonphysical", tro.params.allow_nonphysical,
       "accept moments of inertia that violate the triangle inequality (no body has them; the notes' examples do)");
+}
 
-  auto* list = app.add_subcommand("list", "list the registered properties");
-  auto* slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
+int run_trajectory_command(TrajectoryCommand& c) {
+  auto& [traj, tro, trajectory_files, tr_inertia, tr_preserves, tr_system, tr_step, tr_report, tr_junit, tr_quiet] =
+      c;
+    if (!tr_system.empty()) tro.params.system = tr_system;
+    if (!tr_inertia.empty())
+      tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
+    if (!tr_step.empty()) tro.params.step = tr_step;
+    tro.preserves.insert(tr_preserves.begin(), tr_preserves.end());
+    // A report by default, as `geomech check` writes one: named after the first file.
+    if (tr_report.empty())
+      tr_report = "geomech-reports/trajectory-" + std::filesystem::path(trajectory_files.front()).stem().string();
+    return run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);
+}
+
+// The commands that describe the suite: list, slots, subjects, catalogue, and bench-protocol.
+struct InfoCommands {
+  CLI::App *list = nullptr, *slots = nullptr, *bench = nullptr, *subjects = nullptr, *cat = nullptr;
   bool slots_python = false, slots_octave = false;
-  slots->add_flag("--python", slots_python, "as Python functions (docs/STUDENTS.md, Python section)");
-  slots->add_flag("--octave", slots_octave, "as Octave/MATLAB functions");
   std::string bench_file;
   int bench_calls = 1000;
-  auto* bench = app.add_subcommand("bench-protocol", "round-trip cost of a slot call to a .py/.m implementation");
-  bench->add_option("file", bench_file, "a .py or .m implementation providing euler_3_8")->required();
-  bench->add_option("--calls", bench_calls, "calls per measurement (default 1000)");
-  auto* subjects = app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
-
   bool markdown = false, trace = false;
   std::string catalogue_path;
-  auto* cat = app.add_subcommand("catalogue", "the spec catalogue");
+};
+
+void add_info_commands(CLI::App& app, InfoCommands& c) {
+  auto& [l, s, b, su, ca, slots_python, slots_octave, bench_file, bench_calls, markdown, trace, catalogue_path] = c;
+  (void)l, (void)s, (void)b, (void)su, (void)ca;
+  auto* list = c.list = app.add_subcommand("list", "list the registered properties");
+  auto* slots = c.slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
+  slots->add_flag("--python", slots_python, "as Python functions (docs/STUDENTS.md, Python section)");
+  slots->add_flag("--octave", slots_octave, "as Octave/MATLAB functions");
+  auto* bench = c.bench = app.add_subcommand("bench-protocol", "round-trip cost of a slot call to a .py/.m implementation");
+  bench->add_option("file", bench_file, "a .py or .m implementation providing euler_3_8")->required();
+  bench->add_option("--calls", bench_calls, "calls per measurement (default 1000)");
+  auto* subjects = c.subjects = app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
+
+  auto* cat = c.cat = app.add_subcommand("catalogue", "the spec catalogue");
   cat->add_flag("--markdown", markdown, "print the generated Markdown table (spec/CATALOGUE.md)");
   cat->add_flag("--check", trace, "check traceability between catalogue, notes and properties");
   cat->add_option("--file", catalogue_path, "catalogue file (default: the source tree's spec/catalogue.json)");
+}
 
-  gm::mutation::MutantsOptions mo;
-  auto* mut = app.add_subcommand(
+// The status of the info command given, or -1 when none was.
+int run_info_command(InfoCommands& c) {
+  auto& [list, slots, bench, subjects, cat, slots_python, slots_octave, bench_file, bench_calls, markdown, trace,
+         catalogue_path] = c;
+  if (*list) return run_list();
+  if (*slots) return run_slots(slots_python ? "python" : slots_octave ? "octave" : "");
+  if (*bench) return run_protocol_bench(bench_file, bench_calls);
+  if (*subjects) return run_subjects();
+  if (*cat) return run_catalogue(markdown, trace, catalogue_path);
+  return -1;
+}
+
+// `geomech mutants` (the mutation score) and `geomech serve-mutant` (one mutant behind the protocol).
+struct MutantsCommands {
+  CLI::App* app = nullptr;
+  CLI::App* serve = nullptr;
+  mutation::MutantsOptions mo;
+  bool no_alone = false;
+  std::string served_name;
+};
+
+void add_mutants_commands(CLI::App& app, MutantsCommands& c) {
+  auto& [unused_app, unused_serve, mo, no_alone, served_name] = c;
+  (void)unused_app;
+  (void)unused_serve;
+  auto* mut = c.app = app.add_subcommand(
       "mutants",
       "mutation score: run the properties on single-mistake variants of the reference (docs: DESIGN.md, mutants)");
   mut->add_option("--slot", mo.slot, "only the mutants of this slot (rigid_body_step / manakov_step for integrators)");
@@ -507,37 +636,65 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0.0, 1.0));
   mut->add_option("--report", mo.report_dir, "write mutants.md and mutants.json into this directory");
   mut->add_option("--equivalent", mo.equivalent_file, "equivalent mutants (default: spec/equivalent_mutants.json)");
-  bool no_alone = false;
   mut->add_flag("--no-alone", no_alone, "skip the run with the mutated slot alone");
   mut->add_flag("--through-protocol", mo.through_protocol,
                 "also serve each mutant out of process by the C++ protocol server (as untrusted mode serves a "
                 "submission) and check it through the protocol: the score through the protocol, and any verdict that "
                 "differs from the in-process one (exit 1 if one does)");
-  std::string served_name;
-  auto* serve_mut = app.add_subcommand("serve-mutant",
+  auto* serve_mut = c.serve = app.add_subcommand("serve-mutant",
                                        "serve one mutant of the reference over the slot protocol "
                                        "(used by `geomech mutants --through-protocol`)");
   serve_mut->add_option("name", served_name, "the mutant's name (e.g. euler_3_8:negate_result)")->required();
   serve_mut->group("");
+}
 
+int run_mutants_command(MutantsCommands& c) {
+  auto& [mut, serve_mut, mo, no_alone, served_name] = c;
+  if (*serve_mut) return mutation::serve_mutant_command(served_name);
+    mo.alone = !no_alone;
+    mo.front_door = front_door();
+    if (mo.program.empty()) mo.program = std::filesystem::read_symlink("/proc/self/exe").string();
+    return mutation::mutants_command(mo);
+}
+
+// A first word that is no command gets named (CLI11 would only say that a command is required):
+// the status 2 when it is not one, 0 when it is (or there is none).
+int refuse_an_unknown_command(const CLI::App& app, int argc, char** argv) {
+  if (argc <= 1 || argv[1][0] == '-') return 0;
+  std::string names;
+  for (const auto* sub : app.get_subcommands({})) {
+    if (sub->get_name() == argv[1]) return 0;
+    names += (names.empty() ? "" : ", ") + sub->get_name();
+  }
+  std::cerr << "geomech: unknown command '" << argv[1] << "' (commands: " << names << ")\n";
+  return 2;
+}
+
+}  // namespace
+}  // namespace gm
+
+int main(int argc, char** argv) {
+  // A check started by a class run dies with it (harness/class/class_mode.cpp): an interrupted class
+  // leaves no check running behind it, writing into the reports a resumed run is writing.
+  if (!gm::harness::die_with_parent_when_asked()) return 2;
+  CLI::App app{"geomech: the rigid-body lecture notes as an executable specification"};
+  app.require_subcommand(1);
+  gm::CheckCommand check;
+  gm::add_check_command(app, check);
+  gm::ClassCommands klass;
+  gm::add_class_commands(app, klass);
+  gm::TrajectoryCommand traj;
+  gm::add_trajectory_command(app, traj);
+  gm::InfoCommands info;
+  gm::add_info_commands(app, info);
+  gm::MutantsCommands mut;
+  gm::add_mutants_commands(app, mut);
   gm::golden::add_commands(app);            // runs from its own callbacks (golden/cli.hpp)
   gm::harness::add_lecturer_commands(app);  // autograder, grade-submission, class-html (harness/class/lecturer_cli.hpp)
 
   // Bad arguments exit with 2, like every other input error of the tool (CLI11's own codes are
   // 100 and up); --help exits with 0.
-  // A first word that is no command gets named (CLI11 would only say that a command is required).
-  if (argc > 1 && argv[1][0] != '-') {
-    bool known = false;
-    std::string names;
-    for (const auto* sub : app.get_subcommands({})) {
-      known = known || sub->get_name() == argv[1];
-      names += (names.empty() ? "" : ", ") + sub->get_name();
-    }
-    if (!known) {
-      std::cerr << "geomech: unknown command '" << argv[1] << "' (commands: " << names << ")\n";
-      return 2;
-    }
-  }
+  if (const int refused = gm::refuse_an_unknown_command(app, argc, argv)) return refused;
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {
@@ -547,78 +704,11 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   try {
-    if (*check) {
-      if (!student_file.empty()) {
-        if (check->count("--subject"))
-          throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
-        bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
-        bo.exact = co.scalar == "all" || co.scalar == "exact";
-        bo.libraries = check_libs.request();
-        gm::harness::SubmissionRequest r;
-        r.file = student_file;
-        r.sandboxed = untrusted;
-        r.check = co;
-        r.build = bo;
-        r.front_door = gm::front_door();
-        r.reproduce_prefix = reproduce_prefix;
-        r.first_look = !co.quiet;
-        r.outcome_file = outcome_file;
-        return gm::harness::check_submission(r);
-      }
-      return gm::run_builtin_check(subject, co);
-    }
-    if (*merge) return gm::harness::merge_class(merge_dirs, merge_out, merge_grades);
-    if (*klass) {
-      if (!shard.empty()) {
-        const auto slash = shard.find('/');
-        try {
-          if (slash == std::string::npos) throw std::invalid_argument("no /");
-          class_opts.shard_k = std::stoi(shard.substr(0, slash));
-          class_opts.shard_n = std::stoi(shard.substr(slash + 1));
-        } catch (const std::exception&) {
-          throw CLI::ValidationError("--shard", "'" + shard + "' is not K/N (for example 2/8)");
-        }
-        if (class_opts.shard_n < 1 || class_opts.shard_k < 1 || class_opts.shard_k > class_opts.shard_n)
-          throw CLI::ValidationError("--shard", "'" + shard + "' needs 1 <= K <= N");
-      }
-      if (class_opts.check.report_dir.size()) class_opts.report_dir = class_opts.check.report_dir;
-      class_opts.check.report_dir.clear();
-      class_opts.front_door = gm::front_door();
-      {  // the command that resumes this run (said on Ctrl-C): this one, without --fresh
-        std::vector<std::string> again{gm::front_door()};
-        for (int a = 1; a < argc; ++a)
-          if (std::string(argv[a]) != "--fresh") again.push_back(argv[a]);
-        class_opts.command = gm::harness::shell_join(again);
-      }
-      class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
-      class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
-      class_opts.untrusted = !trusted;
-      class_opts.build.libraries = class_libs.request();
-      return gm::harness::run_class(class_opts, gm::harness::load_toolchain(gm::harness::default_toolchain_path()));
-    }
-    if (*traj) {
-      if (!tr_system.empty()) tro.params.system = tr_system;
-      if (!tr_inertia.empty())
-        tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
-      if (!tr_step.empty()) tro.params.step = tr_step;
-      tro.preserves.insert(tr_preserves.begin(), tr_preserves.end());
-      // A report by default, as `geomech check` writes one: named after the first file.
-      if (tr_report.empty())
-        tr_report = "geomech-reports/trajectory-" + std::filesystem::path(trajectory_files.front()).stem().string();
-      return gm::run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);
-    }
-    if (*mut) {
-      mo.alone = !no_alone;
-      mo.front_door = gm::front_door();
-      if (mo.program.empty()) mo.program = std::filesystem::read_symlink("/proc/self/exe").string();
-      return gm::mutation::mutants_command(mo);
-    }
-    if (*serve_mut) return gm::mutation::serve_mutant_command(served_name);
-    if (*list) return gm::run_list();
-    if (*slots) return gm::run_slots(slots_python ? "python" : slots_octave ? "octave" : "");
-    if (*bench) return gm::run_protocol_bench(bench_file, bench_calls);
-    if (*subjects) return gm::run_subjects();
-    if (*cat) return gm::run_catalogue(markdown, trace, catalogue_path);
+    if (*check.app) return gm::run_check_command(check);
+    if (*klass.app || *klass.merge) return gm::run_class_command(klass, argc, argv);
+    if (*traj.app) return gm::run_trajectory_command(traj);
+    if (*mut.app || *mut.serve) return gm::run_mutants_command(mut);
+    if (const int status = gm::run_info_command(info); status >= 0) return status;
   } catch (const CLI::Error& e) {
     app.exit(e);
     return 2;
