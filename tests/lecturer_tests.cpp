@@ -225,8 +225,9 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
     lay_out_submission((root / "two").string(), (root / "c4").string());
     ADD_FAILURE() << "two Python files were taken as one implementation";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("the submission holds 0 .cpp, 0 .cc, 2 .py and 0 .m files; expected one .cpp or .cc file using "
-                                         "GEOMECH_STUDENT"),
+    EXPECT_NE(std::string(e.what()).find(
+                  "the submission holds 0 .cpp, 0 .cc, 2 .py and 0 .m files; expected one .cpp or .cc file using "
+                  "GEOMECH_STUDENT"),
               std::string::npos)
         << e.what();
   }

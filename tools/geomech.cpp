@@ -369,29 +369,27 @@ void add_check_command(CLI::App& app, CheckCommand& c) {
       "/usr/bin/python3; it needs mpmath for the 50-digit checks. A .m file runs in geomech-octave-server (Octave's "
       "interpreter linked in) when the octave-cli on PATH is the system's, else in $GEOMECH_OCTAVE or the octave-cli "
       "on PATH. The report names the interpreter and its version.");
-
 }
 
 int run_check_command(CheckCommand& c) {
   auto& [check, co, subject, student_file, bo, reproduce_prefix, outcome_file, untrusted, check_libs] = c;
-    if (!student_file.empty()) {
-      if (check->count("--subject"))
-        throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
-      bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
-      bo.exact = co.scalar == "all" || co.scalar == "exact";
-      bo.libraries = check_libs.request();
-      harness::SubmissionRequest r;
-      r.file = student_file;
-      r.sandboxed = untrusted;
-      r.check = co;
-      r.build = bo;
-      r.front_door = front_door();
-      r.reproduce_prefix = reproduce_prefix;
-      r.first_look = !co.quiet;
-      r.outcome_file = outcome_file;
-      return harness::check_submission(r);
-    }
-    return run_builtin_check(subject, co);
+  if (!student_file.empty()) {
+    if (check->count("--subject")) throw CLI::ValidationError("--subject", "give either a file or --subject, not both");
+    bo.mp50 = co.scalar == "all" || co.scalar == "mp50";
+    bo.exact = co.scalar == "all" || co.scalar == "exact";
+    bo.libraries = check_libs.request();
+    harness::SubmissionRequest r;
+    r.file = student_file;
+    r.sandboxed = untrusted;
+    r.check = co;
+    r.build = bo;
+    r.front_door = front_door();
+    r.reproduce_prefix = reproduce_prefix;
+    r.first_look = !co.quiet;
+    r.outcome_file = outcome_file;
+    return harness::check_submission(r);
+  }
+  return run_builtin_check(subject, co);
 }
 
 // `geomech check-class` and `geomech merge-class`: a folder of submissions, and its shards combined.
@@ -457,43 +455,42 @@ void add_class_commands(CLI::App& app, ClassCommands& c) {
                    "folder came from their download (docs/GRADEBOOK.md)");
   };
   add_grade_options(*klass, class_opts.grades);
-  auto* merge = c.merge = app.add_subcommand("merge-class",
-                                   "combine the report folders of check-class --shard K/N runs into one class report");
+  auto* merge = c.merge = app.add_subcommand(
+      "merge-class", "combine the report folders of check-class --shard K/N runs into one class report");
   merge->add_option("out", merge_out, "the folder for the combined report")->required();
   merge->add_option("shards", merge_dirs, "the shards' report folders")->required();
   add_grade_options(*merge, merge_grades);
-
 }
 
 int run_class_command(ClassCommands& c, int argc, char** argv) {
   auto& [klass, merge, class_opts, class_libs, trusted, shard, merge_dirs, merge_out, merge_grades] = c;
   if (*merge) return harness::merge_class(merge_dirs, merge_out, merge_grades);
-    if (!shard.empty()) {
-      const auto slash = shard.find('/');
-      try {
-        if (slash == std::string::npos) throw std::invalid_argument("no /");
-        class_opts.shard_k = std::stoi(shard.substr(0, slash));
-        class_opts.shard_n = std::stoi(shard.substr(slash + 1));
-      } catch (const std::exception&) {
-        throw CLI::ValidationError("--shard", "'" + shard + "' is not K/N (for example 2/8)");
-      }
-      if (class_opts.shard_n < 1 || class_opts.shard_k < 1 || class_opts.shard_k > class_opts.shard_n)
-        throw CLI::ValidationError("--shard", "'" + shard + "' needs 1 <= K <= N");
+  if (!shard.empty()) {
+    const auto slash = shard.find('/');
+    try {
+      if (slash == std::string::npos) throw std::invalid_argument("no /");
+      class_opts.shard_k = std::stoi(shard.substr(0, slash));
+      class_opts.shard_n = std::stoi(shard.substr(slash + 1));
+    } catch (const std::exception&) {
+      throw CLI::ValidationError("--shard", "'" + shard + "' is not K/N (for example 2/8)");
     }
-    if (class_opts.check.report_dir.size()) class_opts.report_dir = class_opts.check.report_dir;
-    class_opts.check.report_dir.clear();
-    class_opts.front_door = front_door();
-    {  // the command that resumes this run (said on Ctrl-C): this one, without --fresh
-      std::vector<std::string> again{front_door()};
-      for (int a = 1; a < argc; ++a)
-        if (std::string(argv[a]) != "--fresh") again.push_back(argv[a]);
-      class_opts.command = harness::shell_join(again);
-    }
-    class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
-    class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
-    class_opts.untrusted = !trusted;
-    class_opts.build.libraries = class_libs.request();
-    return harness::run_class(class_opts, harness::load_toolchain(harness::default_toolchain_path()));
+    if (class_opts.shard_n < 1 || class_opts.shard_k < 1 || class_opts.shard_k > class_opts.shard_n)
+      throw CLI::ValidationError("--shard", "'" + shard + "' needs 1 <= K <= N");
+  }
+  if (class_opts.check.report_dir.size()) class_opts.report_dir = class_opts.check.report_dir;
+  class_opts.check.report_dir.clear();
+  class_opts.front_door = front_door();
+  {  // the command that resumes this run (said on Ctrl-C): this one, without --fresh
+    std::vector<std::string> again{front_door()};
+    for (int a = 1; a < argc; ++a)
+      if (std::string(argv[a]) != "--fresh") again.push_back(argv[a]);
+    class_opts.command = harness::shell_join(again);
+  }
+  class_opts.build.mp50 = class_opts.check.scalar == "all" || class_opts.check.scalar == "mp50";
+  class_opts.build.exact = class_opts.check.scalar == "all" || class_opts.check.scalar == "exact";
+  class_opts.untrusted = !trusted;
+  class_opts.build.libraries = class_libs.request();
+  return harness::run_class(class_opts, harness::load_toolchain(harness::default_toolchain_path()));
 }
 
 // `geomech check-trajectory`: trajectory files written by programs in any language.
@@ -509,8 +506,8 @@ void add_trajectory_command(CLI::App& app, TrajectoryCommand& c) {
   auto& [unused_app, tro, trajectory_files, tr_inertia, tr_preserves, tr_system, tr_step, tr_report, tr_junit,
          tr_quiet] = c;
   (void)unused_app;
-  auto* traj = c.app = app.add_subcommand("check-trajectory",
-                                  "check trajectory files from any language (format: docs/TRAJECTORY_FORMAT.md)");
+  auto* traj = c.app = app.add_subcommand(
+      "check-trajectory", "check trajectory files from any language (format: docs/TRAJECTORY_FORMAT.md)");
   traj->add_option("files", trajectory_files,
                    "trajectory files; several runs of one motion at different steps give the order")
       ->required();
@@ -536,17 +533,15 @@ void add_trajectory_command(CLI::App& app, TrajectoryCommand& c) {
 }
 
 int run_trajectory_command(TrajectoryCommand& c) {
-  auto& [traj, tro, trajectory_files, tr_inertia, tr_preserves, tr_system, tr_step, tr_report, tr_junit, tr_quiet] =
-      c;
-    if (!tr_system.empty()) tro.params.system = tr_system;
-    if (!tr_inertia.empty())
-      tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
-    if (!tr_step.empty()) tro.params.step = tr_step;
-    tro.preserves.insert(tr_preserves.begin(), tr_preserves.end());
-    // A report by default, as `geomech check` writes one: named after the first file.
-    if (tr_report.empty())
-      tr_report = "geomech-reports/trajectory-" + std::filesystem::path(trajectory_files.front()).stem().string();
-    return run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);
+  auto& [traj, tro, trajectory_files, tr_inertia, tr_preserves, tr_system, tr_step, tr_report, tr_junit, tr_quiet] = c;
+  if (!tr_system.empty()) tro.params.system = tr_system;
+  if (!tr_inertia.empty()) tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
+  if (!tr_step.empty()) tro.params.step = tr_step;
+  tro.preserves.insert(tr_preserves.begin(), tr_preserves.end());
+  // A report by default, as `geomech check` writes one: named after the first file.
+  if (tr_report.empty())
+    tr_report = "geomech-reports/trajectory-" + std::filesystem::path(trajectory_files.front()).stem().string();
+  return run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);
 }
 
 // The commands that describe the suite: list, slots, subjects, catalogue, and bench-protocol.
@@ -566,10 +561,12 @@ void add_info_commands(CLI::App& app, InfoCommands& c) {
   auto* slots = c.slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
   slots->add_flag("--python", slots_python, "as Python functions (docs/STUDENTS.md, Python section)");
   slots->add_flag("--octave", slots_octave, "as Octave/MATLAB functions");
-  auto* bench = c.bench = app.add_subcommand("bench-protocol", "round-trip cost of a slot call to a .py/.m implementation");
+  auto* bench = c.bench =
+      app.add_subcommand("bench-protocol", "round-trip cost of a slot call to a .py/.m implementation");
   bench->add_option("file", bench_file, "a .py or .m implementation providing euler_3_8")->required();
   bench->add_option("--calls", bench_calls, "calls per measurement (default 1000)");
-  auto* subjects = c.subjects = app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
+  auto* subjects = c.subjects =
+      app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
 
   auto* cat = c.cat = app.add_subcommand("catalogue", "the spec catalogue");
   cat->add_flag("--markdown", markdown, "print the generated Markdown table (spec/CATALOGUE.md)");
@@ -642,8 +639,8 @@ void add_mutants_commands(CLI::App& app, MutantsCommands& c) {
                 "submission) and check it through the protocol: the score through the protocol, and any verdict that "
                 "differs from the in-process one (exit 1 if one does)");
   auto* serve_mut = c.serve = app.add_subcommand("serve-mutant",
-                                       "serve one mutant of the reference over the slot protocol "
-                                       "(used by `geomech mutants --through-protocol`)");
+                                                 "serve one mutant of the reference over the slot protocol "
+                                                 "(used by `geomech mutants --through-protocol`)");
   serve_mut->add_option("name", served_name, "the mutant's name (e.g. euler_3_8:negate_result)")->required();
   serve_mut->group("");
 }
@@ -651,10 +648,10 @@ void add_mutants_commands(CLI::App& app, MutantsCommands& c) {
 int run_mutants_command(MutantsCommands& c) {
   auto& [mut, serve_mut, mo, no_alone, served_name] = c;
   if (*serve_mut) return mutation::serve_mutant_command(served_name);
-    mo.alone = !no_alone;
-    mo.front_door = front_door();
-    if (mo.program.empty()) mo.program = std::filesystem::read_symlink("/proc/self/exe").string();
-    return mutation::mutants_command(mo);
+  mo.alone = !no_alone;
+  mo.front_door = front_door();
+  if (mo.program.empty()) mo.program = std::filesystem::read_symlink("/proc/self/exe").string();
+  return mutation::mutants_command(mo);
 }
 
 // A first word that is no command gets named (CLI11 would only say that a command is required):

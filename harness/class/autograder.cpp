@@ -381,8 +381,9 @@ std::string lay_out_submission(const std::string& submission, const std::string&
     std::string one = "one " + exts + " file";
     if (!l.marker.empty()) one += " using " + l.marker.substr(0, l.marker.find('('));
     if (l.files_beside) one += " (with its headers beside it)";
-    if (l.folder_of_files) one = l.name + ": " + one + ", or a folder of function files (one function per " +
-                                 l.extensions.front() + " file)";
+    if (l.folder_of_files)
+      one =
+          l.name + ": " + one + ", or a folder of function files (one function per " + l.extensions.front() + " file)";
     expected.push_back(one);
   }
   for (std::size_t i = 0; i < counts.size(); ++i)

@@ -135,7 +135,6 @@ const Language* language_of_origin(const std::string& origin) {
 
 }  // namespace
 
-
 std::string check_conditions(const ClassOptions& o, const std::string& extension) {
   std::string text = o.untrusted ? "untrusted" : "trusted";
   for (const auto& a : to_args(o.check)) text += '\0' + a;
@@ -547,7 +546,8 @@ void refuse_a_bad_request(const ClassOptions& o, const std::vector<Implementatio
 
 // The grader's machine, checked once, first: a fault there is one refusal with its fix, not a
 // grade for every student (harness/class/grader_machine.hpp).
-void refuse_on_the_graders_machine(const ClassOptions& o, const Toolchain& tc, const std::vector<Implementation>& impls) {
+void refuse_on_the_graders_machine(const ClassOptions& o, const Toolchain& tc,
+                                   const std::vector<Implementation>& impls) {
   GraderNeeds needs;
   needs.untrusted = o.untrusted;
   needs.cache_dir = o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir;
@@ -775,15 +775,15 @@ void say_plan(const ClassPlan& plan, std::size_t count, const ClassOptions& o) {
 // shard they belong to.
 void write_shard(const ClassOptions& o, std::size_t implementations, const std::vector<Row>& rows,
                  const std::vector<std::string>& no_submission, const std::string& report_dir) {
-json shard;
-shard["format"] = "geomech-class-shard 1";
-shard["class"] = o.dir;
-shard["implementations"] = implementations;
-shard["shard"] = {o.shard_k, o.shard_n};
-shard["rows"] = json::array();
-for (const auto& row : rows) shard["rows"].push_back(row_json(row));
-for (const auto& name : no_submission) shard["rows"].push_back(class_row_to_json(no_submission_row(name)));
-write_file_atomically((fs::path(report_dir) / "class-shard.json").string(), shard.dump(1));
+  json shard;
+  shard["format"] = "geomech-class-shard 1";
+  shard["class"] = o.dir;
+  shard["implementations"] = implementations;
+  shard["shard"] = {o.shard_k, o.shard_n};
+  shard["rows"] = json::array();
+  for (const auto& row : rows) shard["rows"].push_back(row_json(row));
+  for (const auto& name : no_submission) shard["rows"].push_back(class_row_to_json(no_submission_row(name)));
+  write_file_atomically((fs::path(report_dir) / "class-shard.json").string(), shard.dump(1));
 }
 
 }  // namespace

@@ -55,8 +55,8 @@ void try_interpreter(const Language& language, std::vector<std::string>& problem
   const ProcessResult r = run_process(ProcessSpec{sandboxed(argv, spec), {}, false}, 60);
   if (!r.started || r.exit_code != 0)
     problems.push_back("the " + language.name + " interpreter " + si.program + " does not start in the sandbox (as " +
-                       who() + "): " + r.output.substr(0, 600) + ". Fix: " + language.interpreter_variable +
-                       "=" + language.system_interpreter +
+                       who() + "): " + r.output.substr(0, 600) + ". Fix: " + language.interpreter_variable + "=" +
+                       language.system_interpreter +
                        " (the system's), or an interpreter whose folders every user may read");
 }
 

@@ -12,8 +12,8 @@
 namespace gm::harness {
 
 struct GraderNeeds {
-  bool untrusted = true;  // trusted runs in-process: nothing of the sandbox is needed
-  std::string cache_dir;  // the compilers' cache (made if missing)
+  bool untrusted = true;         // trusted runs in-process: nothing of the sandbox is needed
+  std::string cache_dir;         // the compilers' cache (made if missing)
   std::set<std::string> served;  // the served languages (harness/submissions/languages.hpp) to be checked
 };
 

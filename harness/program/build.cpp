@@ -504,7 +504,8 @@ void learn_from_a_failed_compile(ScalarState& st, const std::string& scalar, con
     if (!st.skip.count(slot)) {
       st.skip.insert(slot);
       const std::string hint = hint_for(msg, scalar);
-      st.skip_reason[slot] = "does not compile for " + scalar + ": " + msg + (hint.empty() ? "" : " (hint: " + hint + ")");
+      st.skip_reason[slot] =
+          "does not compile for " + scalar + ": " + msg + (hint.empty() ? "" : " (hint: " + hint + ")");
       progress = true;
     }
   if (!progress && !st.skip_integrators && integrators_failing_in(output)) {
@@ -515,8 +516,8 @@ void learn_from_a_failed_compile(ScalarState& st, const std::string& scalar, con
     st.done = true;
     const std::string err = first_error(output);
     const std::string hint = hint_for(err, scalar);
-    st.unavailable =
-        "the implementation does not compile for " + scalar + ": " + err + (hint.empty() ? "" : " (hint: " + hint + ")");
+    st.unavailable = "the implementation does not compile for " + scalar + ": " + err +
+                     (hint.empty() ? "" : " (hint: " + hint + ")");
   }
 }
 

@@ -61,18 +61,9 @@ int run_student_check(const SubmissionRequest& r, SubmissionOutcome& out) {
     if (q.ok && !q.cached) {
       std::cerr << "geomech: compiled the double instantiation in " << std::fixed << std::setprecision(1) << q.seconds
                 << " s: a first look at every slot in double while the 50-digit and exact ones compile\n";
-      std::vector<std::string> argv{q.program,
-                                    "--definitions",
-                                    "--jobs",
-                                    "1",
-                                    "--name",
-                                    q.name,
-                                    "--source",
-                                    file,
-                                    "--build-notes",
-                                    q.notes_file,
-                                    "--reproduce-prefix",
-                                    reproduce};
+      std::vector<std::string> argv{
+          q.program,    "--definitions",      "--jobs", "1", "--name", q.name, "--source", file, "--build-notes",
+          q.notes_file, "--reproduce-prefix", reproduce};
       first_look = std::thread([argv] { run_process(ProcessSpec{argv, {}, true}); });
     }
   }
@@ -153,8 +144,7 @@ int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string
   }
   if (language == "c++") {  // functions named like a slot but not one
     try {
-      for (const auto& advice :
-           slot_name_advice(cpp_function_names(read_stranger_file(file))))
+      for (const auto& advice : slot_name_advice(cpp_function_names(read_stranger_file(file))))
         info.warnings.push_back(advice);
     } catch (const RefusedEntry&) {
       // not read: no advice
@@ -296,8 +286,8 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
     return 2;
   }
   spec.mounts = copy->mounts();
-  return run_protocol_check(r, sandboxed(cmd, spec), language, notes,
-                            " --untrusted" + replay_build_options(bo), t0, out, bo.name);
+  return run_protocol_check(r, sandboxed(cmd, spec), language, notes, " --untrusted" + replay_build_options(bo), t0,
+                            out, bo.name);
 }
 
 int route(const SubmissionRequest& r, SubmissionOutcome& out) {
@@ -318,9 +308,12 @@ int check_submission(const SubmissionRequest& r) {
   SubmissionOutcome out;
   out.exit_code = route(r, out);
   if (!r.outcome_file.empty()) {
-    const nlohmann::json j{{"format", "geomech-outcome 1"},     {"exit_code", out.exit_code},
-                           {"built", out.built},                {"build_message", out.build_message},
-                           {"build_seconds", out.build_seconds}, {"machine_fault", out.machine_fault},
+    const nlohmann::json j{{"format", "geomech-outcome 1"},
+                           {"exit_code", out.exit_code},
+                           {"built", out.built},
+                           {"build_message", out.build_message},
+                           {"build_seconds", out.build_seconds},
+                           {"machine_fault", out.machine_fault},
                            {"check_seconds", out.check_seconds}};
     write_file_atomically(r.outcome_file, j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace));
   }

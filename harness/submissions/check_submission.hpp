@@ -16,12 +16,12 @@
 namespace gm::harness {
 
 struct SubmissionRequest {
-  std::string file;              // the implementation: a .cpp, .py or .m file, or a folder of .m files
-  bool sandboxed = false;        // untrusted mode (--untrusted)
-  CheckCliOptions check;         // what to check and how (harness/program/cli.hpp)
-  BuildOptions build;            // how a C++ file is compiled
+  std::string file;                    // the implementation: a .cpp, .py or .m file, or a folder of .m files
+  bool sandboxed = false;              // untrusted mode (--untrusted)
+  CheckCliOptions check;               // what to check and how (harness/program/cli.hpp)
+  BuildOptions build;                  // how a C++ file is compiled
   std::string front_door = "geomech";  // how the user called us, for the commands we print
-  std::string reproduce_prefix;  // the replay command the report prints ("" = the check's own command)
+  std::string reproduce_prefix;        // the replay command the report prints ("" = the check's own command)
   // The first look (a C++ file's definitions in double while the rest compiles, failures printed as
   // they come): for a check someone watches, not for a quiet one.
   bool first_look = true;

@@ -132,8 +132,7 @@ std::string extensions_in_words() {
   std::vector<std::string> all;
   for (const auto& l : languages()) all.insert(all.end(), l.extensions.begin(), l.extensions.end());
   std::string out;
-  for (std::size_t i = 0; i < all.size(); ++i)
-    out += (i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + all[i];
+  for (std::size_t i = 0; i < all.size(); ++i) out += (i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + all[i];
   return out;
 }
 
