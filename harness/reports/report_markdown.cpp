@@ -20,8 +20,11 @@ namespace fs = std::filesystem;
 using namespace report_parts;
 using nlohmann::json;
 
-std::string markdown_report(const CheckResult& r, const Catalogue* c) {
-  std::ostringstream md;
+namespace {
+
+// The title, the source and interpreter, the result, what was not checked, how it was checked, the
+// warnings.
+void write_header(std::ostream& md, const CheckResult& r) {
   md << "# geomech report: " << md_inline(r.subject) << "\n\n";
   if (!r.description.empty()) md << md_inline(r.description) << "\n\n";
   if (!r.info.source.empty()) {
@@ -51,10 +54,11 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     for (const auto& w : r.info.warnings) md << "- " << md_cell(w) << "\n";
     md << "\n";
   }
+}
 
-  std::vector<const Verdict*> problems;
-  for (const auto& v : r.verdicts)
-    if (is_problem(v.outcome)) problems.push_back(&v);
+// What to fix: the first fixes the engine decided (harness/engine/first_fix.hpp), the steps that
+// raise, then the rest, one line per property and outcome. `problems` is sorted here for the details.
+void write_what_to_fix(std::ostream& md, const CheckResult& r, std::vector<const Verdict*>& problems) {
   if (!problems.empty()) {
     // One line per property (and integrator) and outcome, naming the scalars it happened in;
     // ordered by root cause: a slot whose own direct property fails comes first, with
@@ -136,7 +140,10 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     }
     md << "\n";
   }
+}
 
+// Every property: a row each, a cell per scalar.
+void write_every_property(std::ostream& md, const CheckResult& r, const Catalogue* c) {
   md << "## Every property\n\n"
      << "| property | statement | spec entry (place in the notes) | double | mp50 | exact |\n"
      << "|---|---|---|---|---|---|\n";
@@ -170,7 +177,11 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
   }
   md << "\nA dash means the property does not run in that scalar (integrators and anything that needs square "
         "roots or flows are not run in exact rationals).\n\n";
+}
 
+// Each integrator with its claims, its portraits and figures; the work-precision diagram; other
+// figures.
+void write_integrators_and_figures(std::ostream& md, const CheckResult& r) {
   const auto figures = report_figures(r);
   if (!r.integrators.empty()) {
     md << "## Integrators and their claims\n\n";
@@ -239,7 +250,9 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     md << "## Figures\n\n";
     for (const auto& f : other_figures) md << "![" << f << "](" << f << ")\n\n";
   }
+}
 
+void write_not_provided(std::ostream& md, const CheckResult& r) {
   // What did not run, short for a short submission. The checks of what is not written at
   // all are one count per missing slot (a three-slot file's report was 223 lines, mostly these);
   // the checks that what is written cannot run in a scalar (double only) keep their reason, as
@@ -297,6 +310,10 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     }
     md << "\n";
   }
+}
+
+// What this run left to --thorough: 50-digit runs, cases, the diagram.
+void write_left_out(std::ostream& md, const CheckResult& r) {
   if (!r.left_to_thorough.empty()) {
     md << "## Left to --thorough\n\n"
        << r.left_to_thorough.size()
@@ -320,6 +337,10 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
        << md_cell(r.case_factor_note) << ". `--thorough` runs every case.\n\n";
   }
   if (!r.work_precision_left_out.empty()) md << "Not drawn: " << md_cell(r.work_precision_left_out) << ".\n\n";
+}
+
+// The slots provided per scalar, and what exercised each.
+void write_slots(std::ostream& md, const CheckResult& r) {
   md << "Slots provided:\n\n";
   for (const char* s : {"double", "mp50", "exact"}) {
     auto it = r.provided.find(s);
@@ -347,7 +368,10 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
     for (const auto& w : r.unexercised) md << "- **warning:** " << md_cell(w) << "\n";
     if (!r.unexercised.empty()) md << "\n";
   }
+}
 
+// The checks that discarded cases or ran fewer than planned.
+void write_partial_checks(std::ostream& md, const CheckResult& r) {
   // A discarded case is not a check. Every verdict that discarded some says how many.
   std::vector<const Verdict*> discarding;
   for (const auto& v : r.verdicts)
@@ -379,7 +403,11 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
          << seconds_text(v->seconds) << " |\n";
     md << "\n";
   }
+}
 
+// One section per problem: statement, spec entry, message, counterexample, the replay command.
+void write_details(std::ostream& md, const CheckResult& r, const Catalogue* c,
+                   const std::vector<const Verdict*>& problems) {
   if (!problems.empty()) {
     md << "## Details\n\n";
     for (const Verdict* v : problems) {
@@ -407,6 +435,24 @@ std::string markdown_report(const CheckResult& r, const Catalogue* c) {
       md << "Reproduce:\n\n" << fence(reproduce_command(r, *v)) << "\n";
     }
   }
+}
+
+}  // namespace
+
+std::string markdown_report(const CheckResult& r, const Catalogue* c) {
+  std::ostringstream md;
+  write_header(md, r);
+  std::vector<const Verdict*> problems;
+  for (const auto& v : r.verdicts)
+    if (is_problem(v.outcome)) problems.push_back(&v);
+  write_what_to_fix(md, r, problems);
+  write_every_property(md, r, c);
+  write_integrators_and_figures(md, r);
+  write_not_provided(md, r);
+  write_left_out(md, r);
+  write_slots(md, r);
+  write_partial_checks(md, r);
+  write_details(md, r, c, problems);
   return md.str();
 }
 
