@@ -240,20 +240,153 @@ std::string describe_signal(int sig) {
 
 int current_worker() { return g_worker; }
 
+namespace {
+
+// The order tasks start in: o.start_order when it is a permutation of the tasks, else their own.
+std::vector<std::size_t> start_order(std::size_t n, const std::vector<std::size_t>& wanted) {
+  std::vector<std::size_t> seq = wanted;
+  std::vector<bool> seen(n, false);
+  bool permutation = seq.size() == n;
+  for (std::size_t i : seq) permutation = permutation && i < n && !seen[i] && (seen[i] = true);
+  if (!permutation) {
+    if (!seq.empty()) throw std::invalid_argument("run_isolated: start_order is not a permutation of the tasks");
+    seq.resize(n);
+    for (std::size_t i = 0; i < seq.size(); ++i) seq[i] = i;
+  }
+  return seq;
+}
+
+// Without isolation (a debugger's run): each task in this process, in turn.
+void run_in_this_process(const std::vector<std::function<std::string()>>& tasks, const IsolationOptions& o,
+                         const std::vector<std::size_t>& seq, const std::function<bool(int, std::size_t)>& prepare,
+                         std::vector<TaskResult>& results) {
+  g_worker = 0;
+  for (std::size_t i : seq) {
+    const auto start = Clock::now();
+    if (o.on_started) o.on_started(i);
+    if (prepare(0, i)) {
+      try {
+        results[i].payload = tasks[i]();
+        results[i].status = TaskResult::Status::Ok;
+      } catch (const std::exception& e) {
+        results[i].status = TaskResult::Status::Threw;
+        results[i].detail = std::string("threw ") + e.what();
+      }
+      if (o.worker_done) o.worker_done(0, true);
+    }
+    results[i].seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (o.on_finished) o.on_finished(i, results[i]);
+  }
+}
+
+// Forks the child that runs task i as worker w, its result and output read through two pipes.
+Running fork_task(const std::function<std::string()>& task, std::size_t i, int w, const std::deque<Running>& running,
+                  const IsolationOptions& o, pid_t self) {
+  g_worker = w;
+  int rp[2], op[2];
+  if (::pipe2(rp, O_CLOEXEC) != 0 || ::pipe2(op, O_CLOEXEC) != 0)
+    throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
+  std::cout.flush();
+  std::cerr.flush();
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw std::runtime_error(std::string("cannot fork: ") + std::strerror(errno));
+  if (pid == 0) {
+    for (const auto& r : running) {  // the other children's pipes are not this child's business
+      ::close(r.result_fd);
+      ::close(r.output_fd);
+    }
+    ::close(rp[0]);
+    ::close(op[0]);
+    child_main(task, rp[1], op[1], o.memory_limit_mb, self);
+  }
+  ::close(rp[1]);
+  ::close(op[1]);
+  ::fcntl(rp[0], F_SETFL, O_NONBLOCK);
+  ::fcntl(op[0], F_SETFL, O_NONBLOCK);
+  g_worker = 0;
+  Running r{i, w, pid, rp[0], op[0], Clock::now(), {}, {}, {}};
+  r.worker0 = o.worker_times ? o.worker_times(w) : TreeTimes{};
+  return r;
+}
+
+// The code's CPU and run-queue delay, read four times a second: the limit is on the work it does,
+// and the kernel's accounting tells a task that sleeps from one a busy machine starves.
+void sample_times(Running& r, const IsolationOptions& o, Clock::time_point now) {
+  if (!r.queued) r.queued = std::make_shared<QueuedSoFar>();
+  r.times = r.queued->sample(r.pid);
+  if (o.worker_times) {
+    const TreeTimes w = o.worker_times(r.worker);
+    r.times.cpu += w.cpu - r.worker0.cpu;
+    r.times.queued += w.queued - r.worker0.queued;
+  }
+  r.sampled = now;
+}
+
+// Which limit stopped a task.
+struct Stopped {
+  bool cpu_out;   // its CPU time
+  bool waiting;   // past its time and runnable for almost none of it
+  bool wall_out;  // the wall guard, having slept most of the time
+};
+
+// The result of a task stopped by a limit: whose fault, in the kernel's words (a task that waits is
+// the code's, one the machine starves is not).
+TaskResult stopped_result(const Running& r, const IsolationOptions& o, double wall, Stopped why) {
+  const auto [cpu_out, waiting, wall_out] = why;
+  const double runnable = r.times.cpu + r.times.queued;
+  const bool known = r.times.queued_known;
+  TaskResult t;
+  t.seconds = wall;
+  t.cpu_seconds = r.times.cpu;
+  t.queued_seconds = r.times.queued;
+  t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
+  t.sanitizer_report = r.sanitizer_report;
+  char buf[600];
+  const double asleep = std::max(0.0, wall - runnable);
+  if (!r.sanitizer_report.empty()) {  // it was dying, not hanging: the sanitizer had reported an error
+    t.status = TaskResult::Status::Crashed;
+    t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
+  } else if (cpu_out) {
+    t.status = TaskResult::Status::TimedOut;
+    std::snprintf(buf, sizeof buf, "did not finish within %.0f s of CPU time (%.0f s of wall clock) and was stopped",
+                  o.timeout_seconds, wall);
+    t.detail = buf;
+  } else if (!known) {
+    // The kernel keeps no run-queue accounting here: waiting and starving cannot be told apart.
+    t.status = TaskResult::Status::Busy;
+    std::snprintf(buf, sizeof buf,
+                  "was stopped by the wall clock after %.0f s having had %.1f s of CPU; this kernel keeps no "
+                  "run-queue accounting (/proc/PID/task/TID/schedstat), so whether it slept or the machine "
+                  "starved it is not known",
+                  wall, r.times.cpu);
+    t.detail = buf;
+  } else if (waiting || wall_out) {
+    t.status = TaskResult::Status::TimedOut;
+    std::snprintf(buf, sizeof buf,
+                  "did not finish within %.0f s: stopped by the wall clock after %.0f s, of which the kernel "
+                  "counts %.1f s on a CPU, %.1f s queued for one and %.0f s asleep: it waits (a sleep, an input "
+                  "it reads, a lock) rather than computes",
+                  o.timeout_seconds, wall, r.times.cpu, r.times.queued, asleep);
+    t.detail = buf;
+  } else {
+    t.status = TaskResult::Status::Busy;
+    std::snprintf(buf, sizeof buf,
+                  "could not do its work: the machine starved it, by the kernel's accounting %.1f s on a CPU "
+                  "and %.1f s runnable but queued for one in %.0f s of wall clock (stopped at %.0f times the "
+                  "wall guard)",
+                  r.times.cpu, r.times.queued, wall, std::max(1.0, o.busy_factor));
+    t.detail = buf;
+  }
+  return t;
+}
+
+}  // namespace
+
 std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,
                                      const IsolationOptions& o) {
   std::vector<TaskResult> results(tasks.size());
-  std::vector<std::size_t> seq = o.start_order;
-  {
-    std::vector<bool> seen(tasks.size(), false);
-    bool permutation = seq.size() == tasks.size();
-    for (std::size_t i : seq) permutation = permutation && i < tasks.size() && !seen[i] && (seen[i] = true);
-    if (!permutation) {
-      if (!seq.empty()) throw std::invalid_argument("run_isolated: start_order is not a permutation of the tasks");
-      seq.resize(tasks.size());
-      for (std::size_t i = 0; i < seq.size(); ++i) seq[i] = i;
-    }
-  }
+  const std::vector<std::size_t> seq = start_order(tasks.size(), o.start_order);
   // prepare_worker's failure is the task's: it did not run.
   auto prepare = [&](int w, std::size_t i) {
     if (!o.prepare_worker) return true;
@@ -267,23 +400,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
     }
   };
   if (!o.isolate) {
-    g_worker = 0;
-    for (std::size_t i : seq) {
-      const auto start = Clock::now();
-      if (o.on_started) o.on_started(i);
-      if (prepare(0, i)) {
-        try {
-          results[i].payload = tasks[i]();
-          results[i].status = TaskResult::Status::Ok;
-        } catch (const std::exception& e) {
-          results[i].status = TaskResult::Status::Threw;
-          results[i].detail = std::string("threw ") + e.what();
-        }
-        if (o.worker_done) o.worker_done(0, true);
-      }
-      results[i].seconds = std::chrono::duration<double>(Clock::now() - start).count();
-      if (o.on_finished) o.on_finished(i, results[i]);
-    }
+    run_in_this_process(tasks, o, seq, prepare, results);
     return results;
   }
 
@@ -305,32 +422,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
       return;
     }
     busy[static_cast<std::size_t>(w)] = true;
-    g_worker = w;
-    int rp[2], op[2];
-    if (::pipe2(rp, O_CLOEXEC) != 0 || ::pipe2(op, O_CLOEXEC) != 0)
-      throw std::runtime_error(std::string("cannot create a pipe: ") + std::strerror(errno));
-    std::cout.flush();
-    std::cerr.flush();
-    std::fflush(nullptr);
-    const pid_t pid = ::fork();
-    if (pid < 0) throw std::runtime_error(std::string("cannot fork: ") + std::strerror(errno));
-    if (pid == 0) {
-      for (const auto& r : running) {  // the other children's pipes are not this child's business
-        ::close(r.result_fd);
-        ::close(r.output_fd);
-      }
-      ::close(rp[0]);
-      ::close(op[0]);
-      child_main(tasks[i], rp[1], op[1], o.memory_limit_mb, self);
-    }
-    ::close(rp[1]);
-    ::close(op[1]);
-    ::fcntl(rp[0], F_SETFL, O_NONBLOCK);
-    ::fcntl(op[0], F_SETFL, O_NONBLOCK);
-    g_worker = 0;
-    Running r{i, w, pid, rp[0], op[0], Clock::now(), {}, {}, {}};
-    r.worker0 = o.worker_times ? o.worker_times(w) : TreeTimes{};
-    running.push_back(std::move(r));
+    running.push_back(fork_task(tasks[i], i, w, running, o, self));
   };
 
   while (next < tasks.size() || !running.empty()) {
@@ -368,16 +460,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         // The code's CPU and run-queue delay, read four times a second: the limit is on the work it
         // does, and the kernel's accounting tells a task that sleeps from one a busy machine starves.
         const auto now = Clock::now();
-        if (now - r.sampled > std::chrono::milliseconds(250)) {
-          if (!r.queued) r.queued = std::make_shared<QueuedSoFar>();
-          r.times = r.queued->sample(r.pid);
-          if (o.worker_times) {
-            const TreeTimes w = o.worker_times(r.worker);
-            r.times.cpu += w.cpu - r.worker0.cpu;
-            r.times.queued += w.queued - r.worker0.queued;
-          }
-          r.sampled = now;
-        }
+        if (now - r.sampled > std::chrono::milliseconds(250)) sample_times(r, o, now);
         const double wall = std::chrono::duration<double>(now - r.start).count();
         const double runnable = r.times.cpu + r.times.queued;
         const bool known = r.times.queued_known;
@@ -394,51 +477,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
           ::kill(-r.pid, SIGKILL);
           ::kill(r.pid, SIGKILL);
           ::waitpid(r.pid, &status, 0);
-          TaskResult t;
-          t.seconds = wall;
-          t.cpu_seconds = r.times.cpu;
-          t.queued_seconds = r.times.queued;
-          t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
-          t.sanitizer_report = r.sanitizer_report;
-          char buf[600];
-          const double asleep = std::max(0.0, wall - runnable);
-          if (!r.sanitizer_report.empty()) {  // it was dying, not hanging: the sanitizer had reported an error
-            t.status = TaskResult::Status::Crashed;
-            t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
-          } else if (cpu_out) {
-            t.status = TaskResult::Status::TimedOut;
-            std::snprintf(buf, sizeof buf,
-                          "did not finish within %.0f s of CPU time (%.0f s of wall clock) and was stopped",
-                          o.timeout_seconds, wall);
-            t.detail = buf;
-          } else if (!known) {
-            // The kernel keeps no run-queue accounting here: waiting and starving cannot be told apart.
-            t.status = TaskResult::Status::Busy;
-            std::snprintf(buf, sizeof buf,
-                          "was stopped by the wall clock after %.0f s having had %.1f s of CPU; this kernel keeps no "
-                          "run-queue accounting (/proc/PID/task/TID/schedstat), so whether it slept or the machine "
-                          "starved it is not known",
-                          wall, r.times.cpu);
-            t.detail = buf;
-          } else if (waiting || wall_out) {
-            t.status = TaskResult::Status::TimedOut;
-            std::snprintf(
-                buf, sizeof buf,
-                "did not finish within %.0f s: stopped by the wall clock after %.0f s, of which the kernel "
-                "counts %.1f s on a CPU, %.1f s queued for one and %.0f s asleep: it waits (a sleep, an input "
-                "it reads, a lock) rather than computes",
-                o.timeout_seconds, wall, r.times.cpu, r.times.queued, asleep);
-            t.detail = buf;
-          } else {
-            t.status = TaskResult::Status::Busy;
-            std::snprintf(buf, sizeof buf,
-                          "could not do its work: the machine starved it, by the kernel's accounting %.1f s on a CPU "
-                          "and %.1f s runnable but queued for one in %.0f s of wall clock (stopped at %.0f times the "
-                          "wall guard)",
-                          r.times.cpu, r.times.queued, wall, std::max(1.0, o.busy_factor));
-            t.detail = buf;
-          }
-          results[r.index] = t;
+          results[r.index] = stopped_result(r, o, wall, {cpu_out, waiting, wall_out});
           done = true;
         }
       }
