@@ -1,6 +1,6 @@
 // The property runner's own bookkeeping (properties/runner.cpp). a discarded case is not
 // a check, so a verdict counts its discarded cases and keeps the first reason (the verdict's JSON
-// carries them: tests/harness_tests.cpp).
+// carries them: tests/harness/reports/report_tests.cpp).
 #include "impl/reference_subject.hpp"
 #include "properties/registry.hpp"
 #include "properties/runner.hpp"

@@ -1,4 +1,4 @@
-% Octave functions that go wrong in each way a reply can (tests/protocol_tests.cpp,
+% Octave functions that go wrong in each way a reply can (tests/harness/remote/protocol_tests.cpp,
 % OctaveServersAnswerAlike): both Octave servers must answer these calls with the same text.
 
 function m = hat(v)

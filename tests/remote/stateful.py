@@ -1,4 +1,4 @@
-"""A Python implementation for the protocol's own tests (tests/protocol_tests.cpp), not an example:
+"""A Python implementation for the protocol's own tests (tests/harness/remote/protocol_tests.cpp), not an example:
 slots that keep state, die, print a lot, or are slow, each in a way a test provokes on purpose."""
 import os
 import signal

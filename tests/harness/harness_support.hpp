@@ -1,0 +1,37 @@
+// What the harness tests of several rooms share: a scratch folder, a verdict by name, a quick
+// check configuration.
+#pragma once
+
+#include "harness/engine/check.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gm::harness::harness_testing {
+
+inline std::filesystem::path temp_dir() {
+  std::string t = (std::filesystem::temp_directory_path() / "geomech-harness-XXXXXX").string();
+  EXPECT_NE(::mkdtemp(t.data()), nullptr);
+  return t;
+}
+
+inline const Verdict* find(const CheckResult& r, const std::string& property, const std::string& scalar) {
+  for (const auto& v : r.verdicts)
+    if (v.property == property && v.scalar == scalar) return &v;
+  return nullptr;
+}
+
+inline CheckConfig quick(std::vector<std::string> props) {
+  CheckConfig c;
+  c.properties = std::move(props);
+  c.jobs = 3;
+  c.timeout_seconds = 1;
+  c.portraits = false;
+  return c;
+}
+
+}  // namespace gm::harness::harness_testing

@@ -1,0 +1,99 @@
+// harness/program/: reading compiler output, the precompiled student header.
+#include "harness/program/build.hpp"
+#include "harness/engine/check.hpp"
+#include "harness/isolation/isolate.hpp"
+#include "harness/isolation/process_cpu.hpp"
+#include "harness/trajectories/reference_flow.hpp"
+#include "harness/reports/report.hpp"
+#include "harness/engine/integrator_verdicts.hpp"
+#include "harness/reports/svg.hpp"
+#include "harness/engine/thorough_only.hpp"
+#include "harness/engine/trajectory.hpp"
+#include "properties/support/loglog_fit.hpp"
+#include "harness/engine/verdict_io.hpp"
+#include "impl/reference_subject.hpp"
+#include "properties/support/claims.hpp"
+#include "properties/support/tolerance.hpp"
+#include "tests/support/ctest_script.hpp"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <sched.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <thread>
+#include "tests/harness/harness_support.hpp"
+
+namespace gm::harness {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace harness_testing;
+
+// ---- reading compiler output ------------------------------------------------------------------
+
+TEST(Build, CompilerMessagesNameTheSlotsThatDoNotCompile) {
+  const std::string gcc =
+      "student.cpp: In instantiation of 'static T S::hamiltonian_3_4(const Vec3<T>&, const Vec3<T>&) [with T = "
+      "Rational]':\n"
+      "student/geomech/student.hpp:110:5:   required from 'static decltype (...) "
+      "gm::student::detail::slot_hamiltonian_3_4::call_template(A&& ...)'\n"
+      "student.cpp:12:20: error: no matching function for call to 'sqrt(Rational&)'\n"
+      "student.cpp: In instantiation of ... gm::student::detail::slot_omega_3_5::call_template ...\n"
+      "student.cpp:20:3: error: ambiguous overload for 'operator*'\n";
+  const auto failing = slots_failing_in(gcc);
+  ASSERT_EQ(failing.size(), 2u);
+  EXPECT_NE(failing.at("hamiltonian_3_4").find("sqrt"), std::string::npos);
+  EXPECT_NE(failing.at("omega_3_5").find("ambiguous"), std::string::npos);
+  EXPECT_NE(hint_for(failing.at("hamiltonian_3_4"), "exact").find("no exact rational value"), std::string::npos);
+  EXPECT_NE(hint_for("error: no matching function for call to 'sqrt(Real50&)' std::sqrt", "mp50").find("unqualified"),
+            std::string::npos);
+  EXPECT_FALSE(integrators_failing_in(gcc));
+  EXPECT_EQ(first_error(gcc).find("student.cpp:12:20: error"), 0u);
+}
+
+// The precompiled geomech/student.hpp only saves time, and GCC drops an unusable one without a
+// word, so this asks the compiler: the cached compile command of a one-slot file, run again with
+// -Winvalid-pch, must not say the .gch was rejected. Control: the same command with a macro the
+// header tests (as a retry with GEOMECH_SKIP_INTEGRATORS has) must say so.
+TEST(Build, ThePrecompiledStudentHeaderIsUsed) {
+  const Toolchain tc = load_toolchain(default_toolchain_path());
+  ASSERT_FALSE(tc.precompiled_header.empty()) << tc.path << " names no precompiled header with a .gch beside it";
+  const fs::path dir = temp_dir();
+  const fs::path src = dir / "one_slot.cpp";
+  std::ofstream(src) << "#include <geomech/student.hpp>\nusing namespace gm;\nstruct OneSlot {\n"
+                        "  template <class T> static Mat3<T> hat(const Vec3<T>& v) {\n"
+                        "    Mat3<T> m; m << T(0), -v(2), v(1), v(2), T(0), -v(0), -v(1), v(0), T(0); return m; }\n"
+                        "};\nGEOMECH_STUDENT(OneSlot);\n";
+  BuildOptions o;
+  o.cache_dir = (dir / "cache").string();
+  o.mp50 = o.exact = false;
+  const BuildResult r = build_student(src.string(), tc, o);
+  ASSERT_TRUE(r.ok) << r.message;
+  fs::path cmd_file;
+  for (const auto& e : fs::recursive_directory_iterator(dir / "cache"))
+    if (e.path().filename() == "double.cmd") cmd_file = e.path();
+  ASSERT_FALSE(cmd_file.empty());
+  std::ifstream in(cmd_file);
+  const std::string cmd((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_NE(cmd.find("-include " + tc.precompiled_header), std::string::npos) << cmd;
+  auto compiler_says = [&](const std::string& extra) {
+    const fs::path log = dir / "pch.log";
+    const std::string line = cmd + " -Winvalid-pch" + extra + " > " + log.string() + " 2>&1";
+    EXPECT_EQ(std::system(line.c_str()), 0) << line;
+    std::ifstream l(log);
+    return std::string((std::istreambuf_iterator<char>(l)), std::istreambuf_iterator<char>());
+  };
+  const std::string used = compiler_says("");
+  EXPECT_EQ(used.find("not used"), std::string::npos) << used;
+  const std::string control = compiler_says(" -DGEOMECH_SKIP_INTEGRATORS=1");
+  EXPECT_NE(control.find("not used"), std::string::npos) << control;
+  fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace gm::harness
