@@ -31,6 +31,27 @@ bool clearer(const Verdict& a, const Verdict& b) {
 
 }  // namespace
 
+std::string slot_of_direct_check(const Verdict& v) {
+  const Property* p = property_of(v);
+  if (p && p->scope == Scope::Subject && p->needs.size() == 1) return p->needs.front();
+  return {};
+}
+
+FirstFixesSoFar::FirstFixesSoFar(const SubjectInfo& info) : source_(info.source), language_(info.language) {}
+
+std::optional<FirstFixesSoFar::Named> FirstFixesSoFar::on_problem(const Verdict& v) {
+  if (!is_problem(v.outcome) || !v.machine_fault.empty()) return std::nullopt;
+  const std::string slot = slot_of_direct_check(v);
+  if (slot.empty() || !named_.insert(slot).second) return std::nullopt;
+  if (!calls_)
+    calls_ = source_.empty() ? std::map<std::string, std::set<std::string>>{} : slot_calls(source_, language_);
+  Named n{slot, ""};
+  if (auto it = calls_->find(slot); it != calls_->end())
+    for (const auto& c : it->second)
+      if (named_.count(c) && c != slot) n.callee = c;
+  return n;
+}
+
 RootCauses root_causes(const CheckResult& r) {
   RootCauses rc;
   for (const auto& v : r.verdicts) {

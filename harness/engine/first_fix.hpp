@@ -11,6 +11,7 @@
 #include "properties/verdict.hpp"
 
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -18,6 +19,7 @@
 namespace gm::harness {
 
 struct CheckResult;
+struct SubjectInfo;
 
 bool is_problem(Outcome o);  // FAIL, CRASH, TIMEOUT or ERROR
 
@@ -39,5 +41,29 @@ RootCauses root_causes(const CheckResult& r);
 
 // r.first_fixes = root_causes(r): once, when the verdicts are complete.
 void decide_first_fixes(CheckResult& r);
+
+// The slot whose own direct check this verdict is (a property of the subject needing that slot
+// alone); "" for any other.
+std::string slot_of_direct_check(const Verdict& v);
+
+// The first fixes as the verdicts arrive, for a console that prints them live (the same rule,
+// decided on what has arrived so far): a slot whose own direct check fails is named once; one whose
+// source calls a slot already named most likely fails through it, and that callee is named.
+class FirstFixesSoFar {
+ public:
+  struct Named {
+    std::string slot;
+    std::string callee;  // empty: the slot itself is wrong; else the slot it calls, named before
+  };
+  explicit FirstFixesSoFar(const SubjectInfo& info);
+  // A problem verdict's first fix, if it names a slot not named yet (a machine's fault names none).
+  std::optional<Named> on_problem(const Verdict& v);
+
+ private:
+  std::string source_, language_;
+  std::set<std::string> named_;
+  // Which slots each slot of the source calls (harness/engine/source_calls.hpp), read at the first one.
+  std::optional<std::map<std::string, std::set<std::string>>> calls_;
+};
 
 }  // namespace gm::harness

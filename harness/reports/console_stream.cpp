@@ -1,7 +1,5 @@
 #include "harness/reports/console_stream.hpp"
 
-#include "harness/engine/source_calls.hpp"
-
 #include "harness/reports/report.hpp"
 
 #include <cstdio>
@@ -42,7 +40,12 @@ std::string head_lines(const std::string& message, int n) {
 
 ConsoleStream::ConsoleStream(std::string subject, const SubjectInfo& info, std::uint64_t seed, bool quiet,
                              std::ostream& out, std::ostream& err, bool err_is_terminal)
-    : quiet_(quiet), out_(out), err_(err), terminal_(err_is_terminal), last_line_(std::chrono::steady_clock::now()) {
+    : quiet_(quiet),
+      out_(out),
+      err_(err),
+      terminal_(err_is_terminal),
+      last_line_(std::chrono::steady_clock::now()),
+      first_fixes_(info) {
   stub_.subject = std::move(subject);
   stub_.info = info;
   stub_.seed = seed;
@@ -53,13 +56,6 @@ void ConsoleStream::clear_progress() {
     err_ << "\r\033[K" << std::flush;
     line_shown_ = false;
   }
-}
-
-// The slot whose own definition check this verdict is (a property needing that slot alone).
-std::string ConsoleStream::slot_of_direct_check(const Verdict& v) const {
-  const Property* p = find_property(v.property);
-  if (p && p->scope == Scope::Subject && p->needs.size() == 1) return p->needs.front();
-  return {};
 }
 
 void ConsoleStream::scheduled(std::size_t total, std::size_t replayed) {
@@ -116,21 +112,15 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
     }
     // What to fix first: a slot's own definition check names the slot; an integrator's false claim
     // names the claim and what was measured.
+    // (decided by the engine as the verdicts arrive: harness/engine/first_fix.hpp)
     std::string lead;
-    const std::string slot = slot_of_direct_check(v);
-    if (!slot.empty() && first_fixes_.insert(slot).second) {
-      // A slot that calls one already named wrong most likely fails through it.
-      if (!calls_)
-        calls_ = stub_.info.source.empty() ? std::map<std::string, std::set<std::string>>{}
-                                           : slot_calls(stub_.info.source, stub_.info.language);
-      std::string callee;
-      if (auto it = calls_->find(slot); it != calls_->end())
-        for (const auto& c : it->second)
-          if (first_fixes_.count(c) && c != slot) callee = c;
-      lead = callee.empty() ? "FIRST FIX: " + slot_named(stub_.info, slot, "'") + " is wrong: its own check " +
-                                  v.property + " fails in " + v.scalar + ": " + first_line(v.message)
-                            : "THEN:      " + slot_named(stub_.info, slot, "'") + " fails its own check " + v.property +
-                                  " in " + v.scalar + ", and it calls '" + callee + "', which is wrong: fix that first";
+    if (const auto named = first_fixes_.on_problem(v)) {
+      const std::string& slot = named->slot;
+      lead = named->callee.empty()
+                 ? "FIRST FIX: " + slot_named(stub_.info, slot, "'") + " is wrong: its own check " + v.property +
+                       " fails in " + v.scalar + ": " + first_line(v.message)
+                 : "THEN:      " + slot_named(stub_.info, slot, "'") + " fails its own check " + v.property + " in " +
+                       v.scalar + ", and it calls '" + named->callee + "', which is wrong: fix that first";
     }
     if (!v.step_raised.empty()) {
       lead += std::string(lead.empty() ? "" : "\n") + "YOUR STEP RAISES: integrator '" + v.integrator + "' raised at " +

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "harness/engine/check.hpp"
+#include "harness/engine/first_fix.hpp"
 
 #include <chrono>
 #include <iosfwd>
@@ -33,7 +34,6 @@ class ConsoleStream : public CheckListener {
 
  private:
   void clear_progress();
-  std::string slot_of_direct_check(const Verdict& v) const;
 
   CheckResult stub_;  // subject, info and seed: what reproduce_command needs
   bool quiet_;
@@ -42,9 +42,7 @@ class ConsoleStream : public CheckListener {
   bool terminal_;
   bool line_shown_ = false;
   std::chrono::steady_clock::time_point last_line_;
-  std::set<std::string> first_fixes_;  // slots already named in a FIRST FIX line
-  // Which slots each slot of the source calls (harness/engine/source_calls.hpp), read at the first failure.
-  std::optional<std::map<std::string, std::set<std::string>>> calls_;
+  FirstFixesSoFar first_fixes_;        // the slots named in a FIRST FIX line, decided by the engine
   std::set<std::string> raises_seen_;  // integrator and message of each step raise already shown
   int failures_ = 0;
 };

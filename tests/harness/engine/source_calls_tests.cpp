@@ -1,6 +1,7 @@
 // Who calls whom in a submission, read from its source: the first fix is the function
 // whose own check fails, not one that calls it.
 #include "harness/reports/report.hpp"
+#include "harness/engine/first_fix.hpp"
 #include "harness/engine/source_calls.hpp"
 
 #include "tests/support/scratch.hpp"
@@ -89,5 +90,44 @@ TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
   const RootCauses alone = root_causes(r);
   EXPECT_TRUE(alone.calls_broken.empty());
   EXPECT_EQ(alone.order, (std::vector<std::string>{"manakov_2_34", "manakov_Omega"}));
+  fs::remove_all(dir);
+}
+
+// The console's live first fixes follow the same rule on what has arrived so far: the callee
+// named first makes the caller a THEN; a slot is named once; a machine's fault and a check that is
+// no slot's own name none. The control: arriving in the other order, the caller is named alone.
+TEST(SourceCalls, TheLiveFirstFixFollowsTheSameRule) {
+  const fs::path dir = scratch("live-first-fix");
+  write_file(dir / "manakov_Omega.m", "function W = manakov_Omega(A, M)\n  W = -M;\nend\n");
+  write_file(dir / "manakov_2_34.m",
+             "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
+  SubjectInfo info;
+  info.source = dir.string();
+  info.language = "octave";
+  auto failing = [](const char* property, const std::string& machine_fault = "") {
+    gm::Verdict v;
+    v.property = property;
+    v.scalar = "double";
+    v.outcome = machine_fault.empty() ? gm::Outcome::Fail : gm::Outcome::Error;
+    v.machine_fault = machine_fault;
+    return v;
+  };
+  FirstFixesSoFar live(info);
+  EXPECT_FALSE(live.on_problem(failing("definition_manakov_Omega", "the machine starved it")).has_value());
+  const auto omega = live.on_problem(failing("definition_manakov_Omega"));
+  ASSERT_TRUE(omega.has_value());
+  EXPECT_EQ(omega->slot, "manakov_Omega");
+  EXPECT_EQ(omega->callee, "");
+  EXPECT_FALSE(live.on_problem(failing("definition_manakov_Omega")).has_value()) << "named twice";
+  const auto caller = live.on_problem(failing("definition_manakov_2_34"));
+  ASSERT_TRUE(caller.has_value());
+  EXPECT_EQ(caller->slot, "manakov_2_34");
+  EXPECT_EQ(caller->callee, "manakov_Omega");
+  EXPECT_FALSE(live.on_problem(failing("no_such_property")).has_value());
+
+  FirstFixesSoFar other_order(info);
+  const auto first = other_order.on_problem(failing("definition_manakov_2_34"));
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(first->callee, "") << "its callee had not arrived";
   fs::remove_all(dir);
 }

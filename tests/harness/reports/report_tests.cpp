@@ -7,6 +7,7 @@
 #include "harness/trajectories/reference_flow.hpp"
 #include "harness/reports/report.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
+#include "harness/reports/console_stream.hpp"
 #include "harness/reports/svg.hpp"
 #include "harness/engine/thorough_only.hpp"
 #include "harness/engine/trajectory.hpp"
@@ -173,6 +174,50 @@ TEST(Reports, SvgLeavesOutWhatCannotBeDrawnAndSaysSo) {
   EXPECT_NE(svg.find("errors &lt;&amp;&gt;"), std::string::npos);
   EXPECT_EQ(svg.find("clip-path"), std::string::npos);
   EXPECT_NE(svg_plot("empty", {}).find("no drawable points"), std::string::npos);
+}
+
+// The streamed console renders the live first fixes the engine decides (harness/engine/first_fix.hpp):
+// a FIRST FIX line for the callee, a THEN line for the caller that calls it. The control: a
+// verdict that is no slot's own check gets no such line.
+TEST(Reports, TheConsoleStreamNamesTheFirstFixAsItArrives) {
+  const fs::path dir = temp_dir();
+  std::ofstream(dir / "manakov_Omega.m") << "function W = manakov_Omega(A, M)\n  W = -M;\nend\n";
+  std::ofstream(dir / "manakov_2_34.m")
+      << "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n";
+  SubjectInfo info;
+  info.source = dir.string();
+  info.language = "octave";
+  std::ostringstream out, err;
+  ConsoleStream console("dave", info, 0, false, out, err, false);
+  auto failing = [](const char* property) {
+    gm::Verdict v;
+    v.subject = "dave";
+    v.property = property;
+    v.scalar = "double";
+    v.outcome = gm::Outcome::Fail;
+    v.message = "does not hold";
+    return v;
+  };
+  console.finished({failing("definition_manakov_Omega")}, false, CheckProgress{});
+  console.finished({failing("definition_manakov_2_34")}, false, CheckProgress{});
+  console.finished({failing("hat_is_cross_product_of_nothing")}, false, CheckProgress{});
+  const std::string text = out.str();
+  EXPECT_NE(text.find("FIRST FIX: "), std::string::npos) << text;
+  EXPECT_NE(text.find("manakov_Omega' in " + dir.filename().string() +
+                      " is wrong: its own check definition_manakov_Omega fails in double"),
+            std::string::npos)
+      << text;
+  EXPECT_NE(text.find("THEN:      "), std::string::npos) << text;
+  EXPECT_NE(text.find("and it calls 'manakov_Omega', which is wrong: fix that first"), std::string::npos) << text;
+  auto count = [&](const std::string& what) {
+    std::size_t n = 0;
+    for (auto at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count("FIRST FIX: "), 1u) << text;  // the third verdict, no slot's own check, named nothing
+  EXPECT_EQ(count("THEN:      "), 1u) << text;
+  EXPECT_NE(text.find("hat_is_cross_product_of_nothing"), std::string::npos) << text;
+  fs::remove_all(dir);
 }
 
 }  // namespace
