@@ -39,14 +39,15 @@ TEST(TrajectoryFiles, ARunTooLongForTheReferenceIsRefusedAtOnce) {
   const fs::path dir = temp_dir();
   std::ofstream(dir / "long.txt") << "# geomech-trajectory 1\n# system: rigid_body\n# inertia: 2 1.5 1\n# step: 1\n"
                                   << "0 1000 2000 3000\n1e9 1000 2000 3000\n";
-  const auto t0 = std::chrono::steady_clock::now();
   try {
     check_trajectories({(dir / "long.txt").string()}, {});
     ADD_FAILURE() << "accepted";
   } catch (const TrajectoryError& e) {
+    // Refused by the estimate made before any step (harness/trajectories/reference_flow.cpp), not
+    // by the solver's own limit once it has run out: no timing is asserted, the words say which.
+    EXPECT_NE(std::string(e.what()).find("the reference solution would need about"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("Taylor steps"), std::string::npos) << e.what();
   }
-  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(), 5.0);
   fs::remove_all(dir);
 }
 
