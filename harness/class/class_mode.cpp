@@ -518,6 +518,51 @@ std::vector<Implementation> shard_of(const std::vector<Implementation>& all, int
 
 namespace {
 
+// For the test of an interrupted run (tests/run_class_resume.cmake): after N implementations,
+// this process stops itself with the signal named (INT, as Ctrl-C; KILL, as a killed job); -1: never.
+std::pair<long, int> stop_for_a_test() {
+  const char* t = std::getenv("GEOMECH_TEST_STOP_AFTER");
+  if (!t) return {-1, 0};
+  const std::string spec(t);
+  return {std::atol(spec.c_str()), spec.find("KILL") != std::string::npos ? SIGKILL : SIGINT};
+}
+
+// What an interrupted run says: what is kept, what is not, and the command that resumes it.
+std::string interrupted_words(const ClassState& st, std::size_t count, const std::string& report_dir,
+                              const Grades& grades, const std::string& resume) {
+  std::ostringstream say;
+  say << "\n\ngeomech check-class: interrupted. " << st.rows.size() << " of " << count << " results are kept in "
+      << report_dir
+      << "/ (a report and class-row.json each); summary.md and "
+         "summary.html"
+      << (grades.csv.empty() ? "" : " and the gradebook " + grades.csv) << " list the " << st.pending.size()
+      << " not checked yet" << (grades.csv.empty() ? "" : " (no grade in the gradebook)")
+      << ". The same command resumes, checking only those:\n  " << resume << "\n";
+  return say.str();
+}
+
+// The result is kept the moment it is known (class-row.json, then the summary, both atomic), so an
+// interruption loses at most the checks still running.
+void keep_row(const std::string& report_dir, const std::string& name, const std::string& print, const Row& row) {
+  std::error_code dir_ec;
+  fs::create_directories(fs::path(report_dir) / name, dir_ec);
+  json keep{{"format", "geomech-class-row 1"}, {"fingerprint", print}, {"row", row_json(row)}};
+  write_file_atomically((fs::path(report_dir) / name / "class-row.json").string(), keep.dump(1));
+}
+
+// A finished implementation's console line: the verdict and grade the summary now shows for it.
+void say_finished(ClassConsole& console, const std::vector<std::optional<Row>>& finished, const Grades& grades,
+                  const std::string& name, double seconds) {
+  std::vector<ClassRow> rows_now;
+  for (const auto& f : finished)
+    if (f) rows_now.push_back(class_row(*f));
+  const ClassView view = decide_class(rows_now, grades.rubric);
+  for (const auto& sv : view.students)
+    if (sv.row->name == name)
+      console.finished(name, sv.result,
+                       view.no_grades.empty() ? sv.score.headline.substr(0, sv.score.headline.find(':')) : "", seconds);
+}
+
 // The roster's students with nothing in the class folder get a row each (0, "no submission"), in
 // a run of the whole class (a shard does not know the other shards' names; merge-class adds them).
 std::vector<std::string> roster_without_submission(const ClassOptions& o, const Grades& grades,
@@ -829,15 +874,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   io.jobs = o.jobs;
   io.timeout_seconds = o.timeout_per_implementation;
   io.memory_limit_mb = 0;  // the compilers need what they need
-  // For the test of an interrupted run (tests/run_class_resume.cmake): after N implementations,
-  // this process stops itself with the signal named (INT, as Ctrl-C; KILL, as a killed job).
-  long stop_after = -1;
-  int stop_signal = 0;
-  if (const char* t = std::getenv("GEOMECH_TEST_STOP_AFTER")) {
-    const std::string spec(t);
-    stop_after = std::atol(spec.c_str());
-    stop_signal = spec.find("KILL") != std::string::npos ? SIGKILL : SIGINT;
-  }
+  const auto [stop_after, stop_signal] = stop_for_a_test();
   // The views of the class as it stands (summary.md, summary.html, the gradebook), rewritten
   // together, now (so that an earlier run's complete summary and gradebook never stand beside this
   // run's deleted results) and as each implementation finishes.
@@ -859,15 +896,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   auto rewrite_views = [&] {
     const ClassState st = state_now();
     summarise_class(st, report_dir, grades, false);
-    std::ostringstream say;
-    say << "\n\ngeomech check-class: interrupted. " << st.rows.size() << " of " << impls.size()
-        << " results are kept in " << report_dir
-        << "/ (a report and class-row.json each); summary.md and "
-           "summary.html"
-        << (grades.csv.empty() ? "" : " and the gradebook " + grades.csv) << " list the " << st.pending.size()
-        << " not checked yet" << (grades.csv.empty() ? "" : " (no grade in the gradebook)")
-        << ". The same command resumes, checking only those:\n  " << resume << "\n";
-    console.on_interrupt_say(say.str());
+    console.on_interrupt_say(interrupted_words(st, impls.size(), report_dir, grades, resume));
   };
   rewrite_views();
   io.on_started = [&](std::size_t t) { console.started(impls[to_check[t]].name); };
@@ -876,25 +905,11 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   io.on_finished = [&](std::size_t t, const TaskResult& result) {
     const std::size_t i = to_check[t];
     Row row = row_of(impls[i], result, report_dir);
-    // The result is kept the moment it is known (class-row.json, then the summary, both atomic),
-    // so an interruption loses at most the checks still running.
-    std::error_code dir_ec;
-    fs::create_directories(fs::path(report_dir) / impls[i].name, dir_ec);
-    json keep{{"format", "geomech-class-row 1"}, {"fingerprint", prints[i]}, {"row", row_json(row)}};
-    write_file_atomically((fs::path(report_dir) / impls[i].name / "class-row.json").string(), keep.dump(1));
+    keep_row(report_dir, impls[i].name, prints[i], row);
     const double seconds = result.seconds;
     finished[i] = std::move(row);
     rewrite_views();
-    // Its line: the verdict and grade the summary now shows for it.
-    std::vector<ClassRow> rows_now;
-    for (const auto& f : finished)
-      if (f) rows_now.push_back(class_row(*f));
-    const ClassView view = decide_class(rows_now, grades.rubric);
-    for (const auto& sv : view.students)
-      if (sv.row->name == impls[i].name)
-        console.finished(impls[i].name, sv.result,
-                         view.no_grades.empty() ? sv.score.headline.substr(0, sv.score.headline.find(':')) : "",
-                         seconds);
+    say_finished(console, finished, grades, impls[i].name, seconds);
     ++done;
     if (stop_after >= 0 && static_cast<long>(done) >= stop_after) ::raise(stop_signal);
   };
