@@ -486,23 +486,11 @@ std::string reproduce_command(const CheckResult& r, const Verdict& v) {
   return cmd;
 }
 
-CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckConfig& cfg) {
-  const auto start = std::chrono::steady_clock::now();
-  // Values and types in failures are written in the implementation's language (support/show.hpp);
-  // the checks' processes inherit it.
-  show_style() = info.language == "python"   ? ShowStyle::Python
-                 : info.language == "octave" ? ShowStyle::Octave
-                                             : ShowStyle::Cpp;
-  CheckResult result;
-  result.subject = s.name;
-  result.description = s.description;
-  result.info = info;
-  result.seed = cfg.run.seed;
-  result.integrators = integrator_info(s);
-  for (ScalarKind k : {ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact})
-    for (const auto& slot : subject_slots())
-      if (subject_provides(s, k, slot.name)) result.provided[scalar_name(k)].push_back(slot.name);
+namespace {
 
+// The checks a run selects: each property in each scalar asked for, per integrator for an
+// integrator's property; a 50-digit run left to --thorough is listed in result.left_to_thorough.
+std::vector<Item> select_items(const SubjectSet& s, const CheckConfig& cfg, CheckResult& result) {
   std::vector<Item> items;
   for (const auto& p : properties()) {
     if (!cfg.properties.empty() &&
@@ -531,56 +519,124 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
       items.push_back(Item{&p, k, {}});
     }
   }
-  {
-    std::ostringstream sel;
-    if (cfg.properties.empty() && cfg.spec_prefix.empty())
-      sel << "all " << properties().size() << " properties";
-    else {
-      sel << "selected properties:";
-      for (const auto& p : cfg.properties) sel << " --property " << p;
-      if (!cfg.spec_prefix.empty()) sel << " --spec " << cfg.spec_prefix;
-    }
-    if (cfg.scalars.size() < 3) {
-      sel << "; scalars:";
-      for (auto k : cfg.scalars) sel << " " << scalar_name(k);
-    }
-    if (!cfg.integrator.empty()) sel << "; integrator " << cfg.integrator;
-    if (!cfg.only_checks.empty()) sel.str(cfg.selection_note);
-    if (!result.left_to_thorough.empty())
-      sel << "; " << result.left_to_thorough.size() << " costly 50-digit runs left to --thorough";
-    if (!cfg.case_factor_note.empty()) {
-      result.case_factor = cfg.run.case_factor;
-      result.case_factor_note = cfg.case_factor_note;
-      sel << "; " << cfg.run.case_factor << " of each property's cases (--thorough: all)";
-    }
-    result.selection = sel.str();
-    result.thorough_only_note = result.left_to_thorough.empty() ? "" : cfg.thorough_only_note;
-  }
+  return items;
+}
 
-  // The order that finds the likely mistake first: what failed last time; then every
-  // slot's own definition check, in every scalar; then the other properties, algebraic identities
-  // before flows; then the integrators' claims after the slots their steps call; the long runs
-  // (bounded energy, the pictures and the work-precision diagram) start as the flows begin, so
-  // that the rest runs beside them (below), and their verdicts come last. Within a group the
-  // exact rationals and double before 50 digits, which cost most. The verdicts are sorted afterwards:
-  // the order changes when a result is known, never what it is.
+// The selection in words (result.selection), with what this run leaves out.
+void say_selection(const CheckConfig& cfg, CheckResult& result) {
+  std::ostringstream sel;
+  if (cfg.properties.empty() && cfg.spec_prefix.empty())
+    sel << "all " << properties().size() << " properties";
+  else {
+    sel << "selected properties:";
+    for (const auto& p : cfg.properties) sel << " --property " << p;
+    if (!cfg.spec_prefix.empty()) sel << " --spec " << cfg.spec_prefix;
+  }
+  if (cfg.scalars.size() < 3) {
+    sel << "; scalars:";
+    for (auto k : cfg.scalars) sel << " " << scalar_name(k);
+  }
+  if (!cfg.integrator.empty()) sel << "; integrator " << cfg.integrator;
+  if (!cfg.only_checks.empty()) sel.str(cfg.selection_note);
+  if (!result.left_to_thorough.empty())
+    sel << "; " << result.left_to_thorough.size() << " costly 50-digit runs left to --thorough";
+  if (!cfg.case_factor_note.empty()) {
+    result.case_factor = cfg.run.case_factor;
+    result.case_factor_note = cfg.case_factor_note;
+    sel << "; " << cfg.run.case_factor << " of each property's cases (--thorough: all)";
+  }
+  result.selection = sel.str();
+  result.thorough_only_note = result.left_to_thorough.empty() ? "" : cfg.thorough_only_note;
+}
+
+// Whether an integrator's check judges a claim its integrator makes.
+bool claimed(const SubjectSet& s, const Item& item) {
+  if (item.integrator.empty()) return false;
+  const IntegratorClaims* c = s.claims_for(item.integrator);
+  return c != nullptr && claims_any(*c, item.property->judges);
+}
+
+// The checks that failed in the previous run of this report.
+std::vector<bool> replayed_items(const SubjectSet& s, const CheckConfig& cfg, const std::vector<Item>& items) {
   std::vector<bool> replayed(items.size(), false);
   for (std::size_t i = 0; i < items.size(); ++i) {
     Verdict v = base_verdict(s, items[i]);
     replayed[i] = cfg.failed_before.count(check_key(v)) > 0;
   }
-  auto claimed_item = [&](const Item& item) {
-    if (item.integrator.empty()) return false;
-    const IntegratorClaims* c = s.claims_for(item.integrator);
-    return c != nullptr && claims_any(*c, item.property->judges);
-  };
+  return replayed;
+}
+
+// The order that finds the likely mistake first: what failed last time; then every slot's own
+// definition check, in every scalar; then the other properties, algebraic identities before flows;
+// then the integrators' claims after the slots their steps call; the long runs (bounded energy, the
+// pictures and the work-precision diagram) start as the flows begin, so that the rest runs beside
+// them (start_order_of), and their verdicts come last. Within a group the exact rationals and double
+// before 50 digits, which cost most. The verdicts are sorted afterwards: the order changes when a
+// result is known, never what it is.
+std::vector<std::size_t> schedule(const SubjectSet& s, const std::vector<Item>& items,
+                                  const std::vector<bool>& replayed) {
   std::vector<std::size_t> order(items.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const auto ka = schedule_key(items[a], replayed[a], claimed_item(items[a])),
-               kb = schedule_key(items[b], replayed[b], claimed_item(items[b]));
+    const auto ka = schedule_key(items[a], replayed[a], claimed(s, items[a])),
+               kb = schedule_key(items[b], replayed[b], claimed(s, items[b]));
     return ka < kb;
   });
+  return order;
+}
+
+// The order tasks start in. The pictures and the work-precision diagram (the tasks after the
+// n_items checks) are the longest single tasks (11 s for an untrusted C++ implementation, most of it
+// alone at the end when started last): they start once the slots' own checks and the exact
+// identities have started, so that the other checks run beside them. So do the bounded-energy runs,
+// for the same reason: started last, `correct.m`'s (10 s) ran alone at the end of its check
+// (2026-11-27). Their verdicts still come after every slot's own check.
+std::vector<std::size_t> start_order_of(const SubjectSet& s, const std::vector<Item>& items,
+                                        const std::vector<bool>& replayed, const std::vector<std::size_t>& order,
+                                        std::size_t n_tasks) {
+  const std::size_t n_items = order.size();
+  auto group_from = [&](std::size_t from, int group) {
+    while (from < n_items) {
+      const auto key = schedule_key(items[order[from]], replayed[order[from]], claimed(s, items[order[from]]));
+      if (std::get<0>(key) == 1 && std::get<1>(key) >= group) break;
+      ++from;
+    }
+    return from;
+  };
+  const std::size_t split = group_from(0, 2), long_runs = group_from(split, 4);
+  std::vector<std::size_t> start;
+  for (std::size_t t = 0; t < split; ++t) start.push_back(t);
+  for (std::size_t t = n_items; t < n_tasks; ++t) start.push_back(t);
+  for (std::size_t t = long_runs; t < n_items; ++t) start.push_back(t);
+  for (std::size_t t = split; t < long_runs; ++t) start.push_back(t);
+  return start;
+}
+
+}  // namespace
+
+CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckConfig& cfg) {
+  const auto start = std::chrono::steady_clock::now();
+  // Values and types in failures are written in the implementation's language (support/show.hpp);
+  // the checks' processes inherit it.
+  show_style() = info.language == "python"   ? ShowStyle::Python
+                 : info.language == "octave" ? ShowStyle::Octave
+                                             : ShowStyle::Cpp;
+  CheckResult result;
+  result.subject = s.name;
+  result.description = s.description;
+  result.info = info;
+  result.seed = cfg.run.seed;
+  result.integrators = integrator_info(s);
+  for (ScalarKind k : {ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact})
+    for (const auto& slot : subject_slots())
+      if (subject_provides(s, k, slot.name)) result.provided[scalar_name(k)].push_back(slot.name);
+
+  const std::vector<Item> items = select_items(s, cfg, result);
+  say_selection(cfg, result);
+
+  // The order that finds the likely mistake first (schedule).
+  const std::vector<bool> replayed = replayed_items(s, cfg, items);
+  const std::vector<std::size_t> order = schedule(s, items, replayed);
 
   RunOptions run = cfg.run;
   run.out_of_process = info.out_of_process;
@@ -615,26 +671,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   io.prepare_worker = info.prepare_worker;
   io.worker_done = info.worker_done;
   io.worker_times = info.worker_times;  // the code's CPU and queueing behind the protocol
-  // The pictures and the work-precision diagram are the longest single tasks (11 s for an untrusted
-  // C++ implementation, most of it alone at the end when started last): they start once the slots'
-  // own checks and the exact identities have started, so that the other checks run beside them.
-  // So do the bounded-energy runs, for the same reason: started last, `correct.m`'s (10 s) ran alone
-  // at the end of its check (2026-11-27). Their verdicts still come after every slot's own check.
-  {
-    auto group_from = [&](std::size_t from, int group) {
-      while (from < n_items) {
-        const auto key = schedule_key(items[order[from]], replayed[order[from]], claimed_item(items[order[from]]));
-        if (std::get<0>(key) == 1 && std::get<1>(key) >= group) break;
-        ++from;
-      }
-      return from;
-    };
-    const std::size_t split = group_from(0, 2), long_runs = group_from(split, 4);
-    for (std::size_t t = 0; t < split; ++t) io.start_order.push_back(t);
-    for (std::size_t t = n_items; t < tasks.size(); ++t) io.start_order.push_back(t);
-    for (std::size_t t = long_runs; t < n_items; ++t) io.start_order.push_back(t);
-    for (std::size_t t = split; t < long_runs; ++t) io.start_order.push_back(t);
-  }
+  io.start_order = start_order_of(s, items, replayed, order, tasks.size());
 
   // Each check's verdicts the moment it ends, told to the listeners (check_events.hpp).
   std::vector<std::vector<Verdict>> by_task(n_items);
