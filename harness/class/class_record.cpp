@@ -1,4 +1,5 @@
 #include "harness/class/class_record.hpp"
+#include "harness/submissions/languages.hpp"
 
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/report.hpp"
@@ -285,8 +286,8 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
       view.students.push_back(std::move(s));
       continue;
     }
-    const std::string language = row.report.value("language", "c++");
-    s.language = language == "python" ? "Python" : language == "octave" ? "Octave" : "C++";
+    const Language* language = language_named(row.report.value("language", "c++"));
+    s.language = language ? language->name : "C++";  // the language table's name for it
     for (const auto& v : row.report.value("verdicts", json::array())) {
       auto& c = s.areas[v.value("area", "?")];
       const std::string out = v.at("outcome").get<std::string>();
