@@ -8,6 +8,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,15 @@ inline CheckConfig quick(std::vector<std::string> props) {
   c.timeout_seconds = 1;
   c.portraits = false;
   return c;
+}
+
+// An Octave folder in which manakov_Omega is wrong and manakov_2_34 calls it: the first fix is the
+// callee (harness/engine/first_fix.hpp).
+inline void write_omega_and_its_caller(const std::filesystem::path& dir) {
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "manakov_Omega.m") << "function W = manakov_Omega(A, M)\n  W = -M;\nend\n";
+  std::ofstream(dir / "manakov_2_34.m")
+      << "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n";
 }
 
 }  // namespace gm::harness::harness_testing

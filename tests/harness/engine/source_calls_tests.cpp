@@ -4,6 +4,7 @@
 #include "harness/engine/first_fix.hpp"
 #include "harness/engine/source_calls.hpp"
 
+#include "tests/harness/harness_support.hpp"
 #include "tests/support/scratch.hpp"
 
 #include <gtest/gtest.h>
@@ -60,9 +61,7 @@ TEST(SourceCalls, ACallerIsReadFromPythonOctaveAndCpp) {
 // submission). Both own checks fail; the callee comes first, and the caller says why it fails.
 TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
   const fs::path dir = scratch("first-fix");
-  write_file(dir / "manakov_Omega.m", "function W = manakov_Omega(A, M)\n  W = -M;\nend\n");
-  write_file(dir / "manakov_2_34.m",
-             "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
+  gm::harness::harness_testing::write_omega_and_its_caller(dir);
   CheckResult r;
   r.info.source = dir.string();
   r.info.language = "octave";
@@ -98,9 +97,7 @@ TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
 // no slot's own name none. The control: arriving in the other order, the caller is named alone.
 TEST(SourceCalls, TheLiveFirstFixFollowsTheSameRule) {
   const fs::path dir = scratch("live-first-fix");
-  write_file(dir / "manakov_Omega.m", "function W = manakov_Omega(A, M)\n  W = -M;\nend\n");
-  write_file(dir / "manakov_2_34.m",
-             "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
+  gm::harness::harness_testing::write_omega_and_its_caller(dir);
   SubjectInfo info;
   info.source = dir.string();
   info.language = "octave";

@@ -181,9 +181,7 @@ TEST(Reports, SvgLeavesOutWhatCannotBeDrawnAndSaysSo) {
 // verdict that is no slot's own check gets no such line.
 TEST(Reports, TheConsoleStreamNamesTheFirstFixAsItArrives) {
   const fs::path dir = temp_dir();
-  std::ofstream(dir / "manakov_Omega.m") << "function W = manakov_Omega(A, M)\n  W = -M;\nend\n";
-  std::ofstream(dir / "manakov_2_34.m")
-      << "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n";
+  write_omega_and_its_caller(dir);
   SubjectInfo info;
   info.source = dir.string();
   info.language = "octave";
