@@ -16,13 +16,19 @@ namespace gm::harness {
 using namespace report_parts;
 using nlohmann::json;
 
-std::string console_report(const CheckResult& r, const Catalogue* c, bool details) {
-  std::ostringstream os;
+namespace {
+
+// The subject, the selection, the interpreter, the warnings.
+void write_head(std::ostream& os, const CheckResult& r) {
   os << "geomech check: subject '" << r.subject << "'";
   if (!r.description.empty()) os << " (" << r.description << ")";
   os << "\nseed " << r.seed << "; " << r.selection << "; residuals in units of eps * scale\n";
   if (!r.info.interpreter.empty()) os << "interpreter: " << inert_text(r.info.interpreter) << "\n";
   for (const auto& w : r.info.warnings) os << "warning: " << w << "\n";
+}
+
+// A row per property, a cell per scalar; what did not run, counted.
+void write_table(std::ostream& os, const CheckResult& r, const Catalogue* c) {
   os << "\n" << std::left << std::setw(44) << "property" << std::setw(30) << "spec entry (place)";
   const char* scalars[] = {"double", "mp50", "exact"};
   for (const char* s : scalars) os << std::setw(20) << s;
@@ -82,6 +88,10 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
        << " (report.md lists them)";
     os << ")\n";
   }
+}
+
+// The counts, the first fixes the engine decided, what was not checked, discarded or cut short.
+void write_summary(std::ostream& os, const CheckResult& r) {
   os << "\nsummary: " << summary_counts(r) << "  (" << seconds_text(r.seconds) << ")\n";
   {
     const RootCauses& rc = r.first_fixes;
@@ -125,6 +135,10 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
     os << "(" << r.unexercised.size() << " provided slots and integrators were not exercised by this selection)\n";
   else
     for (const auto& w : r.unexercised) os << "warning: " << w << "\n";
+}
+
+// Each integrator's claims and what was found.
+void write_claims(std::ostream& os, const CheckResult& r) {
   for (const auto& integ : r.integrators) {
     std::ostringstream rows;
     rows << std::left;
@@ -150,53 +164,73 @@ std::string console_report(const CheckResult& r, const Catalogue* c, bool detail
          << ")";
     os << " claims" << domain_words(integ.claims.domain) << ":" << rows.str() << "\n";
   }
-  if (details) {
-    bool header = false;
-    std::set<std::string> raised;  // one step raise in full per integrator and message
-    std::vector<const Verdict*> ordered;
-    for (const auto& v : r.verdicts)
-      if (is_problem(v.outcome)) ordered.push_back(&v);
-    std::stable_sort(ordered.begin(), ordered.end(), [&](const Verdict* a, const Verdict* b) {
-      return judges_a_claim_made(r, *a) > judges_a_claim_made(r, *b);
-    });
-    for (const Verdict* vp : ordered) {
-      const Verdict& v = *vp;
-      if (!header) os << "\ndetails of every verdict that is not a pass or not provided:\n";
-      header = true;
-      if (!v.step_raised.empty() && !raised.insert(v.integrator + "\n" + v.step_raised).second) {
-        os << "\n"
-           << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]: your step raised, as above\n";
+}
+
+// Every verdict that is not a pass or not provided, in full.
+void write_problems(std::ostream& os, const CheckResult& r) {
+  bool header = false;
+  std::set<std::string> raised;  // one step raise in full per integrator and message
+  std::vector<const Verdict*> ordered;
+  for (const auto& v : r.verdicts)
+    if (is_problem(v.outcome)) ordered.push_back(&v);
+  std::stable_sort(ordered.begin(), ordered.end(), [&](const Verdict* a, const Verdict* b) {
+    return judges_a_claim_made(r, *a) > judges_a_claim_made(r, *b);
+  });
+  for (const Verdict* vp : ordered) {
+    const Verdict& v = *vp;
+    if (!header) os << "\ndetails of every verdict that is not a pass or not provided:\n";
+    header = true;
+    if (!v.step_raised.empty() && !raised.insert(v.integrator + "\n" + v.step_raised).second) {
+      os << "\n"
+         << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]: your step raised, as above\n";
+      continue;
+    }
+    os << "\n" << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]  spec " << v.spec;
+    os << "\n  " << v.title;
+    std::istringstream lines(v.message);
+    for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
+    if (!v.counterexample.empty() && !inputs_in_message(v)) {
+      os << "\n  " << counterexample_heading(v);
+      for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
+    }
+    if (v.outcome == Outcome::Fail && r.info.randomised)
+      os << "\n  after " << v.cases << " passing cases; seed " << v.seed;
+    os << "\n  reproduce: " << reproduce_command(r, v) << "\n";
+  }
+}
+
+// What could not run, by reason.
+void write_not_provided(std::ostream& os, const CheckResult& r) {
+  const Missing m = missing_of(r);
+  if (!m.by_reason.empty()) {
+    os << "\nnot provided (" << r.count(Outcome::NotProvided) << " checks):\n";
+    // A file with integrators and no slot of the notes wraps an engine: one line for the slots.
+    const bool wrapper = is_engine_wrapper(r);
+    std::size_t slot_checks = 0;
+    for (const auto& [reason, rows] : m.by_reason) {
+      if (wrapper && reason.rfind("needs slot '", 0) == 0) {
+        slot_checks += rows.size();
         continue;
       }
-      os << "\n" << outcome_name(v.outcome) << "  " << row_name(v) << "  [" << v.scalar << "]  spec " << v.spec;
-      os << "\n  " << v.title;
-      std::istringstream lines(v.message);
-      for (std::string line; std::getline(lines, line);) os << "\n  | " << line;
-      if (!v.counterexample.empty() && !inputs_in_message(v)) {
-        os << "\n  " << counterexample_heading(v);
-        for (const auto& [type, value] : v.counterexample) os << "\n    " << type << " = " << value;
-      }
-      if (v.outcome == Outcome::Fail && r.info.randomised)
-        os << "\n  after " << v.cases << " passing cases; seed " << v.seed;
-      os << "\n  reproduce: " << reproduce_command(r, v) << "\n";
+      os << "  " << rows.size() << " x  " << reason << "\n";
     }
-    const Missing m = missing_of(r);
-    if (!m.by_reason.empty()) {
-      os << "\nnot provided (" << r.count(Outcome::NotProvided) << " checks):\n";
-      // A file with integrators and no slot of the notes wraps an engine: one line for the slots.
-      const bool wrapper = is_engine_wrapper(r);
-      std::size_t slot_checks = 0;
-      for (const auto& [reason, rows] : m.by_reason) {
-        if (wrapper && reason.rfind("needs slot '", 0) == 0) {
-          slot_checks += rows.size();
-          continue;
-        }
-        os << "  " << rows.size() << " x  " << reason << "\n";
-      }
-      if (slot_checks > 0)
-        os << "  " << slot_checks << " x  an engine wrapper: slots not provided (the checks of the notes' slots; its "
-           << "integrators are checked)\n";
-    }
+    if (slot_checks > 0)
+      os << "  " << slot_checks << " x  an engine wrapper: slots not provided (the checks of the notes' slots; its "
+         << "integrators are checked)\n";
+  }
+}
+
+}  // namespace
+
+std::string console_report(const CheckResult& r, const Catalogue* c, bool details) {
+  std::ostringstream os;
+  write_head(os, r);
+  write_table(os, r, c);
+  write_summary(os, r);
+  write_claims(os, r);
+  if (details) {
+    write_problems(os, r);
+    write_not_provided(os, r);
   }
   return os.str();
 }
