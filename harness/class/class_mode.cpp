@@ -341,16 +341,11 @@ std::string md_cell_of(const std::string& text) { return md_inline(text); }
 // finishes, so that they always agree, an interrupted run included: the students not checked yet
 // are listed in the summaries and have no grade in the gradebook, which says why. When `final`,
 // the console gets the table. Returns the exit status (0: every row PASS).
-static int summarise_class(const ClassState& st, const std::string& report_dir, const Grades& grades, bool final) {
-  std::error_code ec;
-  std::vector<ClassRow> class_rows;
-  for (const auto& row : st.rows) class_rows.push_back(class_row(row));
-  for (const auto& name : st.no_submission) class_rows.push_back(no_submission_row(name));
-  std::sort(class_rows.begin(), class_rows.end(), [](const ClassRow& a, const ClassRow& b) { return a.name < b.name; });
-  const ClassView view = decide_class(class_rows, grades.rubric);
-  const auto& areas = area_names();
+namespace {
+
+// The title, what is still to check, and how to read the table.
+void write_class_head(std::ostream& md, const ClassState& st, const ClassView& view, const Grades& grades) {
   const std::size_t total = view.students.size() + st.pending.size();
-  std::ostringstream md, console;
   md << "# geomech class report: " << md_inline(st.class_dir) << "\n\n";
   if (!st.pending.empty()) {
     md << "**In progress: " << view.students.size() << " of " << total
@@ -373,6 +368,12 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
         "compute in (double only). Details in each implementation's report; summary.html is this page to read, "
         "sortable.\n\n";
   if (!view.no_grades.empty()) md << "**No grades**: " << md_inline(view.no_grades) << "\n\n";
+}
+
+// A row per student, in summary.md and on the console; the number that did not pass.
+int write_student_table(std::ostream& md, std::ostream& console, const ClassView& view) {
+  const auto& areas = area_names();
+  int bad = 0;
   md << "| implementation | result | grade |";
   for (const auto& a : areas) md << " " << a << " |";
   md << " report |\n|---|---|---|";
@@ -382,7 +383,6 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
           << std::left << std::setw(22) << "implementation" << std::setw(18) << "result" << std::setw(10) << "grade";
   for (const auto& a : areas) console << std::setw(22) << a;
   console << "\n" << std::string(22 + 18 + 10 + 22 * areas.size(), '-') << "\n";
-  int bad = 0;
   for (const auto& s : view.students) {
     if (s.result != "PASS") ++bad;
     const std::string grade = view.no_grades.empty() ? format_points(s.score.points) : "-";
@@ -400,20 +400,28 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
     md << " " << (s.report_link.empty() ? "-" : "[" + md_inline(link) + "](" + md_link_target(link) + ")") << " |\n";
     console << "\n";
   }
-  if (!view.mistakes.empty()) {  // the lecture to repeat (class_record.hpp, class_mistakes)
-    md << "\n## What the class got wrong\n\n| wrong | students | who | the most common first fix "
-          "|\n|---|---|---|---|\n";
-    for (const auto& m : view.mistakes) {
-      std::string who;
-      for (std::size_t i = 0; i < m.who.size(); ++i) who += (i ? ", " : "") + m.who[i];
-      md << "| " << m.kind << " `" << md_inline(m.what) << "` | " << m.students << " of " << m.checked << " | "
-         << md_cell_of(bounded_text(who, 200)) << " | "
-         << (m.common_fix.empty() ? std::string("-")
-                                  : "(" + std::to_string(m.common_fix_students) + " of " + std::to_string(m.students) +
-                                        ") " + md_cell_of(bounded_text(m.common_fix, 300)))
-         << " |\n";
-    }
+  return bad;
+}
+
+// What the class got wrong: the lecture to repeat (class_record.hpp, class_mistakes).
+void write_class_mistakes(std::ostream& md, const ClassView& view) {
+  if (view.mistakes.empty()) return;
+  md << "\n## What the class got wrong\n\n| wrong | students | who | the most common first fix "
+        "|\n|---|---|---|---|\n";
+  for (const auto& m : view.mistakes) {
+    std::string who;
+    for (std::size_t i = 0; i < m.who.size(); ++i) who += (i ? ", " : "") + m.who[i];
+    md << "| " << m.kind << " `" << md_inline(m.what) << "` | " << m.students << " of " << m.checked << " | "
+       << md_cell_of(bounded_text(who, 200)) << " | "
+       << (m.common_fix.empty() ? std::string("-")
+                                : "(" + std::to_string(m.common_fix_students) + " of " + std::to_string(m.students) +
+                                      ") " + md_cell_of(bounded_text(m.common_fix, 300)))
+       << " |\n";
   }
+}
+
+// Each student in a sentence, with a link to the report.
+void write_students_in_words(std::ostream& md, const ClassView& view) {
   md << "\n## Each student in words\n\n";
   for (const auto& s : view.students) {
     md << "- **" << md_inline(s.row->name) << "**" << (s.language.empty() ? "" : " (" + s.language + ")") << ": ";
@@ -424,6 +432,10 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
     md << "\n";
   }
   md << "\n";
+}
+
+// The students that did not compile, were not checked, or met the grader's fault, with why.
+void write_student_problems(std::ostream& md, std::ostream& console, const ClassView& view) {
   for (const auto& s : view.students) {
     if (s.status == "does not compile") {
       md << "## " << md_inline(s.row->name) << ": does not compile\n\n"
@@ -442,29 +454,30 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
       console << "\n" << inert_text(s.row->name) << ": GRADER ERROR (no grade): " << inert_text(fault) << "\n";
     }
   }
-  // The roster's warnings (a student with no roster row is graded under their implementation's
-  // name, which the LMS may not match): in the summary, where the lecturer reads, not only on the
-  // console. A roster row matching no implementation is a NO SUBMISSION row already.
-  if (grades.roster) {
-    std::vector<StudentResult> named;
-    for (const auto& s : view.students) named.push_back(s.graded);
-    std::vector<std::string> warnings;
-    for (const auto& w : roster_warnings(named, *grades.roster))
-      if (w.find("matches no implementation") == std::string::npos) warnings.push_back(w);
-    if (!warnings.empty()) {
-      md << "## Roster\n\n";
-      for (const auto& w : warnings) md << "- " << md_cell_of(w) << "\n";
-      md << "\n";
-    }
+}
+
+// The roster's warnings (a student with no roster row is graded under their implementation's
+// name, which the LMS may not match): in the summary, where the lecturer reads, not only on the
+// console. A roster row matching no implementation is a NO SUBMISSION row already.
+void write_roster_warnings(std::ostream& md, const ClassView& view, const Grades& grades) {
+  if (!grades.roster) return;
+  std::vector<StudentResult> named;
+  for (const auto& s : view.students) named.push_back(s.graded);
+  std::vector<std::string> warnings;
+  for (const auto& w : roster_warnings(named, *grades.roster))
+    if (w.find("matches no implementation") == std::string::npos) warnings.push_back(w);
+  if (!warnings.empty()) {
+    md << "## Roster\n\n";
+    for (const auto& w : warnings) md << "- " << md_cell_of(w) << "\n";
+    md << "\n";
   }
-  write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
-  ClassPage page;
-  page.class_name = st.class_dir;
-  page.rubric_source = grades.rubric.source;
-  page.pending = st.pending;
-  write_file_atomically((fs::path(report_dir) / "summary.html").string(), class_summary_html(view, page));
-  // The gradebook, with the summary: the same students, the same grades; one not checked yet has
-  // no grade and says so (an empty cell is "no grade" to Moodle and Canvas).
+}
+
+// The gradebook, with the summary: the same students, the same grades; one not checked yet has
+// no grade and says so (an empty cell is "no grade" to Moodle and Canvas). The students graded.
+std::vector<StudentResult> write_class_gradebook(const ClassState& st, const ClassView& view, const Grades& grades,
+                                                 bool final) {
+  std::error_code ec;
   std::vector<StudentResult> students;
   for (const auto& s : view.students) students.push_back(s.graded);
   for (const auto& name : st.pending) {
@@ -487,14 +500,20 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
     else
       write_file_atomically(grades.csv, csv);
   }
-  if (!final) return bad == 0 ? 0 : 1;
+  return students;
+}
+
+// What a complete run prints: feedback files, the console table, where the summary and the
+// gradebook are, the roster's warnings.
+void say_class_done(const ClassView& view, const std::string& console, const std::string& report_dir,
+                    const Grades& grades, const std::vector<StudentResult>& students) {
   // Feedback where students read it, once the class is complete (never a page of a run cut short).
   if (!grades.feedback_dir.empty())
     for (const auto& line : write_feedback_files(view, grades.feedback_dir))
       std::cout << "feedback: " << grades.feedback_dir << ": " << line << "\n";
   if (!grades.csv.empty() && !view.no_grades.empty())
     throw std::runtime_error("no gradebook written: " + view.no_grades + " (the summaries are written)");
-  std::cout << console.str() << "\nsummary: " << report_dir
+  std::cout << console << "\nsummary: " << report_dir
             << "/summary.md and summary.html; one report per implementation in " << report_dir
             << "/<name>/report.md (and .html)\n";
   if (!grades.csv.empty()) {
@@ -506,6 +525,31 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
   if (grades.roster)
     for (const auto& w : roster_warnings(students, *grades.roster))
       if (w.find("matches no implementation") == std::string::npos) std::cout << "warning: " << w << "\n";
+}
+
+}  // namespace
+
+static int summarise_class(const ClassState& st, const std::string& report_dir, const Grades& grades, bool final) {
+  std::vector<ClassRow> class_rows;
+  for (const auto& row : st.rows) class_rows.push_back(class_row(row));
+  for (const auto& name : st.no_submission) class_rows.push_back(no_submission_row(name));
+  std::sort(class_rows.begin(), class_rows.end(), [](const ClassRow& a, const ClassRow& b) { return a.name < b.name; });
+  const ClassView view = decide_class(class_rows, grades.rubric);
+  std::ostringstream md, console;
+  write_class_head(md, st, view, grades);
+  const int bad = write_student_table(md, console, view);
+  write_class_mistakes(md, view);
+  write_students_in_words(md, view);
+  write_student_problems(md, console, view);
+  write_roster_warnings(md, view, grades);
+  write_file_atomically((fs::path(report_dir) / "summary.md").string(), md.str());
+  ClassPage page;
+  page.class_name = st.class_dir;
+  page.rubric_source = grades.rubric.source;
+  page.pending = st.pending;
+  write_file_atomically((fs::path(report_dir) / "summary.html").string(), class_summary_html(view, page));
+  const std::vector<StudentResult> students = write_class_gradebook(st, view, grades, final);
+  if (final) say_class_done(view, console.str(), report_dir, grades, students);
   return bad == 0 ? 0 : 1;
 }
 
