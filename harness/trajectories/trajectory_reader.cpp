@@ -117,100 +117,99 @@ int significant_digits(const std::string& text) {
 
 }  // namespace
 
-Trajectory parse_trajectory(const std::string& text, const std::string& name, const TrajectoryParams& params) {
-  Trajectory tr;
-  tr.path = name;
-  if (text.find('\0') != std::string::npos)
-    throw TrajectoryError(name + ": this is not a text file (it contains NUL bytes)");
-  std::vector<std::string> lines;
-  {
-    std::size_t start = 0;
-    while (start <= text.size()) {
-      const std::size_t nl = text.find('\n', start);
-      if (nl == std::string::npos) {
-        if (start < text.size()) lines.push_back(text.substr(start));
-        break;
-      }
-      lines.push_back(text.substr(start, nl - start));
-      start = nl + 1;
-    }
-  }
-  std::size_t i = 0;
-  auto blank = [](const std::string& l) { return trim(l).empty(); };
-  while (i < lines.size() && blank(lines[i])) ++i;
-  if (i == lines.size()) throw TrajectoryError(name + ": the file is empty (no header and no data)");
+namespace {
 
+// The text's lines (a last line without its newline included).
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t nl = text.find('\n', start);
+    if (nl == std::string::npos) {
+      if (start < text.size()) lines.push_back(text.substr(start));
+      break;
+    }
+    lines.push_back(text.substr(start, nl - start));
+    start = nl + 1;
+  }
+  return lines;
+}
+
+// What a header says, with the line of each field (0: not in the file).
+struct Header {
   std::optional<std::string> system, step_text, columns;
   std::optional<std::array<std::string, 3>> inertia;
   std::size_t system_line = 0, inertia_line = 0, step_line = 0;
-  const bool header = trim(lines[i]).rfind("# geomech-trajectory", 0) == 0;
-  if (header) {
-    const std::string magic = trim(lines[i]);
-    if (magic != "# geomech-trajectory 1")
-      throw TrajectoryError(where(name, i + 1) + "unsupported format line '" + printable(magic) +
-                            "'; this version reads '# geomech-trajectory 1'");
-    for (++i; i < lines.size(); ++i) {
-      const std::string l = trim(lines[i]);
-      if (l.empty()) continue;
-      if (l[0] != '#') break;
-      const std::string body = trim(std::string_view(l).substr(1));
-      if (body.empty() || body[0] == '#') continue;  // "#" alone, or a "## free comment"
-      const auto colon = body.find(':');
-      const std::size_t key_col = lines[i].find(body) + 1;
-      if (colon == std::string::npos)
-        throw TrajectoryError(where(name, i + 1, key_col) +
-                              "a header line must be '# key: value' (or a '## comment'), got '" + printable(body) +
-                              "'");
-      const std::string key = trim(std::string_view(body).substr(0, colon));
-      const std::string value = trim(std::string_view(body).substr(colon + 1));
-      const std::size_t value_col = key_col + body.find(value, colon + 1);
-      if (value.empty()) throw TrajectoryError(where(name, i + 1, key_col) + "header field '" + key + "' has no value");
-      auto once = [&](bool seen) {
-        if (seen) throw TrajectoryError(where(name, i + 1, key_col) + "header field '" + key + "' is given twice");
-      };
-      if (key == "system") {
-        once(system.has_value());
-        system = value;
-        system_line = i + 1;
-      } else if (key == "inertia") {
-        once(inertia.has_value());
-        const auto f = split_fields(value, value_col - 1);
-        if (f.size() != 3)
-          throw TrajectoryError(where(name, i + 1, value_col) + "inertia needs 3 numbers (I1 I2 I3), got " +
-                                std::to_string(f.size()));
-        inertia = std::array<std::string, 3>{f[0].text, f[1].text, f[2].text};
-        for (const auto& x : f) number(x, name, i + 1, "a moment of inertia");
-        inertia_line = i + 1;
-      } else if (key == "step") {
-        once(step_text.has_value());
-        const auto f = split_fields(value, value_col - 1);
-        if (f.size() != 1)
-          throw TrajectoryError(where(name, i + 1, value_col) + "step needs one number, the step size h");
-        number(f[0], name, i + 1, "the step size");
-        step_text = f[0].text;
-        step_line = i + 1;
-      } else if (key == "method") {
-        once(!tr.method.empty());
-        tr.method = value;
-      } else if (key == "columns") {
-        once(columns.has_value());
-        std::string norm;
-        for (const auto& f : split_fields(value)) norm += (norm.empty() ? "" : " ") + f.text;
-        if (norm != kColumns4 && norm != kColumns13)
-          throw TrajectoryError(where(name, i + 1, value_col) + "columns must be '" + kColumns4 + "' or '" +
-                                kColumns13 + "', got '" + printable(value) + "'");
-        columns = norm;
-      } else {
-        throw TrajectoryError(where(name, i + 1, key_col) + "unknown header field '" + printable(key) +
-                              "' (known: system, inertia, step, method, columns; free comments start with ##)");
-      }
-    }
-  } else if (trim(lines[i])[0] == '#') {
-    // Comment lines before the data of a file without the format line are allowed.
-    while (i < lines.size() && (blank(lines[i]) || trim(lines[i])[0] == '#')) ++i;
-  }
+};
 
-  // Command-line parameters fill in what the header lacks and must agree with what it says.
+// The header's fields after the format line, from line i on; i is left at the first line that is
+// not a header line. The method goes to tr.
+Header read_header_fields(const std::vector<std::string>& lines, std::size_t& i, const std::string& name,
+                          Trajectory& tr) {
+  Header h;
+  auto& [system, step_text, columns, inertia, system_line, inertia_line, step_line] = h;
+  for (++i; i < lines.size(); ++i) {
+    const std::string l = trim(lines[i]);
+    if (l.empty()) continue;
+    if (l[0] != '#') break;
+    const std::string body = trim(std::string_view(l).substr(1));
+    if (body.empty() || body[0] == '#') continue;  // "#" alone, or a "## free comment"
+    const auto colon = body.find(':');
+    const std::size_t key_col = lines[i].find(body) + 1;
+    if (colon == std::string::npos)
+      throw TrajectoryError(where(name, i + 1, key_col) +
+                            "a header line must be '# key: value' (or a '## comment'), got '" + printable(body) + "'");
+    const std::string key = trim(std::string_view(body).substr(0, colon));
+    const std::string value = trim(std::string_view(body).substr(colon + 1));
+    const std::size_t value_col = key_col + body.find(value, colon + 1);
+    if (value.empty()) throw TrajectoryError(where(name, i + 1, key_col) + "header field '" + key + "' has no value");
+    auto once = [&](bool seen) {
+      if (seen) throw TrajectoryError(where(name, i + 1, key_col) + "header field '" + key + "' is given twice");
+    };
+    if (key == "system") {
+      once(system.has_value());
+      system = value;
+      system_line = i + 1;
+    } else if (key == "inertia") {
+      once(inertia.has_value());
+      const auto f = split_fields(value, value_col - 1);
+      if (f.size() != 3)
+        throw TrajectoryError(where(name, i + 1, value_col) + "inertia needs 3 numbers (I1 I2 I3), got " +
+                              std::to_string(f.size()));
+      inertia = std::array<std::string, 3>{f[0].text, f[1].text, f[2].text};
+      for (const auto& x : f) number(x, name, i + 1, "a moment of inertia");
+      inertia_line = i + 1;
+    } else if (key == "step") {
+      once(step_text.has_value());
+      const auto f = split_fields(value, value_col - 1);
+      if (f.size() != 1)
+        throw TrajectoryError(where(name, i + 1, value_col) + "step needs one number, the step size h");
+      number(f[0], name, i + 1, "the step size");
+      step_text = f[0].text;
+      step_line = i + 1;
+    } else if (key == "method") {
+      once(!tr.method.empty());
+      tr.method = value;
+    } else if (key == "columns") {
+      once(columns.has_value());
+      std::string norm;
+      for (const auto& f : split_fields(value)) norm += (norm.empty() ? "" : " ") + f.text;
+      if (norm != kColumns4 && norm != kColumns13)
+        throw TrajectoryError(where(name, i + 1, value_col) + "columns must be '" + kColumns4 + "' or '" + kColumns13 +
+                              "', got '" + printable(value) + "'");
+      columns = norm;
+    } else {
+      throw TrajectoryError(where(name, i + 1, key_col) + "unknown header field '" + printable(key) +
+                            "' (known: system, inertia, step, method, columns; free comments start with ##)");
+    }
+  }
+  return h;
+}
+
+// Command-line parameters fill in what the header lacks and must agree with what it says; the
+// system, the inertia (positive, and a body's unless --allow-nonphysical) and the step, into tr.
+void settle_parameters(Header h, const TrajectoryParams& params, const std::string& name, Trajectory& tr) {
+  auto& [system, step_text, columns, inertia, system_line, inertia_line, step_line] = h;
   auto merge = [&](auto& field, const auto& given, const char* what, std::size_t line) {
     if (!given) return;
     if (field && *field != *given)
@@ -258,8 +257,13 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
   if (!(tr.step > 0))
     throw TrajectoryError((step_line ? where(name, step_line) : name + ": ") + "the step size must be positive, got " +
                           printable(*step_text));
+}
 
-  // Data.
+// The data rows from line i on, into tr; checked as they are read. `columns` is the header's, if
+// any.
+void read_rows(const std::vector<std::string>& lines, std::size_t i, const std::string& name,
+               const std::optional<std::string>& columns, Trajectory& tr) {
+  auto blank = [](const std::string& l) { return trim(l).empty(); };
   std::size_t expected_fields = columns ? (*columns == kColumns13 ? 13 : 4) : 0;
   std::size_t first_row_line = 0;
   int max_digits = 1;
@@ -308,6 +312,34 @@ Trajectory parse_trajectory(const std::string& text, const std::string& name, co
                           "Pi(0) = 0: zero angular momentum, a body at rest; every invariant is 0 and its relative "
                           "error undefined, so there is no motion to check");
   tr.digits = std::clamp(max_digits, 1, 17);
+}
+
+}  // namespace
+
+Trajectory parse_trajectory(const std::string& text, const std::string& name, const TrajectoryParams& params) {
+  Trajectory tr;
+  tr.path = name;
+  if (text.find('\0') != std::string::npos)
+    throw TrajectoryError(name + ": this is not a text file (it contains NUL bytes)");
+  const std::vector<std::string> lines = lines_of(text);
+  std::size_t i = 0;
+  auto blank = [](const std::string& l) { return trim(l).empty(); };
+  while (i < lines.size() && blank(lines[i])) ++i;
+  if (i == lines.size()) throw TrajectoryError(name + ": the file is empty (no header and no data)");
+
+  Header header;
+  if (trim(lines[i]).rfind("# geomech-trajectory", 0) == 0) {
+    const std::string magic = trim(lines[i]);
+    if (magic != "# geomech-trajectory 1")
+      throw TrajectoryError(where(name, i + 1) + "unsupported format line '" + printable(magic) +
+                            "'; this version reads '# geomech-trajectory 1'");
+    header = read_header_fields(lines, i, name, tr);
+  } else if (trim(lines[i])[0] == '#') {
+    // Comment lines before the data of a file without the format line are allowed.
+    while (i < lines.size() && (blank(lines[i]) || trim(lines[i])[0] == '#')) ++i;
+  }
+  settle_parameters(header, params, name, tr);
+  read_rows(lines, i, name, header.columns, tr);
   return tr;
 }
 
