@@ -113,6 +113,14 @@ rc, text = run(["self-test"], env=broken)
 check(rc == 3 and "does not work on this machine" in text, "sandbox: self-test should fail with exit 3 and the fix (exit %d):\n%s" % (rc, text))
 rc, text = run(["self-test"], env=system_python)
 check(rc == 0, "sandbox: the control, self-test on this machine, should pass (exit %d):\n%s" % (rc, text))
+# One untrusted check on that machine: the machine's set-up (exit 3), not the file's (2); the control,
+# the same check on this machine, reaches its verdict.
+rc, text = run(["check", "--untrusted", STUDENT] + NARROW, env=broken)
+check(rc == 3 and "does not work on this machine" in text,
+      "sandbox: an untrusted check should fail with the machine's exit 3 (exit %d):\n%s" % (rc, text[-1500:]))
+rc, text = run(["check", "--untrusted", STUDENT] + NARROW, env=system_python)
+check(rc in (0, 1), "sandbox: the control, an untrusted check on this machine, should end in a verdict (exit %d):\n%s"
+      % (rc, text[-1500:]))
 ag = os.path.join(OUT, "ag")
 rc, text = run(["autograder", "gradescope", ag, "--rubric", os.path.join(SOURCE, "examples", "class", "rubric.json"),
                 "--no-zip"] + NARROW)

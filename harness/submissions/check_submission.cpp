@@ -190,9 +190,10 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
     std::cerr << "geomech check: " << file << ": no such file\n";
     return 2;
   }
-  if (const std::string why = sandbox_unavailable(); !why.empty()) {
+  if (const std::string why = sandbox_unavailable(); !why.empty()) {  // this machine's set-up, not the file
     std::cerr << "geomech check: " << why << "\n";
-    return 2;
+    out.machine_fault = why;
+    return kExitMachine;
   }
   // A submission is a stranger's: never followed through a link, never a FIFO or device opened
   // (harness/isolation/submission_intake.hpp). A folder (Octave) is looked at whole, within the limits.
