@@ -2,8 +2,7 @@
 //   reference.<scalar>.<property>            -- the reference subject must PASS;
 //   negative.<scalar>.<property>__<mutant>   -- each of the property's negative controls must FAIL.
 // Labels: the scalar (double, mp50, exact), the spec kind (algebraic, dynamic, variational), the
-// section (s1, s2, s3, mm), "reference" or "negative-control", and the spec entry id; a negative
-// control after the property's first in its scalar also "further-control" (see labels_for).
+// section (s1, s2, s3, mm), "reference" or "negative-control", and the spec entry id.
 #include "impl/reference_subject.hpp"
 #include "properties/runner.hpp"
 #include "spec/catalogue.hpp"
@@ -143,21 +142,7 @@ std::vector<std::string> labels_for(const std::string& suite, const std::string&
   labels.push_back(scalar);
   labels.push_back(role == "reference" ? "reference" : "negative-control");
   const std::string prop_id = name.substr(0, name.find("__"));
-  const Property* p = find_property(prop_id);
-  // "further-control": a negative control after the property's first in this scalar. The sanitized
-  // phase leaves these out (CMakePresets.json): the property's code and the mutants, the arithmetic,
-  // are not instrumented there (docs/DEVELOPING.md, "The sanitized build"), so every control of one
-  // property and scalar takes the same instrumented path (the runner, the verdict and its message)
-  // that its first control takes. The test phase runs them all.
-  if (role == "negative" && p) {
-    const std::string mutant = name.substr(prop_id.size() + 2);
-    for (const auto& m : p->negative_controls)
-      if (mutant_wrong_in(m, kind_of(scalar))) {
-        if (m != mutant) labels.push_back("further-control");
-        break;
-      }
-  }
-  if (p) {
+  if (const Property* p = find_property(prop_id)) {
     labels.push_back("spec=" + p->spec);
     if (const Catalogue* c = catalogue_or_null())
       if (const SpecEntry* e = c->find(p->spec)) {
@@ -165,6 +150,7 @@ std::vector<std::string> labels_for(const std::string& suite, const std::string&
         labels.push_back(e->section == "MM" ? "mm" : "s" + e->section);
       }
   }
+  (void)kind_of;
   return labels;
 }
 
