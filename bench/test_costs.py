@@ -3,6 +3,7 @@
 
     ctest --test-dir build -j2 --output-junit /tmp/ctest.xml
     bench/test_costs.py /tmp/ctest.xml [N]
+    bench/test_costs.py --time-of TEST /tmp/ctest.xml    # one test's seconds alone (nothing if absent)
 
 Prints the number of tests and their summed seconds, the N costliest (all of them without N), and
 the seconds per first part of the name (student., golden_check., engines., ...), costliest first.
@@ -15,6 +16,14 @@ import xml.etree.ElementTree as ET
 def main(argv):
     if not argv:
         sys.exit(__doc__)
+    if argv[0] == "--time-of":
+        if len(argv) != 3:
+            sys.exit(__doc__)
+        times = [c.get("time", "0") for c in ET.parse(argv[2]).iter("testcase") if c.get("name") == argv[1]]
+        if not times:
+            return 1
+        print(f"{float(times[0]):.1f}")
+        return 0
     cases = [(float(c.get("time", 0)), c.get("name")) for c in ET.parse(argv[0]).iter("testcase")]
     top = int(argv[1]) if len(argv) > 1 else len(cases)
     total = sum(t for t, _ in cases)
