@@ -15,6 +15,37 @@ import sys
 import time
 
 
+def stop_session(p):
+    """Stops the command and everything it started. Its compilers run in process groups of their own
+    (a timeout stops a compiler's whole tree), so killing its group alone would leave them running
+    into the next timed run; they all stay in the command's session."""
+    def in_session():
+        pids = []
+        for d in os.listdir("/proc"):
+            if d.isdigit():
+                try:
+                    with open(f"/proc/{d}/stat") as f:
+                        fields = f.read().rsplit(")", 1)[1].split()
+                except OSError:
+                    continue
+                if int(fields[3]) == p.pid:  # the session id, after the state, ppid and pgrp
+                    pids.append(int(d))
+        return pids
+    while True:
+        pids = in_session()
+        if not pids:
+            break
+        for pid in pids:
+            try:
+                os.kill(pid, signal.SIGKILL)
+            except ProcessLookupError:
+                pass
+        if p.poll() is None:
+            p.wait()
+        time.sleep(0.01)
+    p.wait()
+
+
 def main(argv):
     if not argv:
         sys.exit(__doc__)
@@ -23,8 +54,7 @@ def main(argv):
     for line in p.stdout:
         if "FIRST FIX" in line or "FALSE CLAIM" in line:
             print(f"{time.monotonic() - start:.2f} s to: {line.strip()[:160]}")
-            os.killpg(p.pid, signal.SIGKILL)
-            p.wait()
+            stop_session(p)
             return 0
     p.wait()
     print(f"no FIRST FIX or FALSE CLAIM line in {time.monotonic() - start:.2f} s (exit status {p.returncode})")

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # A complete C++ file with one mistake, checked from an empty cache, timed to its FIRST FIX line
 # (issue 56, item 3): examples/students/correct.hpp inlined into one file, with Euler's equations
-# (3.8) written as (I^-1 Pi) x Pi instead of Pi x I^-1 Pi. Then the double instantiation's compile
-# alone, split into what it costs: the precompiled header and an empty implementation, the
-# implementation's slots, and its integrators.
+# (3.8) written as (I^-1 Pi) x Pi instead of Pi x I^-1 Pi. Then the pieces of the double
+# instantiation compiled one at a time, as `geomech check` compiles them (harness/program/build.cpp,
+# kUnits): the precompiled header with an empty implementation, the slots other than Manakov's, the
+# Manakov slots (the first look links these two, compiled at once), the integrators; and the first
+# look's link with the default linker and with the fast one it uses.
 #   bench/one_mistake_cpp.sh [build-dir]        (default: build; after ./geomech build)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -33,8 +35,22 @@ print(" ".join(out))
 PY
 )
 printf '#include <geomech/student.hpp>\nstruct Nothing {};\nGEOMECH_STUDENT(Nothing);\n' > "$out/empty.cpp"
-make_file "$out/slots_only.cpp" "course::RigidBody"
-for f in empty slots_only one_mistake; do
-  TIMEFORMAT="$f: the compile in double, $(printf '%s' "%R") s"
-  { time "${flags[@]}" -c "$out/$f.cpp" -o "$out/$f.o" 2>/dev/null; } 2>&1
+piece() {  # piece LABEL FILE MACROS...
+  local label=$1 file=$2; shift 2
+  TIMEFORMAT="$label: $(printf '%s' "%R") s"
+  { time "${flags[@]}" "$@" -c "$out/$file.cpp" -o "$out/$label.o" 2>/dev/null; } 2>&1
+}
+piece empty empty
+piece other-slots one_mistake -DGEOMECH_SLOTS_PIECES=2 -DGEOMECH_SLOTS_PIECE=0 -DGEOMECH_SKIP_INTEGRATORS=1
+piece manakov-slots one_mistake -DGEOMECH_SLOTS_PIECES=2 -DGEOMECH_SLOTS_PIECE=1 -DGEOMECH_SKIP_INTEGRATORS=1
+piece integrators one_mistake -DGEOMECH_SLOTS_PIECES=0 -DGEOMECH_SLOTS_PIECE=0
+piece whole-double one_mistake
+
+# The first look's link, as `geomech check` ran it above, with the default linker and the fast one.
+link=$(cat "$out"/cache/*/link-check-double.cmd)
+fast=$(grep -o -- '-fuse-ld=[a-z]*' <<<"$link" || true)
+for how in default "${fast:-}"; do
+  [ -n "$how" ] || continue
+  TIMEFORMAT="the first look's link ($how): $(printf '%s' "%R") s"
+  { time bash -c "${link/ $fast/} ${how/default/}" >/dev/null 2>&1; } 2>&1
 done

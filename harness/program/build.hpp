@@ -1,6 +1,6 @@
 // Building a student's check program from one source file, without rebuilding anything of the
-// suite: the file is compiled three times in parallel (double, mp50, exact; see
-// GEOMECH_STUDENT_ONLY in student/geomech/student.hpp) and linked with the prebuilt driver
+// suite: the file is compiled in five pieces in parallel (double in three: its slots in two halves
+// and its integrators; mp50; exact; see WholeFile in student/geomech/student.hpp) and linked with the prebuilt driver
 // object, the harness and the property library described by the build tree's
 // student/toolchain.json.
 //
@@ -39,8 +39,8 @@ struct Toolchain {
   // geomech/student.hpp precompiled with the flags above (a .gch beside it); empty or missing:
   // the compiler parses the header, which only costs time.
   std::string precompiled_header;
-  // geomech/detail/scalar_selection.hpp, found in the includes: makes a compile register the one
-  // scalar named by GEOMECH_STUDENT_ONLY.
+  // geomech/detail/scalar_selection.hpp, found in the includes: makes a compile register the piece
+  // of the file its macros name (GEOMECH_STUDENT_ONLY and the others listed there).
   std::string scalar_selection;
 };
 
@@ -59,6 +59,8 @@ struct BuildOptions {
   bool force = false;        // ignore the cache
   bool mp50 = true;          // compile the 50-digit instantiation (double is always compiled)
   bool exact = true;         // compile the exact-rational instantiation
+  bool integrators = true;   // compile the integrators (a first look, which checks the slots alone, does not)
+  bool fast_link = false;    // link with lld or gold when found (a first look; see fast_linker_option)
   bool server = false;       // link the protocol server (untrusted mode) instead of the check program
   bool sandbox = false;      // compile and link inside the sandbox, from a copy of the source
   std::string program_name;  // the linked program's file name (default "check", or "server")
@@ -80,8 +82,9 @@ struct BuildResult {
   // error, such as a cache folder its user cannot reach): the grader's set-up, not the file; the
   // message says what and the fix. Empty otherwise.
   std::string machine_fault;
-  nlohmann::json notes;    // scalar_unavailable, slot_notes, warnings (for --build-notes)
-  std::string notes_file;  // where the notes were written
+  bool does_not_compile = false;  // when !ok because the double instantiation does not compile
+  nlohmann::json notes;           // scalar_unavailable, slot_notes, warnings (for --build-notes)
+  std::string notes_file;         // where the notes were written
   double seconds = 0;
   bool cached = false;           // nothing needed compiling
   std::vector<std::string> log;  // one line per compiler run, for the user

@@ -4,7 +4,10 @@
 // harness.
 #include "harness/program/student_registry.hpp"
 
+#include <algorithm>
+#include <map>
 #include <set>
+#include <utility>
 
 namespace gm::student {
 
@@ -15,14 +18,50 @@ Registered& mutable_registered() {
   return r;
 }
 
+// A piece of one scalar's compile (PartInfo::slot_pieces != 1) merged into the pieces before it:
+// its slots (each piece fills others), its integrators (one piece has them all, in their order),
+// and what it noted.
+template <class T>
+std::shared_ptr<const Subject<T>> merged(const Subject<T>& into, const Subject<T>& piece) {
+  auto m = std::make_shared<Subject<T>>(into);
+#define GM_MERGE_SLOT(name, sig, place, meaning) \
+  if (piece.name) m->name = piece.name;
+  GM_SUBJECT_SLOTS(GM_MERGE_SLOT)
+#undef GM_MERGE_SLOT
+  m->integrators.insert(m->integrators.end(), piece.integrators.begin(), piece.integrators.end());
+  return m;
+}
+
+void merge_notes(PartInfo& into, const PartInfo& piece) {
+  into.slot_notes.insert(piece.slot_notes.begin(), piece.slot_notes.end());
+  for (const auto& w : piece.warnings)
+    if (std::find(into.warnings.begin(), into.warnings.end(), w) == into.warnings.end()) into.warnings.push_back(w);
+  into.unchecked.insert(into.unchecked.end(), piece.unchecked.begin(), piece.unchecked.end());
+}
+
+// The pieces of each scalar seen so far (slot_piece, slot_pieces).
+std::set<std::pair<int, int>>& pieces_seen(const void* scalar_slot) {
+  static std::map<const void*, std::set<std::pair<int, int>>> seen;
+  return seen[scalar_slot];
+}
+
 template <class P>
-void store(std::shared_ptr<P>& slot, std::optional<PartInfo>& info_slot, std::shared_ptr<P> s, PartInfo info) {
+void store(std::shared_ptr<const P>& slot, std::optional<PartInfo>& info_slot, std::shared_ptr<const P> s,
+           PartInfo info) {
+  const std::pair<int, int> piece{info.slot_piece, info.slot_pieces};
   if (slot) {
+    if (info.slot_pieces != 1 && info_slot->slot_pieces != 1 && info.registration == info_slot->registration &&
+        pieces_seen(&slot).insert(piece).second) {
+      slot = merged(*slot, *s);
+      merge_notes(*info_slot, info);
+      return;
+    }
     // Two registrations for one scalar: keep the first and say so (GEOMECH_STUDENT used twice).
     info_slot->warnings.push_back("GEOMECH_STUDENT(" + info.registration +
                                   ") is a second registration and was ignored; use the macro once");
     return;
   }
+  pieces_seen(&slot).insert(piece);
   slot = std::move(s);
   info_slot = std::move(info);
 }

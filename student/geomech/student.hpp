@@ -97,6 +97,10 @@ struct PartInfo {
   std::vector<IntegratorClaims> claims;
   std::vector<std::string> warnings;
   std::vector<std::string> unchecked;  // written, but cannot be called as its slot expects
+  // A piece of the scalar's compile (`geomech check` compiles the double one in pieces, see
+  // WholeFile): slot_pieces 1 is the whole; the program's pieces are merged into one subject.
+  int slot_piece = 0;
+  int slot_pieces = 1;
 };
 
 void register_part(std::shared_ptr<const Subject<double>> s, PartInfo info);
@@ -188,20 +192,42 @@ constexpr const char* skipped_by_student(std::string_view slot) {
   return nullptr;
 }
 
-constexpr bool skipped_by_build(std::string_view slot) {
-#ifdef GEOMECH_SKIP_SLOTS
-  return listed(GEOMECH_SKIP_SLOTS, slot);
-#else
-  (void)slot;
-  return false;
-#endif
+// What one compile of the file registers. A student's own build registers all of it (WholeFile);
+// `geomech check` compiles it in pieces, each described by the macros that
+// geomech/detail/scalar_selection.hpp reads (after this header, which may come precompiled: GCC
+// rejects a precompiled header when a macro it tested changed, so this header tests none of them).
+struct WholeFile {
+  static constexpr int scalar = -1;      // -1: all three; else 0 double, 1 mp50, 2 exact
+  static constexpr int slot_pieces = 1;  // 1: every slot; 0: none; 2: one of two pieces (slot_of_piece)
+  static constexpr int slot_piece = 0;
+  static constexpr bool integrators = true;
+  static constexpr std::string_view skip_slots = "";  // left out: they do not compile for this scalar
+};
+
+// The two pieces of the slots, split where the cost of compiling them splits: the Manakov slots of
+// SO(n) (piece 1), whose dynamic-size matrix code costs as much to compile as all the others
+// together (piece 0). docs/PERFORMANCE.md has the measurement.
+constexpr int slot_piece_of(std::string_view slot) { return slot.substr(0, 8) == "manakov_" ? 1 : 0; }
+
+template <class Sel>
+constexpr bool in_this_piece(std::string_view slot) {
+  if constexpr (Sel::slot_pieces == 2)
+    return slot_piece_of(slot) == Sel::slot_piece;
+  else
+    return Sel::slot_pieces == 1;
 }
 
-template <class Slot, class Impl, class T, class R, class... A>
+// The build asked to leave the slot out (`geomech check`, when it does not compile for this scalar).
+template <class Sel>
+constexpr bool skipped_by_build(std::string_view slot) {
+  return listed(Sel::skip_slots, slot);
+}
+
+template <class Slot, class Impl, class T, class Sel, class R, class... A>
 void fill_slot(Subject<T>& s, PartInfo& info, type_list<A...>) {
   if constexpr (skipped_by_student<Impl, T>(Slot::id) != nullptr) {
     info.slot_notes[std::string(Slot::id)] = skipped_by_student<Impl, T>(Slot::id);
-  } else if constexpr (skipped_by_build(Slot::id)) {
+  } else if constexpr (skipped_by_build<Sel>(Slot::id)) {
     info.slot_notes[std::string(Slot::id)] =
         std::string("does not compile for ") + scalar_word<T>() + " (see the compiler's message in the report)";
   } else if constexpr (requires(A... a) {
@@ -220,15 +246,17 @@ void fill_slot(Subject<T>& s, PartInfo& info, type_list<A...>) {
   }
 }
 
-template <class Slot, class Impl, class T>
+template <class Slot, class Impl, class T, class Sel>
 void fill(Subject<T>& s, PartInfo& info) {
-  using Sig = signature_of<typename Slot::template signature<T>>;
-  fill_slot<Slot, Impl, T, typename Sig::result>(s, info, typename Sig::args{});
+  if constexpr (in_this_piece<Sel>(Slot::id)) {
+    using Sig = signature_of<typename Slot::template signature<T>>;
+    fill_slot<Slot, Impl, T, Sel, typename Sig::result>(s, info, typename Sig::args{});
+  }
 }
 
-template <class Impl, class T>
+template <class Impl, class T, class Sel = WholeFile>
 void fill_all(Subject<T>& s, PartInfo& info) {
-#define GM_STUDENT_FILL(name, sig, place, meaning) fill<slot_##name, Impl, T>(s, info);
+#define GM_STUDENT_FILL(name, sig, place, meaning) fill<slot_##name, Impl, T, Sel>(s, info);
   GM_SUBJECT_SLOTS(GM_STUDENT_FILL)
 #undef GM_STUDENT_FILL
 }
@@ -410,32 +438,26 @@ IntegratorClaims claims_of() {
   return c;
 }
 
-template <class T, class Impl, class... Ints>
+template <class T, class Sel, class Impl, class... Ints>
 void register_scalar(const char* registration) {
   auto s = std::make_shared<Subject<T>>();
   PartInfo info;
   info.registration = registration;
+  info.slot_piece = Sel::slot_piece;
+  info.slot_pieces = Sel::slot_pieces;
   if constexpr (requires { std::string_view(Impl::description); }) info.description = Impl::description;
-  fill_all<Impl, T>(*s, info);
-  if constexpr (!std::is_same_v<T, Rational>) {
-#ifndef GEOMECH_SKIP_INTEGRATORS
-    (gm_integrator_of<Ints, T>(*s, info), ...);
-#endif
-  }
+  fill_all<Impl, T, Sel>(*s, info);
+  if constexpr (!std::is_same_v<T, Rational> && Sel::integrators) (gm_integrator_of<Ints, T>(*s, info), ...);
   (info.claims.push_back(claims_of<Ints>()), ...);
   register_part(std::shared_ptr<const Subject<T>>(std::move(s)), std::move(info));
 }
 
-// Which scalars a translation unit registers: Only < 0 all three, else one (0 double, 1 mp50,
-// 2 exact). `geomech check` compiles the file three times in parallel, one scalar each, by
-// defining GEOMECH_STUDENT_ONLY and including geomech/detail/scalar_selection.hpp after this
-// header. This header itself never reads GEOMECH_STUDENT_ONLY: that way one precompiled copy of it
-// serves all three compiles (GCC rejects a precompiled header if a macro it tested changed).
-template <int Only, class Impl, class... Ints>
+// The scalars a translation unit registers (Sel::scalar < 0: all three, else the one named).
+template <class Sel, class Impl, class... Ints>
 int register_all(const char* registration) {
-  if constexpr (Only < 0 || Only == 0) register_scalar<double, Impl, Ints...>(registration);
-  if constexpr (Only < 0 || Only == 1) register_scalar<Real50, Impl, Ints...>(registration);
-  if constexpr (Only < 0 || Only == 2) register_scalar<Rational, Impl, Ints...>(registration);
+  if constexpr (Sel::scalar < 0 || Sel::scalar == 0) register_scalar<double, Sel, Impl, Ints...>(registration);
+  if constexpr (Sel::scalar < 0 || Sel::scalar == 1) register_scalar<Real50, Sel, Impl, Ints...>(registration);
+  if constexpr (Sel::scalar < 0 || Sel::scalar == 2) register_scalar<Rational, Sel, Impl, Ints...>(registration);
   return 0;
 }
 
@@ -444,9 +466,11 @@ int register_all(const char* registration) {
 
 // GEOMECH_STUDENT(Implementation, Integrator1, Integrator2, ...): registers the implementation
 // (a struct with static member functions named after slots) and its integrators. Use it once.
-#ifndef GEOMECH_STUDENT_SCALARS
-#define GEOMECH_STUDENT_SCALARS -1
+// GEOMECH_STUDENT_SELECTION names what the compile registers (see WholeFile); it is expanded where
+// the macro is used, after geomech/detail/scalar_selection.hpp may have redefined it.
+#ifndef GEOMECH_STUDENT_SELECTION
+#define GEOMECH_STUDENT_SELECTION ::gm::student::detail::WholeFile
 #endif
 #define GEOMECH_STUDENT(...)                                        \
   [[maybe_unused]] static const int geomech_student_registration_ = \
-      ::gm::student::detail::register_all<GEOMECH_STUDENT_SCALARS, __VA_ARGS__>(#__VA_ARGS__)
+      ::gm::student::detail::register_all<GEOMECH_STUDENT_SELECTION, __VA_ARGS__>(#__VA_ARGS__)
