@@ -555,23 +555,20 @@ struct InfoCommands {
 };
 
 void add_info_commands(CLI::App& app, InfoCommands& c) {
-  auto& [l, s, b, su, ca, slots_python, slots_octave, bench_file, bench_calls, markdown, trace, catalogue_path] = c;
-  (void)l, (void)s, (void)b, (void)su, (void)ca;
-  auto* list = c.list = app.add_subcommand("list", "list the registered properties");
+  c.list = app.add_subcommand("list", "list the registered properties");
   auto* slots = c.slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
-  slots->add_flag("--python", slots_python, "as Python functions (docs/STUDENTS.md, Python section)");
-  slots->add_flag("--octave", slots_octave, "as Octave/MATLAB functions");
+  slots->add_flag("--python", c.slots_python, "as Python functions (docs/STUDENTS.md, Python section)");
+  slots->add_flag("--octave", c.slots_octave, "as Octave/MATLAB functions");
   auto* bench = c.bench =
       app.add_subcommand("bench-protocol", "round-trip cost of a slot call to a .py/.m implementation");
-  bench->add_option("file", bench_file, "a .py or .m implementation providing euler_3_8")->required();
-  bench->add_option("--calls", bench_calls, "calls per measurement (default 1000)");
-  auto* subjects = c.subjects =
-      app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
+  bench->add_option("file", c.bench_file, "a .py or .m implementation providing euler_3_8")->required();
+  bench->add_option("--calls", c.bench_calls, "calls per measurement (default 1000)");
+  c.subjects = app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
 
   auto* cat = c.cat = app.add_subcommand("catalogue", "the spec catalogue");
-  cat->add_flag("--markdown", markdown, "print the generated Markdown table (spec/CATALOGUE.md)");
-  cat->add_flag("--check", trace, "check traceability between catalogue, notes and properties");
-  cat->add_option("--file", catalogue_path, "catalogue file (default: the source tree's spec/catalogue.json)");
+  cat->add_flag("--markdown", c.markdown, "print the generated Markdown table (spec/CATALOGUE.md)");
+  cat->add_flag("--check", c.trace, "check traceability between catalogue, notes and properties");
+  cat->add_option("--file", c.catalogue_path, "catalogue file (default: the source tree's spec/catalogue.json)");
 }
 
 // The status of the info command given, or -1 when none was.
