@@ -4,22 +4,14 @@
 # on its seed corpus in fuzz/corpus/<target>. New inputs go to a scratch directory, never into the
 # repository; a crash leaves its input in the scratch directory and makes this script fail.
 #   fuzz/run.sh [seconds] [target...]
-#   fuzz/run.sh --build-only            only install clang and build the targets (CI, beside a ctest)
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-build_only=0
-if [ "${1:-}" = --build-only ]; then
-  build_only=1
-  shift
-fi
 seconds=${1:-30}
 shift || true
 build=${GEOMECH_FUZZ_BUILD_DIR:-$root/build-fuzz}
 if ! command -v clang++-14 >/dev/null 2>&1 || ! dpkg-query -W -f='${Status}' libclang-rt-14-dev 2>/dev/null | grep -q "install ok installed"; then
   if [ "$(id -u)" -eq 0 ]; then
-    # -o DPkg::Lock::Timeout: wait for another apt (CI installs the test packages meanwhile).
-    DEBIAN_FRONTEND=noninteractive apt-get install -o DPkg::Lock::Timeout=600 -y -qq --no-install-recommends \
-      clang-14 libclang-rt-14-dev >/dev/null
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends clang-14 libclang-rt-14-dev >/dev/null
   else
     echo "fuzz/run.sh: needs clang-14 and libclang-rt-14-dev: sudo apt-get install -y clang-14 libclang-rt-14-dev" >&2
     exit 1
@@ -27,7 +19,6 @@ if ! command -v clang++-14 >/dev/null 2>&1 || ! dpkg-query -W -f='${Status}' lib
 fi
 [ -f "$build/CMakeCache.txt" ] || CXX=clang++-14 cmake -S "$root/fuzz" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo >/dev/null
 cmake --build "$build" -j "${GEOMECH_JOBS:-2}" >/dev/null
-[ $build_only = 1 ] && exit 0
 targets=("$@")
 if [ ${#targets[@]} -eq 0 ]; then
   for d in "$root"/fuzz/corpus/*/; do targets+=("$(basename "$d")"); done
