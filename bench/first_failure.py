@@ -28,7 +28,8 @@ def stop_session(p):
                         fields = f.read().rsplit(")", 1)[1].split()
                 except OSError:
                     continue
-                if int(fields[3]) == p.pid:  # the session id, after the state, ppid and pgrp
+                # The session id, after the state, ppid and pgrp; a zombie (state Z) is dead already.
+                if int(fields[3]) == p.pid and fields[0] != "Z":
                     pids.append(int(d))
         return pids
     while True:
