@@ -56,6 +56,19 @@ TEST(Build, CompilerMessagesNameTheSlotsThatDoNotCompile) {
   EXPECT_EQ(first_error(gcc).find("student.cpp:12:20: error"), 0u);
 }
 
+// The hat slot as a student writes it, for the test files below.
+const char* const kHatSlot =
+    "  template <class T> static Mat3<T> hat(const Vec3<T>& v) {\n"
+    "    Mat3<T> m; m << T(0), -v(2), v(1), v(2), T(0), -v(0), -v(1), v(0), T(0); return m; }\n";
+
+// A build of the double instantiation alone, cached in dir/cache.
+BuildOptions double_only(const fs::path& dir) {
+  BuildOptions o;
+  o.cache_dir = (dir / "cache").string();
+  o.mp50 = o.exact = false;
+  return o;
+}
+
 // The precompiled geomech/student.hpp only saves time, and GCC drops an unusable one without a
 // word, so this asks the compiler: the cached compile command of a one-slot file, run again with
 // -Winvalid-pch, must not say the .gch was rejected (nor for a piece that leaves slots or the
@@ -67,12 +80,8 @@ TEST(Build, ThePrecompiledStudentHeaderIsUsed) {
   const fs::path dir = temp_dir();
   const fs::path src = dir / "one_slot.cpp";
   std::ofstream(src) << "#include <geomech/student.hpp>\nusing namespace gm;\nstruct OneSlot {\n"
-                        "  template <class T> static Mat3<T> hat(const Vec3<T>& v) {\n"
-                        "    Mat3<T> m; m << T(0), -v(2), v(1), v(2), T(0), -v(0), -v(1), v(0), T(0); return m; }\n"
-                        "};\nGEOMECH_STUDENT(OneSlot);\n";
-  BuildOptions o;
-  o.cache_dir = (dir / "cache").string();
-  o.mp50 = o.exact = false;
+                     << kHatSlot << "};\nGEOMECH_STUDENT(OneSlot);\n";
+  const BuildOptions o = double_only(dir);
   const BuildResult r = build_student(src.string(), tc, o);
   ASSERT_TRUE(r.ok) << r.message;
   fs::path cmd_file;
@@ -107,17 +116,14 @@ TEST(Build, ThePiecesOfTheDoubleCompileMakeOneSubject) {
   const fs::path dir = temp_dir();
   const fs::path src = dir / "two_pieces.cpp";
   std::ofstream(src) << "#include <geomech/student.hpp>\nusing namespace gm;\nstruct TwoPieces {\n"
-                        "  template <class T> static Mat3<T> hat(const Vec3<T>& v) {\n"
-                        "    Mat3<T> m; m << T(0), -v(2), v(1), v(2), T(0), -v(0), -v(1), v(0), T(0); return m; }\n"
-                        "  template <class T> static MatX<T> manakov_M(const MatX<T>& A, const MatX<T>& W) {\n"
+                     << kHatSlot
+                     << "  template <class T> static MatX<T> manakov_M(const MatX<T>& A, const MatX<T>& W) {\n"
                         "    return A * W + W * A; }\n};\n"
                         "struct Still {\n  static constexpr const char* name = \"still\";\n"
                         "  template <class T> static RigidBodyState<T> rigid_body_step(const Vec3<T>&, "
                         "const RigidBodyState<T>& x, const T&) { return x; }\n};\n"
                         "GEOMECH_STUDENT(TwoPieces, Still);\n";
-  BuildOptions o;
-  o.cache_dir = (dir / "cache").string();
-  o.mp50 = o.exact = false;
+  const BuildOptions o = double_only(dir);
   BuildOptions first_look = o;  // its slots in two pieces, then the full build adds the integrators
   first_look.integrators = false;
   first_look.program_name = "check-double";
