@@ -48,7 +48,7 @@ int run_student_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   const bool narrowed_run = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" ||
                             !o.integrator.empty() || !o.reproduce.empty() || o.definitions_only;
   // The first look: from an empty cache the pieces of the file take 11-20 s of compiles. The
-  // double slots alone compile first, in two halves on two cores, and their program checks every
+  // double slots alone compile first, in two pieces on two cores, and their program checks every
   // slot's own definition in double, its failures printed as they come, while the integrators and
   // the 50-digit and exact instantiations compile; the full check follows. When the double program
   // is up to date there is nothing to wait for, and no first look. A file that does not compile is

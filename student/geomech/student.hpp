@@ -198,7 +198,7 @@ constexpr const char* skipped_by_student(std::string_view slot) {
 // rejects a precompiled header when a macro it tested changed, so this header tests none of them).
 struct WholeFile {
   static constexpr int scalar = -1;      // -1: all three; else 0 double, 1 mp50, 2 exact
-  static constexpr int slot_pieces = 1;  // 1: every slot; 0: none; 2: one of two pieces (slot_of_piece)
+  static constexpr int slot_pieces = 1;  // 1: every slot; 0: none; 2: one of two pieces (slot_piece_of)
   static constexpr int slot_piece = 0;
   static constexpr bool integrators = true;
   static constexpr std::string_view skip_slots = "";  // left out: they do not compile for this scalar
