@@ -4,6 +4,12 @@
     ctest --test-dir build -j2 --output-junit /tmp/ctest.xml
     bench/test_costs.py /tmp/ctest.xml [N]
     bench/test_costs.py --time-of TEST /tmp/ctest.xml    # one test's seconds alone (nothing if absent)
+    bench/test_costs.py --cost-data /tmp/ctest.xml > tests/ctest_costs.txt
+
+--cost-data writes ctest's own cost file (Testing/Temporary/CTestCostData.txt: "NAME RUNS SECONDS"
+a line) for the tests of at least 0.5 s, costliest first. tests/CMakeLists.txt copies
+tests/ctest_costs.txt there in a build tree that has none, so that a fresh clone's ctest -j starts
+the longest tests first, as a tree that has run ctest before does.
 
 Prints the number of tests and their summed seconds, the N costliest (all of them without N), and
 the seconds per first part of the name (student., golden_check., engines., ...), costliest first.
@@ -23,6 +29,14 @@ def main(argv):
         if not times:
             return 1
         print(f"{float(times[0]):.1f}")
+        return 0
+    if argv[0] == "--cost-data":
+        if len(argv) != 2:
+            sys.exit(__doc__)
+        cases = [(float(c.get("time", 0)), c.get("name")) for c in ET.parse(argv[1]).iter("testcase")]
+        for t, name in sorted(cases, key=lambda c: (-c[0], c[1])):
+            if t >= 0.5 and " " not in name:
+                print(f"{name} 1 {t:.1f}")
         return 0
     cases = [(float(c.get("time", 0)), c.get("name")) for c in ET.parse(argv[0]).iter("testcase")]
     top = int(argv[1]) if len(argv) > 1 else len(cases)

@@ -619,19 +619,14 @@ int write_ctest_script(const std::string& out, const std::string& tsv, const std
     script << "add_test(" << bracket(test) << " " << bracket(self) << " --example " << bracket(name) << " --program "
            << bracket(program) << " --source " << bracket(source) << ")\n";
     std::string labels = "examples;student";
-    script << "set_tests_properties(" << bracket(test) << " PROPERTIES LABELS " << bracket(labels) << " TIMEOUT 300";
-    // Start the full checks first (tests/CMakeLists.txt, "The longest tests start first"): every
-    // property, 10-45 s on 2 cores, against about 1 s for a buggy example.
-    if (name == "bug_integrator_signature") script << " COST 12";
-    script << ")\n";
+    script << "set_tests_properties(" << bracket(test) << " PROPERTIES LABELS " << bracket(labels) << " TIMEOUT 300)\n";
   }
   for (const char* e2e : {"correct", "bug_nan"}) {
     const std::string test = std::string("student.end_to_end.") + e2e;
     script << "add_test(" << bracket(test) << " " << bracket(self) << " --end-to-end " << e2e << " --geomech "
            << bracket(geomech) << " --source " << bracket(source_dir + "/examples/students/" + e2e + ".cpp") << ")\n";
     script << "set_tests_properties(" << bracket(test)
-           << " PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers"
-           << (std::string(e2e) == "correct" ? " COST 90" : "") << ")\n";
+           << " PROPERTIES LABELS \"student;end-to-end\" TIMEOUT 600 RESOURCE_LOCK compilers)\n";
   }
   script << "add_test(student.cmake_package " << bracket(self) << " --cmake-package " << bracket(cmake) << " --config "
          << bracket(config_dir) << " --source " << bracket(source_dir + "/tests/class/alice.cpp") << ")\n";
