@@ -9,7 +9,11 @@
 --cost-data writes ctest's own cost file (Testing/Temporary/CTestCostData.txt: "NAME RUNS SECONDS"
 a line) for the tests of at least 0.5 s, costliest first. tests/CMakeLists.txt copies
 tests/ctest_costs.txt there in a build tree that has none, so that a fresh clone's ctest -j starts
-the longest tests first, as a tree that has run ctest before does.
+the longest tests first, as a tree that has run ctest before does. One exception: the yardstick
+golden_check.manakov_so5 (the speed of a run, issue 56) is given 3 s, so that it starts after the
+tests of more than 3 s, beside short tests of one process each, as it did in declaration order in
+the runs its figures are compared with. At its own cost it would start in the first minute beside the
+three compilers of student.end_to_end.correct, and read 28.4 s instead of 24.7 (2026-11-29).
 
 Prints the number of tests and their summed seconds, the N costliest (all of them without N), and
 the seconds per first part of the name (student., golden_check., engines., ...), costliest first.
@@ -17,6 +21,8 @@ CI prints the 20 costliest of each of its ctest runs this way (.ci/run)."""
 import collections
 import sys
 import xml.etree.ElementTree as ET
+
+YARDSTICK, YARDSTICK_COST = "golden_check.manakov_so5", 3.0
 
 
 def main(argv):
@@ -34,6 +40,7 @@ def main(argv):
         if len(argv) != 2:
             sys.exit(__doc__)
         cases = [(float(c.get("time", 0)), c.get("name")) for c in ET.parse(argv[1]).iter("testcase")]
+        cases = [(YARDSTICK_COST if name == YARDSTICK else t, name) for t, name in cases]
         for t, name in sorted(cases, key=lambda c: (-c[0], c[1])):
             if t >= 0.5 and " " not in name:
                 print(f"{name} 1 {t:.1f}")
