@@ -14,9 +14,9 @@
 # CMakeLists.txt for every sanitized build), so a matrix allocated in one tree's code and freed in
 # the other's goes back to the allocator it came from.
 #
-# Expects, from CMakeLists.txt: the targets geomech, geomech_reference, geomech_mutants and
-# geomech_golden; GM_INSTRUMENTED_SOURCES, GM_ARITHMETIC_SOURCES, GM_UNITY_SOURCES,
-# GM_REFERENCE_SOURCES, GM_MUTANT_SOURCES, GM_GOLDEN_SOURCES.
+# Expects, from CMakeLists.txt: the targets geomech, geomech_reference, geomech_mutants,
+# geomech_golden and geomech_mutation; GM_INSTRUMENTED_SOURCES, GM_ARITHMETIC_SOURCES, GM_UNITY_SOURCES,
+# GM_REFERENCE_SOURCES, GM_MUTANT_SOURCES, GM_GOLDEN_SOURCES, GM_MUTATION_ARITHMETIC_SOURCES.
 
 if(NOT GEOMECH_ARITHMETIC_FLAGS)
   message(FATAL_ERROR "GEOMECH_ARITHMETIC_FROM is for the sanitized build (cmake --preset sanitize), which "
@@ -70,9 +70,10 @@ gm_release_objects(gm_reference_objects geomech_reference ${GM_REFERENCE_SOURCES
 gm_release_batches(gm_mutant_batches geomech_mutants ${gm_mutant_batch_sources})
 gm_release_objects(gm_mutant_alone geomech_mutants ${gm_mutant_alone_sources})
 gm_release_objects(gm_golden_objects geomech_golden ${GM_GOLDEN_SOURCES})
+gm_release_objects(gm_mutation_arithmetic geomech_mutation ${GM_MUTATION_ARITHMETIC_SOURCES})
 
 set(gm_all_release_objects ${gm_geomech_batches} ${gm_geomech_arithmetic} ${gm_reference_objects} ${gm_mutant_batches}
-    ${gm_mutant_alone} ${gm_golden_objects})
+    ${gm_mutant_alone} ${gm_golden_objects} ${gm_mutation_arithmetic})
 foreach(object IN LISTS gm_all_release_objects)
   if(NOT EXISTS ${object})
     message(FATAL_ERROR "GEOMECH_ARITHMETIC_FROM=${GM_FROM}: ${object} is missing; build that tree first "
@@ -85,6 +86,10 @@ set_property(TARGET geomech PROPERTY SOURCES ${GM_INSTRUMENTED_SOURCES} ${gm_geo
 set_property(TARGET geomech_reference PROPERTY SOURCES ${gm_reference_objects})
 set_property(TARGET geomech_mutants PROPERTY SOURCES ${gm_mutant_batches} ${gm_mutant_alone})
 set_property(TARGET geomech_golden PROPERTY SOURCES ${gm_golden_objects})
+get_target_property(gm_mutation_sources geomech_mutation SOURCES)
+list(TRANSFORM gm_mutation_sources PREPEND ${PROJECT_SOURCE_DIR}/ REGEX "^[^/]")
+list(REMOVE_ITEM gm_mutation_sources ${GM_MUTATION_ARITHMETIC_SOURCES})
+set_property(TARGET geomech_mutation PROPERTY SOURCES ${gm_mutation_sources} ${gm_mutation_arithmetic})
 # Which copy of a template the program runs. An Eigen or Boost.Multiprecision function that the
 # arithmetic does not inline is a weak symbol, defined in every object that uses it, and the linker
 # keeps the first copy it loads: before, the instrumented -O0 copy of a test's or of the runner's
