@@ -25,6 +25,11 @@ import xml.etree.ElementTree as ET
 YARDSTICK, YARDSTICK_COST = "golden_check.manakov_so5", 3.0
 
 
+def read_cases(junit):
+    """(seconds, name) of every test of a ctest JUnit file."""
+    return [(float(c.get("time", 0)), c.get("name")) for c in ET.parse(junit).iter("testcase")]
+
+
 def main(argv):
     if not argv:
         sys.exit(__doc__)
@@ -39,13 +44,13 @@ def main(argv):
     if argv[0] == "--cost-data":
         if len(argv) != 2:
             sys.exit(__doc__)
-        cases = [(float(c.get("time", 0)), c.get("name")) for c in ET.parse(argv[1]).iter("testcase")]
+        cases = read_cases(argv[1])
         cases = [(YARDSTICK_COST if name == YARDSTICK else t, name) for t, name in cases]
         for t, name in sorted(cases, key=lambda c: (-c[0], c[1])):
             if t >= 0.5 and " " not in name:
                 print(f"{name} 1 {t:.1f}")
         return 0
-    cases = [(float(c.get("time", 0)), c.get("name")) for c in ET.parse(argv[0]).iter("testcase")]
+    cases = read_cases(argv[0])
     top = int(argv[1]) if len(argv) > 1 else len(cases)
     total = sum(t for t, _ in cases)
     print(f"  {len(cases)} tests, {total:.0f} s of test time in all")
