@@ -854,7 +854,9 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     if (!st[k].wanted) {
       st[k].done = true;
       st[k].ok = false;
-      st[k].unavailable = std::string("not compiled for ") + kScalars[unit.scalar] + " in this run (--scalar)";
+      st[k].unavailable = std::string("not compiled for ") + kScalars[unit.scalar] +
+                          (o.scalars_left_out_because.empty() ? " in this run (--scalar)"
+                                                              : ": " + o.scalars_left_out_because);
     }
   }
 

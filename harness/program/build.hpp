@@ -59,6 +59,8 @@ struct BuildOptions {
   bool force = false;        // ignore the cache
   bool mp50 = true;          // compile the 50-digit instantiation (double is always compiled)
   bool exact = true;         // compile the exact-rational instantiation
+  // Why mp50 and exact are not compiled when they are not (the reports' words); empty: "--scalar".
+  std::string scalars_left_out_because;
   bool integrators = true;   // compile the integrators (a first look, which checks the slots alone, does not)
   bool fast_link = false;    // link with lld or gold when found (a first look; see fast_linker_option)
   bool server = false;       // link the protocol server (untrusted mode) instead of the check program

@@ -24,6 +24,10 @@ int student_main(int argc, char** argv) {
   app.add_option("--reproduce-prefix", prefix, "command printed to replay a failure");
   app.add_option("--build-notes", notes_file, "what the build found (JSON written by geomech check)");
   app.add_flag("--describe", describe, "print the slots and integrators found, per scalar, and exit");
+  bool one_precision = false;
+  app.add_flag("--states-its-precision", one_precision,
+               "exit 0 when the file fills no slot and every integrator states a precision (float, single or "
+               "double), so that its other scalars would check nothing; 1 otherwise");
   CLI11_PARSE(app, argc, argv);
 
   nlohmann::json notes;
@@ -39,6 +43,19 @@ int student_main(int argc, char** argv) {
       std::cerr << "geomech: " << notes_file << ": " << e.what() << "\n";
       return 2;
     }
+  }
+  if (one_precision) {
+    // The registrations of this program (a first look's double slots): its slots and its claims.
+    const Registered& r = registered();
+    bool any_slot = false;
+    if (r.d)
+      for (const auto& slot : subject_slots()) any_slot = any_slot || r.d->provides(slot.name);
+    const std::vector<IntegratorClaims> none;
+    const std::vector<IntegratorClaims>& claims = r.d_info ? r.d_info->claims : none;
+    bool all_state = !claims.empty();
+    for (const auto& c : claims)
+      all_state = all_state && (c.precision == "float" || c.precision == "single" || c.precision == "double");
+    return !any_slot && all_state ? 0 : 1;
   }
   {
     const Registered& r = registered();

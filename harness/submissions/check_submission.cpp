@@ -55,12 +55,14 @@ int run_student_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   // said so by the first look's build, not compiled again.
   std::thread first_look;
   std::optional<BuildResult> not_compiled;
+  std::string one_precision_program;  // the first look's program, which can say whether every step states one
   if (r.first_look && !narrowed_run && bo.mp50 && bo.exact) {
     BuildOptions quick = bo;
     quick.mp50 = quick.exact = quick.integrators = false;
     quick.fast_link = true;
     quick.program_name = "check-double";
     BuildResult q = build_student(file, tc, quick);
+    if (q.ok) one_precision_program = q.program;
     if (q.ok && !q.cached) {
       std::cerr << "geomech: compiled the double slots in " << std::fixed << std::setprecision(1) << q.seconds
                 << " s: a first look at every slot in double while the rest compiles\n";
@@ -71,7 +73,22 @@ int run_student_check(const SubmissionRequest& r, SubmissionOutcome& out) {
     }
     if (q.does_not_compile) not_compiled = std::move(q);
   }
-  const BuildResult b = not_compiled ? std::move(*not_compiled) : build_student(file, tc, bo);
+  // A file that fills no slot and whose every integrator states its precision (an engine's wrapper,
+  // `precision = "float"` or "double") runs its steps in double only: its 50-digit and exact compiles,
+  // each through the engine's headers, would register nothing to check. The first look's program
+  // says so from its own registrations.
+  BuildOptions full = bo;
+  if (!one_precision_program.empty()) {
+    const ProcessResult described = run_process(ProcessSpec{{one_precision_program, "--states-its-precision"}, {}, true});
+    if (described.started && !described.signal && described.exit_code == 0) {
+      full.mp50 = full.exact = false;
+      full.scalars_left_out_because =
+          "the file fills no slot and every integrator states its precision, so its steps run in double only";
+      std::cerr << "geomech: every integrator states its precision and the file fills no slot: compiled for "
+                   "double only\n";
+    }
+  }
+  const BuildResult b = not_compiled ? std::move(*not_compiled) : build_student(file, tc, full);
   if (first_look.joinable()) first_look.join();
   for (const auto& line : b.log) std::cerr << "geomech: " << line << "\n";
   out.build_seconds = b.seconds;
