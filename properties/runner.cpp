@@ -1,6 +1,7 @@
 #include "properties/runner.hpp"
 
 #include "properties/support/step_guard.hpp"
+#include "properties/support/step_precision.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include <rapidcheck.h>
@@ -492,6 +493,20 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
       explicit Domain(const StepDomain& d) { current_step_domain() = d; }
       ~Domain() { current_step_domain() = saved; }
     } domain(claims ? claims->domain : StepDomain{});
+    // The precision the step computes in, for every tolerance of its checks.
+    const JudgedAt precision(precision_to_judge<T>(guarded_integrator, claims));
+    // A step detected to compute in float is judged as one stated to: in double only (a 50-digit run
+    // of a float computation measures float's round-off again).
+    if constexpr (!std::is_same_v<T, double>) {
+      if (current_step_precision().detected && current_step_precision().coarser_than<double>()) {
+        v.outcome = Outcome::NotProvided;
+        v.message = "your step computes in " + current_step_precision().name + " (" + current_step_precision().how +
+                    "), so it is checked in double only, as a step stated to compute in " +
+                    current_step_precision().name + " is";
+        out.push_back(std::move(v));
+        continue;
+      }
+    }
     run_checked(v, p, k, all_cases, [&] { (*ibody)(subject, guarded_integrator, claims ? *claims : none); });
     // A raise beyond some size does not hide a finding below it: with no domain declared, the check
     // is run again inside the range where the step was seen to work (|Omega| and |Pi| below a
@@ -499,7 +514,11 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
     // 1). A failure there is the verdict, said with the raise; a pass there leaves the raise's verdict
     // (the claim is not verified beyond) and says it passes inside.
     const bool declared = claims && claims->domain.declared();
-    if (v.outcome == Outcome::Fail && !v.step_raised.empty() && !declared && v.step_raised_rate >= 64 &&
+    // A replay (--reproduce) runs the one case it names and says what that case does, as the run it
+    // replays printed it: the runs again below draw cases of their own, which a replay's string
+    // would force into the case it names instead.
+    const bool replay = !o.reproduce.empty();
+    if (!replay && v.outcome == Outcome::Fail && !v.step_raised.empty() && !declared && v.step_raised_rate >= 64 &&
         v.step_raised_size >= 64) {
       StepDomain inside;
       inside.max_omega = v.step_raised_rate / 4;
@@ -532,6 +551,29 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
         v.message += std::string("\n(run again inside ") + range + ", where the step works, the check passes there)";
       }
     }
+    // A claimed check that failed with a raise is run once more with the raising cases discarded:
+    // when the cases that run to their end fail, the claim is contradicted (FALSE CLAIM, said with the
+    // raise), not merely unverified; when they pass, the raise's verdict stays.
+    if (!replay && v.outcome == Outcome::Fail && !v.step_raised.empty() && claims && claims_any(*claims, p.judges)) {
+      Verdict again = base_verdict<T>(p, s);
+      again.integrator = integrator.name;
+      {
+        struct Discarding {
+          Discarding() { discard_step_raises() = true; }
+          ~Discarding() { discard_step_raises() = false; }
+        } discarding;
+        run_checked(again, p, k, all_cases, [&] { (*ibody)(subject, guarded_integrator, *claims); });
+      }
+      const std::string raised =
+          "your step raised at " + v.step_raised_where + ": " + v.step_raised.substr(0, v.step_raised.find('\n'));
+      if (again.outcome == Outcome::Fail && again.step_raised.empty()) {
+        again.message = raised + "; in the cases where it did not raise the check fails too:\n" + again.message;
+        again.notes.push_back(raised + "; the cases where it did not raise fail too");
+        v = std::move(again);
+      } else if (again.outcome == Outcome::Pass) {
+        v.notes.push_back("the cases where the step did not raise pass");
+      }
+    }
     // The step raised in the case reported: a claimed property FAILS (its claim could not be
     // verified); one that judges only claims nobody made, or none, could measure nothing and says so.
     if (v.outcome == Outcome::Fail && !v.step_raised.empty() && !claims_any(claims ? *claims : none, p.judges)) {
@@ -546,6 +588,10 @@ std::vector<Verdict> run_in(const Property& p, const SubjectSet& s, ScalarKind k
                                   : " (not claimed; before that, a case measured to its end: " + before + ")");
       v.counterexample.clear();
       v.reproduce.clear();
+    }
+    if (current_step_precision().template coarser_than<T>()) {
+      v.judged_precision = current_step_precision().name;
+      v.judged_precision_how = current_step_precision().how;
     }
     out.push_back(std::move(v));
   }

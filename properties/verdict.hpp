@@ -72,6 +72,10 @@ struct Verdict {
   // Such an ERROR is never graded, never names a slot, and the check is run again once the
   // condition changes (DESIGN.md, "A cause is an experiment").
   std::string machine_fault;
+  // Integrator properties: the precision the step was judged at when it is coarser than the scalar's
+  // own ("float"), and how it is known ("stated: ...", "detected: ..."); empty otherwise
+  // (properties/support/step_precision.hpp).
+  std::string judged_precision, judged_precision_how;
 
   std::string key() const;  // subject/property/scalar[/integrator]: RapidCheck's test id
 };

@@ -41,9 +41,9 @@ if(NOT status EQUAL 1)
 endif()
 file(READ ${dir}/report.md report)
 foreach(text "State: a unit quaternion q = (w, x, y, z) and the spatial angular velocity omega"
-             "Precision: computes in double, stated: ODE is built in double here"
+             "Precision: computes in double (stated: ODE is built in double here"
              "### dWorldStep_gyroscopic_off"
-             " PASS, 2 FAIL"
+             " does not hold, 2 FAIL"
              "- **FAIL** `integrator_order [dWorldQuickStep_gyroscopic_off]`"
              "- **FAIL** `integrator_order [dWorldStep_gyroscopic_off]`"
              "| order | no | **DOES NOT CONVERGE** |"

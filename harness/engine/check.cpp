@@ -257,7 +257,8 @@ void explain_not_provided(Verdict& v, const Property& p, const SubjectSet& s, co
     v.message = "needs slot '" + need + "', which is not provided";
     return;
   }
-  if (p.scope == Scope::Integrator && *kind == ScalarKind::MP50) {
+  // A row of one integrator already says why (a step detected to compute in float, run in double only).
+  if (p.scope == Scope::Integrator && *kind == ScalarKind::MP50 && v.integrator.empty()) {
     const auto in_double = integrators_for(p, s, ScalarKind::Double);
     if (in_double.empty()) return;
     // Each one stated to compute in double: the statement is the reason, not the signature.

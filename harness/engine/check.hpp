@@ -138,6 +138,9 @@ struct IntegratorInfo {
   std::vector<std::string> scalars;      // the scalars it is instantiated in
   StateForm form;                        // the form it keeps the rigid body's state in (core/state_form.hpp)
   std::vector<ClaimDecision> decisions;  // decided at the end of the check (harness/engine/integrator_verdicts.hpp)
+  // The precision its checks judged it at (properties/support/step_precision.hpp), from its verdicts:
+  // "float" with how it is known ("stated: ...", "detected: ..."); empty when it computes in its scalar.
+  std::string judged_precision, judged_precision_how;
 };
 
 struct CheckResult {

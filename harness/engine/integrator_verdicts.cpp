@@ -98,6 +98,8 @@ struct ScalarState {
   enum Kind { NotApplicable, NotRun, Partial, Incomplete, False, Complete } kind = NotApplicable;
   std::string why;    // NotRun, Partial, Incomplete: which checks and why; False: the check that contradicts
   bool holds = true;  // Complete: every finding holds
+  std::string contradicting;  // False: what the contradicting check measured ("order 0.24 in the regime ...")
+  const Verdict* contradicted_by = nullptr;  // False: the verdict of that check
 };
 
 ScalarState scalar_state(const CheckResult& r, const IntegratorInfo& integ, const std::string& claim,
@@ -142,7 +144,11 @@ ScalarState scalar_state(const CheckResult& r, const IntegratorInfo& integ, cons
       // A measurement that does not hold decides, complete or shortened (a loss of energy seen in a
       // short run is a loss), even when the step raised in a later case: a finding is recorded only
       // by a case that ran to its end.
-      if (!f->holds && contradicted.empty()) contradicted = v->property + " [" + scalar + "]";
+      if (!f->holds && contradicted.empty()) {
+        contradicted = v->property + " [" + scalar + "]";
+        st.contradicted_by = v;
+        st.contradicting = (f->measured.empty() ? first_line(f->evidence) : f->measured) + " (" + scalar + ")";
+      }
       all_hold = all_hold && f->holds;
     }
     // A check that ran and failed (not for a raise, not for the machine) contradicts the claims it
@@ -154,6 +160,7 @@ ScalarState scalar_state(const CheckResult& r, const IntegratorInfo& integ, cons
                                        [&](const ClaimFinding& f) { return f.claim != claim && !f.holds; });
       if (!another && (!mine || !mine->holds)) {
         contradicted = v->property + " [" + scalar + "]";
+        st.contradicted_by = v;
         all_hold = false;
         if (!mine) evidence.push_back(scalar + ", " + v->property + ": FAILS: " + first_line(v->message));
       }
@@ -259,6 +266,9 @@ std::vector<ClaimDecision> decide_claims(const CheckResult& r, const IntegratorI
       for (const auto& c : judged_claims(v))
         if (std::find(names.begin(), names.end(), c) == names.end()) names.push_back(c);
   std::vector<std::string> scalars = integ.scalars;
+  // A step detected to compute in float is checked in double only, as one stated to (the runner
+  // leaves its 50-digit checks NOT PROVIDED): its claims are decided there.
+  if (integ.judged_precision_how.rfind("detected", 0) == 0) std::erase(scalars, std::string("mp50"));
   if (scalars.empty()) {  // trajectory checks: the scalars their verdicts ran in
     for (const auto& v : r.verdicts)
       if (v.integrator == integ.name && std::find(scalars.begin(), scalars.end(), v.scalar) == scalars.end())
@@ -305,6 +315,28 @@ std::vector<ClaimDecision> decide_claims(const CheckResult& r, const IntegratorI
     } else if (any(ScalarState::False)) {
       d.status = claimed ? ClaimStatus::FalseClaim : order ? ClaimStatus::DoesNotConverge : ClaimStatus::DoesNotHold;
       d.why = first(ScalarState::False);
+      // The figure that contradicts it leads, not a passing check's (a generic order beside a
+      // failing regime's).
+      for (const auto& [s, st] : states)
+        if (st.kind == ScalarState::False && !st.contradicting.empty()) {
+          if (d.measured.find(st.contradicting) == std::string::npos)
+            d.measured = st.contradicting + (d.measured.empty() ? "" : "; elsewhere " + d.measured);
+          else
+            d.measured = st.contradicting;
+          break;
+        }
+      // A property nobody claimed that does not hold carries its counterexample: the check's finding
+      // at its input (support/named_inputs.hpp puts the input in it) and the command that shows it
+      // again.
+      if (d.status == ClaimStatus::DoesNotHold)
+        for (const auto& [s, st] : states)
+          if (st.kind == ScalarState::False && st.contradicted_by) {
+            const Verdict& v = *st.contradicted_by;
+            std::string finding;
+            if (const ClaimFinding* f = finding_of(v, claim)) finding = first_line(f->evidence);
+            d.why = d.why + (finding.empty() ? "" : ": " + finding) + "; reproduce: " + reproduce_command(r, v);
+            break;
+          }
     } else if (any(ScalarState::Incomplete)) {
       d.status = claimed ? ClaimStatus::NotVerified : ClaimStatus::NotEstablished;
       d.why = first(ScalarState::Incomplete);
@@ -350,7 +382,15 @@ void decide_integrator_verdicts(CheckResult& r) {
     auto it = claims.find(v.integrator);
     v.word = verdict_word(v, it == claims.end() ? nullptr : it->second);
   }
-  for (auto& i : r.integrators) i.decisions = decide_claims(r, i);
+  for (auto& i : r.integrators) {
+    for (const auto& v : r.verdicts)
+      if (v.integrator == i.name && !v.judged_precision.empty()) {
+        i.judged_precision = v.judged_precision;
+        i.judged_precision_how = v.judged_precision_how;
+        break;
+      }
+    i.decisions = decide_claims(r, i);
+  }
 }
 
 }  // namespace gm::harness

@@ -85,6 +85,7 @@ json to_json(const Verdict& v) {
   j["claims"] = claims;
   if (!v.word.empty()) j["word"] = v.word;
   if (!v.machine_fault.empty()) j["machine_fault"] = v.machine_fault;
+  if (!v.judged_precision.empty()) j["judged_precision"] = {{"name", v.judged_precision}, {"how", v.judged_precision_how}};
   j["owner"] = v.outcome == Outcome::Pass || v.outcome == Outcome::NotProvided ? "none"
                : !v.machine_fault.empty()                                      ? "machine"
                                                                                : "code";
@@ -143,6 +144,10 @@ Verdict verdict_from_json(const json& j) {
                                     c.value("complete", true), c.value("measured", std::string())});
   v.word = j.value("word", std::string());
   v.machine_fault = j.value("machine_fault", std::string());
+  if (j.contains("judged_precision")) {
+    v.judged_precision = j["judged_precision"].value("name", std::string());
+    v.judged_precision_how = j["judged_precision"].value("how", std::string());
+  }
   if (j.contains("step_raised")) {
     v.step_raised = j["step_raised"].value("message", std::string());
     v.step_raised_where = j["step_raised"].value("where", std::string());

@@ -5,6 +5,7 @@
 #include "harness/reports/console_stream.hpp"
 #include "harness/isolation/process.hpp"
 #include "harness/reports/report.hpp"
+#include "harness/reports/report_parts.hpp"
 
 #include <iostream>
 #include <optional>
@@ -232,10 +233,7 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
     return r.exit_code();
   }
   if (o.quiet) {
-    std::cout << r.subject << ": " << r.verdict_word() << " (" << r.count(Outcome::Pass) << " PASS, "
-              << r.count(Outcome::Fail) << " FAIL, " << r.count(Outcome::NotProvided) << " NOT PROVIDED, "
-              << r.count(Outcome::Crash) << " CRASH, " << r.count(Outcome::Timeout) << " TIMEOUT, "
-              << r.count(Outcome::Error) << " ERROR)"
+    std::cout << r.subject << ": " << r.verdict_word() << " (" << report_parts::summary_counts(r) << ")"
               << (r.left_to_thorough.empty()
                       ? ""
                       : "; " + std::to_string(r.left_to_thorough.size()) + " costly 50-digit runs left to --thorough")

@@ -149,6 +149,7 @@ void write_claims(std::ostream& os, const CheckResult& r) {
         // Why, where it is not in the measurement: what kept a claim from being decided, what
         // contradicts a claim made.
         if (!row.why.empty() && (row.fails || row.status.rfind("not established", 0) == 0 ||
+                                 row.status.rfind("does not hold", 0) == 0 ||
                                  row.status.find("by the checks that ran") != std::string::npos))
           rows << "\n  " << std::setw(24) << ""
                << "(" << row.why << ")";
@@ -156,12 +157,7 @@ void write_claims(std::ostream& os, const CheckResult& r) {
     if (rows.str().empty()) continue;
     os << "\nintegrator '" << integ.name << "'";
     if (!integ.form.is_notes()) os << " (state: " << state_form_words(integ.form) << ")";
-    if (!integ.claims.precision.empty())
-      os << " (computes in " << bounded_text(inert_text(integ.claims.precision), 40)
-         << (integ.claims.precision_reason.empty()
-                 ? std::string("")
-                 : ": " + bounded_text(inert_text(integ.claims.precision_reason), 300))
-         << ")";
+    if (const std::string p = precision_words(integ); !p.empty()) os << " (" << p << ")";
     os << " claims" << domain_words(integ.claims.domain) << ":" << rows.str() << "\n";
   }
 }

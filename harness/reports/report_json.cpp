@@ -58,6 +58,8 @@ json json_report(const CheckResult& r, const Catalogue* c) {
     if (!i.form.is_notes()) one["state"] = state_form_words(i.form);
     if (!i.claims.precision.empty())
       one["precision"] = {{"stated", i.claims.precision}, {"reason", i.claims.precision_reason}};
+    if (!i.judged_precision.empty())
+      one["precision"]["judged"] = {{"name", i.judged_precision}, {"how", i.judged_precision_how}};
     json domain = json::object();
     if (i.claims.domain.max_omega > 0) domain["max_omega"] = i.claims.domain.max_omega;
     if (i.claims.domain.max_pi > 0) domain["max_pi"] = i.claims.domain.max_pi;

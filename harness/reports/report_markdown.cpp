@@ -81,40 +81,51 @@ void write_what_to_fix(std::ostream& md, const CheckResult& r, std::vector<const
         md << "\n";
       }
     }
-    // A step that raises: one line per integrator and message, with the checks it stopped.
+    // A step that raises: one line per message, naming the integrators that raise it and the claimed
+    // checks it stopped. The integrator's domain check says where it raises
+    // (properties/integrators/integrator_domain.cpp): its line leads for the raise it measured (its
+    // message holds the raise's), and is not repeated below; another raise (a TypeError of the 50-digit
+    // run at a slow state, say) is said with its own place, not the domain's.
     std::vector<std::pair<std::string, std::vector<const Verdict*>>> raises;
     for (const Verdict* v : problems) {
       if (v->step_raised.empty()) continue;
-      const std::string key = v->integrator + "\n" + v->step_raised;
+      const std::string key = first_line(v->step_raised);
       auto it = std::find_if(raises.begin(), raises.end(), [&](const auto& g) { return g.first == key; });
       if (it == raises.end())
         raises.push_back({key, {v}});
       else
         it->second.push_back(v);
     }
-    // The integrator's domain check says where it raises (properties/integrators/integrator_domain.cpp): its
-    // line leads, and it is not repeated below.
     std::set<const Verdict*> said;
-    auto domain_of = [&](const std::string& integrator) -> const Verdict* {
+    auto domain_of = [&](const std::string& integrator, const std::string& raise) -> const Verdict* {
       for (const Verdict* v : problems)
-        if (v->integrator == integrator && v->property.find("integrator_domain") != std::string::npos) return v;
+        if (v->integrator == integrator && v->property.find("integrator_domain") != std::string::npos &&
+            v->message.find(raise) != std::string::npos)
+          return v;
       return nullptr;
     };
-    for (const auto& [key, vs] : raises) {
-      const Verdict* domain = domain_of(vs.front()->integrator);
-      md << "- **integrator `" << vs.front()->integrator << "`: your step raises**: ";
+    for (const auto& [raise, vs] : raises) {
+      std::vector<std::string> integrators;
+      for (const Verdict* v : vs)
+        if (std::find(integrators.begin(), integrators.end(), v->integrator) == integrators.end())
+          integrators.push_back(v->integrator);
+      const Verdict* domain = domain_of(vs.front()->integrator, raise);
+      md << "- **integrator" << (integrators.size() > 1 ? "s " : " ");
+      for (std::size_t i = 0; i < integrators.size(); ++i) md << (i ? ", " : "") << "`" << integrators[i] << "`";
+      md << ": your step raises**: ";
       if (domain) {
         std::string line = first_line(domain->message);
         if (line.rfind(domain->integrator + ": ", 0) == 0) line = line.substr(domain->integrator.size() + 2);
         md << md_cell(line);
         for (const Verdict* v : problems)
-          if (v->property == domain->property && v->integrator == domain->integrator) said.insert(v);
+          if (v->property == domain->property && v->message.find(raise) != std::string::npos) said.insert(v);
       } else {
-        md << "at " << md_cell(vs.front()->step_raised_where) << ": " << md_cell(first_line(vs.front()->step_raised));
+        md << "at " << md_cell(vs.front()->step_raised_where) << ": " << md_cell(raise);
       }
       md << ". The claimed checks it stopped: ";
       for (std::size_t i = 0; i < vs.size(); ++i)
-        md << (i ? ", " : "") << "[`" << vs[i]->property << "` " << vs[i]->scalar << "](#" << anchor_of(*vs[i]) << ")";
+        md << (i ? ", " : "") << "[`" << row_name(*vs[i]) << "` " << vs[i]->scalar << "](#" << anchor_of(*vs[i])
+           << ")";
       md << "\n";
     }
     // Then the rest, an integrator's claimed checks before the ones nobody claimed.
@@ -196,12 +207,7 @@ void write_integrators_and_figures(std::ostream& md, const CheckResult& r) {
         md << "State: " << describe_state_form(integ.form) << " (declared `" << state_form_words(integ.form)
            << "`); the suite reads it as the notes' (Pi, O) by " << state_form_conversion(integ.form)
            << ", and steps your own state along each run.\n\n";
-      if (!integ.claims.precision.empty())
-        md << "Precision: computes in " << md_inline(bounded_text(integ.claims.precision, 40)) << ", "
-           << (integ.claims.precision_reason.empty()
-                   ? std::string("stated without a reason")
-                   : "stated: " + md_inline(bounded_text(integ.claims.precision_reason, 300)))
-           << ".\n\n";
+      if (const std::string p = precision_words(integ); !p.empty()) md << "Precision: " << md_inline(p) << ".\n\n";
       bool any_row = false;
       for (const auto& row : claim_rows(r, integ)) any_row = any_row || row.status != "-";
       if (!any_row)

@@ -71,19 +71,32 @@ std::string verdict_cell(const Verdict& v, bool exact_column) {
   const bool plain = cell == "PASS";
   if (plain && v.cases_planned > v.cases)  // the time budget was spent: cases run / planned
     cell += " " + std::to_string(v.cases) + "/" + std::to_string(v.cases_planned);
-  if (!exact_column && v.checks > 0 && plain) cell += " " + eps_text(v.worst_eps_units);
+  if (!exact_column && v.checks > 0 && plain)
+    cell += " " + eps_text(v.worst_eps_units) + (v.judged_precision.empty() ? "" : " (" + v.judged_precision + ")");
   return cell;
 }
 
+// The outcomes counted, with the findings on claims nobody made apart from the passes they are
+// reported as: "4 PASS, 10 does not hold, 0 FAIL" (a check of an unclaimed property that finds it
+// does not hold passes the check, and is not a pass of the property).
 std::string summary_counts(const CheckResult& r) {
+  int does_not_hold = 0, not_established = 0;
+  for (const auto& v : r.verdicts)
+    if (v.outcome == Outcome::Pass && v.word.rfind("does not hold", 0) == 0)
+      ++does_not_hold;
+    else if (v.outcome == Outcome::Pass && v.word.rfind("not established", 0) == 0)
+      ++not_established;
   std::ostringstream os;
   bool first = true;
   for (Outcome o : {Outcome::Pass, Outcome::Fail, Outcome::NotProvided, Outcome::Crash, Outcome::Timeout,
                     Outcome::Error, Outcome::NotCharacterised}) {
-    const int n = r.count(o);
+    int n = r.count(o);
+    if (o == Outcome::Pass) n -= does_not_hold + not_established;
     if (n == 0 && o != Outcome::Pass && o != Outcome::Fail) continue;
     os << (first ? "" : ", ") << n << " " << outcome_name(o);
     first = false;
+    if (o == Outcome::Pass && does_not_hold > 0) os << ", " << does_not_hold << " does not hold";
+    if (o == Outcome::Pass && not_established > 0) os << ", " << not_established << " not established";
   }
   return os.str();
 }
@@ -138,6 +151,23 @@ std::string md_cell(const std::string& s) { return md_inline(s); }
 
 // A code block that no text inside can close.
 std::string fence(const std::string& s) { return md_fenced(s); }
+
+// "computes in float (stated: the engine is built in float); judged at float's round-off, eps =
+// 1.19e-07", "computes in float (detected: ...)", or empty: how every view says an integrator's
+// precision.
+std::string precision_words(const IntegratorInfo& integ) {
+  const std::string stated = bounded_text(inert_text(integ.claims.precision), 40);
+  const std::string reason = bounded_text(inert_text(integ.claims.precision_reason), 300);
+  std::string out;
+  if (!integ.judged_precision.empty() && integ.claims.precision.empty())
+    out = "computes in " + integ.judged_precision + " (" + bounded_text(inert_text(integ.judged_precision_how), 300) + ")";
+  else if (!stated.empty())
+    out = "computes in " + stated + (reason.empty() ? " (stated, without a reason)" : " (stated: " + reason + ")");
+  if (integ.judged_precision == "float") out += "; judged at float's round-off, eps = 1.19e-07";
+  if (!integ.claims.precision.empty() && integ.judged_precision.empty() && stated != "double")
+    out += "; not a precision the suite knows (float, single or double): judged at the scalar's own";
+  return out;
+}
 
 // " (declared domain: |Omega| <= 1e+06, h >= 1e-09; nothing outside it is checked)", or empty.
 std::string domain_words(const StepDomain& d) {

@@ -41,6 +41,7 @@ std::string md_cell(const std::string& s);  // a table cell or a list item: iner
 std::string fence(const std::string& s);    // a code block that no text inside can close
 // " (declared domain: |Omega| <= 1e+06, h >= 1e-09; nothing outside it is checked)", or empty.
 std::string domain_words(const StepDomain& d);
+std::string precision_words(const IntegratorInfo& integ);  // "computes in float (stated: ...); judged at ..."
 // Whether the verdict is a check of a claim its integrator made.
 bool judges_a_claim_made(const CheckResult& r, const Verdict& v);
 std::string anchor_of(const Verdict& v);  // report.md's anchor of a verdict's section

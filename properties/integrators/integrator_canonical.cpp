@@ -173,7 +173,7 @@ MatX<T> run(const CanonicalCase<T>& c, MatX<T> Z, const T& h, int steps) {
 // A false claim leads with the step's own equation at the case's start.
 template <class T, class Judge>
 void explained(const CanonicalCase<T>& c, Judge&& judge) {
-  stepfield::explaining_claims([&] { return "the step's own equation: " + c.diagnose(c.Z0).text + scalar_tag<T>(); },
+  stepfield::explaining_claims([&] { return "the step's own equation: " + c.diagnose(c.Z0).text + judged_tag<T>(); },
                                judge);
 }
 
@@ -188,7 +188,7 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
   const T scale = at_least_one_abs(c.Z0);
   std::vector<double> hs, errs, floors;
   Series ser{"convergence (Clebsch " + c.system.substr(0, 6) + "): " + in.name,
-             "error at t = 1" + scalar_tag<T>(),
+             "error at t = 1" + judged_tag<T>(),
              "step h",
              "max error",
              true,
@@ -207,7 +207,7 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
     errs.push_back(to_double(err));
     errs_Q.push_back(to_double(T(max_abs(MatX<T>(D.topRows(k))))));
     errs_P.push_back(to_double(T(max_abs(MatX<T>(D.bottomRows(k))))));
-    floors.push_back(16.0 * eps_double<T>() * to_double(scale) * N * c.n);
+    floors.push_back(16.0 * step_eps_double<T>() * to_double(scale) * N * c.n);
     ser.points.emplace_back(hs.back(), errs.back());
   }
   record_series(ser);
@@ -218,7 +218,7 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
           return c.inputs(t_end / T(Ns.front())) + "    (h halved down to 1/" + std::to_string(Ns.back()) + ")\n";
         },
         [&] {
-          judge_order_claim(in.name, cl.order, " on the Clebsch system " + c.system, scalar_tag<T>(), hs, errs, floors,
+          judge_order_claim(in.name, cl.order, " on the Clebsch system " + c.system, judged_tag<T>(), hs, errs, floors,
                             parts);
         });
   });

@@ -1,9 +1,10 @@
 // Where an integrator's step works. An integrator of (3.8) and (2.10) (or of Manakov's
 // (2.36)) must return a finite state for every state and step in its domain: the whole space when
 // it declares none, or the declared one (largest |Omega| or state, smallest h; StepDomain in
-// core/subject.hpp). The step is probed at a generic state scaled by 2^j (j = -40..40, the time
-// with it: the same motion in other units) and with steps h = 2^-k / |Omega| down to 2^-50 (2^-120
-// in 50 digits), everywhere inside the domain.
+// core/subject.hpp). The step is probed at a generic state scaled by 2^j (j = -64..64, the time
+// with it: the same motion in other units), with steps h = 2^-k / |Omega| down to 2^-50 (2^-120
+// in 50 digits) and one of h |Omega| = 1, everywhere inside the domain; the finding says what was
+// probed, never "everywhere".
 //
 // This is the one finding for a step that raises (support/step_guard.hpp): "your step raises on
 // every call: ...", "raises for |Omega| >= 2.6e6: ...", "raises for h <= ...", with the advice to
@@ -19,6 +20,7 @@
 #include "properties/support/regimes.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/step_guard.hpp"
+#include "properties/support/step_precision.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include <algorithm>
@@ -94,7 +96,7 @@ inline std::string verdict_of(const std::vector<Probe>& probes, const StepDomain
             "domain{.max_omega = ...}; Python: domain = {\"max_omega\": ...}; Octave: the field domain = "
             "struct('max_omega', ...)), and nothing outside it is drawn";
   if (by_rate && fail_rate < 1e308)
-    return "your step " + what + " for |Omega| >= " + fmt("%.3g", fail_rate) + " (it works up to " +
+    return "your step " + what + " for max |Omega_i| >= " + fmt("%.3g", fail_rate) + " (it works up to " +
            fmt("%.3g", ok_rate) + ")" + first_message + advice;
   // A threshold on h.
   double fail_h = 0, ok_h = 1e308;
@@ -173,9 +175,15 @@ std::vector<Probe> probes_of(double rate0, double size0, Scaled&& scaled, Call&&
     return !((d.max_omega > 0 && l * rate0 > d.max_omega) || (d.max_pi > 0 && l * size0 > d.max_pi) ||
              (d.min_h > 0 && std::ldexp(1.0, -4) / (l * rate0) < d.min_h));
   };
-  for (int j = -40; j <= 40; j += 4)
+  // Scales from 2^-64 to 2^64 (|Omega| up to ~1e19: a reset of a fast body shows there), each at
+  // h |Omega| = 1/16; for a step judged at a precision whose range is smaller (float: |Pi|^2
+  // overflows near 2^128), within 2^-60 to 2^60, where the squares of the state stay finite there.
+  const int reach = current_step_precision().eps >= kFloatEps ? 60 : 64;
+  for (int j = -reach; j <= reach; j += 4)
     if (inside(j)) out.push_back(at_scale(j));
   refine(out, at_scale);
+  // A step of h |Omega| = 1, past the pi/4 at which engines limit the turn of a step, as drawn.
+  if (inside(0) && !(d.min_h > 0 && 1.0 / rate0 < d.min_h)) out.push_back(call(0, 0, scaled(T(1)), T(T(1) / T(rate0))));
   for (int k = 6; k <= last_k; k += 4) {
     const T h = pow2<T>(-k) / T(rate0);
     if (d.min_h > 0 && to_double(h) < d.min_h) continue;
@@ -210,7 +218,7 @@ void integrator_domain(const Subject<T>&, const Integrator<T>& in, const Integra
       });
   bool works = false;
   const std::string words = verdict_of(probes, c.domain, &works);
-  if (works) record_note(in.name + ": " + words + scalar_tag<T>());
+  if (works) record_note(in.name + ": " + words + judged_tag<T>());
   showing_inputs([&] { return named("I", I) + named("Pi (before scaling)", x0.Pi) + named("O", x0.O); },
                  [&] { require(in.name + ": " + words, works, "\n"); });
 }
@@ -233,7 +241,7 @@ void manakov_integrator_domain(const Subject<T>&, const Integrator<T>& in, const
       });
   bool works = false;
   const std::string words = verdict_of(probes, c.domain, &works);
-  if (works) record_note(in.name + ": " + words + scalar_tag<T>());
+  if (works) record_note(in.name + ": " + words + judged_tag<T>());
   showing_inputs([&] { return named("A", A) + named("M (before scaling)", x0.M) + named("O", x0.O); },
                  [&] { require(in.name + ": " + words, works, "\n"); });
 }
@@ -243,8 +251,8 @@ void manakov_integrator_domain(const Subject<T>&, const Integrator<T>& in, const
 GM_PROPERTY(integrator_domain, integrator_scalars,
             {.id = "integrator_domain",
              .spec = "s3.euler-flow",
-             .title = "rigid-body integrator: the step returns a finite state for every state and step of its domain "
-                      "(everywhere when none is declared)",
+             .title = "rigid-body integrator: the step returns a finite state at every state and step probed in its "
+                      "domain (scales 2^-64 to 2^64, h |Omega| from 2^-50 to 1)",
              .tolerance = ToleranceClass::Truncation,
              .needs = {},
              .negative_controls = {"midpoint_raises_when_fast"},
@@ -254,8 +262,8 @@ GM_PROPERTY(integrator_domain, integrator_scalars,
 GM_PROPERTY(manakov_integrator_domain, integrator_scalars,
             {.id = "manakov_integrator_domain",
              .spec = "s2.manakov-flow",
-             .title = "Manakov integrator: the step returns a finite state for every state and step of its domain "
-                      "(everywhere when none is declared)",
+             .title = "Manakov integrator: the step returns a finite state at every state and step probed in its "
+                      "domain (scales 2^-64 to 2^64, h |Omega| from 2^-50 to 1)",
              .tolerance = ToleranceClass::Truncation,
              .needs = {},
              .negative_controls = {"midpoint_raises_when_fast"},

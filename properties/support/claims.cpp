@@ -28,7 +28,9 @@ void record_claim_finding(const std::string& claim, bool claimed, bool holds, co
   f->claimed = claimed;
   // Once it did not hold, only a later case where it did not hold replaces the evidence: the last
   // failing case is the one shrinking ends with (RapidCheck accepts each failing shrink at once).
-  if (!holds || f->holds) {
+  // Likewise a case that could not decide keeps its evidence against later ones that could: it is
+  // what the verdict's "not verified" rests on.
+  if (!holds || (f->holds && (!complete || f->complete))) {
     f->evidence = evidence;
     f->measured = measured;
   }

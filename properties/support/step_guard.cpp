@@ -7,6 +7,11 @@ std::optional<StepRaise>& current_step_raise() {
   return raise;
 }
 
+bool& discard_step_raises() {
+  thread_local bool discard = false;
+  return discard;
+}
+
 StepDomain& current_step_domain() {
   thread_local StepDomain domain;
   return domain;

@@ -45,6 +45,10 @@ class StepRaised : public std::runtime_error {
 // at the start of each case.
 std::optional<StepRaise>& current_step_raise();
 
+// While set, a raise of the step discards its case instead of ending the check (the runner's second
+// run of a claimed check that failed with a raise: what the cases that ran to their end found).
+bool& discard_step_raises();
+
 // The declared domain of the integrator whose property runs on this thread (set by the runner;
 // none declared: no limit). Draws keep inside it (within_domain, below); a call of the step
 // outside it throws OutsideDomain, and the runner discards that case: nothing outside is checked.
@@ -141,7 +145,9 @@ template <class P, class X, class T>
   r.size = size_of(x);
   r.rate = rate_of(param, x);
   r.h = to_double(h);
-  r.where = fmt("|state| = %.3g, rate |Omega| = %.3g, h = %.3g", r.size, r.rate, r.h);
+  r.where = fmt("max |state_i| = %.3g, rate max |Omega_i| = %.3g, h = %.3g", r.size, r.rate, r.h);
+  if (discard_step_raises())
+    throw rc::detail::CaseResult(rc::detail::CaseResult::Type::Discard, "your step raised at " + r.where);
   current_step_raise() = r;
   throw StepRaised(std::move(r));
 }
@@ -152,8 +158,8 @@ std::string outside(const P& param, const X& x, const T& h) {
   const StepDomain& d = current_step_domain();
   if (!d.declared()) return {};
   const double rate = rate_of(param, x), size = size_of(x), step = std::abs(to_double(h));
-  if (d.max_omega > 0 && rate > d.max_omega) return fmt("|Omega| = %.3g > max_omega = %.3g", rate, d.max_omega);
-  if (d.max_pi > 0 && size > d.max_pi) return fmt("|state| = %.3g > max_pi = %.3g", size, d.max_pi);
+  if (d.max_omega > 0 && rate > d.max_omega) return fmt("max |Omega_i| = %.3g > max_omega = %.3g", rate, d.max_omega);
+  if (d.max_pi > 0 && size > d.max_pi) return fmt("max |state_i| = %.3g > max_pi = %.3g", size, d.max_pi);
   if (d.min_h > 0 && step < d.min_h) return fmt("|h| = %.3g < min_h = %.3g", step, d.min_h);
   return {};
 }

@@ -45,8 +45,9 @@
 //   `EngineState<T> rigid_body_step(const Vec3<T>& I, const EngineState<T>& x, const T& h)`, reading
 //   and returning the declared members (x.q, x.omega); the suite converts, with I.
 // - A step that computes in one precision whatever it is given says so, with its reason:
-//   `static constexpr const char* precision = "double";` and `precision_reason = "...";` (shown in
-//   the report; the step is then run in double only).
+//   `static constexpr const char* precision = "float";` (or "single", or "double") and
+//   `precision_reason = "...";` (shown in the report; the step is then run in double only, and every
+//   tolerance, plateau and trend budget of its checks uses that precision's eps: float's 1.19e-7).
 // - Write no main(), or guard yours with `#ifndef GEOMECH_STUDENT_CHECK`.
 #pragma once
 
@@ -275,14 +276,15 @@ std::string stated_precision_note() {
          (why.empty() ? std::string(" (stated, without a reason)") : " (stated: " + why + ")");
 }
 
-// Whether the integrator states precision = "double" where the compiler can read it (a constexpr
-// member, as the docs write it): then its steps are compiled in double only.
+// Whether the integrator states a precision the suite knows, "double", "float" or "single", where the
+// compiler can read it (a constexpr member, as the docs write it): then its steps compute in that
+// precision whatever they are given, and are compiled and run in double only (a float step driven
+// in 50 digits computes in float all the same).
+constexpr bool is_known_precision(std::string_view p) { return p == "double" || p == "float" || p == "single"; }
 template <class Int>
-constexpr bool states_double() {
-  if constexpr (requires {
-                  typename std::bool_constant<std::string_view(Int::precision) == std::string_view("double")>;
-                })
-    return std::string_view(Int::precision) == std::string_view("double");
+constexpr bool states_known_precision() {
+  if constexpr (requires { typename std::bool_constant<is_known_precision(std::string_view(Int::precision))>; })
+    return is_known_precision(std::string_view(Int::precision));
   else
     return false;
 }
@@ -295,7 +297,7 @@ void gm_integrator_of(Subject<T>& s, PartInfo& info) {
                 "`static constexpr const char* name = \"...\";`");
   using RS = RigidBodyState<T>;
   using MS = ManakovState<T>;
-  if constexpr (!std::is_same_v<T, double> && states_double<Int>()) {
+  if constexpr (!std::is_same_v<T, double> && states_known_precision<Int>()) {
     // Stated "double": nothing of it is compiled for T (the compile of a file of engines in double
     // costs what one scalar costs); the steps it has as templates on T are noted with the reason.
     const std::pair<bool, const char*> steps[] = {
@@ -383,9 +385,16 @@ GM_INTEGRATOR_STEP(clebsch_step, Vec3<T>, Vec3Pair<T>)
 GM_INTEGRATOR_STEP(manakov_clebsch_step, MatX<T>, MatXPair<T>)
 #undef GM_INTEGRATOR_STEP
 if constexpr (requires { std::string_view(Int::precision); }) {
-  // A stated precision: "double" runs the steps in double only, and the report says why.
+  // A stated precision: "double", "float" or "single" runs the steps in double only, and the report
+  // says why; any other is named as not a precision.
+  if constexpr (std::is_same_v<T, double>)
+    if (!is_known_precision(std::string_view(Int::precision)))
+      info.unchecked.push_back("integrator '" + std::string(Int::name) + "' states precision = \"" +
+                               std::string(Int::precision) +
+                               "\", which is not a precision the suite knows: state \"float\" (or \"single\") or "
+                               "\"double\"; its steps are judged at the scalar's own precision");
   if constexpr (!std::is_same_v<T, double>)
-    if (std::string_view(Int::precision) == "double") {
+    if (is_known_precision(std::string_view(Int::precision))) {
       const std::pair<bool, const char*> steps[] = {
           {static_cast<bool>(in.rigid_body_step), "rigid_body_step"},
           {static_cast<bool>(in.manakov_step), "manakov_step"},

@@ -577,12 +577,13 @@ def main():
                 continue
             ok = True
             precision = get(obj, "precision", None)
-            if precision is not None and str(precision) == "double" and scalar != "double":
-                # A stated precision: run in double only, and say why in the report.
+            if precision is not None and str(precision) in ("double", "float", "single") and scalar != "double":
+                # A stated precision: run in double only (a float step driven in 50 digits computes in
+                # float all the same), judged at that precision's eps, and say why in the report.
                 why = get(obj, "precision_reason", None)
                 for s in isteps:
-                    notes.setdefault(scalar, {})["%s.%s" % (iname, s)] = "computes in double (%s)" % (
-                        "stated: " + inert(str(why)) if why else "stated, without a reason")
+                    notes.setdefault(scalar, {})["%s.%s" % (iname, s)] = "computes in %s (%s)" % (
+                        inert(str(precision)), "stated: " + inert(str(why)) if why else "stated, without a reason")
                 continue
             for s in (isteps if table.get("probe", True) and scalar != "double" else []):
                 sig = isigs.get(s, STEP_SIGS[s])

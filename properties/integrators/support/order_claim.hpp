@@ -44,9 +44,15 @@ inline std::string parts_order(const std::vector<std::string>& names, const std:
 
 // `parts`, when given, is each part of the state with its own measured order ("Pi: order 3.99, O:
 // order 2.00", parts_order below): an order that fails names the part that is off.
+// `undecided_within`, when positive: the steps reached where the error is not yet its leading term
+// alone (h |Omega| = `largest_turn`, 1/4 or more: the only steps whose error stands above a float
+// step's round-off for a method of order 4); a slope off the claim by more than 0.1 and at most this much is NOT VERIFIED
+// there, not FALSE: the reference RK4 computed in float measures 3.89 to 4.11 over such windows
+// (tests/float_verdicts.py).
 inline void judge_order_claim(const std::string& integrator, int claimed, const std::string& where,
                               const std::string& scalar, const std::vector<double>& hs, const std::vector<double>& errs,
-                              const std::vector<double>& floors, const std::string& parts = {}) {
+                              const std::vector<double>& floors, const std::string& parts = {},
+                              double undecided_within = 0, double largest_turn = 0) {
   char buf[160];
   if (const double bad = conv::first_non_finite(hs, errs); bad > 0) {
     std::snprintf(buf, sizeof buf, ": the error at the fixed time is not finite at h = %g", bad);
@@ -94,6 +100,15 @@ inline void judge_order_claim(const std::string& integrator, int claimed, const 
   }
   const bool holds = std::abs(fit.slope - claimed) <= 0.1;
   std::snprintf(buf, sizeof buf, ", claimed %d", claimed);
+  if (!holds && std::abs(fit.slope - claimed) <= undecided_within) {
+    char turn[64];
+    std::snprintf(turn, sizeof turn, "steps up to h |Omega| = %.2g", largest_turn);
+    judge_claim("order", true, true,
+                measured + buf + ", over " + turn + ", where the error is not yet its leading term alone: "
+                                 "not decided within 0.1" + scalar,
+                std::string(order) + " (" + turn + ": not decided within 0.1)", false);
+    return;
+  }
   judge_claim("order", true, holds, measured + buf + scalar, order);
   std::snprintf(buf, sizeof buf, "measured slope %.4f\n", fit.slope);
   require(integrator + ": the measured order (log-log slope of the error against h)" + where +

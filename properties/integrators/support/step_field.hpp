@@ -20,6 +20,7 @@
 #include "properties/support/show.hpp"
 #include "properties/support/step_guard.hpp"
 #include "properties/integrators/support/step_probe.hpp"
+#include "properties/support/step_precision.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
 
@@ -55,10 +56,11 @@ V extrapolate_to_zero(const std::vector<T>& h, std::vector<V> v, T* spread) {
   return v[n - 1];
 }
 
-// The first and last exponent of the steps: in 50 digits far smaller steps cost nothing in accuracy.
+// The first exponent of the steps, from the precision the step is judged at (step_probe.hpp: 8 in
+// double, 3 in float, 24 in 50 digits, where far smaller steps cost nothing in accuracy).
 template <class T>
 int first_exponent() {
-  return std::is_same_v<T, double> ? 8 : 24;
+  return stepprobe::field_first_exponent<T>();
 }
 
 // The first of the six steps: h0 = 2^-first_exponent against the motion's own time scale 1 / rate,
@@ -113,10 +115,11 @@ Field<T> rigid_body_field(const Integrator<T>& in, const Vec3<T>& I, const Rigid
   return f;
 }
 
-// How close two vectors must be to "agree": relative to the size of what is compared.
+// How close two vectors must be to "agree": relative to the size of what is compared, at the
+// precision the step is judged at (step_probe.hpp).
 template <class T>
 T agree_tolerance() {
-  return std::is_same_v<T, double> ? T(1e-6) : T(1e-20);
+  return stepprobe::field_agree_tolerance<T>();
 }
 
 template <class T>
@@ -191,6 +194,23 @@ Diagnosis diagnose(const Field<T>& f, const Vec3<T>& I, const RigidBodyState<T>&
   return d;
 }
 
+// Whether the last explanation of a failure on this thread named a cause confirmed by its
+// experiment (a wrong field, a cap, a guard on h, a step that does not reduce to the identity, a
+// precision): then no other cause may follow it (the regimes' experiments, generic advice); false
+// when the field was read right and named nothing.
+inline bool& explanation_named_cause() {
+  thread_local bool named = false;
+  return named;
+}
+
+// What to look for when a failure's experiments confirm a fact but no cause ("the defect depends on
+// the units": a cut-off or an absolute tolerance are the usual ones): set by a judge before it fails,
+// said after the failure only when the explanation named no cause, labelled as not confirmed.
+inline std::string& pending_advice() {
+  thread_local std::string advice;
+  return advice;
+}
+
 // Runs `judge` (a claim's verdict); when it fails, `explanation()` (the step's own equation, measured
 // only then) leads the failure and the evidence of every false claim it recorded: a false claim
 // explains itself in the claims table as well as in its FIRST FIX.
@@ -203,23 +223,32 @@ void explaining_claims(Explain&& explanation, Judge&& judge) {
   const auto is_new = [&](const ClaimFinding& f) {
     return std::find(before.begin(), before.end(), std::make_pair(f.claim, f.evidence)) == before.end();
   };
+  pending_advice().clear();
   try {
     judge();
+    pending_advice().clear();
   } catch (rc::detail::CaseResult& r) {
     // The explanation calls the step again, at states and steps of its own: what it raises there
     // explains nothing (and is not this case's raise), and a call outside a declared domain is not
     // made by it on purpose.
     const auto raise = current_step_raise();
     std::string why;
+    explanation_named_cause() = false;
     try {
       why = explanation();
     } catch (const std::exception& e) {
       why = std::string("the step's own equation could not be read: ") + e.what();
+      explanation_named_cause() = false;
     }
     current_step_raise() = raise;
+    const std::string advice = explanation_named_cause() || pending_advice().empty()
+                                   ? std::string()
+                                   : "what to look for (not confirmed): " + pending_advice();
+    pending_advice().clear();
     for (auto& f : recorded_claims())
-      if (f.claimed && !f.holds && is_new(f)) f.evidence = why + "; measured: " + f.evidence;
-    r.description = why + "\n" + r.description;
+      if (f.claimed && !f.holds && is_new(f))
+        f.evidence = why + "; measured: " + f.evidence + (advice.empty() ? "" : "; " + advice);
+    r.description = why + "\n" + r.description + (advice.empty() ? "" : "\n  " + advice);
     throw;
   }
 }
@@ -239,7 +268,7 @@ void explaining_at(States&& states, Diagnose&& diagnose_at, Judge&& judge) {
           d = diagnose_at(x);
           if (!d.field_right) break;
         }
-        return "the step's own equation: " + d.text + scalar_tag<T>();
+        return "the step's own equation: " + d.text + judged_tag<T>();
       },
       judge);
 }
@@ -262,8 +291,20 @@ template <class T>
 std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, const std::vector<RigidBodyState<T>>& xs,
                                     const std::vector<double>& hs = {}) {
   const RigidBodyState<T>& x0 = xs.front();
+  // A step computing below the precision it is judged at (fewer digits than a float, or a float
+  // nobody stated or detected) is read at its own: the field with steps whose round-off is small
+  // there. Its round-off is named only once that field is right: a floor never explains an error far
+  // above it (a missing term stays a missing term).
   const double precision = stepprobe::precision_of(in, I, x0);
-  if (precision > 0) return stepprobe::precision_words<T>(precision) + scalar_tag<T>();
+  const std::string judged = judged_tag<T>();
+  const double judged_eps = step_eps_double<T>();
+  struct ReadAt {
+    StepPrecision saved = current_step_precision();
+    explicit ReadAt(double e) {
+      if (e > 0) current_step_precision().eps = e, current_step_precision().name = "its own";
+    }
+    ~ReadAt() { current_step_precision() = saved; }
+  } read_at(precision);
   // At each state, and at a generic attitude besides: O = Id, where a shrunk case ends, hides a
   // conversion of frames (O O^T Pi is Pi there).
   std::vector<RigidBodyState<T>> probed = xs;
@@ -293,7 +334,8 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
       const std::string own = in.form.is_notes()
                                   ? std::string()
                                   : "; " + in_declared_form(in, I, x, diagnose(rigid_body_field(in, I, x), I, x)).text;
-      return small.not_identity_text + own + scalar_tag<T>();
+      explanation_named_cause() = true;
+      return small.not_identity_text + own + judged;
     }
     if (small.returns_input) {
       // The experiment: the step at this state with the smallest failing h returns its input.
@@ -301,12 +343,13 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
       bool still = false;
       if (h_failing > 0) {
         const RigidBodyState<T> y = in.rigid_body_step(I, x, T(failing_here));
-        still = (y.Pi.array() == x.Pi.array()).all() && (y.O.array() == x.O.array()).all();
+        still = returned_input(y, x);
       }
+      explanation_named_cause() = still;
       if (still)
         return small.returns_input_text +
                fmt("; the failing runs use steps down to h = %.3g, where it returns its input too", failing_here) +
-               scalar_tag<T>();
+               judged;
       if (guard_seen.empty())
         guard_seen =
             "; besides, " + small.returns_input_text +
@@ -323,12 +366,15 @@ std::string explain_rigid_body_step(const Integrator<T>& in, const Vec3<T>& I, c
     at = &x;
     if (!d.field_right) break;
   }
+  explanation_named_cause() = !d.field_right || precision > 0;
   if (!d.field_right) {
     const std::string cap =
         stepprobe::cap_of(I, *at, [&](const RigidBodyState<T>& y) { return rigid_body_field(in, I, y).Pi_dot; });
-    if (!cap.empty()) return cap + scalar_tag<T>();
+    if (!cap.empty()) return cap + judged;
+  } else if (precision > 0) {
+    return stepprobe::precision_words(precision, judged_eps) + judged;
   }
-  return "the step's own equation: " + d.text + guard_seen + scalar_tag<T>();
+  return "the step's own equation: " + d.text + guard_seen + judged;
 }
 
 // The rigid body's explanation of a failed claim (explain_rigid_body_step, above); `hs` the steps of

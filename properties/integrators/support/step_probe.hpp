@@ -25,6 +25,7 @@
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/show.hpp"
 #include "properties/support/step_guard.hpp"
+#include "properties/support/step_precision.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
 
@@ -42,11 +43,6 @@ T pow2(int k) {
   return x;
 }
 
-template <class T>
-int mantissa_bits() {
-  return std::numeric_limits<T>::digits;
-}
-
 // |Omega| = max |Pi_i / I_i|, the motion's rate (at least 2^-40: a body at rest has none).
 template <class T>
 T rate_of(const Vec3<T>& I, const Vec3<T>& Pi) {
@@ -59,50 +55,54 @@ T moved(const RigidBodyState<T>& a, const RigidBodyState<T>& b, const T& size) {
   return std::max(T(max_abs(Vec3<T>(a.Pi - b.Pi)) / size), T(max_abs(Mat3<T>(a.O - b.O))));
 }
 
-// 1. The relative round-off the step computes with: 0 when it follows every delta down to a few
-// units of T's own last place (no finding).
+// 1. The relative round-off the step computes with, when it is coarser than the precision it is
+// judged at (properties/support/step_precision.hpp: a step stated or detected to compute in float is
+// judged at float's, and computes at it): 0 when it follows every delta down to a few units of that
+// precision's last place (no finding).
 template <class T>
 double precision_of(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x) {
-  const T size = max_abs(x.Pi);
-  if (!(size > T(0))) return 0;
+  if (!(max_abs(x.Pi) > T(0))) return 0;
   const T h = at_least_min_h<T>(T(pow2<T>(-6) / rate_of(I, x.Pi)));
-  const RigidBodyState<T> y = in.rigid_body_step(I, x, h);
-  // The delta goes to the largest component of Pi: a delta added to a zero component is held
-  // exactly by any floating-point type (a float holds 1e-40 beside 0), and would be followed at
-  // any precision.
-  int j = 0;
-  for (int i = 1; i < 3; ++i)
-    if (abs_value(x.Pi(i)) > abs_value(x.Pi(j))) j = i;
-  double followed = 0;  // the smallest relative delta followed so far
-  for (int k = 8; k <= mantissa_bits<T>() - 6; k += 2) {
-    const T delta = pow2<T>(-k) * size;
-    RigidBodyState<T> xd = x;
-    xd.Pi(j) += delta;
-    const T response = max_abs(Vec3<T>(in.rigid_body_step(I, xd, h).Pi - y.Pi)) / delta;
-    if (!(response > T(1) / T(4) && response < T(4))) break;  // no longer followed
-    followed = to_double(pow2<T>(-k));
-  }
-  const double own = to_double(std::numeric_limits<T>::epsilon());
-  // Followed to within 2^6 units of T's last place: the step computes in T.
-  if (followed > 0 && followed <= 64 * own * 16) return 0;
-  return followed > 0 ? followed : 1;  // not even 2^-8 followed: no precision at all
+  const double followed = stepprecision::precision_followed<T>(in, I, x, h);
+  // Followed to within 2^10 units of the judged precision's last place: the step computes at it.
+  return followed > 1024 * step_eps_double<T>() ? followed : 0;
 }
 
-template <class T>
-std::string precision_words(double followed) {
-  const double own = to_double(std::numeric_limits<T>::epsilon());
+// What a precision coarser than the judged one explains, said once the step's field was read and
+// found right: what looks like a truncation error is the step's own round-off.
+inline std::string precision_words(double followed, double judged_eps) {
   std::string name;
-  if (followed > 1e-9 && followed < 1e-5)
+  if (stepprecision::is_float_followed(followed))
     name = "single precision (float: round-off ~6e-8 relative)";
   else if (followed > 1e-18 && followed < 1e-13)
     name = "double precision (round-off ~1.1e-16 relative)";
   else
     name = fmt("about %.0f significant digits (round-off ~%.1g relative)", -std::log10(followed), followed);
-  return "your step computes in " + name + ", below the " + fmt("%.2g", own) +
-         " of the scalar it is checked in: step(x + delta, h) - step(x, h) follows delta down to " +
-         fmt("%.1g", followed) +
-         " of |Pi| and no further, so what looks like a truncation error below that is the "
-         "step's own round-off (no vector field is read from it)";
+  return "your step computes in " + name + ", below the " + fmt("%.2g", judged_eps) +
+         " it is judged at: step(x + delta, h) - step(x, h) follows delta down to " + fmt("%.1g", followed) +
+         " of |Pi| and no further, and its vector field is right (read with steps whose round-off is small at that "
+         "precision), so what looks like a truncation error is the step's own round-off; state its precision "
+         "(precision = \"float\") to have it judged at it";
+}
+
+// The steps a vector field is read with (step_field.hpp): h |Omega| from 2^-k0 down to 2^-(k0 + 5).
+// Their round-off is eps / h, amplified by the extrapolation: k0 is a sixth of the judged
+// precision's bits (8 in double, 3 in float), at most 24 (50 digits).
+template <class T>
+int field_first_exponent() {
+  const int bits = static_cast<int>(std::lround(-std::log2(step_eps_double<T>())));
+  return std::max(2, std::min(24, bits / 6));
+}
+
+// How closely a read field must match to "agree", relative to its size: 1e-6 in double and 1e-20 in
+// 50 digits, for a step computing in its scalar; for a step judged at a coarser precision, the
+// same power of its eps as 1e-6 is of double's, eps^0.3833 (2.2e-3 in float). The reading's own
+// error is eps / h at the smallest step read, amplified by the extrapolation, well below that; the
+// differences named (a sign, a missing term, Omega for Pi) are of the size of the field itself.
+template <class T>
+T field_agree_tolerance() {
+  if (current_step_precision().coarser_than<T>()) return T(std::pow(step_eps_double<T>(), 0.3833));
+  return std::is_same_v<T, double> ? T(1e-6) : T(1e-20);
 }
 
 // 2b. A step kept in a quaternion, tried with the same attitude as q and as -q (w >= 0 and w <= 0):
@@ -150,7 +150,7 @@ SmallSteps small_steps(const Integrator<T>& in, const Vec3<T>& I, const RigidBod
   SmallSteps s;
   const T size = max_abs(x.Pi) > T(0) ? T(max_abs(x.Pi)) : T(1);
   const T rate = rate_of(I, x.Pi);
-  const double round = std::max(precision, to_double(std::numeric_limits<T>::epsilon()));
+  const double round = std::max(precision, step_eps_double<T>());
   int first_still = -1;  // the first k from which on the step returns x exactly
   int smallest = -1;     // the smallest h (largest k) at which a consistent step visibly moves x
   RigidBodyState<T> at_smallest;
@@ -161,7 +161,7 @@ SmallSteps small_steps(const Integrator<T>& in, const Vec3<T>& I, const RigidBod
     const T h = pow2<T>(-k) / rate;
     if (min_h > 0 && to_double(h) < min_h) break;  // not below a declared smallest step
     const RigidBodyState<T> y = in.rigid_body_step(I, x, h);
-    const bool same = (y.Pi.array() == x.Pi.array()).all() && (y.O.array() == x.O.array()).all();
+    const bool same = returned_input(y, x);
     if (same && first_still < 0) first_still = k;
     if (!same) first_still = -1;
     smallest = k;
@@ -187,13 +187,24 @@ SmallSteps small_steps(const Integrator<T>& in, const Vec3<T>& I, const RigidBod
           named("I", I) + named("Pi", x.Pi) + named("O", x.O);
     }
   }
-  if (first_still > 4) {
+  // Still at every step probed, down from h |Omega| = 2^-4: a guard on h that is absolute bites here
+  // at larger turns too (a fast state, where the failing steps are short in seconds). The steps above
+  // are tried, h |Omega| = 2^-3 up to 2^24, for the first that moves x; one that never moves is not a
+  // guard on h (nothing is known).
+  bool guard = first_still > 4;
+  if (first_still == 4) {
+    for (int k = 3; k >= -24 && !guard; --k) {
+      const RigidBodyState<T> y = in.rigid_body_step(I, x, T(pow2<T>(-k) / rate));
+      if (!returned_input(y, x)) first_still = k + 1, guard = true;
+    }
+  }
+  if (guard) {
     const T h_still = pow2<T>(-first_still) / rate, h_moves = pow2<T>(-(first_still - 1)) / rate;
     s.returns_input = true;
     s.h_still = to_double(h_still);
     s.returns_input_text = "your step returns its input unchanged for h <= " + fmt("%.3g", to_double(h_still)) +
                            " (it moves x at h = " + fmt("%.3g", to_double(h_moves)) +
-                           "; here |Omega| = " + fmt("%.3g", to_double(rate)) +
+                           "; here max |Omega_i| = " + fmt("%.3g", to_double(rate)) +
                            "), where a consistent step moves it by about h |Omega| |Pi|, far above round-off: a guard "
                            "on h (\"nothing to do for a tiny step\")";
   }
@@ -235,26 +246,34 @@ std::string cap_of(const Vec3<T>& I, const RigidBodyState<T>& x, Field&& field) 
     // the field is read with) ends the scan: nothing is known from there on.
     const T r = f.dot(notes) / notes.dot(notes);
     const std::size_t here = static_cast<std::size_t>(-kFirst / kStride);
-    // The field is read from (step(x, h) - x) / h with h |Omega| down to about 2^-20: its round-off
-    // is eps |Pi| |Omega| amplified by up to 2^20. Where that is not small against the field, the
-    // field cannot be read (double at a large scale with a small field): the scan ends there.
-    const T noise = T(1 << 20) * std::numeric_limits<T>::epsilon() * max_abs(xl.Pi) * T(rate_of(I, xl.Pi));
-    const T tolerance = T(1e-6) * n + T(4) * noise;
-    if (!(max_abs(f) > T(0)) || max_abs(Vec3<T>(f - r * notes)) > tolerance || noise > T(1e-3) * max_abs(f)) {
+    // The field is read from (step(x, h) - x) / h with h |Omega| down to 2^-(k0 + 5) (k0 =
+    // field_first_exponent): its round-off is eps |Pi| |Omega| amplified by up to 2^(k0 + 12) with the
+    // extrapolation. Where that is not small against the field, the field cannot be read (double at
+    // a large scale with a small field): the scan ends there.
+    const T noise = T(std::ldexp(1.0, field_first_exponent<T>() + 12)) * step_eps<T>() * max_abs(xl.Pi) *
+                    T(rate_of(I, xl.Pi));
+    const T tolerance = field_agree_tolerance<T>() * n + T(4) * noise;
+    // In double a reading whose round-off is above 1e-3 of the field is not read; in float every reading
+    // carries about that much (float's field is known to a few 1e-3, its noise bound here), so the
+    // bound is 1/16 of the field there, far below the difference a cap makes (a fraction of the field).
+    const T unreadable = current_step_precision().coarser_than<T>() ? T(1) / T(16) : T(1e-3);
+    if (!(max_abs(f) > T(0)) || max_abs(Vec3<T>(f - r * notes)) > tolerance || noise > unreadable * max_abs(f)) {
       if (at.size() > here) break;
       return {};
     }
     at.push_back({lambda * size, r, abs_value(r) * n, noise});
   }
   const auto near = [](const T& a, const T& b, const T& noise) {
-    return abs_value(T(a - b)) <= T(1e-6) * abs_value(b) + T(4) * noise;
+    return abs_value(T(a - b)) <= field_agree_tolerance<T>() * abs_value(b) + T(4) * noise;
   };
   std::size_t from = 0;
   while (from < at.size() &&
          near(at[from].ratio, T(1), T(at[from].noise / (at[from].force / abs_value(at[from].ratio)))))
     ++from;
   const std::size_t here = static_cast<std::size_t>(-kFirst / kStride);  // j = 0: the failing state
-  if (from == 0 || from == at.size() || here >= at.size() || here < from) return {};
+  // Two sizes at least beyond the cap's start: with one, a constant fraction and a constant size are
+  // the same thing, and neither is shown.
+  if (from == 0 || from == at.size() || here >= at.size() || here < from || at.size() - from < 2) return {};
   // Constant from `from` on, each point within its own round-off (`scale(p)` turns |F|'s noise into
   // the quantity's).
   const auto constant = [&](auto get, auto scale) {
@@ -263,14 +282,14 @@ std::string cap_of(const Vec3<T>& I, const RigidBodyState<T>& x, Field&& field) 
       if (!near(get(at[k]), c, T(at[k].noise * scale(at[k])))) return false;
     return true;
   };
-  const std::string range = " for every |Pi| >= " + fmt("%.3g", to_double(at[from].pi)) + ", this state's " +
+  const std::string range = " for every max |Pi_i| >= " + fmt("%.3g", to_double(at[from].pi)) + ", this state's " +
                             fmt("%.3g", to_double(size)) +
-                            " among them, and exactly (3.8) up to |Pi| = " + fmt("%.3g", to_double(at[from - 1].pi));
+                            " among them, and exactly (3.8) up to max |Pi_i| = " + fmt("%.3g", to_double(at[from - 1].pi));
   if (constant([](const Point& p) { return p.ratio; }, [](const Point& p) { return T(abs_value(p.ratio) / p.force); }))
     return "a cap, by experiment: your step's field is " + fmt("%.4g", to_double(at[here].ratio)) + " x (3.8)" + range +
            ": (3.8) shrunk to a constant fraction beyond a size (a cap on the angular velocity or the momentum)";
   if (constant([](const Point& p) { return p.force; }, [](const Point&) { return T(1); }))
-    return "a cap, by experiment: your step's field is (3.8) shrunk to the constant size |dPi/dt| = " +
+    return "a cap, by experiment: your step's field is (3.8) shrunk to the constant size max |dPi_i/dt| = " +
            fmt("%.4g", to_double(at[here].force)) + " (here " + fmt("%.4g", to_double(at[here].ratio)) + " x (3.8))" +
            range + ": a cap on the size of the gyroscopic term";
   return {};

@@ -119,6 +119,25 @@ GM_MUTANT(midpoint_at_rest_below_1e_10, "implicit midpoint that leaves a body wi
             }
           });
 
+// An engine's "nothing to integrate" shortcut: the attitude is left as it is when the step turns it
+// by |Omega h| <= 1e-6 rad (Pi still moves). A slowly turning body never turns; every check but
+// integrator_small_turns turns it by 2^-10 rad a step or more.
+GM_MUTANT(midpoint_skips_small_turns, "implicit midpoint that leaves O unchanged when |Omega h| <= 1e-6 rad",
+          [](auto& s) {
+            using T = scalar_of<decltype(s)>;
+            if constexpr (!is_exact_v<T>) {
+              for (auto& in : s.integrators)
+                if (in.name == "implicit_midpoint")
+                  in.rigid_body_step = [](const Vec3<T>& I, const RigidBodyState<T>& x,
+                                          const T& h) -> RigidBodyState<T> {
+                    RigidBodyState<T> y = ref::implicit_midpoint_step<T>(I, x, h);
+                    using std::abs;
+                    if (abs(h) * Vec3<T>(x.Pi.cwiseQuotient(I)).cwiseAbs().maxCoeff() <= T(1e-6)) y.O = x.O;
+                    return y;
+                  };
+            }
+          });
+
 // Omega from M_ij / (A_ii + A_jj) inside the Manakov step: the solution of A Omega + Omega A = M
 // (2.34) for a diagonal A, the body every Manakov integrator check drew before. For a body whose
 // A is not diagonal (the same body in a rotated frame) the step integrates another system.
