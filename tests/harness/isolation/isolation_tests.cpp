@@ -94,40 +94,6 @@ TEST(Isolation, EachWayOfDyingIsToldApart) {
   EXPECT_EQ(r[6].payload.size(), std::size_t(1) << 20);
 }
 
-// A machine busier than its cores: `n` processes spinning on the first CPU this process may use,
-// with this process (and so the children it forks) pinned there too; undone at the end of scope.
-class CrowdedCore {
- public:
-  explicit CrowdedCore(int n) {
-    ::sched_getaffinity(0, sizeof saved_, &saved_);
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    for (int c = 0; c < CPU_SETSIZE; ++c)
-      if (CPU_ISSET(c, &saved_)) {
-        CPU_SET(c, &one);
-        break;
-      }
-    ::sched_setaffinity(0, sizeof one, &one);
-    for (int i = 0; i < n; ++i) {
-      const pid_t pid = ::fork();
-      if (pid == 0) {
-        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-        for (volatile unsigned long x = 0;; x = x + 1) {}
-      }
-      if (pid > 0) burners_.push_back(pid);
-    }
-  }
-  ~CrowdedCore() {
-    for (pid_t pid : burners_) ::kill(pid, SIGKILL);
-    for (pid_t pid : burners_) ::waitpid(pid, nullptr, 0);
-    ::sched_setaffinity(0, sizeof saved_, &saved_);
-  }
-
- private:
-  cpu_set_t saved_{};
-  std::vector<pid_t> burners_;
-};
-
 // `seconds` of this process's CPU time, spent computing.
 std::string compute_for(double seconds) {
   const double start = self_cpu_seconds();
