@@ -37,7 +37,7 @@ class CrowdedCore {
       const pid_t pid = ::fork();
       if (pid == 0) {
         ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-        for (volatile unsigned long x = 0;; x = x + 1) {}
+        for (unsigned long x = 0;; ++x) asm volatile("" : "+r"(x));  // spin, not optimised away
       }
       if (pid > 0) burners_.push_back(pid);
     }
