@@ -119,7 +119,10 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
           : s.result == "INCOMPLETE" ? "INCOMPLETE"
                                      : "FAIL")
       << "\">" << html_escape(s.result) << "</td>";
-    b << "<td data-sort=\"" << number(s.score.points) << "\">" << format_points(s.score.points) << "</td>";
+    if (s.score.no_grade)  // the grader's fault, or not checked yet: no grade, as in the gradebook
+      b << "<td data-sort=\"-1\">-</td>";
+    else
+      b << "<td data-sort=\"" << number(s.score.points) << "\">" << format_points(s.score.points) << "</td>";
     for (const auto& a : areas) {
       auto it = s.areas.find(a);
       const AreaCell c = it == s.areas.end() ? AreaCell{} : it->second;

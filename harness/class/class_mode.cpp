@@ -385,7 +385,7 @@ int write_student_table(std::ostream& md, std::ostream& console, const ClassView
   console << "\n" << std::string(22 + 18 + 10 + 22 * areas.size(), '-') << "\n";
   for (const auto& s : view.students) {
     if (s.result != "PASS") ++bad;
-    const std::string grade = view.no_grades.empty() ? format_points(s.score.points) : "-";
+    const std::string grade = view.no_grades.empty() && !s.score.no_grade ? format_points(s.score.points) : "-";
     md << "| " << md_inline(s.row->name) << " | " << (s.result == "PASS" ? s.result : "**" + s.result + "**") << " | "
        << grade << " |";
     console << std::setw(22) << inert_text(s.row->name) + " " << std::setw(18) << s.result + " " << std::setw(10)
@@ -550,6 +550,9 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
   write_file_atomically((fs::path(report_dir) / "summary.html").string(), class_summary_html(view, page));
   const std::vector<StudentResult> students = write_class_gradebook(st, view, grades, final);
   if (final) say_class_done(view, console.str(), report_dir, grades, students);
+  // The grader's machine failed a check: the run is not complete, as every command says (exit 3).
+  for (const auto& s : view.students)
+    if (s.status == kGraderError) return kExitMachine;
   return bad == 0 ? 0 : 1;
 }
 
@@ -652,15 +655,19 @@ void refuse_on_the_graders_machine(const ClassOptions& o, const Toolchain& tc,
 // How one implementation's check ended, into its row's JSON: status 0 or 1 is a verdict, anything
 // else (a crash, a refusal, a bad option) is a problem shown in the summary.
 // `check_seconds` is the check's own time (its outcome's), else the whole process's.
-std::string record_check(json& j, const ProcessResult& pr, const std::string& what, double check_seconds) {
+// `checked`: the check ran and wrote its outcome (and its report): a machine's fault it met is then
+// in its verdicts (verdicts.json's machine_fault), which the row's report says.
+std::string record_check(json& j, const ProcessResult& pr, const std::string& what, double check_seconds,
+                         bool checked) {
   j["exit_code"] = pr.exit_code;
   j["check_seconds"] = check_seconds;
-  if (pr.exit_code == kExitMachine)  // the set-up's (harness/submissions/check_submission.cpp): said with its fix
-    j["machine_fault"] = pr.output.substr(0, 2000);
-  else if (pr.exit_code != 0 && pr.exit_code != 1)
+  if (pr.exit_code == kExitMachine) {  // the set-up's (harness/submissions/check_submission.cpp): said with its fix
+    if (!checked) j["machine_fault"] = pr.output.substr(0, 2000);
+  } else if (pr.exit_code != 0 && pr.exit_code != 1) {
     j["problem"] = what + " ended with " +
                    (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
                    pr.output.substr(0, 2000);
+  }
   return j.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
@@ -725,9 +732,9 @@ std::string check_one(const Implementation& impl, const ClassOptions& o, const s
       j["check_seconds"] = out->check_seconds;
       return j.dump(-1, ' ', false, json::error_handler_t::replace);
     }
-    return record_check(j, pr, "the check", out->check_seconds);
+    return record_check(j, pr, "the check", out->check_seconds, true);
   }
-  return record_check(j, pr, "the check", pr.seconds);  // it ended before saying how (a crash, a signal)
+  return record_check(j, pr, "the check", pr.seconds, false);  // it ended before saying how (a crash, a signal)
 }
 
 // What this run checks, and what it resumes: each submission's snapshot and fingerprint, and

@@ -124,6 +124,9 @@ struct ScoreItem {
 
 struct Score {
   double points = 0;                   // 0 .. rubric.points, rounded to 2 decimals
+  // No grade at all (the grader's machine failed the check, or it is not checked yet): every view
+  // shows none (an empty gradebook cell, "-" in a summary), never `points`.
+  bool no_grade = false;
   double max_points = 0;               // rubric.points
   std::vector<ScoreItem> items;        // what the grade is made of; their points add up to `points` before rounding
   std::vector<std::string> breakdown;  // e.g. "slots 3/4", "sec. 1 5/6", "claims 2/3 verified"
