@@ -491,6 +491,12 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
     out.feedback =
         "no grade yet: the grading machine could not check this submission (a problem of the grader, not of "
         "your code); it will be checked again";
+    if (st.left_to_lecturer) {
+      out.headline = "no grade yet: the lecturer decides how this submission's check ended";
+      out.feedback =
+          "no grade yet: this submission's check ended the same way in each run; the lecturer decides how to grade "
+          "it";
+    }
   }
   if (st.status == kNotCheckedYet) {
     // A class run stopped before this submission: no grade, and the row says why, as

@@ -40,6 +40,7 @@ struct StudentResult {
   std::vector<ClaimResult> claims;                   // every claim an integrator made, with its verdict
   std::string first_fix;                             // one line, may be empty: what to fix first
   std::string report;                                // relative link to the student's report, e.g. "alice/report.md"
+  bool left_to_lecturer = false;  // kGraderError, met in every run of this submission alone: the lecturer decides
 };
 
 // Which LMS import the CSV is shaped for; the two want different columns.
