@@ -15,7 +15,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
-#include <cstdlib>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -698,17 +697,6 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   CheckProgress progress;
   progress.total = tasks.size();
   std::map<std::size_t, std::string> running;
-  // The suite's own tests bring the wall guard and the busy limit within seconds, so that a check
-  // starved on purpose reaches them (GEOMECH_TEST_LIMITS="WALL_FACTOR WALL_FLOOR BUSY_FACTOR").
-  if (const char* t = std::getenv("GEOMECH_TEST_LIMITS")) {
-    std::istringstream in(t);
-    double factor = 0, floor = 0, busy = 0;
-    if (in >> factor >> floor >> busy && factor >= 1 && floor >= 0 && busy >= 1) {
-      io.wall_factor = factor;
-      io.wall_floor = floor;
-      io.busy_factor = busy;
-    }
-  }
   auto task_name = [&](std::size_t t) {
     if (t >= n_items) return std::string("pictures and work-precision diagram");
     const Item& item = items[order[t]];

@@ -233,10 +233,6 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   std::vector<std::string> cmd = server_command(file, &language, &why);
   nlohmann::json notes;
   // What the sandbox sees of this machine besides the system: a private copy of the submission
-  // --memory-limit: the whole sandbox's memory (a cgroup's total as root; else each process's address
-  // space, harness/isolation/sandbox.hpp). Whether the sandbox started the server is bubblewrap's word.
-  spec.limits.memory_mb = r.check.memory_limit_mb;
-  spec.report_start = true;
   // and of the suite's server, under neutral names (harness/isolation/private_copy.hpp).
   std::optional<PrivateCopy> copy;
   try {
