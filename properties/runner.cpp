@@ -64,6 +64,8 @@ struct CaseBudgetSpent {
 
 // The text of the discard that stands for "shrinking stopped by its budget" in the final run.
 constexpr const char* kShrinkStopped = "geomech: shrinking stopped by its time budget";
+// What RapidCheck says of a case that ran and threw nothing (rapidcheck/detail/Property.hpp).
+constexpr const char* kRapidCheckSuccess = "no exceptions thrown";
 
 // Prints nothing; counts the discarded cases (a discarded case is not a check, and the
 // verdict says how many there were); keeps the time budgets (RunOptions) and the last failing case
@@ -398,6 +400,14 @@ void run_checked(Verdict& v, const Property& p, ScalarKind k, const RunOptions& 
         // when it was tried, with this description and these inputs.
         v.shrink_stopped = true;
         v.message = listener.failure_description;
+        example = listener.failure_example;
+      } else if (listener.failed && failure.description == kRapidCheckSuccess) {
+        // RapidCheck's words for a run that passed: the smallest case failed when it was tried and
+        // passed when run again (the implementation's process died or answered "fatal" the first
+        // time, and a fresh copy answered). What it failed with is the listener's.
+        v.message = listener.failure_description +
+                    "\n(this case failed when it was tried and passed when run again: the implementation does not "
+                    "answer the same input the same way each time)";
         example = listener.failure_example;
       }
       for (const auto& [type, value] : example) v.counterexample.emplace_back(in_language(pretty_type(type)), value);

@@ -119,7 +119,10 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
           : s.result == "INCOMPLETE" ? "INCOMPLETE"
                                      : "FAIL")
       << "\">" << html_escape(s.result) << "</td>";
-    b << "<td data-sort=\"" << number(s.score.points) << "\">" << format_points(s.score.points) << "</td>";
+    if (s.score.no_grade)  // the grader's fault, or not checked yet: no grade, as in the gradebook
+      b << "<td data-sort=\"-1\">-</td>";
+    else
+      b << "<td data-sort=\"" << number(s.score.points) << "\">" << format_points(s.score.points) << "</td>";
     for (const auto& a : areas) {
       auto it = s.areas.find(a);
       const AreaCell c = it == s.areas.end() ? AreaCell{} : it->second;
@@ -184,6 +187,12 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
     } else if (s.status == "not checked") {
       b << "<h2>" << html_escape(s.row->name) << ": not checked</h2>\n<pre>" << html_escape(s.row->problem)
         << "</pre>\n";
+    } else if (s.status == kGraderError && s.row->suspect) {
+      b << "<h2>" << html_escape(s.row->name) << ": the same machine fault in each of "
+        << s.row->earlier_faults.size() + 1
+        << " runs, while classmates checked fine: suspect (no grade; the lecturer decides)</h2>\n";
+      for (const auto& f : s.row->earlier_faults) b << "<pre>" << html_escape(f) << "</pre>\n";
+      b << "<pre>" << html_escape(grader_fault_of(*s.row)) << "</pre>\n";
     } else if (s.status == kGraderError) {
       b << "<h2>" << html_escape(s.row->name) << ": the grader's machine failed its check (no grade)</h2>\n<pre>"
         << html_escape(grader_fault_of(*s.row)) << "</pre>\n";

@@ -53,6 +53,10 @@ struct Row {
   std::string problem;        // the check program itself failed to run properly
   std::string machine_fault;  // the grader's machine or set-up failed it (ClassRow::machine_fault)
   json report;                // verdicts.json
+  // The machine's faults of the runs before, of this same submission (ClassRow::earlier_faults),
+  // and whether the lecturer is asked to decide (ClassRow::suspect).
+  std::vector<std::string> earlier_faults;
+  bool suspect = false;
 };
 
 // A row as class-shard.json and class-row.json keep it (its report is read from its folder).
@@ -65,7 +69,9 @@ json row_json(const Row& row) {
           {"exit_code", row.exit_code},
           {"check_seconds", row.check_seconds},
           {"problem", row.problem},
-          {"machine_fault", row.machine_fault}};
+          {"machine_fault", row.machine_fault},
+          {"earlier_faults", row.earlier_faults},
+          {"suspect", row.suspect}};
 }
 
 // The row back, with the report of a checked implementation read from `reports`/<name>.
@@ -81,6 +87,8 @@ Row row_from_json(const json& r, const fs::path& reports) {
   row.check_seconds = r.at("check_seconds");
   row.problem = r.at("problem");
   row.machine_fault = r.value("machine_fault", "");
+  row.earlier_faults = r.value("earlier_faults", std::vector<std::string>{});
+  row.suspect = r.value("suspect", false);
   if (row.built && row.problem.empty() && row.machine_fault.empty()) {
     // A name from a file (a shard, a kept row) names a folder here only when it could name one.
     if (const std::string why = bad_implementation_name(row.impl.name); !why.empty())
@@ -172,6 +180,8 @@ ClassRow class_row(const Row& row) {
   c.check_seconds = row.check_seconds;
   c.problem = row.problem;
   c.machine_fault = row.machine_fault;
+  c.earlier_faults = row.earlier_faults;
+  c.suspect = row.suspect;
   c.report = row.report;
   return c;
 }
@@ -385,7 +395,7 @@ int write_student_table(std::ostream& md, std::ostream& console, const ClassView
   console << "\n" << std::string(22 + 18 + 10 + 22 * areas.size(), '-') << "\n";
   for (const auto& s : view.students) {
     if (s.result != "PASS") ++bad;
-    const std::string grade = view.no_grades.empty() ? format_points(s.score.points) : "-";
+    const std::string grade = view.no_grades.empty() && !s.score.no_grade ? format_points(s.score.points) : "-";
     md << "| " << md_inline(s.row->name) << " | " << (s.result == "PASS" ? s.result : "**" + s.result + "**") << " | "
        << grade << " |";
     console << std::setw(22) << inert_text(s.row->name) + " " << std::setw(18) << s.result + " " << std::setw(10)
@@ -446,6 +456,25 @@ void write_student_problems(std::ostream& md, std::ostream& console, const Class
     } else if (s.status == "not checked") {
       md << "## " << md_inline(s.row->name) << ": not checked\n\n" << md_fenced(bounded_text(s.row->problem)) << "\n";
       console << "\n" << inert_text(s.row->name) << ": " << inert_text(bounded_text(s.row->problem)) << "\n";
+    } else if (s.status == kGraderError && s.row->suspect) {
+      // Met in every run of this submission alone: for the lecturer to decide, with each run's evidence.
+      const std::string fault = bounded_text(grader_fault_of(*s.row));
+      md << "## " << md_inline(s.row->name) << ": the same machine fault in each of "
+         << s.row->earlier_faults.size() + 1
+         << " runs of this unchanged submission, while classmates checked fine: suspect (no grade; the lecturer "
+            "decides)\n\nThis machine's self-test passed and other submissions were checked on it, so a fault "
+            "that only this submission meets may be the submission's doing that the kernel's accounting does not "
+            "show, or a fault of the machine that only its check meets. It is not checked again by a plain run; "
+            "`--regrade "
+         << md_inline(s.row->name) << "` checks it again, `geomech check FILE --untrusted` checks it alone.\n\n";
+      for (std::size_t k = 0; k < s.row->earlier_faults.size(); ++k)
+        md << "Run " << k + 1 << ":\n\n" << md_fenced(bounded_text(s.row->earlier_faults[k])) << "\n";
+      md << "The last run:\n\n" << md_fenced(fault) << "\n";
+      console << "\n"
+              << inert_text(s.row->name) << ": GRADER ERROR (no grade), suspect: the same machine fault in each of "
+              << s.row->earlier_faults.size() + 1
+              << " runs while classmates checked fine; the lecturer decides (summary.md): " << inert_text(fault)
+              << "\n";
     } else if (s.status == kGraderError) {
       const std::string fault = bounded_text(grader_fault_of(*s.row));
       md << "## " << md_inline(s.row->name) << ": the grader's machine failed its check (no grade; checked again by "
@@ -550,6 +579,9 @@ static int summarise_class(const ClassState& st, const std::string& report_dir, 
   write_file_atomically((fs::path(report_dir) / "summary.html").string(), class_summary_html(view, page));
   const std::vector<StudentResult> students = write_class_gradebook(st, view, grades, final);
   if (final) say_class_done(view, console.str(), report_dir, grades, students);
+  // The grader's machine failed a check: the run is not complete, as every command says (exit 3).
+  for (const auto& s : view.students)
+    if (s.status == kGraderError) return kExitMachine;
   return bad == 0 ? 0 : 1;
 }
 
@@ -652,15 +684,19 @@ void refuse_on_the_graders_machine(const ClassOptions& o, const Toolchain& tc,
 // How one implementation's check ended, into its row's JSON: status 0 or 1 is a verdict, anything
 // else (a crash, a refusal, a bad option) is a problem shown in the summary.
 // `check_seconds` is the check's own time (its outcome's), else the whole process's.
-std::string record_check(json& j, const ProcessResult& pr, const std::string& what, double check_seconds) {
+// `checked`: the check ran and wrote its outcome (and its report): a machine's fault it met is then
+// in its verdicts (verdicts.json's machine_fault), which the row's report says.
+std::string record_check(json& j, const ProcessResult& pr, const std::string& what, double check_seconds,
+                         bool checked) {
   j["exit_code"] = pr.exit_code;
   j["check_seconds"] = check_seconds;
-  if (pr.exit_code == kExitMachine)  // the set-up's (harness/submissions/check_submission.cpp): said with its fix
-    j["machine_fault"] = pr.output.substr(0, 2000);
-  else if (pr.exit_code != 0 && pr.exit_code != 1)
+  if (pr.exit_code == kExitMachine) {  // the set-up's (harness/submissions/check_submission.cpp): said with its fix
+    if (!checked) j["machine_fault"] = pr.output.substr(0, 2000);
+  } else if (pr.exit_code != 0 && pr.exit_code != 1) {
     j["problem"] = what + " ended with " +
                    (pr.signal ? describe_signal(pr.signal) : "status " + std::to_string(pr.exit_code)) + ": " +
                    pr.output.substr(0, 2000);
+  }
   return j.dump(-1, ' ', false, json::error_handler_t::replace);
 }
 
@@ -725,9 +761,9 @@ std::string check_one(const Implementation& impl, const ClassOptions& o, const s
       j["check_seconds"] = out->check_seconds;
       return j.dump(-1, ' ', false, json::error_handler_t::replace);
     }
-    return record_check(j, pr, "the check", out->check_seconds);
+    return record_check(j, pr, "the check", out->check_seconds, true);
   }
-  return record_check(j, pr, "the check", pr.seconds);  // it ended before saying how (a crash, a signal)
+  return record_check(j, pr, "the check", pr.seconds, false);  // it ended before saying how (a crash, a signal)
 }
 
 // What this run checks, and what it resumes: each submission's snapshot and fingerprint, and
@@ -738,6 +774,10 @@ struct ClassPlan {
   std::vector<std::size_t> to_check;         // the implementations checked in this run
   std::size_t resumed = 0, regraded = 0, not_checked_again = 0;
   fs::path outcomes;  // where each check writes its outcome
+  // The machine's faults each unchanged submission met in the runs before (ClassRow::earlier_faults),
+  // and how many are kept as suspect, not checked again.
+  std::vector<std::vector<std::string>> earlier_faults;
+  std::size_t kept_suspect = 0;
 };
 
 ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::string& report_dir,
@@ -748,7 +788,9 @@ ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::str
   ClassPlan plan;
   plan.prints.resize(impls.size());
   plan.finished.resize(impls.size());
-  auto& [prints, finished, to_check, resumed, regraded, not_checked_again, outcomes] = plan;
+  plan.earlier_faults.resize(impls.size());
+  auto& [prints, finished, to_check, resumed, regraded, not_checked_again, outcomes, earlier_faults, kept_suspect] =
+      plan;
   std::error_code ec;
   // The files the lecturer shares with every C++ submission (--shared), read once.
   SubmissionTree shared;
@@ -828,8 +870,20 @@ ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::str
           // not checked, when the lecturer asks (--not-checked).
           const bool retry = o.not_checked && status_of(class_row(row)) == "not checked";
           if (retry) ++not_checked_again;
-          if (!retry && row.problem.rfind("its report cannot be read", 0) != 0 &&
-              grader_fault_of(class_row(row)).empty()) {
+          const std::string fault = grader_fault_of(class_row(row));
+          // A machine's fault is checked again, once: the machine may have been busy. The same fault
+          // again, while classmates checked fine, is suspect and left to the lecturer (the busy limit
+          // is not spent on it at every run); --regrade NAME checks it again.
+          if (!fault.empty() && row.suspect) {
+            finished[i] = std::move(row);
+            ++kept_suspect;
+            continue;
+          }
+          if (!fault.empty()) {
+            earlier_faults[i] = row.earlier_faults;
+            earlier_faults[i].push_back(fault);
+          }
+          if (!retry && row.problem.rfind("its report cannot be read", 0) != 0 && fault.empty()) {
             finished[i] = std::move(row);
             ++resumed;
             continue;
@@ -847,6 +901,10 @@ ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::str
 
 // What the plan keeps and checks again, said before the checks start.
 void say_plan(const ClassPlan& plan, std::size_t count, const ClassOptions& o) {
+  if (plan.kept_suspect > 0)
+    std::cerr << "geomech check-class: " << plan.kept_suspect << " of " << count
+              << " implementations met the same machine fault in every run while classmates checked fine: kept "
+                 "for the lecturer to decide (summary.md says why), not checked again (--regrade NAME checks one)\n";
   if (plan.resumed > 0)
     std::cerr << "geomech check-class: " << plan.resumed << " of " << count
               << " implementations are unchanged since their last complete check (source, options and suite) and are "
@@ -943,12 +1001,29 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     console.on_interrupt_say(interrupted_words(st, impls.size(), report_dir, grades, resume));
   };
   rewrite_views();
+  // A machine's fault this unchanged submission met in the run before, met again: the evidence of
+  // each run is kept with its row, and it is suspect once a classmate checked fine (this run's
+  // self-test passed: refuse_on_the_graders_machine).
+  auto classmates_fine = [&](std::size_t i) {
+    for (std::size_t k = 0; k < impls.size(); ++k)
+      if (k != i && finished[k] && status_of(class_row(*finished[k])) == "checked") return true;
+    return false;
+  };
+  auto judge_repeat = [&](std::size_t i, Row& row) {
+    const std::string fault = grader_fault_of(class_row(row));
+    const auto& before = plan.earlier_faults[i];
+    if (fault.empty() || before.empty() || row.suspect || !same_machine_fault(fault, before.back())) return false;
+    row.earlier_faults = before;
+    row.suspect = classmates_fine(i);
+    return true;
+  };
   io.on_started = [&](std::size_t t) { console.started(impls[to_check[t]].name); };
   io.on_idle = [&] { console.tick(); };
   std::size_t done = 0;
   io.on_finished = [&](std::size_t t, const TaskResult& result) {
     const std::size_t i = to_check[t];
     Row row = row_of(impls[i], result, report_dir);
+    judge_repeat(i, row);
     keep_row(report_dir, impls[i].name, prints[i], row);
     const double seconds = result.seconds;
     finished[i] = std::move(row);
@@ -958,6 +1033,13 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     if (stop_after >= 0 && static_cast<long>(done) >= stop_after) ::raise(stop_signal);
   };
   run_isolated(tasks, io);
+  // A repeated fault met before any classmate had checked fine: judged again now the run is done.
+  for (std::size_t i : to_check)
+    if (finished[i] && !finished[i]->suspect && !finished[i]->earlier_faults.empty() && classmates_fine(i) &&
+        !grader_fault_of(class_row(*finished[i])).empty()) {
+      finished[i]->suspect = true;
+      keep_row(report_dir, impls[i].name, prints[i], *finished[i]);
+    }
 
   std::vector<Row> rows;
   for (auto& r : finished) rows.push_back(*r);

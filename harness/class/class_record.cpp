@@ -59,6 +59,8 @@ json class_row_to_json(const ClassRow& row) {
             {"problem", row.problem}};
   if (!row.submitted) j["submitted"] = false;
   if (!row.machine_fault.empty()) j["machine_fault"] = row.machine_fault;
+  if (!row.earlier_faults.empty()) j["earlier_faults"] = row.earlier_faults;
+  if (row.suspect) j["suspect"] = true;
   return j;
 }
 
@@ -74,6 +76,8 @@ ClassRow class_row_from_json(const json& r, const std::string& report_dir) {
   row.check_seconds = r.value("check_seconds", 0.0);
   row.problem = r.value("problem", "");
   row.machine_fault = r.value("machine_fault", "");
+  row.earlier_faults = r.value("earlier_faults", std::vector<std::string>{});
+  row.suspect = r.value("suspect", false);
   if (row.submitted && row.built && row.problem.empty() && row.machine_fault.empty()) {
     std::ifstream f(fs::path(report_dir) / row.name / "verdicts.json");
     try {
@@ -111,6 +115,20 @@ std::string grader_fault_of(const ClassRow& row) {
   return {};
 }
 
+namespace {
+
+// A machine fault's kind, from the words every fault of that kind is said in.
+std::string fault_kind(const std::string& f) {
+  for (const char* kind : {"the machine starved it", "run-queue accounting", "the sandbox could not start",
+                           "could not run the compiler", "out of the sandbox's reach", "cannot be shown to the sandbox"})
+    if (f.find(kind) != std::string::npos) return kind;
+  return f.substr(0, 80);
+}
+
+}  // namespace
+
+bool same_machine_fault(const std::string& a, const std::string& b) { return fault_kind(a) == fault_kind(b); }
+
 std::string status_of(const ClassRow& row) {
   if (!row.submitted) return "no submission";
   if (!grader_fault_of(row).empty()) return kGraderError;
@@ -146,6 +164,7 @@ StudentResult student_result(const ClassRow& row) {
   }
   if (s.status == kGraderError) {  // the machine's: nothing of it is the student's to fix
     s.report.clear();
+    s.left_to_lecturer = row.suspect;
     return s;
   }
   const std::set<std::string> provided = provided_slots(row.report);
@@ -331,6 +350,12 @@ std::vector<std::string> words_of(const StudentView& s) {
   if (s.status == "no submission")
     return {"NO SUBMISSION, " + grade +
             ": the roster names this student, and the class folder holds nothing of theirs"};
+  if (s.status == kGraderError && row.suspect)
+    return {"GRADER ERROR, no grade: suspect: each of the " + std::to_string(row.earlier_faults.size() + 1) +
+            " runs of this unchanged submission ended in the same machine fault, while classmates checked fine on "
+            "this machine (its self-test passed); the lecturer decides, from the evidence below, and it is not "
+            "checked again unless asked (--regrade " +
+            row.name + ")"};
   if (s.status == kGraderError)
     return {
         "GRADER ERROR, no grade yet: the grading machine could not check this submission (not a problem of the "

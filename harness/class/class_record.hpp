@@ -32,7 +32,19 @@ struct ClassRow {
   // a check starved of CPU): never graded, checked again by the next run.
   std::string machine_fault;
   nlohmann::json report;  // the check's verdicts.json; null unless it was checked
+  // A machine's fault that only this submission meets is suspect: the faults of the runs before
+  // this one, each of this same submission (unchanged source, options and suite) ending in a machine
+  // fault of the same kind (same_machine_fault); `suspect` once such a run was checked again and
+  // ended so again while classmates checked fine on the same machine, whose self-test passed. It is
+  // then left to the lecturer, with that evidence, and a plain run does not check it again
+  // (--regrade NAME does): never graded as the machine's nor as the code's by the tool alone.
+  std::vector<std::string> earlier_faults;
+  bool suspect = false;
 };
+
+// Whether two machine faults are of one kind (the kernel's accounting said starved both times; the
+// sandbox could not start both times; ...).
+bool same_machine_fault(const std::string& a, const std::string& b);
 
 // The grader's fault in a row: its own, or that of a verdict of its report (verdicts.json's
 // "machine_fault"); empty when none.

@@ -34,7 +34,7 @@ std::string feedback_page(const StudentView& s) {
   b << "<h1>" << html_escape(s.result) << ": " << html_escape(s.score.headline) << "</h1>\n<ul>\n";
   for (const auto& w : words_of(s)) b << "<li>" << html_escape(w) << "</li>\n";
   b << "</ul>\n";
-  if (!s.score.items.empty()) {
+  if (!s.score.items.empty() && !s.score.no_grade) {  // no grade (the grader's fault): nothing it rests on
     b << "<h2>What the grade rests on</h2>\n<table><tr><th>part</th><th>state</th><th>points</th><th>why</th></tr>\n";
     for (const auto& i : s.score.items)
       b << "<tr><td>" << html_escape(i.name) << "</td><td>" << html_escape(i.state) << "</td><td>"

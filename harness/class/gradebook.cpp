@@ -483,6 +483,7 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
   for (const auto& n : notes) middle += (middle.empty() ? "" : "; ") + n;
   const std::string tail = st.report.empty() ? "" : "report: " + one_line(st.report);
   out.feedback = feedback_line(one_line(head), one_line(middle), tail);
+  out.no_grade = st.status == kGraderError || st.status == kNotCheckedYet;
   if (st.status == kGraderError) {
     // The machine's fault is not the student's: no grade (an empty cell), and words without the
     // grader's paths; the lecturer's summary says what failed and its fix.
@@ -490,6 +491,12 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
     out.feedback =
         "no grade yet: the grading machine could not check this submission (a problem of the grader, not of "
         "your code); it will be checked again";
+    if (st.left_to_lecturer) {
+      out.headline = "no grade yet: the lecturer decides how this submission's check ended";
+      out.feedback =
+          "no grade yet: this submission's check ended the same way in each run; the lecturer decides how to grade "
+          "it";
+    }
   }
   if (st.status == kNotCheckedYet) {
     // A class run stopped before this submission: no grade, and the row says why, as
@@ -528,8 +535,7 @@ std::string write_gradebook_csv(const std::vector<StudentResult>& cls, const Rub
       id = roster->at(s->name);
     else
       id.username = id.full_name = s->name;  // no roster row: the implementation name identifies
-    const std::string grade =
-        s->status == kNotCheckedYet || s->status == kGraderError ? "" : format_points(score.points);
+    const std::string grade = score.no_grade ? "" : format_points(score.points);
     if (r.format == LmsFormat::canvas) {
       out += csv_row({id.full_name.empty() ? s->name : id.full_name, id.canvas_id, id.sis_user_id, id.sis_login_id,
                       id.section, grade});

@@ -40,6 +40,7 @@ struct StudentResult {
   std::vector<ClaimResult> claims;                   // every claim an integrator made, with its verdict
   std::string first_fix;                             // one line, may be empty: what to fix first
   std::string report;                                // relative link to the student's report, e.g. "alice/report.md"
+  bool left_to_lecturer = false;  // kGraderError, met in every run of this submission alone: the lecturer decides
 };
 
 // Which LMS import the CSV is shaped for; the two want different columns.
@@ -124,6 +125,9 @@ struct ScoreItem {
 
 struct Score {
   double points = 0;                   // 0 .. rubric.points, rounded to 2 decimals
+  // No grade at all (the grader's machine failed the check, or it is not checked yet): every view
+  // shows none (an empty gradebook cell, "-" in a summary), never `points`.
+  bool no_grade = false;
   double max_points = 0;               // rubric.points
   std::vector<ScoreItem> items;        // what the grade is made of; their points add up to `points` before rounding
   std::vector<std::string> breakdown;  // e.g. "slots 3/4", "sec. 1 5/6", "claims 2/3 verified"

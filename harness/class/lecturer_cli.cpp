@@ -5,6 +5,7 @@
 #include "harness/class/grader_machine.hpp"
 #include "harness/program/build.hpp"
 #include "harness/isolation/sandbox.hpp"
+#include "harness/isolation/sandbox_cgroup.hpp"
 #include "harness/program/cli.hpp"
 #include "harness/reports/report.hpp"
 
@@ -148,6 +149,11 @@ void add_lecturer_commands(CLI::App& app) {
                                           (needs.served.count("octave") ? ", Octave can be shown to it" : "") + ")"
                                     : " in-process (trusted)")
                 << "\n";
+      // What the kernel keeps of a sandbox here (a cgroup as root; per user namespace and per process
+      // otherwise): docs/UNTRUSTED.md, "The sandbox's limits".
+      if (needs.untrusted)
+        std::cout << "geomech self-test: a check's sandbox limits: " << sandbox_limits_in_words() << "\n"
+                  << "geomech self-test: control groups: " << cgroup_limits_in_words() << "\n";
       return 0;
     });
   });

@@ -183,7 +183,10 @@ struct CheckResult {
   bool ok() const;
   // PASS, FAIL, NOTHING CHECKED or UNCHECKED (what the console, report and class table say).
   std::string verdict_word() const;
-  int exit_code() const { return ok() ? 0 : 1; }
+  // 0 when ok(), 1 when not; 3 (kExitMachine, harness/isolation/sandbox.hpp) when a check ended in
+  // the machine's ERROR (a verdict's machine_fault), whatever else it found: the run is incomplete
+  // because of the grader's machine, as every command says with that status.
+  int exit_code() const;
 };
 
 CheckResult run_check(const SubjectSet& subject, const SubjectInfo& info, const CheckConfig& config);

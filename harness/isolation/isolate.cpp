@@ -1,6 +1,8 @@
 #include "harness/isolation/isolate.hpp"
 
 #include "harness/isolation/process_cpu.hpp"
+#include "harness/isolation/run_queue_account.hpp"
+#include "harness/isolation/work_limit.hpp"
 
 #include <cerrno>
 #include <chrono>
@@ -39,14 +41,9 @@ constexpr std::size_t kOutputTail = 4096;
 // A child whose output has begun a sanitizer's report is dying, not hanging: symbolising the report's
 // stack (the DWARF of a large binary, compressed with -gz) can take seconds on a loaded machine, so
 // such a child gets this long past the timeout to finish its report before it is stopped.
-constexpr Clock::duration kSanitizerGrace = std::chrono::seconds(120);
-// A task past its time that was runnable (on a CPU or queued for one) for less than this share of
-// its wall clock sleeps: it waits (a sleep, a read, a lock) rather than computes, and is stopped at
-// once. At the wall guard, one runnable for less than half of it is stopped as waiting; one runnable
-// for more is computing or starved (the kernel's run queue held it) and goes on, up to the CPU
-// limit or, on a machine too busy to give it a core, busy_factor times the wall guard.
-constexpr double kWaitingShare = 0.05;
-constexpr double kRunnableAtGuard = 0.5;
+constexpr double kSanitizerGrace = 120;  // seconds
+// A task's limits are judged by the kernel's accounting of the task the check waits on, never by
+// the sum over its tree (harness/isolation/work_limit.hpp).
 
 int g_worker = 0;  // this process's worker slot (set before a task's child is forked)
 
@@ -60,10 +57,11 @@ struct Running {
   std::string result;
   std::string output;
   std::string sanitizer_report;         // the first line of a sanitizer's report in the output, if any
-  TreeTimes worker0;                    // the worker's server's times when the task started
-  TreeTimes times;                      // the code's CPU and run-queue delay so far (sampled)
-  std::shared_ptr<QueuedSoFar> queued;  // the tree's delay, ended processes included
-  Clock::time_point sampled{};          // when `times` was last read
+  TreeTimes worker0;                         // the worker's server's times when the task started
+  TreeTimes times;                           // the code's CPU and run-queue delay so far (sampled)
+  std::shared_ptr<QueuedSoFar> queued;       // the tree's delay, ended processes included
+  std::shared_ptr<RunQueueAccount> account;  // whom the wait is owed to, task by task
+  Clock::time_point sampled{};               // when `times` was last read
 };
 
 // In a sanitized build (ASan, UBSan) the sanitizer catches a crash before the signal does, prints a
@@ -305,7 +303,7 @@ Running fork_task(const std::function<std::string()>& task, std::size_t i, int w
   ::fcntl(rp[0], F_SETFL, O_NONBLOCK);
   ::fcntl(op[0], F_SETFL, O_NONBLOCK);
   g_worker = 0;
-  Running r{i, w, pid, rp[0], op[0], Clock::now(), {}, {}, {}};
+  Running r{i, w, pid, rp[0], op[0], Clock::now(), {}, {}, {}, {}, {}, {}, {}, {}};
   r.worker0 = o.worker_times ? o.worker_times(w) : TreeTimes{};
   return r;
 }
@@ -314,70 +312,36 @@ Running fork_task(const std::function<std::string()>& task, std::size_t i, int w
 // and the kernel's accounting tells a task that sleeps from one a busy machine starves.
 void sample_times(Running& r, const IsolationOptions& o, Clock::time_point now) {
   if (!r.queued) r.queued = std::make_shared<QueuedSoFar>();
+  if (!r.account) r.account = std::make_shared<RunQueueAccount>(r.worker0);
   r.times = r.queued->sample(r.pid);
+  std::vector<TreeTimes> trees{r.times};  // the check's tree and its server's, task by task
   if (o.worker_times) {
-    const TreeTimes w = o.worker_times(r.worker);
+    TreeTimes w = o.worker_times(r.worker);
     r.times.cpu += w.cpu - r.worker0.cpu;
     r.times.queued += w.queued - r.worker0.queued;
+    r.times.queued_known = r.times.queued_known || w.queued_known;
+    trees.push_back(std::move(w));
   }
+  r.account->look(trees, std::chrono::duration<double>(now - r.start).count());
   r.sampled = now;
 }
 
-// Which limit stopped a task.
-struct Stopped {
-  bool cpu_out;   // its CPU time
-  bool waiting;   // past its time and runnable for almost none of it
-  bool wall_out;  // the wall guard, having slept most of the time
-};
-
-// The result of a task stopped by a limit: whose fault, in the kernel's words (a task that waits is
-// the code's, one the machine starves is not).
-TaskResult stopped_result(const Running& r, const IsolationOptions& o, double wall, Stopped why) {
-  const auto [cpu_out, waiting, wall_out] = why;
-  const double runnable = r.times.cpu + r.times.queued;
-  const bool known = r.times.queued_known;
+// The result of a task stopped by a limit: whose fault, in the kernel's words (a task that waits,
+// or whose own tasks hold its cores, is the code's; one the machine starves is not).
+TaskResult stopped_result(const Running& r, double wall, const LimitVerdict& v) {
   TaskResult t;
   t.seconds = wall;
   t.cpu_seconds = r.times.cpu;
   t.queued_seconds = r.times.queued;
   t.output = r.output.size() > kOutputTail ? r.output.substr(r.output.size() - kOutputTail) : r.output;
   t.sanitizer_report = r.sanitizer_report;
-  char buf[600];
-  const double asleep = std::max(0.0, wall - runnable);
   if (!r.sanitizer_report.empty()) {  // it was dying, not hanging: the sanitizer had reported an error
     t.status = TaskResult::Status::Crashed;
     t.detail = "stopped while writing the sanitizer's report \"" + r.sanitizer_report + "\"";
-  } else if (cpu_out) {
-    t.status = TaskResult::Status::TimedOut;
-    std::snprintf(buf, sizeof buf, "did not finish within %.0f s of CPU time (%.0f s of wall clock) and was stopped",
-                  o.timeout_seconds, wall);
-    t.detail = buf;
-  } else if (!known) {
-    // The kernel keeps no run-queue accounting here: waiting and starving cannot be told apart.
-    t.status = TaskResult::Status::Busy;
-    std::snprintf(buf, sizeof buf,
-                  "was stopped by the wall clock after %.0f s having had %.1f s of CPU; this kernel keeps no "
-                  "run-queue accounting (/proc/PID/task/TID/schedstat), so whether it slept or the machine "
-                  "starved it is not known",
-                  wall, r.times.cpu);
-    t.detail = buf;
-  } else if (waiting || wall_out) {
-    t.status = TaskResult::Status::TimedOut;
-    std::snprintf(buf, sizeof buf,
-                  "did not finish within %.0f s: stopped by the wall clock after %.0f s, of which the kernel "
-                  "counts %.1f s on a CPU, %.1f s queued for one and %.0f s asleep: it waits (a sleep, an input "
-                  "it reads, a lock) rather than computes",
-                  o.timeout_seconds, wall, r.times.cpu, r.times.queued, asleep);
-    t.detail = buf;
-  } else {
-    t.status = TaskResult::Status::Busy;
-    std::snprintf(buf, sizeof buf,
-                  "could not do its work: the machine starved it, by the kernel's accounting %.1f s on a CPU "
-                  "and %.1f s runnable but queued for one in %.0f s of wall clock (stopped at %.0f times the "
-                  "wall guard)",
-                  r.times.cpu, r.times.queued, wall, std::max(1.0, o.busy_factor));
-    t.detail = buf;
+    return t;
   }
+  t.status = v.machine ? TaskResult::Status::Busy : TaskResult::Status::TimedOut;
+  t.detail = v.detail;
   return t;
 }
 
@@ -405,9 +369,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
   }
 
   const int jobs = o.jobs < 1 ? 1 : o.jobs;
-  const auto wall_limit = std::chrono::duration_cast<Clock::duration>(
-      std::chrono::duration<double>(std::max(o.timeout_seconds * o.wall_factor, o.timeout_seconds + o.wall_floor)));
-  const auto busy_limit = std::chrono::duration_cast<Clock::duration>(wall_limit * std::max(1.0, o.busy_factor));
+  const WorkLimit limit{o.timeout_seconds, o.wall_factor, o.wall_floor, o.busy_factor};
   std::deque<Running> running;
   std::size_t next = 0;
   const pid_t self = ::getpid();
@@ -462,22 +424,19 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         const auto now = Clock::now();
         if (now - r.sampled > std::chrono::milliseconds(250)) sample_times(r, o, now);
         const double wall = std::chrono::duration<double>(now - r.start).count();
-        const double runnable = r.times.cpu + r.times.queued;
-        const bool known = r.times.queued_known;
-        const bool cpu_out = r.times.cpu > o.timeout_seconds;
-        // Past its time and runnable for almost none of it: it sleeps, and is stopped at once.
-        const bool waiting = known && wall > o.timeout_seconds && r.sampled > r.start + std::chrono::seconds(1) &&
-                             runnable < kWaitingShare * wall;
-        // At the wall guard: stopped if it slept most of the time (or the kernel cannot say); a task
-        // that wanted a core most of the time goes on, up to the busy limit.
-        const bool wall_out = now - r.start > wall_limit && (!known || runnable < kRunnableAtGuard * wall);
-        const bool busy_out = now - r.start > busy_limit;
-        const bool dying = !r.sanitizer_report.empty() && now - r.start < wall_limit + kSanitizerGrace;
-        if ((cpu_out || wall_out || waiting || busy_out) && !dying) {
+        WorkSoFar so_far;
+        so_far.wall = wall;
+        so_far.cpu = r.times.cpu;
+        so_far.known = r.times.queued_known;
+        so_far.looked_a_second = r.sampled > r.start + std::chrono::seconds(1);
+        so_far.account = r.account.get();
+        const LimitVerdict v = judge_work(limit, so_far);
+        const bool dying = !r.sanitizer_report.empty() && wall < limit.wall_guard() + kSanitizerGrace;
+        if (v.stop && !dying) {
           ::kill(-r.pid, SIGKILL);
           ::kill(r.pid, SIGKILL);
           ::waitpid(r.pid, &status, 0);
-          results[r.index] = stopped_result(r, o, wall, {cpu_out, waiting, wall_out});
+          results[r.index] = stopped_result(r, wall, v);
           done = true;
         }
       }

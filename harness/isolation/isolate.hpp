@@ -23,10 +23,13 @@ struct IsolationOptions {
   // The limit of a task (slow is judged by the work done): the CPU seconds of the code under test,
   // its child's process tree and its worker's server (worker_times) together. A wall clock of
   // wall_factor times as long (and at least wall_floor more) stays, for a task that waits (sleeps,
-  // reads input) and uses no CPU. Which it is, the kernel says: a task runnable (on a CPU or queued
-  // for one, schedstat's run_delay) for less than half the wall guard slept and is TimedOut ("it
-  // waits"); one runnable for more was computing or starved and goes on, and only a machine too busy
-  // to give it its CPU time within busy_factor times the wall guard stops it, as Busy: the machine's fault.
+  // reads input) and uses no CPU. Which it is, the kernel says, of the task the check waits on (the
+  // most runnable task of its trees, harness/isolation/run_queue_account.hpp): runnable (on a CPU or
+  // queued for one, schedstat's run_delay) for less than half the wall guard, it slept and is TimedOut
+  // ("it waits"); runnable for more, it was computing or starved and goes on. A tree whose own tasks
+  // keep more of them runnable than its cores is TimedOut past its time ("it starves itself"). Only a
+  // machine that kept that task queued, while no task of its own ran, for most of busy_factor times
+  // the wall guard stops it as Busy: the machine's fault.
   double timeout_seconds = 120;
   double wall_factor = 3;
   double wall_floor = 60;
@@ -78,7 +81,7 @@ struct TaskResult {
   int exit_code = 0;
   double seconds = 0;         // wall clock
   double cpu_seconds = 0;     // CPU of the code under test (the task's process tree and its worker's server)
-  double queued_seconds = 0;  // ... and the time its runnable tasks waited for a core (live tasks only)
+  double queued_seconds = 0;  // ... and the time its runnable tasks waited for a core (summed over them)
 };
 
 std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,

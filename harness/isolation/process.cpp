@@ -115,6 +115,7 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
       return;
     }
     results[i].started = true;
+    results[i].pid = pid;
     running.push_back(Child{i, pid, Clock::now(), capture});
   };
 

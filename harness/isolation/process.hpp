@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <sys/types.h>
 #include <vector>
 
 namespace gm::harness {
@@ -15,6 +16,7 @@ struct ProcessResult {
   bool cancelled = false;  // stopped, or never started, because a decisive process failed
   std::string output;      // stdout and stderr, interleaved
   double seconds = 0;
+  pid_t pid = -1;  // the process started (a sandbox's status is kept under it: harness/isolation/sandbox.hpp)
 };
 
 struct ProcessSpec {

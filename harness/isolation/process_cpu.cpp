@@ -4,6 +4,7 @@
 #include <cstdlib>
 #include <ctime>
 #include <dirent.h>
+#include <sched.h>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -41,8 +42,10 @@ bool read_stat(pid_t pid, Stat& s) {
   return true;
 }
 
-// The run-queue delay of every thread of `pid`, in seconds; false when the kernel keeps no schedstat.
-bool read_queued(pid_t pid, double& seconds) {
+// The run-queue delay of every thread of `pid`, in seconds, and each thread's own times and CPUs
+// (into `tasks` and `cpus` when given); false when the kernel keeps no schedstat.
+bool read_queued(pid_t pid, double& seconds, std::map<pid_t, TaskTimes>* tasks = nullptr,
+                 std::set<int>* cpus = nullptr) {
   const std::string dir = "/proc/" + std::to_string(pid) + "/task";
   DIR* d = ::opendir(dir.c_str());
   if (!d) return false;
@@ -54,6 +57,13 @@ bool read_queued(pid_t pid, double& seconds) {
     if (f >> on_cpu_ns >> run_delay_ns) {
       seconds += run_delay_ns * 1e-9;
       any = true;
+      const pid_t tid = static_cast<pid_t>(std::atol(e->d_name));
+      if (tasks) (*tasks)[tid] = TaskTimes{on_cpu_ns * 1e-9, run_delay_ns * 1e-9};
+      cpu_set_t mask;
+      CPU_ZERO(&mask);
+      if (cpus && ::sched_getaffinity(tid, sizeof mask, &mask) == 0)
+        for (int c = 0; c < CPU_SETSIZE; ++c)
+          if (CPU_ISSET(c, &mask)) cpus->insert(c);
     }
   }
   ::closedir(d);
@@ -96,7 +106,7 @@ TreeTimes tree_times(pid_t root, std::map<pid_t, double>* queued_by_pid) {
   for (pid_t p : tree_of(root, all)) {
     t.cpu += all[p].cpu;
     double q = 0;
-    if (read_queued(p, q)) {
+    if (read_queued(p, q, &t.tasks, &t.cpus)) {
       t.queued_known = true;
       t.queued += q;
       if (queued_by_pid) (*queued_by_pid)[p] = q;

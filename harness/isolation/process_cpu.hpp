@@ -6,29 +6,43 @@
 #pragma once
 
 #include <map>
+#include <set>
 
 #include <sys/types.h>
 
 namespace gm::harness {
 
+// One task (a thread) as schedstat counts it: its time on a CPU and its time runnable but queued
+// for one (run_delay), in seconds since it started.
+struct TaskTimes {
+  double cpu = 0;
+  double queued = 0;
+};
+
 // What the kernel says of a process tree's time: the CPU it had, and how long its runnable tasks
 // waited on a run queue for a core (schedstat's run_delay; the time neither on a CPU nor queued
 // was spent asleep: a sleep, a read, a lock). A task that is runnable but not running is starved;
-// one that sleeps waits. `queued_known` is false where the kernel keeps no schedstat.
+// one that sleeps waits. `queued_known` is false where the kernel keeps no schedstat. The sums are
+// over tasks: N tasks of one tree that queue for one core sum to N times the wall clock, so whom a
+// check waits on is judged per task (harness/isolation/run_queue_account.hpp).
 struct TreeTimes {
   double cpu = 0;
   double queued = 0;
   bool queued_known = false;
+  std::map<pid_t, TaskTimes> tasks;  // each live task of the tree, by its thread id
+  std::set<int> cpus;                // the CPUs its live tasks may run on (the union of their affinities)
   TreeTimes& operator+=(const TreeTimes& o) {
     cpu += o.cpu;
     queued += o.queued;
     queued_known = queued_known || o.queued_known;
+    tasks.insert(o.tasks.begin(), o.tasks.end());
+    cpus.insert(o.cpus.begin(), o.cpus.end());
     return *this;
   }
 };
 
 // The tree's CPU (as tree_cpu_seconds) and the run-queue delay of every live task (thread) in it,
-// from /proc/<pid>/task/<tid>/schedstat. The kernel keeps no delay for a process that has ended:
+// from /proc/<pid>/task/<tid>/schedstat, with each task's own times and the CPUs it may use. The kernel keeps no delay for a process that has ended:
 // `queued_by_pid`, when given, is the delay of each live process, for a caller that samples the tree
 // and keeps what the processes that ended had last shown (QueuedSoFar).
 TreeTimes tree_times(pid_t root, std::map<pid_t, double>* queued_by_pid = nullptr);

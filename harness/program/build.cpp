@@ -23,15 +23,28 @@ using nlohmann::json;
 
 namespace {
 
-// When a sandboxed compile or link failed before the compiler ran, the sandbox's own error (its
-// output begins with "bwrap: ", "setpriv: " or "prlimit: "; a compiler's begins with a path or its
-// own name, so a submission cannot write such a first line): the grader's set-up, with the fix.
-std::string sandbox_start_fault(const std::string& output, const fs::path& dir) {
-  std::string first = output.substr(0, output.find('\n'));
-  bool ours = false;
-  for (const char* tool : {"bwrap: ", "setpriv: ", "prlimit: "}) ours = ours || first.rfind(tool, 0) == 0;
-  if (!ours) return {};
-  std::string fault = "the grader's machine, not the file: the sandbox could not start the compiler (" + first + ")";
+// When a sandboxed compile or link did not reach the compiler, the grader's set-up, with the fix.
+// bubblewrap says whether it executed the compiler's wrapper (its status, sandbox_start), and that
+// wrapper fails with a status no compiler exits with (a limit it could not set, the compiler not
+// found there). Never the output: once the compiler ran, every byte of it is the compiler's, and a
+// file can make its first diagnostic read "bwrap: ..." (#line 1 "bwrap: ...", as the file name).
+// A compile stopped at its timeout, or cancelled, is not told apart (its report is read and removed).
+std::string sandbox_start_fault(const ProcessResult& pr, const fs::path& dir) {
+  if (!pr.started) return {};  // not even spawned: the caller says so
+  const SandboxStart st = sandbox_start(pr.pid);
+  if (pr.timed_out || pr.cancelled) return {};
+  const std::string first = pr.output.substr(0, pr.output.find('\n'));
+  std::string fault;
+  if (!st.started)
+    fault = "the grader's machine, not the file: the sandbox could not start the compiler" +
+            (first.empty() ? std::string() : " (" + first + ")");
+  else if (is_sandbox_wrapper_status(st.exit_code))
+    fault = "the grader's machine, not the file: the sandbox started but could not run the compiler (status " +
+            std::to_string(st.exit_code) +
+            (st.exit_code == kSandboxLimitFailed ? ": a limit it could not set" : ": the compiler is not found there") +
+            (first.empty() ? std::string() : "; " + first) + ")";
+  else
+    return {};
   if (const std::string blocked = sandbox_cannot_reach(dir.string()); !blocked.empty())
     fault += ". Its user (" + std::string(sandbox_uid() == 65534 ? "nobody" : "this user") + ") cannot pass " +
              blocked + ". Fix: `chmod o+x " + blocked + "`, or --cache-dir DIR in a folder every user may pass";
@@ -78,6 +91,7 @@ SandboxSpec compiler_sandbox(const Toolchain& tc, const fs::path& dir) {
   if (!tc.precompiled_header.empty()) add(fs::path(tc.precompiled_header).parent_path());
   spec.writable = dir.string();
   spec.chdir = dir.string();
+  spec.report_start = true;            // whether the compiler ran is bubblewrap's word (sandbox_start_fault)
   spec.limits.memory_mb = 8192;        // a 50-digit instantiation compiles in about 1.5 GB
   spec.limits.file_mb = 2048;          // a sanitized suite's objects and programs reach hundreds of MB
   spec.limits.scratch_mb = 2048;       // the compiler's temporary files (a tmpfs: memory used as needed)
@@ -669,19 +683,21 @@ bool compile_rounds(const CompileSetting& cs, const BuildOptions& o, const fs::p
       const int k = todo[i];
       const std::string scalar = kScalars[kUnits[k].scalar];
       const ProcessResult& pr = results[i];
-      if (pr.cancelled) continue;  // stopped when double failed: nothing learnt, nothing kept
+      if (pr.cancelled) {  // stopped when double failed: nothing learnt, nothing kept
+        if (o.sandbox) (void)sandbox_start(pr.pid);  // its status, read and removed
+        continue;
+      }
       st[k].output = pr.output;
       if (pr.timed_out)  // said as an error of the file, so that the summary below shows it
         st[k].output += "\n" + source.filename().string() + ": error: the compiler was stopped after " +
                         std::to_string(static_cast<long>(o.compile_timeout_seconds)) +
                         " s (an #include of a device such as /dev/zero, or a template recursion without end?)\n";
       std::ofstream(cs.file(k, ".log"), std::ios::trunc) << shell_join(specs[i].argv) << "\n\n" << pr.output;
-      if (o.sandbox && pr.exit_code != 0) {
-        if (std::string fault = sandbox_start_fault(pr.output, cs.dir); !fault.empty()) {
+      if (o.sandbox)
+        if (std::string fault = sandbox_start_fault(pr, cs.dir); !fault.empty()) {
           r.machine_fault = r.message = std::move(fault);
           return false;
         }
-      }
       if (pr.started && pr.exit_code == 0) {
         st[k].done = st[k].ok = true;
         std::ofstream(cs.file(k, ".cmd"), std::ios::trunc) << commands[i];
@@ -756,12 +772,11 @@ Linked link_program(const CompileSetting& cs, const BuildOptions& o, const UnitS
     std::error_code ec;
     fs::remove(link_file, ec);
     const ProcessResult pr = run_process(ProcessSpec{run_argv(link), {}, false}, o.compile_timeout_seconds);
-    if (o.sandbox && pr.exit_code != 0) {
-      if (std::string fault = sandbox_start_fault(pr.output, cs.dir); !fault.empty()) {
+    if (o.sandbox)
+      if (std::string fault = sandbox_start_fault(pr, cs.dir); !fault.empty()) {
         out.machine_fault = out.message = std::move(fault);
         return out;
       }
-    }
     if (!pr.started || pr.exit_code != 0) {
       out.message = link_failure(pr.output);
       return out;

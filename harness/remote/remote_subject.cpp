@@ -3,6 +3,8 @@
 #include "harness/isolation/inert_text.hpp"
 #include "harness/isolation/isolate.hpp"
 #include "harness/isolation/process_cpu.hpp"
+#include "harness/isolation/run_queue_account.hpp"
+#include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/submission_intake.hpp"
 #include "harness/remote/slot_names.hpp"
 
@@ -185,7 +187,28 @@ void Connection::start(ServerProcess& s) {
   s.replies = rep[0];
   s.output = out[0];
   std::signal(SIGPIPE, SIG_IGN);
-  const std::string line = read_reply(s, "its handshake", handshake_seconds);
+  // Whether the sandbox started the program is bubblewrap's word (harness/isolation/sandbox.hpp),
+  // asked once the process has ended before its handshake; the report is removed either way.
+  std::string line;
+  try {
+    line = read_reply(s, "its handshake", handshake_seconds);
+  } catch (const RemoteMachineFault&) {
+    (void)harness::sandbox_start(pid);
+    kill_server(s);
+    throw;
+  } catch (const RemoteError& e) {
+    int status = 0;
+    const bool ended = s.pid < 0 || ::waitpid(s.pid, &status, WNOHANG) == s.pid;
+    if (ended) s.pid = -1;
+    const harness::SandboxStart st = harness::sandbox_start(pid);
+    kill_server(s);
+    if (ended && st.reported && !st.started)
+      throw RemoteMachineFault(
+          "the grader's machine, not the implementation: the sandbox could not start its process (" +
+          program_name(argv_) + "): " + e.what() + ". Fix: `geomech self-test` says what the sandbox lacks");
+    throw;
+  }
+  (void)harness::sandbox_start(pid);  // it started: its report is not needed
   try {
     hello_ = json::parse(line);
   } catch (const std::exception& e) {
@@ -223,6 +246,14 @@ std::string Connection::died(ServerProcess& s, const std::string& otherwise) {
 
 std::string Connection::read_reply(ServerProcess& s, const std::string& what, double deadline_seconds) {
   const auto start = Clock::now();
+  // A deadline is on the work of the implementation's process tree, judged by the kernel's
+  // accounting as a check's limit is (harness/isolation/work_limit.hpp): its CPU time, a wall guard
+  // for a process that sleeps, and the machine's fault only when it starved the task waited on.
+  harness::WorkLimit limit = reply_limit;
+  limit.cpu_seconds = deadline_seconds;
+  const harness::TreeTimes before = deadline_seconds > 0 && s.pid > 0 ? harness::tree_times(s.pid) : harness::TreeTimes{};
+  harness::RunQueueAccount account(before);
+  auto looked = start;
   for (;;) {
     const auto nl = s.buffer.find('\n');
     if (nl != std::string::npos) {
@@ -232,15 +263,30 @@ std::string Connection::read_reply(ServerProcess& s, const std::string& what, do
     }
     pollfd fds[2] = {{s.replies, POLLIN, 0}, {s.output, POLLIN, 0}};
     int wait_ms = 1000;
-    if (deadline_seconds > 0) {
-      const double left = deadline_seconds - seconds_since(start);
-      if (left <= 0) {
-        drain_output(s);
-        throw RemoteError("the implementation's process (" + program_name(argv_) + ") did not answer " + what +
-                          " within " + std::to_string(static_cast<int>(deadline_seconds)) +
-                          " s (does loading it run a long computation, or wait for input?)" + with_output(s));
+    if (deadline_seconds > 0 && s.pid > 0) {
+      wait_ms = 250;
+      if (Clock::now() - looked >= std::chrono::milliseconds(250)) {
+        looked = Clock::now();
+        const harness::TreeTimes now = harness::tree_times(s.pid);
+        account.look(now, seconds_since(start));
+        harness::WorkSoFar so_far;
+        so_far.wall = seconds_since(start);
+        so_far.cpu = now.cpu - before.cpu;
+        so_far.known = now.queued_known;
+        so_far.looked_a_second = account.seconds() > 1;
+        so_far.account = &account;
+        const harness::LimitVerdict v = harness::judge_work(limit, so_far);
+        if (v.stop) {
+          drain_output(s);
+          const std::string head = "the implementation's process (" + program_name(argv_) + ") did not answer " +
+                                   what + " within " + std::to_string(static_cast<int>(deadline_seconds)) + " s";
+          if (v.machine)
+            throw RemoteMachineFault("the grader's machine, not the implementation: " + head + ": it " + v.detail +
+                                     ". Fix: run it again on a less busy machine");
+          throw RemoteError(head + " (of CPU time; does loading it run a long computation, or wait for input?): it " +
+                            v.detail + with_output(s));
+        }
       }
-      wait_ms = std::min(1000, static_cast<int>(left * 1000) + 1);
     }
     const int n_fds = s.output >= 0 ? 2 : 1;
     if (::poll(fds, n_fds, wait_ms) < 0 && errno != EINTR)

@@ -10,6 +10,7 @@
 
 #include "harness/remote/call_memo.hpp"
 #include "harness/engine/check.hpp"
+#include "harness/isolation/work_limit.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -34,6 +35,13 @@ inline constexpr int kMaxWorkers = 256;  // the isolation's --jobs limit
 class RemoteError : public ProcessFailure {
  public:
   using ProcessFailure::ProcessFailure;
+};
+
+// The grader's machine, not the implementation, stopped it: the sandbox did not start its process,
+// or the kernel's accounting says the machine starved the task a reply waited on.
+class RemoteMachineFault : public RemoteError {
+ public:
+  using RemoteError::RemoteError;
 };
 
 // The implementation's own code raised an error for a call: the message carries its traceback.
@@ -114,7 +122,12 @@ class Connection {
   const std::vector<std::string>& argv() const { return argv_; }
   const std::string& language() const { return language_; }
   bool sessions() const { return sessions_; }
+  // The handshake's limit, judged like a check's (harness/isolation/work_limit.hpp): the CPU time of
+  // the implementation's process tree, a wall guard for one that sleeps, and the machine's fault
+  // only when the kernel's accounting says it starved the task the handshake waits on. `reply_limit`
+  // holds the guard's factors of every deadline on a reply (its CPU seconds are each deadline's).
   double handshake_seconds = 60;
+  harness::WorkLimit reply_limit;
 
  private:
   // Per worker slot, shared between the process that started the servers and the checks' processes

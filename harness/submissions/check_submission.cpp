@@ -158,6 +158,10 @@ int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string
   SubjectSet s;
   try {
     s = protocol::remote_subject(conn, name, info);
+  } catch (const protocol::RemoteMachineFault& e) {  // the sandbox, or a starved handshake: the machine's
+    std::cerr << "geomech check: " << file << ": " << inert_text(bounded_text(e.what())) << "\n";
+    out.machine_fault = inert_text(bounded_text(e.what()));
+    return kExitMachine;
   } catch (const std::exception& e) {
     // What the implementation said when it could not start is a stranger's text.
     std::cerr << "geomech check: " << file << ": " << inert_text(bounded_text(e.what())) << "\n";
@@ -238,6 +242,10 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   // The sandbox clears the environment: what the harness sets for the server is passed again (the
   // reply descriptor itself, 3, is inherited through bubblewrap like 0, 1 and 2).
   spec.env = {{"GEOMECH_SLOT_TABLE", protocol::slot_table_json()}, {"GEOMECH_REPLY_FD", "3"}};
+  // --memory-limit: the whole sandbox's memory (a cgroup's total as root; else each process's address
+  // space, harness/isolation/sandbox.hpp). Whether the sandbox started the server is bubblewrap's word.
+  spec.limits.memory_mb = r.check.memory_limit_mb;
+  spec.report_start = true;
   std::string language, why;
   std::vector<std::string> cmd = server_command(file, &language, &why);
   nlohmann::json notes;

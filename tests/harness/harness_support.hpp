@@ -1,18 +1,57 @@
 // What the harness tests of several rooms share: a scratch folder, a verdict by name, a quick
-// check configuration.
+// check configuration, a crowded core.
 #pragma once
 
 #include "harness/engine/check.hpp"
 
 #include <gtest/gtest.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sched.h>
 #include <string>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <vector>
 
 namespace gm::harness::harness_testing {
+
+// A machine busier than its cores: `n` processes spinning on the first CPU this process may use,
+// with this process (and so the children it forks) pinned there too; undone at the end of scope.
+class CrowdedCore {
+ public:
+  explicit CrowdedCore(int n) {
+    ::sched_getaffinity(0, sizeof saved_, &saved_);
+    cpu_set_t one;
+    CPU_ZERO(&one);
+    for (int c = 0; c < CPU_SETSIZE; ++c)
+      if (CPU_ISSET(c, &saved_)) {
+        CPU_SET(c, &one);
+        break;
+      }
+    ::sched_setaffinity(0, sizeof one, &one);
+    for (int i = 0; i < n; ++i) {
+      const pid_t pid = ::fork();
+      if (pid == 0) {
+        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
+        for (unsigned long x = 0;; ++x) asm volatile("" : "+r"(x));  // spin, not optimised away
+      }
+      if (pid > 0) burners_.push_back(pid);
+    }
+  }
+  ~CrowdedCore() {
+    for (pid_t pid : burners_) ::kill(pid, SIGKILL);
+    for (pid_t pid : burners_) ::waitpid(pid, nullptr, 0);
+    ::sched_setaffinity(0, sizeof saved_, &saved_);
+  }
+
+ private:
+  cpu_set_t saved_{};
+  std::vector<pid_t> burners_;
+};
 
 inline std::filesystem::path temp_dir() {
   std::string t = (std::filesystem::temp_directory_path() / "geomech-harness-XXXXXX").string();

@@ -7,6 +7,10 @@ import time
 
 if os.environ.get("GEOMECH_TEST_SLOW_IMPORT"):
     time.sleep(float(os.environ["GEOMECH_TEST_SLOW_IMPORT"]))
+if os.environ.get("GEOMECH_TEST_HEAVY_IMPORT"):  # that many seconds of CPU before the handshake
+    _start = time.process_time()
+    while time.process_time() - _start < float(os.environ["GEOMECH_TEST_HEAVY_IMPORT"]):
+        pass
 
 _calls = 0
 

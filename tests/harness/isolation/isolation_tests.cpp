@@ -4,6 +4,8 @@
 #include "harness/engine/check.hpp"
 #include "harness/isolation/isolate.hpp"
 #include "harness/isolation/process_cpu.hpp"
+#include "harness/isolation/run_queue_account.hpp"
+#include "harness/isolation/work_limit.hpp"
 #include "harness/trajectories/reference_flow.hpp"
 #include "harness/reports/report.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
@@ -94,40 +96,6 @@ TEST(Isolation, EachWayOfDyingIsToldApart) {
   EXPECT_EQ(r[6].payload.size(), std::size_t(1) << 20);
 }
 
-// A machine busier than its cores: `n` processes spinning on the first CPU this process may use,
-// with this process (and so the children it forks) pinned there too; undone at the end of scope.
-class CrowdedCore {
- public:
-  explicit CrowdedCore(int n) {
-    ::sched_getaffinity(0, sizeof saved_, &saved_);
-    cpu_set_t one;
-    CPU_ZERO(&one);
-    for (int c = 0; c < CPU_SETSIZE; ++c)
-      if (CPU_ISSET(c, &saved_)) {
-        CPU_SET(c, &one);
-        break;
-      }
-    ::sched_setaffinity(0, sizeof one, &one);
-    for (int i = 0; i < n; ++i) {
-      const pid_t pid = ::fork();
-      if (pid == 0) {
-        ::prctl(PR_SET_PDEATHSIG, SIGKILL);
-        for (volatile unsigned long x = 0;; x = x + 1) {}
-      }
-      if (pid > 0) burners_.push_back(pid);
-    }
-  }
-  ~CrowdedCore() {
-    for (pid_t pid : burners_) ::kill(pid, SIGKILL);
-    for (pid_t pid : burners_) ::waitpid(pid, nullptr, 0);
-    ::sched_setaffinity(0, sizeof saved_, &saved_);
-  }
-
- private:
-  cpu_set_t saved_{};
-  std::vector<pid_t> burners_;
-};
-
 // `seconds` of this process's CPU time, spent computing.
 std::string compute_for(double seconds) {
   const double start = self_cpu_seconds();
@@ -191,6 +159,126 @@ TEST(Isolation, StarvedIsNotWaiting) {
   r = run_isolated({[] { return compute_for(0.4); }}, o);
   EXPECT_EQ(r[0].status, TaskResult::Status::Busy) << r[0].detail;
   EXPECT_NE(r[0].detail.find("the machine starved it"), std::string::npos) << r[0].detail;
+}
+
+// Whom a wait is owed to, from the kernel's accounting of each task (harness/isolation/
+// run_queue_account.hpp), on accounts written here: no timing, no machine.
+TreeTimes tasks_at(const std::vector<TaskTimes>& times, int cores) {
+  TreeTimes t;
+  t.queued_known = true;
+  for (std::size_t i = 0; i < times.size(); ++i) t.tasks[static_cast<pid_t>(100 + i)] = times[i];
+  for (int c = 0; c < cores; ++c) t.cpus.insert(c);
+  return t;
+}
+
+// `n` tasks looked at `looks` times, a second apart, each of them `cpu` and `queued` seconds of
+// every second.
+RunQueueAccount account_of(int n, double cpu, double queued, int cores, int looks = 10) {
+  RunQueueAccount a;
+  for (int k = 1; k <= looks; ++k)
+    a.look(tasks_at(std::vector<TaskTimes>(static_cast<std::size_t>(n), TaskTimes{k * cpu, k * queued}), cores), k);
+  return a;
+}
+
+TEST(RunQueueAccount, AHerdOfItsOwnIsNotAStarvedMachine) {
+  // One task queued 90% of the time, the tree's only one: the machine held its core.
+  const RunQueueAccount alone = account_of(1, 0.1, 0.9, 1);
+  EXPECT_NEAR(alone.queued_by_machine(), 9.0, 1e-9);
+  EXPECT_FALSE(alone.starves_itself());
+  // Ten tasks sharing one core, each 0.1 s on it and 0.9 s queued a second: summed, the queue is nine
+  // times the wall clock (what the old accounting called starved); per task, every second of the
+  // waited-on task's queue is explained by its siblings' CPU, and the tree starves itself.
+  const RunQueueAccount herd = account_of(10, 0.1, 0.9, 1);
+  EXPECT_NEAR(herd.tree_queued(), 90.0, 1e-9);
+  EXPECT_GT(herd.tree_queued(), herd.seconds()) << "the control: summed, the herd's queue outgrows the wall clock";
+  EXPECT_NEAR(herd.queued_by_machine(), 0.0, 1e-9);
+  EXPECT_TRUE(herd.starves_itself());
+  EXPECT_LE(herd.waited_runnable(), herd.seconds());
+  // Two tasks on two cores, each queued 90% by others: as many runnable as cores, the machine's.
+  const RunQueueAccount pair = account_of(2, 0.1, 0.9, 2);
+  EXPECT_NEAR(pair.queued_by_machine(), 8.0, 1e-9);
+  EXPECT_FALSE(pair.starves_itself());
+}
+
+TEST(WorkLimit, OnlyAStarvedTaskIsTheMachines) {
+  const WorkLimit limit{1, 1, 0, 4};  // 1 s of CPU, the wall guard at 1 s, the busy limit at 4 s
+  auto judge = [&](const RunQueueAccount& a, double wall, double cpu) {
+    WorkSoFar w;
+    w.wall = wall;
+    w.cpu = cpu;
+    w.known = true;
+    w.looked_a_second = true;
+    w.account = &a;
+    return judge_work(limit, w);
+  };
+  // Starved at the busy limit: the machine's.
+  const RunQueueAccount starved = account_of(1, 0.1, 0.9, 1, 5);
+  EXPECT_FALSE(judge(starved, 0.9, 0.1).stop);
+  EXPECT_FALSE(judge(starved, 3, 0.3).stop) << "runnable all along: it goes on past the wall guard";
+  const LimitVerdict busy = judge(starved, 5, 0.5);
+  EXPECT_TRUE(busy.stop && busy.machine) << busy.detail;
+  EXPECT_NE(busy.detail.find("the machine starved it"), std::string::npos) << busy.detail;
+  // A herd of its own: the code's, past its time, in words that say so.
+  const RunQueueAccount herd = account_of(10, 0.01, 0.5, 1, 2);
+  const LimitVerdict self = judge(herd, 2, 0.2);
+  EXPECT_TRUE(self.stop && !self.machine) << self.detail;
+  EXPECT_NE(self.detail.find("it starves itself"), std::string::npos) << self.detail;
+  EXPECT_NE(self.detail.find("more runnable tasks than its share of cores"), std::string::npos) << self.detail;
+  // Asleep past its time: the code's, at once.
+  const RunQueueAccount asleep = account_of(1, 0.001, 0.0, 1, 2);
+  const LimitVerdict waits = judge(asleep, 2, 0.002);
+  EXPECT_TRUE(waits.stop && !waits.machine) << waits.detail;
+  EXPECT_NE(waits.detail.find("asleep: it waits"), std::string::npos) << waits.detail;
+  // Its CPU time: the code's.
+  const LimitVerdict cpu = judge(starved, 1.5, 1.2);
+  EXPECT_TRUE(cpu.stop && !cpu.machine) << cpu.detail;
+  // No accounting: the wall guard, and nobody knows.
+  WorkSoFar unknown;
+  unknown.wall = 1.5;
+  const LimitVerdict blind = judge_work(limit, unknown);
+  EXPECT_TRUE(blind.stop && blind.machine) << blind.detail;
+  EXPECT_NE(blind.detail.find("is not known"), std::string::npos) << blind.detail;
+}
+
+// A herd of the task's own children, pinned to its core and waking together, while the task
+// sleeps (the attack of a submission that would pass its TIMEOUT off as a starved machine): the
+// code's TIMEOUT, in the kernel's words, even with the busy limit close. The control: summed over
+// the tree, its queue outgrows the wall clock, as the old accounting read it.
+TEST(Isolation, AHerdOfItsOwnChildrenStarvesItself) {
+  if (!tree_times(::getpid()).queued_known) GTEST_SKIP() << "this kernel keeps no schedstat";
+  IsolationOptions o;
+  o.timeout_seconds = 1;
+  o.wall_factor = 1;
+  o.wall_floor = 0;
+  o.busy_factor = 3;
+  const auto r = run_isolated({[]() -> std::string {
+                                cpu_set_t mine, one;
+                                ::sched_getaffinity(0, sizeof mine, &mine);
+                                CPU_ZERO(&one);
+                                for (int c = 0; c < CPU_SETSIZE; ++c)
+                                  if (CPU_ISSET(c, &mine)) {
+                                    CPU_SET(c, &one);
+                                    break;
+                                  }
+                                ::sched_setaffinity(0, sizeof one, &one);
+                                for (int k = 0; k < 16; ++k)
+                                  if (::fork() == 0) {
+                                    using Clock = std::chrono::steady_clock;
+                                    for (;;) {
+                                      const auto period = std::chrono::milliseconds(100);
+                                      std::this_thread::sleep_for(period - Clock::now().time_since_epoch() % period);
+                                      const auto start = Clock::now();
+                                      while (Clock::now() - start < std::chrono::milliseconds(30)) {
+                                      }
+                                    }
+                                  }
+                                for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));
+                              }},
+                              o);
+  ASSERT_EQ(r.size(), 1u);
+  EXPECT_EQ(r[0].status, TaskResult::Status::TimedOut) << r[0].detail;
+  EXPECT_NE(r[0].detail.find("it starves itself"), std::string::npos) << r[0].detail;
+  EXPECT_GT(r[0].queued_seconds, r[0].seconds) << "the control: summed, the herd's queue should outgrow the wall clock";
 }
 
 #if !defined(__SANITIZE_ADDRESS__)
