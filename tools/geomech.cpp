@@ -32,7 +32,7 @@
 #include "harness/isolation/submission_intake.hpp"
 #include "harness/engine/trajectory.hpp"
 #include "harness/submissions/check_submission.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/runner.hpp"
 #include "mutation/served_mutant.hpp"

@@ -1,5 +1,5 @@
 #include "harness/class/autograder.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include "core/data_path.hpp"
 #include "core/subject.hpp"
@@ -329,7 +329,7 @@ std::string lay_out_submission(const std::string& submission, const std::string&
     const auto top = entries(root);
     if (top.size() == 1 && fs::is_directory(fs::symlink_status(top[0], ec))) root = top[0];
   }
-  // The files of each language at the top of the submission (harness/submissions/languages.hpp).
+  // The files of each language at the top of the submission (harness/languages/language.hpp).
   std::map<const Language*, std::vector<fs::path>> files;
   for (const auto& e : entries(root))
     if (const Language* l = language_of_extension(e.extension().string())) files[l].push_back(e);

@@ -6,7 +6,7 @@
 #include "harness/class/grader_machine.hpp"
 #include "harness/remote/remote_subject.hpp"
 #include "harness/submissions/check_submission.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 #include "harness/remote/slot_names.hpp"
 #include "harness/class/gradebook.hpp"
 #include "harness/isolation/sandbox.hpp"

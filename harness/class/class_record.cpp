@@ -1,5 +1,5 @@
 #include "harness/class/class_record.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/report.hpp"

@@ -4,7 +4,7 @@
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/sandboxed_interpreter.hpp"
 #include "harness/remote/remote_subject.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include <filesystem>
 #include <unistd.h>

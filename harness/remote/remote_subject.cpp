@@ -857,20 +857,4 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   return s;
 }
 
-std::string on_path(const std::string& program) {
-  if (program.find('/') != std::string::npos) return program;
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "";
-  std::size_t from = 0;
-  for (;;) {
-    const std::size_t colon = dirs.find(':', from);
-    const std::string dir = dirs.substr(from, colon == std::string::npos ? std::string::npos : colon - from);
-    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / program;
-    if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return fs::absolute(candidate).string();
-    if (colon == std::string::npos) break;
-    from = colon + 1;
-  }
-  return "";
-}
-
 }  // namespace gm::protocol

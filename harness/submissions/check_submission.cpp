@@ -12,7 +12,7 @@
 #include "harness/remote/remote_subject.hpp"
 #include "harness/remote/slot_names.hpp"
 #include "harness/reports/report.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include <chrono>
 #include <filesystem>

@@ -1,7 +1,7 @@
 // harness/submissions/: the language table and what reads it. Each statement has its failing
 // side in the same test (an extension of no language, a file of no served language).
 #include "harness/class/class_mode.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include "tests/support/scratch.hpp"
 

@@ -72,4 +72,7 @@ std::string octave_server_program();
 std::string python_interpreter();
 std::string octave_interpreter();
 
+// A program as PATH finds it (absolute), or "" when it is not there; a name with a '/' as given.
+std::string on_path(const std::string& program);
+
 }  // namespace gm::harness

@@ -1,16 +1,15 @@
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include "core/data_path.hpp"
-#include "harness/remote/remote_subject.hpp"
 
 #include <cstdlib>
+#include <unistd.h>
 #include <string_view>
 #include <filesystem>
 
 namespace gm::harness {
 
 namespace fs = std::filesystem;
-using protocol::on_path;
 
 std::string python_interpreter() {
   // The user's interpreter: $GEOMECH_PYTHON, else the python3 that comes first on PATH (a
@@ -157,6 +156,22 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
     *why = "not a " + served + " file" + folder_in_words();
   }
   return {};
+}
+
+std::string on_path(const std::string& program) {
+  if (program.find('/') != std::string::npos) return program;
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t colon = dirs.find(':', from);
+    const std::string dir = dirs.substr(from, colon == std::string::npos ? std::string::npos : colon - from);
+    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / program;
+    if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return fs::absolute(candidate).string();
+    if (colon == std::string::npos) break;
+    from = colon + 1;
+  }
+  return "";
 }
 
 }  // namespace gm::harness
