@@ -612,41 +612,13 @@ std::vector<std::size_t> start_order_of(const SubjectSet& s, const std::vector<I
   return start;
 }
 
-// How values are written in the implementation's language (support/show.hpp).
-ValueStyle value_style_of(const std::string& language) {
-  ValueStyle v;
-  if (language == "python") {
-    v.nested_rows = true;
-    v.mp50_before = "mpf('";
-    v.mp50_after = "')";
-    v.rational_before = "Fraction(";
-    v.rational_between = ", ";
-    v.rational_after = ")";
-    v.vector_type = "{n}-list of {s}";
-    v.any_vector_type = "list of {s}";
-    v.matrix_type = "{n} list of rows of {s}";
-    v.any_matrix_type = "list of rows of {s}";
-    v.double_name = "float";
-    v.mp50_name = "mpf";
-    v.rational_name = "Fraction";
-  } else if (language == "octave") {
-    v.column_separator = "; ";  // a column is rows
-    v.vector_type = "{n}x1 column vector";
-    v.any_vector_type = "column vector";
-    v.matrix_type = "{n} matrix";
-    v.any_matrix_type = "matrix";
-    v.double_name = v.mp50_name = v.rational_name = "double";
-  }
-  return v;
-}
-
 }  // namespace
 
 CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckConfig& cfg) {
   const auto start = std::chrono::steady_clock::now();
   // Values and types in failures are written in the implementation's language (support/show.hpp);
   // the checks' processes inherit it.
-  value_style() = value_style_of(info.language);
+  value_style() = info.language->values;
   CheckResult result;
   result.subject = s.name;
   result.description = s.description;

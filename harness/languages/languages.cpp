@@ -1,108 +1,25 @@
+// The language table: its rows, in the order messages list them, and what finds a row.
 #include "harness/languages/language.hpp"
 
-#include "core/data_path.hpp"
+#include "harness/languages/rows.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
-#include <unistd.h>
-#include <string_view>
 #include <filesystem>
+#include <unistd.h>
 
 namespace gm::harness {
 
 namespace fs = std::filesystem;
 
-std::string python_interpreter() {
-  // The user's interpreter: $GEOMECH_PYTHON, else the python3 that comes first on PATH (a
-  // venv's or pyenv's), else Debian's.
-  if (const char* py = std::getenv("GEOMECH_PYTHON"); py && *py) {
-    const std::string found = on_path(py);
-    return found.empty() ? py : found;
-  }
-  if (const std::string found = on_path("python3"); !found.empty()) return found;
-  return "/usr/bin/python3";
-}
-
-std::string octave_interpreter() {
-  if (const char* oc = std::getenv("GEOMECH_OCTAVE"); oc && *oc) {
-    const std::string found = on_path(oc);
-    return found.empty() ? oc : found;
-  }
-  const std::string found = on_path("octave-cli");
-  return found.empty() ? "octave-cli" : found;
-}
-
-std::string octave_server_program() {
-  const char* which = std::getenv("GEOMECH_OCTAVE_SERVER");
-  const char* oc = std::getenv("GEOMECH_OCTAVE");
-  if ((which && std::string(which) == "script") || (oc && *oc)) return "";
-  std::error_code ec;
-  // The linked server links the system's Octave (/usr): a user whose octave-cli on PATH is another
-  // Octave (their own build, /opt/octave) gets that one, through the script server.
-  if (const std::string cli = on_path("octave-cli"); !cli.empty()) {
-    const std::string real = fs::weakly_canonical(cli, ec).string();
-    if (!ec && real.rfind("/usr/", 0) != 0) return "";
-  }
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (ec) return "";
-  const fs::path server = exe.parent_path() / "geomech-octave-server";
-  return fs::exists(server, ec) ? server.string() : "";
-}
-
-namespace {
-
-std::vector<std::string> python_server(const std::string& file) {
-  // -B: no __pycache__ written beside the student's file or in the source tree.
-  return {python_interpreter(), "-u", "-B", suite_data_path("student/python/geomech_server.py"), file};
-}
-
-std::vector<std::string> octave_server(const std::string& file) {
-  if (const std::string embedded = octave_server_program(); !embedded.empty()) return {embedded, file};
-  return {octave_interpreter(),
-          "--no-gui",
-          "--quiet",
-          "--no-init-file",
-          "--no-history",
-          suite_data_path("student/octave/geomech_server.m"),
-          file};
-}
-
-}  // namespace
-
 const std::vector<Language>& languages() {
-  static const std::vector<Language> table = [] {
-    Language cpp;
-    cpp.id = "c++";
-    cpp.name = "C++";
-    cpp.extensions = {".cpp", ".cc"};
-    cpp.route = Route::Compiled;
-    cpp.marker = "GEOMECH_STUDENT(";
-    cpp.files_beside = true;
-
-    Language python;
-    python.id = "python";
-    python.name = "Python";
-    python.extensions = {".py"};
-    python.route = Route::Served;
-    python.interpreter_variable = "GEOMECH_PYTHON";
-    python.system_interpreter = "/usr/bin/python3";
-    python.interpreter = python_interpreter;
-    python.start_probe = {"-c", "import sys"};
-    python.server = python_server;
-
-    Language octave;
-    octave.id = "octave";
-    octave.name = "Octave";
-    octave.extensions = {".m"};
-    octave.route = Route::Served;
-    octave.folder_of_files = true;
-    octave.interpreter_variable = "GEOMECH_OCTAVE";
-    octave.system_interpreter = "/usr/bin/octave-cli";
-    octave.interpreter = octave_interpreter;
-    octave.server = octave_server;  // its start is tried by its first check
-    return std::vector<Language>{cpp, python, octave};
-  }();
+  // A new language: its row's file in this room and its line here (docs/DEVELOPING.md, "Adding a language").
+  static const std::vector<Language> table{cpp_row(), python_row(), octave_row()};
   return table;
 }
+
+const Language& suite_language() { return languages().front(); }
 
 const Language* language_of_extension(std::string_view extension) {
   for (const auto& l : languages())
@@ -127,12 +44,20 @@ const Language* language_named(std::string_view id) {
   return nullptr;
 }
 
+namespace {
+
+std::string in_words(const std::vector<std::string>& all, const char* last) {
+  std::string out;
+  for (std::size_t i = 0; i < all.size(); ++i) out += (i == 0 ? "" : i + 1 == all.size() ? last : ", ") + all[i];
+  return out;
+}
+
+}  // namespace
+
 std::string extensions_in_words() {
   std::vector<std::string> all;
   for (const auto& l : languages()) all.insert(all.end(), l.extensions.begin(), l.extensions.end());
-  std::string out;
-  for (std::size_t i = 0; i < all.size(); ++i) out += (i == 0 ? "" : i + 1 == all.size() ? " or " : ", ") + all[i];
-  return out;
+  return in_words(all, " or ");
 }
 
 std::string folder_in_words() {
@@ -172,6 +97,47 @@ std::string on_path(const std::string& program) {
     from = colon + 1;
   }
   return "";
+}
+
+std::pair<int, int> line_and_column(const std::string& text, std::size_t offset) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n')
+      ++line, column = 1;
+    else
+      ++column;
+  }
+  return {line, column};
+}
+
+std::vector<std::pair<std::string, std::string>> slot_parameters(const SlotInfo& s) {
+  const std::string sig = s.signature;
+  const auto open = sig.find('(');
+  const std::string args = sig.substr(open + 1, sig.rfind(')') - open - 1);
+  std::vector<std::string> parts;
+  std::size_t depth = 0, start = 0;
+  for (std::size_t i = 0; i <= args.size(); ++i) {
+    if (i == args.size() || (args[i] == ',' && depth == 0)) {
+      parts.push_back(args.substr(start, i - start));
+      start = i + 1;
+    } else if (args[i] == '<') {
+      ++depth;
+    } else if (args[i] == '>') {
+      --depth;
+    }
+  }
+  std::vector<std::pair<std::string, std::string>> out;
+  for (auto q : parts) {
+    while (!q.empty() && q.back() == ' ') q.pop_back();
+    const auto sp = q.find_last_of(" &");
+    out.emplace_back(q, q.substr(sp + 1));
+  }
+  return out;
+}
+
+std::string slot_result_type(const SlotInfo& s) {
+  const std::string sig = s.signature;
+  return sig.substr(0, sig.find('('));
 }
 
 }  // namespace gm::harness

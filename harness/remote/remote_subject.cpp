@@ -4,6 +4,7 @@
 #include "harness/isolation/isolate.hpp"
 #include "harness/isolation/process_cpu.hpp"
 #include "harness/isolation/submission_intake.hpp"
+#include "harness/languages/language.hpp"
 #include "harness/remote/slot_names.hpp"
 
 #include "core/data_path.hpp"
@@ -817,27 +818,28 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   for (const auto& [scalar, slots] : d.notes)
     for (const auto& [slot, why] : slots) info.slot_notes[scalar][slot] = harness::inert_text(why);
   for (const auto& w : d.warnings) info.warnings.push_back(harness::inert_text(w));
-  if (d.language == "python" || d.language == "octave") info.language = d.language;
+  // The language the server speaks, as its row knows it (harness/languages/language.hpp); a
+  // language of no row keeps the suite's words.
+  const harness::Language* spoken = harness::language_named(d.language);
+  if (spoken) info.language = spoken;
   // Which interpreter ran it, and its version, as the server says.
   if (!d.interpreter.empty())
-    info.interpreter = harness::inert_text(d.interpreter) + (d.language_version.empty()
-                                                                 ? std::string()
-                                                                 : " (" +
-                                                                       std::string(d.language == "python"   ? "Python "
-                                                                                   : d.language == "octave" ? "Octave "
-                                                                                                            : "") +
-                                                                       harness::inert_text(d.language_version) + ")");
-  // "did you mean" for a function named like a slot but not as one (`energy`, `euler`), as for C++.
-  if (!info.source.empty() && !info.language.empty()) {
+    info.interpreter = harness::inert_text(d.interpreter) +
+                       (d.language_version.empty()
+                            ? std::string()
+                            : " (" + (spoken && !spoken->version_label.empty() ? spoken->version_label + " " : "") +
+                                  harness::inert_text(d.language_version) + ")");
+  // "did you mean" for a function named like a slot but not as one (`energy`, `euler`).
+  if (spoken && spoken->function_names && !info.source.empty()) {
     std::vector<std::string> names;
     std::error_code ec;
     if (std::filesystem::is_directory(info.source, ec)) {
-      for (const auto& e : std::filesystem::directory_iterator(info.source, ec))
-        if (e.path().extension() == ".m") names.push_back(e.path().stem().string());
+      if (spoken->folder_of_files)
+        for (const auto& e : std::filesystem::directory_iterator(info.source, ec))
+          if (e.path().extension() == spoken->extensions.front()) names.push_back(e.path().stem().string());
     } else {
       try {  // a stranger's file: read without following a link (harness/isolation/submission_intake.hpp)
-        const std::string text = harness::read_stranger_file(info.source);
-        names = info.language == "python" ? harness::python_function_names(text) : harness::octave_function_names(text);
+        names = spoken->function_names(harness::read_stranger_file(info.source));
       } catch (const harness::RefusedEntry&) {
         // not read: no advice
       }
@@ -851,8 +853,8 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
                        : std::string(scalar) == "mp50" ? s.mp != nullptr
                                                        : s.q != nullptr);
     if (!have && !info.scalar_unavailable.count(scalar))
-      info.scalar_unavailable[scalar] = d.language + " implementation provides nothing in " + scalar +
-                                        (d.language == "octave" ? " (Octave code is checked in double only)" : "");
+      info.scalar_unavailable[scalar] =
+          d.language + " implementation provides nothing in " + scalar + (spoken ? spoken->scalars_note : "");
   }
   return s;
 }

@@ -99,9 +99,9 @@ std::vector<Figure> report_figures(const CheckResult& r) {
 std::string slot_named(const SubjectInfo& info, const std::string& slot, const char* quote) {
   const std::string q(quote), name = q + slot + q;
   const std::string file = std::filesystem::path(info.source).filename().string();
-  if (info.language == "python") return "Python function " + name + (file.empty() ? "" : " in " + file);
-  if (info.language == "octave") return "Octave function " + name + (file.empty() ? "" : " in " + file);
-  return "slot " + name;
+  const Language& l = *info.language;
+  if (l.function_noun.empty()) return "slot " + name;
+  return l.function_noun + " " + name + (file.empty() ? "" : " in " + file);
 }
 
 std::string first_line(const std::string& s) {

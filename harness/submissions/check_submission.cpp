@@ -10,7 +10,6 @@
 #include "harness/program/library_flags.hpp"
 #include "harness/program/student_registry.hpp"
 #include "harness/remote/remote_subject.hpp"
-#include "harness/remote/slot_names.hpp"
 #include "harness/reports/report.hpp"
 #include "harness/languages/language.hpp"
 
@@ -146,14 +145,6 @@ int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string
     std::cerr << "geomech check: " << file << ": " << inert_text(bounded_text(e.what())) << "\n";
     return 2;
   }
-  if (language == "c++") {  // functions named like a slot but not one
-    try {
-      for (const auto& advice : slot_name_advice(cpp_function_names(read_stranger_file(file))))
-        info.warnings.push_back(advice);
-    } catch (const RefusedEntry&) {
-      // not read: no advice
-    }
-  }
   std::cerr << "geomech: " << language << " implementation " << file << " started and described itself in "
             << std::fixed << std::setprecision(2)
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
@@ -237,8 +228,9 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
     // Python or Octave: the interpreter and its libraries are in /usr, or shown read-only where they
     // are (a venv, pyenv: harness/isolation/sandboxed_interpreter.hpp); the server script and the student's
     // file (or folder) are the last two arguments.
-    if (cmd.size() > 2) {
-      const SandboxedInterpreter si = interpreter_for_sandbox(language, cmd[0]);
+    const Language* served = language_of(file);
+    if (cmd.size() > 2 && served && served->for_sandbox) {
+      const SandboxedInterpreter si = served->for_sandbox(cmd[0]);
       if (!si.error.empty()) {  // the grader's set-up, not the submission
         std::cerr << "geomech check: " << file << ": the grader's machine: " << si.error << "\n";
         out.machine_fault = "the grader's machine: " + si.error;

@@ -8,6 +8,7 @@
 #include "harness/remote/protocol_codec.hpp"
 #include "harness/remote/remote_subject.hpp"
 #include "harness/languages/language.hpp"
+#include "harness/languages/rows.hpp"
 
 #include <gtest/gtest.h>
 
