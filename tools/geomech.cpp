@@ -2,11 +2,13 @@
 //
 //   geomech check      run every property against a subject and print the report:
 //                      `geomech check FILE.cpp` for anyone's implementation (see docs/STUDENTS.md),
-//                      `geomech check FILE.py` / `FILE.m` for Python and Octave (docs/PROTOCOL.md)
+//                      `geomech check FILE.py` / `FILE.m` for Python and Octave (docs/PROTOCOL.md),
+//                      `geomech check FILE.ipynb` for a Jupyter notebook with either kernel
 //   geomech check-class  a folder of implementations, in parallel, with a summary table
 //   geomech check-trajectory  trajectory files written by programs in any language
 //   geomech list       the registered properties with their spec entries
 //   geomech slots      the subject slots an implementation can provide
+//   geomech languages  the language table: the languages a submission may be written in
 //   geomech subjects   the built-in subjects: the reference and its negative controls
 //   geomech catalogue  the spec catalogue: Markdown table, traceability check
 //   geomech mutants    mutation score: single-mistake variants of the reference through the properties
@@ -198,7 +200,10 @@ int run_languages(bool ids_only) {
     for (const auto& e : l.extensions) files += (files.empty() ? "" : " ") + e;
     if (l.folder_of_files) files += " (or a folder of " + l.extensions.front() + " files)";
     std::cout << l.id << "  " << l.name << ": " << files << "\n    "
-              << (l.route == harness::Route::Compiled ? "compiled with the suite" : "served behind the slot protocol");
+              << (l.route == harness::Route::Compiled ? "compiled with the suite"
+                  : l.route == harness::Route::Served
+                      ? "served behind the slot protocol"
+                      : "its code cells served as its kernel's language: " + harness::kernels_in_words());
     if (l.interpreter) std::cout << ", in " << l.interpreter() << " ($" << l.interpreter_variable << ")";
     std::cout << "\n";
   }
@@ -309,7 +314,9 @@ void add_check_command(CLI::App& app, CheckCommand& c) {
   (void)unused_app;
   auto* check = c.app = app.add_subcommand(
       "check", "check an implementation: a student's FILE.cpp, or a built-in subject (default: the reference)");
-  check->add_option("file", student_file, "a C++ file using GEOMECH_STUDENT (see docs/STUDENTS.md)");
+  check->add_option("file", student_file,
+                    "an implementation: a " + harness::extensions_in_words() + " file" +
+                        harness::folder_in_words().replace(0, 6, ", or") + " (docs/STUDENTS.md)");
   check->add_option("--subject", subject, "built-in subject when no file is given (default: reference)");
   check->add_flag("--verbose", bo.verbose, "print the compiler commands");
   check->add_flag("--rebuild", bo.force, "compile again even if nothing changed");
@@ -381,8 +388,8 @@ void add_class_commands(CLI::App& app, ClassCommands& c) {
       app.add_subcommand("check-class", "check every implementation in a folder, in parallel, with a summary table");
   klass
       ->add_option("folder", class_opts.dir,
-                   "the class folder: one .cpp, .py or .m file per student, or one folder per student (C++, Python, or "
-                   "Octave function files)")
+                   "the class folder: one " + harness::extensions_in_words() +
+                       " file per student, or one folder per student (holding one of them, or function files)")
       ->required();
   klass->add_option("--parallel", class_opts.jobs, "implementations checked at once (default: all cores)")
       ->check(CLI::Range(1, 256));

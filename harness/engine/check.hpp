@@ -11,6 +11,7 @@
 #include "harness/engine/first_fix.hpp"
 #include "harness/isolation/process_cpu.hpp"
 #include "harness/languages/language.hpp"
+#include "harness/languages/notebook.hpp"
 #include "properties/runner.hpp"
 
 #include <functional>
@@ -48,6 +49,11 @@ struct SubjectInfo {
   // function to fix in it ("Python function `casimir` in mine.py", or the slot in the suite's own),
   // writes values as it writes them, and its checks get longer by default (timeout_factor).
   const Language* language = &suite_language();
+  // A notebook (harness/languages/notebook.hpp): its code cells as they run, which the source readers
+  // read and the first fix names ("cell 4, In [3], line 2"), and what of it runs and what does not,
+  // in words, for the report. Empty for any other implementation.
+  std::vector<CodeCell> cells;
+  std::string notebook;
   // Behind the protocol (harness/remote/remote_subject.hpp): every slot call is a round trip to another
   // process, so the costly 50-digit runs of spec/thorough_only.json wait for --thorough.
   bool out_of_process = false;

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "harness/languages/language.hpp"
+#include "harness/languages/notebook.hpp"
 #include "properties/verdict.hpp"
 
 #include <map>
@@ -63,6 +64,7 @@ class FirstFixesSoFar {
  private:
   std::string source_;
   const Language* language_;
+  std::vector<CodeCell> cells_;  // a notebook's
   std::set<std::string> named_;
   // Which slots each slot of the source calls (harness/engine/source_calls.hpp), read at the first one.
   std::optional<std::map<std::string, std::set<std::string>>> calls_;

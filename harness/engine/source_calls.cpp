@@ -86,7 +86,14 @@ std::map<std::string, std::set<std::string>> slot_calls_in_text(const std::strin
   return out;
 }
 
-std::map<std::string, std::set<std::string>> slot_calls(const std::string& source, const Language& language) {
+std::map<std::string, std::set<std::string>> slot_calls(const std::string& source, const Language& language,
+                                                        const std::vector<CodeCell>& cells) {
+  if (!cells.empty()) {
+    std::map<std::string, std::set<std::string>> out;
+    for (const auto& c : cells)
+      for (const auto& [slot, callees] : slot_calls_in_text(c.code, language)) out[slot] = callees;  // the last wins
+    return out;
+  }
   std::error_code ec;
   if (fs::is_directory(fs::symlink_status(source, ec))) {
     // A folder of function files: each NAME<ext> holds the function NAME (and maybe subfunctions).

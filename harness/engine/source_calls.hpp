@@ -9,16 +9,20 @@
 #pragma once
 
 #include "harness/languages/language.hpp"
+#include "harness/languages/notebook.hpp"
 
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace gm::harness {
 
 // slot -> the other slots its body names in a call; `source` a file, or a folder of the language's
-// function files.
-std::map<std::string, std::set<std::string>> slot_calls(const std::string& source, const Language& language);
+// function files; a notebook's code cells when `cells` holds them (each cell read on its own: a
+// function's body ends with its cell).
+std::map<std::string, std::set<std::string>> slot_calls(const std::string& source, const Language& language,
+                                                        const std::vector<CodeCell>& cells = {});
 
 // The same, from source text already read (one file).
 std::map<std::string, std::set<std::string>> slot_calls_in_text(const std::string& text, const Language& language);

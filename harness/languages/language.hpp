@@ -2,7 +2,7 @@
 // knows of a language: its files, how a submission in it becomes a subject (compiled with the suite,
 // or started as a server behind the slot protocol, docs/PROTOCOL.md), the interpreter it runs in,
 // how its values and functions are written in reports, how its source is read for advice, how its
-// slots are listed (`geomech slots --<id>`).
+// slots are listed (`geomech slots --<id>`), and the notebook kernels whose cells are its code.
 // Everything that asks "which language is this, and what does that change" (the tool, the check,
 // the reports, class mode, the autograders, the grader's machine check) reads a row; nothing else
 // names a language (ctest layout.language_ids holds that). Adding a language is a row (a file of
@@ -25,12 +25,21 @@ namespace gm::harness {
 enum class Route {
   Compiled,  // compiled with the suite into a check program (trusted) or a protocol server (untrusted)
   Served,    // started in its interpreter as a protocol server
+  Notebook,  // a Jupyter notebook: its code cells, in the language its kernel names, served by that row
 };
 
 // A function a source defines, where its name begins (a byte offset into the text read).
 struct Definition {
   std::size_t offset = 0;
   std::string name;
+};
+
+// A notebook cell's code as its kernel runs it: the lines of the kernel's own syntax (an IPython line
+// magic, a shell escape) replaced so that the rest keeps its line numbers, and those lines said.
+struct CellCode {
+  std::string code;
+  std::vector<std::pair<int, std::string>> skipped;  // (line from 1, what it is: "a shell escape (!pip ...)")
+  std::string whole_cell;  // not empty: the whole cell is not code, and why ("a cell magic (%%time), ...")
 };
 
 struct Language {
@@ -94,6 +103,13 @@ struct Language {
   SandboxedInterpreter (*for_sandbox)(const std::string& interpreter) = nullptr;
   bool self_test_by_default = false;
   std::vector<std::string> (*server)(const std::string& file) = nullptr;
+
+  // ---- Notebooks (harness/languages/notebook.hpp): the kernels whose cells are code of this
+  // language (a notebook's kernelspec language, language_info name or kernelspec name, compared
+  // without case), and how a cell's lines of the kernel's own syntax are set aside. The server
+  // serves a notebook's cells file (a .json file, docs/PROTOCOL.md, "Notebooks") like a source file.
+  std::vector<std::string> kernels;
+  CellCode (*cell_code)(const std::string& source) = nullptr;
 };
 
 // Every language, in the order messages list them; the first is the suite's own (C++).
@@ -112,10 +128,16 @@ const Language* language_of(const std::string& path);
 // The language named by its id ("python"), or nullptr.
 const Language* language_named(std::string_view id);
 
-// The extensions in words, for messages: ".cpp, .cc, .py or .m"; and ", nor a folder of .m
+// The language whose code a notebook kernel runs (`kernel` as the notebook names it, any case), or nullptr.
+const Language* language_of_kernel(std::string_view kernel);
+
+// The extensions in words, for messages: ".cpp, .cc, .py, .m or .ipynb"; and ", nor a folder of .m
 // files" (the folder_of_files languages), to follow "not a ... file".
 std::string extensions_in_words();
 std::string folder_in_words();
+
+// The kernels notebooks may have, in words: "Python (python, python3) or Octave (octave)".
+std::string kernels_in_words();
 
 // How to start the server for a served file (a .py, a .m, or a folder of .m files); empty when
 // the file is of no served language. `language` receives its id, `why` what is missing.

@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 const std::vector<Language>& languages() {
   // A new language: its row's file in this room and its line here (docs/DEVELOPING.md, "Adding a language").
-  static const std::vector<Language> table{cpp_row(), python_row(), octave_row()};
+  static const std::vector<Language> table{cpp_row(), python_row(), octave_row(), notebook_row()};
   return table;
 }
 
@@ -44,6 +44,19 @@ const Language* language_named(std::string_view id) {
   return nullptr;
 }
 
+const Language* language_of_kernel(std::string_view kernel) {
+  auto lower = [](std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+  };
+  const std::string k = lower(kernel);
+  for (const auto& l : languages())
+    for (const auto& name : l.kernels)
+      if (lower(name) == k) return &l;
+  return nullptr;
+}
+
 namespace {
 
 std::string in_words(const std::vector<std::string>& all, const char* last) {
@@ -65,6 +78,13 @@ std::string folder_in_words() {
   for (const auto& l : languages())
     if (l.folder_of_files) out += ", nor a folder of " + l.extensions.front() + " files";
   return out;
+}
+
+std::string kernels_in_words() {
+  std::vector<std::string> rows;
+  for (const auto& l : languages())
+    if (!l.kernels.empty()) rows.push_back(l.name + " (" + in_words(l.kernels, ", ") + ")");
+  return in_words(rows, " or ");
 }
 
 std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why) {

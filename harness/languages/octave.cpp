@@ -1,6 +1,8 @@
 // Octave (MATLAB's language): a file of functions, or a folder with one function per file, served in
 // double by geomech-octave-server (Octave linked in) or student/octave/geomech_server.m in
-// octave-cli.
+// octave-cli; a notebook with an Octave kernel (octave_kernel, a metakernel) has its code cells
+// served the same way.
+#include "harness/languages/notebook.hpp"
 #include "harness/languages/rows.hpp"
 
 #include "core/data_path.hpp"
@@ -136,6 +138,43 @@ std::string octave_integrator_interface() {
          "  %                bounded_energy symplectic\n";
 }
 
+// The Octave kernel's own syntax in a cell (metakernel's): a cell magic (%%file on the first line)
+// sets the whole cell aside; a shell escape (!ls) at the start of a statement becomes an empty line,
+// so that every other line keeps its number. Its line magics (%plot inline) are comments in Octave.
+CellCode octave_cell_code(const std::string& source) {
+  CellCode out;
+  if (const std::string magic = cell_magic(source); !magic.empty()) {
+    out.whole_cell = "a cell magic (" + magic + "), run by the Octave kernel, not Octave";
+    return out;
+  }
+  const std::string code = octave_code_only(source);
+  int depth = 0, line_no = 0;
+  bool continued = false;
+  std::size_t at = 0;
+  while (at <= source.size()) {
+    const std::size_t end = std::min(source.find('\n', at), source.size());
+    const std::string line = source.substr(at, end - at), bare = code.substr(at, end - at);
+    ++line_no;
+    const std::size_t first = bare.find_first_not_of(" \t");
+    std::string replaced = line;
+    if (depth == 0 && !continued && first != std::string::npos && bare[first] == '!') {
+      std::string what = line.substr(first);
+      while (!what.empty() && (what.back() == '\r' || what.back() == ' ')) what.pop_back();
+      out.skipped.emplace_back(line_no, "a shell escape (" + what + ")");
+      replaced.clear();
+    }
+    for (const char c : bare) depth += (c == '(' || c == '[' || c == '{') - (c == ')' || c == ']' || c == '}');
+    if (depth < 0) depth = 0;
+    const std::size_t last = bare.find_last_not_of(" \t\r");
+    continued = last != std::string::npos && last >= 2 && bare.compare(last - 2, 3, "...") == 0;
+    out.code += replaced;
+    if (end == source.size()) break;
+    out.code += '\n';
+    at = end + 1;
+  }
+  return out;
+}
+
 ValueStyle octave_values() {
   ValueStyle v;
   v.column_separator = "; ";  // a column is rows
@@ -174,6 +213,8 @@ Language octave_row() {
   octave.interpreter = octave_interpreter;
   octave.for_sandbox = octave_in_sandbox;
   octave.server = octave_server;  // its start is tried by its first check
+  octave.kernels = {"octave"};
+  octave.cell_code = octave_cell_code;
   return octave;
 }
 

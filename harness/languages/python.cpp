@@ -1,5 +1,7 @@
 // Python: a file of functions named after the slots, served by student/python/geomech_server.py in
-// the user's interpreter, in float, mpmath.mpf at 50 digits and fractions.Fraction.
+// the user's interpreter, in float, mpmath.mpf at 50 digits and fractions.Fraction; a notebook with
+// a Python kernel (IPython's) has its code cells served the same way.
+#include "harness/languages/notebook.hpp"
 #include "harness/languages/rows.hpp"
 
 #include "core/data_path.hpp"
@@ -117,6 +119,52 @@ std::string python_integrator_interface() {
          "      # QP the pair (Q, P); h a float or an mpmath.mpf (steps are not run in rationals)\n";
 }
 
+// IPython's own syntax in a cell: a cell magic (%%time on the first line) sets the whole cell aside; a
+// line magic (%timeit f(x)) or a shell escape (!pip install mpmath), or one assigned (files = !ls), at
+// the start of a statement (not inside brackets, a string or after a backslash) becomes `pass` at
+// its indentation, so that every other line keeps its number and a block keeps a statement.
+CellCode python_cell_code(const std::string& source) {
+  CellCode out;
+  if (const std::string magic = cell_magic(source); !magic.empty()) {
+    out.whole_cell = "a cell magic (" + magic + "), run by IPython, not Python";
+    return out;
+  }
+  const std::string code = python_code_only(source);
+  static const std::regex assigned(R"(^[ \t]*[A-Za-z_][\w.]*[ \t]*=[ \t]*[%!])");
+  int depth = 0, line_no = 0;
+  bool continued = false;
+  std::size_t at = 0;
+  while (at <= source.size()) {
+    const std::size_t end = std::min(source.find('\n', at), source.size());
+    const std::string line = source.substr(at, end - at), bare = code.substr(at, end - at);
+    ++line_no;
+    const std::size_t first = bare.find_first_not_of(" \t");
+    std::string replaced = line;
+    if (depth == 0 && !continued && first != std::string::npos) {
+      char op = bare[first];  // '!' a shell escape, '%' a line magic, at the statement's start or assigned
+      std::smatch m;
+      if (op != '!' && op != '%' && std::regex_search(bare, m, assigned))
+        op = bare[static_cast<std::size_t>(m.length(0)) - 1];
+      if (op == '!' || op == '%') {
+        std::string what = line.substr(first);
+        while (!what.empty() && (what.back() == '\r' || what.back() == ' ')) what.pop_back();
+        out.skipped.emplace_back(line_no,
+                                 std::string(op == '!' ? "a shell escape" : "a line magic") + " (" + what + ")");
+        replaced = line.substr(0, first) + "pass";
+      }
+    }
+    for (const char c : bare) depth += (c == '(' || c == '[' || c == '{') - (c == ')' || c == ']' || c == '}');
+    if (depth < 0) depth = 0;
+    const std::size_t last = bare.find_last_not_of(" \t\r");
+    continued = last != std::string::npos && bare[last] == '\\';
+    out.code += replaced;
+    if (end == source.size()) break;
+    out.code += '\n';
+    at = end + 1;
+  }
+  return out;
+}
+
 ValueStyle python_values() {
   ValueStyle v;
   v.nested_rows = true;
@@ -167,6 +215,8 @@ Language python_row() {
   python.for_sandbox = python_in_sandbox;
   python.self_test_by_default = true;
   python.server = python_server;
+  python.kernels = {"python", "python3"};
+  python.cell_code = python_cell_code;
   return python;
 }
 

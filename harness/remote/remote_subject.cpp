@@ -833,7 +833,11 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   if (spoken && spoken->function_names && !info.source.empty()) {
     std::vector<std::string> names;
     std::error_code ec;
-    if (std::filesystem::is_directory(info.source, ec)) {
+    if (!info.cells.empty()) {  // a notebook: its code cells, as they run
+      for (const auto& c : info.cells)
+        for (auto& n : spoken->function_names(c.code))
+          if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(std::move(n));
+    } else if (std::filesystem::is_directory(info.source, ec)) {
       if (spoken->folder_of_files)
         for (const auto& e : std::filesystem::directory_iterator(info.source, ec))
           if (e.path().extension() == spoken->extensions.front()) names.push_back(e.path().stem().string());

@@ -101,7 +101,9 @@ std::string slot_named(const SubjectInfo& info, const std::string& slot, const c
   const std::string file = std::filesystem::path(info.source).filename().string();
   const Language& l = *info.language;
   if (l.function_noun.empty()) return "slot " + name;
-  return l.function_noun + " " + name + (file.empty() ? "" : " in " + file);
+  // In a notebook, the cell that defines it and the line there, as the notebook shows them.
+  const std::string where = info.cells.empty() ? std::string() : where_defined(info.cells, l, slot);
+  return l.function_noun + " " + name + (file.empty() ? "" : " in " + file) + (where.empty() ? "" : " (" + where + ")");
 }
 
 std::string first_line(const std::string& s) {

@@ -219,6 +219,10 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
   write_file(root / "cc" / "fay.cc", "GEOMECH_STUDENT(F);\n");
   EXPECT_EQ(lay_out_submission((root / "cc").string(), (root / "c5").string()), "fay");
   EXPECT_TRUE(fs::is_regular_file(root / "c5" / "fay" / "fay.cc"));
+  // A notebook uploaded alone is the submission, as a file of any language of the table.
+  write_file(root / "nb" / "week3.ipynb", "{}");
+  EXPECT_EQ(lay_out_submission((root / "nb").string(), (root / "c6").string()), "week3");
+  EXPECT_TRUE(fs::is_regular_file(root / "c6" / "week3.ipynb"));
   write_file(root / "two" / "a.py", "");
   write_file(root / "two" / "b.py", "");
   try {
@@ -226,8 +230,8 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
     ADD_FAILURE() << "two Python files were taken as one implementation";
   } catch (const std::runtime_error& e) {
     EXPECT_NE(std::string(e.what()).find(
-                  "the submission holds 0 .cpp, 0 .cc, 2 .py and 0 .m files; expected one .cpp or .cc file using "
-                  "GEOMECH_STUDENT"),
+                  "the submission holds 0 .cpp, 0 .cc, 2 .py, 0 .m and 0 .ipynb files; expected one .cpp or .cc file "
+                  "using GEOMECH_STUDENT"),
               std::string::npos)
         << e.what();
   }

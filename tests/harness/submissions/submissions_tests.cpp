@@ -32,7 +32,7 @@ TEST(LanguageTable, EveryExtensionNamesOneLanguage) {
   EXPECT_EQ(language_of("mine.cc")->id, "c++");
   EXPECT_EQ(language_of("mine.cpp"), language_of("mine.cc"));
   EXPECT_EQ(language_of("notes.txt"), nullptr);
-  EXPECT_EQ(extensions_in_words(), ".cpp, .cc, .py or .m");
+  EXPECT_EQ(extensions_in_words(), ".cpp, .cc, .py, .m or .ipynb");
 }
 
 TEST(LanguageTable, ServedLanguagesSayHowTheyStart) {
