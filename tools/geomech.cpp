@@ -251,7 +251,7 @@ int run_slots(const harness::Language& l) {
   if (!l.slots_heading.empty()) std::cout << l.slots_heading << "\n\n";
   if (!l.slots_fence.empty()) std::cout << "```" << l.slots_fence << "\n";
   for (const auto& s : subject_slots()) {
-    std::cout << l.signature(s) << "\n    " << l.comment << s.place << ": " << s.meaning << "\n";
+    std::cout << l.signature(s.name, s.signature) << "\n    " << l.comment << s.place << ": " << s.meaning << "\n";
     print_convention(s.name, "    " + l.comment);
   }
   std::cout << "\n";

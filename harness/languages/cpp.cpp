@@ -58,7 +58,7 @@ std::vector<Definition> cpp_definitions(const std::string& code) {
   return out;
 }
 
-std::string cpp_signature(const SlotInfo& s) { return std::string(s.name) + "  " + s.signature; }
+std::string cpp_signature(const std::string& slot, const std::string& signature) { return slot + "  " + signature; }
 
 std::string cpp_integrator_interface() {
   return "  struct Midpoint {\n"

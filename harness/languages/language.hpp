@@ -9,9 +9,8 @@
 // this room and its line in languages.cpp) and its server (docs/DEVELOPING.md, "Adding a language").
 #pragma once
 
-#include "core/subject.hpp"
 #include "harness/isolation/sandboxed_interpreter.hpp"
-#include "properties/support/show.hpp"
+#include "properties/support/value_style.hpp"
 
 #include <cstddef>
 #include <string>
@@ -61,7 +60,7 @@ struct Language {
   // Said when an implementation provides nothing in a scalar its language cannot compute in
   // (" (Octave code is checked in double only)"); empty: nothing to add.
   std::string scalars_note;
-  ValueStyle values;  // how values and their types are written (properties/support/show.hpp)
+  ValueStyle values;  // how values and their types are written (properties/support/value_style.hpp)
   // When --timeout is not given, a check of an implementation in it gets this many times the default
   // timeout: an interpreter computes 50-digit flows tens of times slower than compiled code, and one
   // case of a long flow can take longer than the 60 s a check gets (3 for Python; 6 for Octave, whose
@@ -87,7 +86,7 @@ struct Language {
   std::string slots_heading;
   std::string slots_fence;
   std::string comment;
-  std::string (*signature)(const SlotInfo& slot) = nullptr;
+  std::string (*signature)(const std::string& slot, const std::string& cpp_signature) = nullptr;
   std::string (*integrator_interface)() = nullptr;
 
   // ---- Running it (served languages): the variable that names the interpreter, the interpreter
@@ -149,10 +148,10 @@ std::string on_path(const std::string& program);
 // Line and column (from 1) of a byte offset into a text.
 std::pair<int, int> line_and_column(const std::string& text, std::size_t offset);
 
-// A slot's parameters as its C++ signature in the slot table writes them: (the parameter's whole text,
-// its name) each, "const Vec3<T>& Pi" and "Pi"; and its result type ("Vec3<T>"). For the rows'
-// signature printers.
-std::vector<std::pair<std::string, std::string>> slot_parameters(const SlotInfo& slot);
-std::string slot_result_type(const SlotInfo& slot);
+// A slot's parameters as its C++ signature in the slot table writes them ("Mat3<T>(const Vec3<T>& v)"):
+// (the parameter's whole text, its name) each, "const Vec3<T>& v" and "v"; and its result type
+// ("Mat3<T>"). For the rows' signature printers.
+std::vector<std::pair<std::string, std::string>> slot_parameters(const std::string& cpp_signature);
+std::string slot_result_type(const std::string& cpp_signature);
 
 }  // namespace gm::harness

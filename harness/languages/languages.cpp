@@ -130,8 +130,7 @@ std::pair<int, int> line_and_column(const std::string& text, std::size_t offset)
   return {line, column};
 }
 
-std::vector<std::pair<std::string, std::string>> slot_parameters(const SlotInfo& s) {
-  const std::string sig = s.signature;
+std::vector<std::pair<std::string, std::string>> slot_parameters(const std::string& sig) {
   const auto open = sig.find('(');
   const std::string args = sig.substr(open + 1, sig.rfind(')') - open - 1);
   std::vector<std::string> parts;
@@ -155,8 +154,7 @@ std::vector<std::pair<std::string, std::string>> slot_parameters(const SlotInfo&
   return out;
 }
 
-std::string slot_result_type(const SlotInfo& s) {
-  const std::string sig = s.signature;
+std::string slot_result_type(const std::string& sig) {
   return sig.substr(0, sig.find('('));
 }
 

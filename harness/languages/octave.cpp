@@ -120,10 +120,10 @@ std::string octave_type(const std::string& t) {
   return "scalar";
 }
 
-std::string octave_signature(const SlotInfo& s) {
+std::string octave_signature(const std::string& slot, const std::string& signature) {
   std::string out;
-  for (const auto& [type, name] : slot_parameters(s)) out += (out.empty() ? "" : ", ") + name + " %" + octave_type(type);
-  return "function r = " + std::string(s.name) + "(" + out + ")  % r: " + octave_type(slot_result_type(s));
+  for (const auto& [type, name] : slot_parameters(signature)) out += (out.empty() ? "" : ", ") + name + " %" + octave_type(type);
+  return "function r = " + slot + "(" + out + ")  % r: " + octave_type(slot_result_type(signature));
 }
 
 std::string octave_integrator_interface() {

@@ -100,10 +100,10 @@ std::string python_type(const std::string& t) {
   return "scalar";
 }
 
-std::string python_signature(const SlotInfo& s) {
+std::string python_signature(const std::string& slot, const std::string& signature) {
   std::string out;
-  for (const auto& [type, name] : slot_parameters(s)) out += (out.empty() ? "" : ", ") + name + ": " + python_type(type);
-  return "def " + std::string(s.name) + "(" + out + ") -> " + python_type(slot_result_type(s));
+  for (const auto& [type, name] : slot_parameters(signature)) out += (out.empty() ? "" : ", ") + name + ": " + python_type(type);
+  return "def " + slot + "(" + out + ") -> " + python_type(slot_result_type(signature));
 }
 
 std::string python_integrator_interface() {
