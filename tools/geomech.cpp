@@ -190,8 +190,12 @@ int run_list() {
 }
 
 // `geomech languages`: the language table, a row each: its id, name, files, route and what runs it.
-int run_languages(bool ids_only) {
+int run_languages(bool ids_only, bool listed) {
   for (const auto& l : harness::languages()) {
+    if (listed) {  // the flags of `geomech slots` (the suite's own language is its default)
+      if (l.signature && &l != &harness::suite_language()) std::cout << l.id << "\n";
+      continue;
+    }
     if (ids_only) {
       std::cout << l.id << " " << l.name << "\n";
       continue;
@@ -519,7 +523,7 @@ int run_trajectory_command(TrajectoryCommand& c) {
 struct InfoCommands {
   CLI::App *list = nullptr, *slots = nullptr, *bench = nullptr, *subjects = nullptr, *cat = nullptr,
            *langs = nullptr;
-  bool ids_only = false;
+  bool ids_only = false, listed = false;
   std::map<std::string, bool> slots_in;  // a language's id -> --<id> given (its listing)
   std::string bench_file;
   int bench_calls = 1000;
@@ -540,6 +544,7 @@ void add_info_commands(CLI::App& app, InfoCommands& c) {
   c.subjects = app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
   c.langs = app.add_subcommand("languages", "list the languages a submission may be written in (the language table)");
   c.langs->add_flag("--ids", c.ids_only, "only each language's id and name, one a line");
+  c.langs->add_flag("--listed", c.listed, "only the ids of the languages `geomech slots --<id>` lists, one a line");
 
   auto* cat = c.cat = app.add_subcommand("catalogue", "the spec catalogue");
   cat->add_flag("--markdown", c.markdown, "print the generated Markdown table (spec/CATALOGUE.md)");
@@ -549,10 +554,10 @@ void add_info_commands(CLI::App& app, InfoCommands& c) {
 
 // The status of the info command given, or -1 when none was.
 int run_info_command(InfoCommands& c) {
-  auto& [list, slots, bench, subjects, cat, langs, ids_only, slots_in, bench_file, bench_calls, markdown, trace,
+  auto& [list, slots, bench, subjects, cat, langs, ids_only, listed, slots_in, bench_file, bench_calls, markdown, trace,
          catalogue_path] = c;
   if (*list) return run_list();
-  if (*langs) return run_languages(ids_only);
+  if (*langs) return run_languages(ids_only, listed);
   if (*slots) {
     for (const auto& [id, given] : slots_in)
       if (given) return run_slots(*harness::language_named(id));

@@ -120,8 +120,11 @@ std::string item_output(const StudentView& s, const ScoreItem& i) {
       const std::string replay = replay_of(s, i.name);
       if (!replay.empty()) os << "\nReplay this failure: " << replay;
     } else if (i.state == "missing") {
+      std::string flags;  // the listings of the table's other languages: --python, --octave
+      for (const auto& l : languages())
+        if (l.signature && &l != &suite_language()) flags += (flags.empty() ? "--" : ", --") + l.id;
       os << "not provided: your submission has no function '" << i.name
-         << "' (`geomech slots` lists each slot's name and signature; --python, --octave for yours)";
+         << "' (`geomech slots` lists each slot's name and signature; " << flags << " for yours)";
     } else {
       os << i.state << ": " << i.detail;
     }
