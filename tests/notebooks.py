@@ -14,8 +14,9 @@ format's own library, Debian's python3-nbformat), not with the suite's reader:
       the check passes, and the report's "Notebook:" line names what nbformat finds set aside: the
       Markdown cells, the skip-execution cell, the cell magic and the shell escape, by number.
   cell_fails
-      a notebook whose third cell raises when run: exit 2, the message names that cell (with its
-      execution count) and the line in it, as nbformat numbers them.
+      notebooks whose third cell fails when run, in each kernel, by raising and by a syntax error:
+      exit 2, the message names that cell (with its execution count) and the line in it, as
+      nbformat numbers them.
   malformed
       notebooks broken one way each (not JSON, nbformat 3, no cells, a source that is a number, a
       cell without a type, an execution count that is text, no kernel, a kernel of no language the
@@ -124,20 +125,37 @@ def correct(geomech, out, notebook, options):
 
 def cell_fails(geomech, out):
     os.makedirs(out, exist_ok=True)
-    nb = nbformat.v4.new_notebook(metadata={"kernelspec": {"name": "python3", "language": "python",
-                                                           "display_name": "Python 3"}})
-    nb.cells = [nbformat.v4.new_markdown_cell("# raises"),
-                nbformat.v4.new_code_cell("def casimir(Pi):\n    return sum(p * p for p in Pi) / 2", execution_count=1),
-                nbformat.v4.new_code_cell("x = casimir([1, 2, 3])\ny = undefined_name + x", execution_count=4)]
-    path = os.path.join(out, "raises.ipynb")
-    nbformat.write(nb, path)
-    r = check(geomech, path, os.path.join(out, "report"), [])
-    said = r.stderr
-    if r.returncode != 2 or "raises.ipynb, cell 3, In [4] failed when run" not in said:
-        fail("expected exit 2 naming cell 3, In [4]: exit %d\n%s" % (r.returncode, said))
-    if 'File "raises.ipynb, cell 3, In [4]", line 2' not in said or "NameError" not in said:
-        fail("the traceback does not name line 2 of cell 3:\n" + said)
-    print("cell_fails: " + said.strip().splitlines()[0][:200])
+    python = {"kernelspec": {"name": "python3", "language": "python", "display_name": "Python 3"}}
+    octave = {"kernelspec": {"name": "octave", "language": "octave", "display_name": "Octave"}}
+    py_casimir = "def casimir(Pi):\n    return sum(p * p for p in Pi) / 2"
+    m_casimir = "function r = casimir(Pi)\n  r = sum(Pi .^ 2) / 2;\nend"
+    # (name, kernel, the first code cell, the third cell (the one that fails: its line 2), what the
+    # traceback or the interpreter's message says of that line)
+    cases = [
+        ("raises", python, py_casimir, "x = casimir([1, 2, 3])\ny = undefined_name + x",
+         ['File "raises.ipynb, cell 3, In [4]", line 2', "NameError"]),
+        ("syntax", python, py_casimir, "x = 1\ny = (x + ",
+         ['File "syntax.ipynb, cell 3, In [4]", line 2', "SyntaxError"]),
+        ("raises_octave", octave, m_casimir, "x = casimir([1; 2; 3]);\ny = undefined_name + x;",
+         ["at line 2 (raises_octave.ipynb, cell 3, In [4])", "'undefined_name' undefined"]),
+        ("syntax_octave", octave, m_casimir, "x = 1;\ny = (x + ;",
+         ["parse error near line 2 of file syntax_octave.ipynb, cell 3, In [4]"]),
+    ]
+    for name, kernel, first, failing, says in cases:
+        nb = nbformat.v4.new_notebook(metadata=kernel)
+        nb.cells = [nbformat.v4.new_markdown_cell("# raises"),
+                    nbformat.v4.new_code_cell(first, execution_count=1),
+                    nbformat.v4.new_code_cell(failing, execution_count=4)]
+        path = os.path.join(out, name + ".ipynb")
+        nbformat.write(nb, path)
+        r = check(geomech, path, os.path.join(out, "report-" + name), [])
+        said = r.stderr
+        if r.returncode != 2 or name + ".ipynb, cell 3, In [4] failed when run" not in said:
+            fail("%s: expected exit 2 naming cell 3, In [4]: exit %d\n%s" % (name, r.returncode, said))
+        for want in says:
+            if want not in said:
+                fail("%s: the message does not name line 2 of cell 3 (%r):\n%s" % (name, want, said))
+        print("cell_fails: %s: %s" % (name, said.strip().splitlines()[0][:200]))
 
 
 def malformed(geomech, out):
