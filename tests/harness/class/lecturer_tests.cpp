@@ -235,11 +235,14 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
     lay_out_submission((root / "two").string(), (root / "c4").string());
     ADD_FAILURE() << "two Python files were taken as one implementation";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find(
-                  "the submission holds 0 .cpp, 0 .cc, 2 .py, 0 .m and 0 .ipynb files; expected one .cpp or .cc file "
-                  "using GEOMECH_STUDENT"),
-              std::string::npos)
-        << e.what();
+    // Every extension of the table counted (two .py files, none of the others), then what is expected.
+    const std::string said = e.what();
+    EXPECT_NE(said.find("the submission holds 0 .cpp, 0 .cc, 2 .py, "), std::string::npos) << said;
+    for (const auto& l : languages())
+      for (const auto& x : l.extensions) {
+        EXPECT_NE(said.find((x == ".py" ? "2 " : "0 ") + x), std::string::npos) << x << ": " << said;
+      }
+    EXPECT_NE(said.find(" files; expected one .cpp or .cc file using GEOMECH_STUDENT"), std::string::npos) << said;
   }
   fs::remove_all(root);
 }
