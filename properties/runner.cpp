@@ -163,24 +163,25 @@ const RcEnv& rc_env() {
   return env;
 }
 
-// The type of a counterexample value in the student's language: Python and Octave
-// students never wrote Vec3<Real50>.
+// The type of a counterexample value in the student's language (support/show.hpp, ValueStyle): Python
+// and Octave students never wrote Vec3<Real50>.
 std::string in_language(const std::string& shown) {
-  const ShowStyle style = show_style();
-  if (style == ShowStyle::Cpp) return shown;
+  const ValueStyle& style = value_style();
+  if (style.vector_type.empty()) return shown;
   static const std::regex typed(R"((Vec|Mat)(\w+)<(\w+)>)");
   std::smatch m;
   auto scalar = [&](const std::string& S) {
-    if (style == ShowStyle::Octave) return std::string("double");
-    return S == "Rational" ? std::string("Fraction") : S == "double" ? std::string("float") : std::string("mpf");
+    return S == "Rational" ? style.rational_name : S == "double" ? style.double_name : style.mp50_name;
+  };
+  auto fill = [](std::string pattern, const std::string& n, const std::string& s) {
+    for (auto at = pattern.find("{n}"); at != std::string::npos; at = pattern.find("{n}")) pattern.replace(at, 3, n);
+    for (auto at = pattern.find("{s}"); at != std::string::npos; at = pattern.find("{s}")) pattern.replace(at, 3, s);
+    return pattern;
   };
   if (std::regex_match(shown, m, typed)) {
     const std::string kind = m[1], dims = m[2], S = scalar(m[3]);
-    if (style == ShowStyle::Octave)
-      return kind == "Vec" ? (dims == "X" ? "column vector" : dims + "x1 column vector")
-                           : (dims == "XxX" ? "matrix" : dims + " matrix");
-    return kind == "Vec" ? (dims == "X" ? "list of " : dims + "-list of ") + S
-                         : (dims == "XxX" ? "list of rows of " : dims + " list of rows of ") + S;
+    if (kind == "Vec") return fill(dims == "X" ? style.any_vector_type : style.vector_type, dims, S);
+    return fill(dims == "XxX" ? style.any_matrix_type : style.matrix_type, dims, S);
   }
   if (shown == "double" || shown == "Real50" || shown == "Rational") return scalar(shown);
   return shown;

@@ -1,10 +1,17 @@
-# The slot lists in docs/STUDENTS.md (Python, Octave/MATLAB) are the output of `geomech slots
-# --python` / `--octave`, pasted between marker lines, so that the documentation cannot drift from
-# the slot table the harness uses. Checks them, or rewrites them with -DUPDATE=1:
+# The slot lists in docs/STUDENTS.md (Python, Octave/MATLAB: every language of the table with a
+# listing) are the output of `geomech slots --python` / `--octave`, pasted between marker lines, so
+# that the documentation cannot drift from the slot table the harness uses. Checks them, or rewrites them with -DUPDATE=1:
 #   cmake -DGEOMECH=build/bin/geomech -DDOC=docs/STUDENTS.md [-DUPDATE=1] -P tests/docs_slots.cmake
 file(READ ${DOC} doc)
 set(stale "")
-foreach(language python octave)
+# Every language with a listing (`geomech languages --listed`): a new row's block is due here too.
+execute_process(COMMAND ${GEOMECH} languages --listed RESULT_VARIABLE status OUTPUT_VARIABLE listed)
+if(NOT status EQUAL 0 OR NOT listed)
+  message(FATAL_ERROR "`geomech languages --listed` failed (${status})")
+endif()
+string(REGEX REPLACE "\n$" "" listed "${listed}")
+string(REPLACE "\n" ";" listed "${listed}")
+foreach(language IN LISTS listed)
   execute_process(COMMAND ${GEOMECH} slots --${language} RESULT_VARIABLE status OUTPUT_VARIABLE listing
                   ERROR_VARIABLE err)
   if(NOT status EQUAL 0)

@@ -59,7 +59,11 @@ function(grade name expect_score expect_text)
     set(results ${root}/grade/results/results.json)
   endif()
   foreach(f IN LISTS ARGN)
-    file(COPY ${examples}/submissions/${f} DESTINATION ${sub})
+    if(IS_ABSOLUTE ${f})
+      file(COPY ${f} DESTINATION ${sub})
+    else()
+      file(COPY ${examples}/submissions/${f} DESTINATION ${sub})
+    endif()
   endforeach()
   # Its scratch folder in a TMPDIR of the test's own, which it must leave as it found it.
   set(tmp ${OUT}/tmp-${name})
@@ -125,6 +129,11 @@ grade(bob 17.33 "INCOMPLETE, 17.33 of 20" bob.py)
 # dave, a folder of Octave function files: manakov_Omega (weight 1) wrong, and manakov_2_34
 # (weight 2) failing through it: 10 of 15 weights, 13.33 of 20, the first fix the callee.
 grade(dave 13.33 "first fix: Octave function 'manakov_Omega'" dave)
+# nina, a Jupyter notebook with a Python kernel (examples/students/bug_week3.ipynb): its code cells
+# are graded; of the assignment it writes hat, vee, omega_3_5, hamiltonian_3_4 and casimir right and
+# euler_3_8 (weight 2) wrong: 5 of 15 weights, 6.67 of 20, the first fix naming the cell and line.
+grade(nina 6.67 "Python function 'euler_3_8' in bug_week3.ipynb (cell 6, In [3], line 9) is wrong"
+      ${SOURCE}/examples/students/bug_week3.ipynb)
 if(PLATFORM STREQUAL "gradescope")
   grade(gina 0 "DOES NOT COMPILE" gina.cpp)
 else()
@@ -157,4 +166,4 @@ sys.exit(1 if wrong else 0)
 if(NOT leak EQUAL 0)
   message(FATAL_ERROR "hidden tests are shown on ${PLATFORM} (${results}):\n${said}")
 endif()
-message(STATUS "${PLATFORM}: autograder written, four submissions graded, every results.json valid; hidden tests hidden")
+message(STATUS "${PLATFORM}: autograder written, five submissions graded (one a notebook), every results.json valid; hidden tests hidden")

@@ -2,11 +2,13 @@
 //
 //   geomech check      run every property against a subject and print the report:
 //                      `geomech check FILE.cpp` for anyone's implementation (see docs/STUDENTS.md),
-//                      `geomech check FILE.py` / `FILE.m` for Python and Octave (docs/PROTOCOL.md)
+//                      `geomech check FILE.py` / `FILE.m` for Python and Octave (docs/PROTOCOL.md),
+//                      `geomech check FILE.ipynb` for a Jupyter notebook with either kernel
 //   geomech check-class  a folder of implementations, in parallel, with a summary table
 //   geomech check-trajectory  trajectory files written by programs in any language
 //   geomech list       the registered properties with their spec entries
 //   geomech slots      the subject slots an implementation can provide
+//   geomech languages  the language table: the languages a submission may be written in
 //   geomech subjects   the built-in subjects: the reference and its negative controls
 //   geomech catalogue  the spec catalogue: Markdown table, traceability check
 //   geomech mutants    mutation score: single-mistake variants of the reference through the properties
@@ -32,7 +34,7 @@
 #include "harness/isolation/submission_intake.hpp"
 #include "harness/engine/trajectory.hpp"
 #include "harness/submissions/check_submission.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/runner.hpp"
 #include "mutation/served_mutant.hpp"
@@ -187,53 +189,35 @@ int run_list() {
   return 0;
 }
 
+// `geomech languages`: the language table, a row each: its id, name, files, route and what runs it.
+int run_languages(bool ids_only, bool listed) {
+  for (const auto& l : harness::languages()) {
+    if (listed) {  // the flags of `geomech slots` (the suite's own language is its default)
+      if (l.signature && &l != &harness::suite_language()) std::cout << l.id << "\n";
+      continue;
+    }
+    if (ids_only) {
+      std::cout << l.id << " " << l.name << "\n";
+      continue;
+    }
+    std::string files;
+    for (const auto& e : l.extensions) files += (files.empty() ? "" : " ") + e;
+    if (l.folder_of_files) files += " (or a folder of " + l.extensions.front() + " files)";
+    std::cout << l.id << "  " << l.name << ": " << files << "\n    "
+              << (l.route == harness::Route::Compiled ? "compiled with the suite"
+                  : l.route == harness::Route::Served
+                      ? "served behind the slot protocol"
+                      : "its code cells served as its kernel's language: " + harness::kernels_in_words());
+    if (l.interpreter) std::cout << ", in " << l.interpreter() << " ($" << l.interpreter_variable << ")";
+    std::cout << "\n";
+  }
+  return 0;
+}
+
 int run_subjects() {
   std::cout << "reference\n    " << reference_subject().description << "\n";
   for (const auto& m : mutants()) std::cout << m.name << "\n    negative control: " << m.description << "\n";
   return 0;
-}
-
-// The slot's signature in Python or MATLAB terms, from the C++ signature text.
-std::string other_language_signature(const SlotInfo& s, bool python) {
-  const std::string sig = s.signature;
-  const auto open = sig.find('(', sig.find('>') == std::string::npos ? 0 : 0);
-  std::string result = sig.substr(0, open);
-  std::string args = sig.substr(open + 1, sig.rfind(')') - open - 1);
-  auto describe = [&](std::string t) -> std::string {
-    auto has = [&](const char* w) { return t.find(w) != std::string::npos; };
-    if (has("Vec3Pair")) return python ? "(3-list, 3-list)" : "{3x1, 3x1}";
-    if (has("MatXPair")) return python ? "(matrix, matrix)" : "{matrix, matrix}";
-    if (has("Vec3")) return python ? "3-list" : "3x1";
-    if (has("Vec6")) return python ? "6-list" : "6x1";
-    if (has("VecX")) return python ? "list" : "column";
-    if (has("Mat3")) return python ? "3x3 list of rows" : "3x3";
-    if (has("MatX")) return python ? "list of rows" : "matrix";
-    if (has("LieAlgebraId")) return "'so3'|'so4'|'sl2'";
-    if (has("int")) return "int";
-    return "scalar";
-  };
-  std::string out;
-  std::size_t depth = 0, start = 0;
-  std::vector<std::string> parts;
-  for (std::size_t i = 0; i <= args.size(); ++i) {
-    if (i == args.size() || (args[i] == ',' && depth == 0)) {
-      parts.push_back(args.substr(start, i - start));
-      start = i + 1;
-    } else if (args[i] == '<') {
-      ++depth;
-    } else if (args[i] == '>') {
-      --depth;
-    }
-  }
-  for (const auto& p : parts) {
-    auto q = p;
-    while (!q.empty() && q.back() == ' ') q.pop_back();
-    const auto sp = q.find_last_of(" &");
-    const std::string pname = q.substr(sp + 1);
-    out += (out.empty() ? "" : ", ") + pname + (python ? ": " : " %") + describe(q);
-  }
-  if (python) return "def " + std::string(s.name) + "(" + out + ") -> " + describe(result);
-  return "function r = " + std::string(s.name) + "(" + out + ")  % r: " + describe(result);
 }
 
 // Each slot's convention (fixed by the notes, or free and learned from the student's own
@@ -257,42 +241,31 @@ void print_convention(const std::string& slot, const std::string& prefix) {
   if (!c.empty()) print_wrapped("convention: " + c, prefix);
 }
 
-// The integrators' interface: its first line is prose (wrapped, as a comment in Python and
-// Octave), the rest code.
-void print_interface(const std::string& language, const std::string& comment) {
-  std::istringstream lines(harness::integrator_interface(language));
-  std::string line;
-  std::getline(lines, line);
-  print_wrapped(line, comment);
-  while (std::getline(lines, line)) std::cout << line << "\n";
+// The integrators' interface: its prose (wrapped, as a comment in the language's code block), then
+// the language's code.
+void print_interface(const harness::Language& l) {
+  print_wrapped(harness::integrator_state(), l.comment);
+  std::cout << l.integrator_interface();
 }
 
-int run_slots(const std::string& language) {
-  if (language.empty()) {
-    for (const auto& s : subject_slots()) {
-      std::cout << s.name << "  " << s.signature << "\n    " << s.place << ": " << s.meaning << "\n";
-      print_convention(s.name, "    ");
-    }
-    std::cout << "\n";
-    print_interface("cpp", "");
+// `geomech slots` (the suite's own language, with the index by concept) or `geomech slots --<id>`:
+// each slot's signature in the language, its place and meaning, its convention, then the
+// integrators' interface, all from the language's row.
+int run_slots(const harness::Language& l) {
+  if (!l.slots_heading.empty()) std::cout << l.slots_heading << "\n\n";
+  if (!l.slots_fence.empty()) std::cout << "```" << l.slots_fence << "\n";
+  for (const auto& s : subject_slots()) {
+    std::cout << l.signature(s.name, s.signature) << "\n    " << l.comment << s.place << ": " << s.meaning << "\n";
+    print_convention(s.name, "    " + l.comment);
+  }
+  std::cout << "\n";
+  print_interface(l);
+  if (!l.slots_fence.empty()) std::cout << "```\n";
+  if (&l == &harness::suite_language()) {
     std::cout << "\nBy concept (slot names are the notes' equation numbers):\n";
     for (const auto& c : harness::slot_concepts())
       std::cout << "  " << std::left << std::setw(40) << c.concept_name << c.slot << "\n";
-    return 0;
   }
-  const bool python = language == "python";
-  const std::string comment = python ? "# " : "% ";
-  std::cout << (python
-                    ? "## Python: functions named after the slots (scalars: float, mpmath.mpf, fractions.Fraction)\n\n"
-                    : "## Octave / MATLAB: functions named after the slots (double only)\n\n")
-            << "```" << (python ? "python" : "matlab") << "\n";
-  for (const auto& s : subject_slots()) {
-    std::cout << other_language_signature(s, python) << "\n    " << comment << s.place << ": " << s.meaning << "\n";
-    print_convention(s.name, "    " + comment);
-  }
-  std::cout << "\n";
-  print_interface(python ? "python" : "octave", comment);
-  std::cout << "```\n";
   return 0;
 }
 
@@ -345,7 +318,9 @@ void add_check_command(CLI::App& app, CheckCommand& c) {
   (void)unused_app;
   auto* check = c.app = app.add_subcommand(
       "check", "check an implementation: a student's FILE.cpp, or a built-in subject (default: the reference)");
-  check->add_option("file", student_file, "a C++ file using GEOMECH_STUDENT (see docs/STUDENTS.md)");
+  check->add_option("file", student_file,
+                    "an implementation: a " + harness::extensions_in_words() + " file" +
+                        harness::folder_in_words().replace(0, 6, ", or") + " (docs/STUDENTS.md)");
   check->add_option("--subject", subject, "built-in subject when no file is given (default: reference)");
   check->add_flag("--verbose", bo.verbose, "print the compiler commands");
   check->add_flag("--rebuild", bo.force, "compile again even if nothing changed");
@@ -417,8 +392,8 @@ void add_class_commands(CLI::App& app, ClassCommands& c) {
       app.add_subcommand("check-class", "check every implementation in a folder, in parallel, with a summary table");
   klass
       ->add_option("folder", class_opts.dir,
-                   "the class folder: one .cpp, .py or .m file per student, or one folder per student (C++, Python, or "
-                   "Octave function files)")
+                   "the class folder: one " + harness::extensions_in_words() +
+                       " file per student, or one folder per student (holding one of them, or function files)")
       ->required();
   klass->add_option("--parallel", class_opts.jobs, "implementations checked at once (default: all cores)")
       ->check(CLI::Range(1, 256));
@@ -546,8 +521,10 @@ int run_trajectory_command(TrajectoryCommand& c) {
 
 // The commands that describe the suite: list, slots, subjects, catalogue, and bench-protocol.
 struct InfoCommands {
-  CLI::App *list = nullptr, *slots = nullptr, *bench = nullptr, *subjects = nullptr, *cat = nullptr;
-  bool slots_python = false, slots_octave = false;
+  CLI::App *list = nullptr, *slots = nullptr, *bench = nullptr, *subjects = nullptr, *cat = nullptr,
+           *langs = nullptr;
+  bool ids_only = false, listed = false;
+  std::map<std::string, bool> slots_in;  // a language's id -> --<id> given (its listing)
   std::string bench_file;
   int bench_calls = 1000;
   bool markdown = false, trace = false;
@@ -557,13 +534,17 @@ struct InfoCommands {
 void add_info_commands(CLI::App& app, InfoCommands& c) {
   c.list = app.add_subcommand("list", "list the registered properties");
   auto* slots = c.slots = app.add_subcommand("slots", "list the subject slots an implementation can provide");
-  slots->add_flag("--python", c.slots_python, "as Python functions (docs/STUDENTS.md, Python section)");
-  slots->add_flag("--octave", c.slots_octave, "as Octave/MATLAB functions");
+  for (const auto& l : harness::languages())  // --<id> for every other language with a listing
+    if (l.signature && &l != &harness::suite_language())
+      slots->add_flag("--" + l.id, c.slots_in[l.id], "as " + l.name + " functions (docs/STUDENTS.md)");
   auto* bench = c.bench =
       app.add_subcommand("bench-protocol", "round-trip cost of a slot call to a .py/.m implementation");
   bench->add_option("file", c.bench_file, "a .py or .m implementation providing euler_3_8")->required();
   bench->add_option("--calls", c.bench_calls, "calls per measurement (default 1000)");
   c.subjects = app.add_subcommand("subjects", "list the built-in subjects (reference and negative controls)");
+  c.langs = app.add_subcommand("languages", "list the languages a submission may be written in (the language table)");
+  c.langs->add_flag("--ids", c.ids_only, "only each language's id and name, one a line");
+  c.langs->add_flag("--listed", c.listed, "only the ids of the languages `geomech slots --<id>` lists, one a line");
 
   auto* cat = c.cat = app.add_subcommand("catalogue", "the spec catalogue");
   cat->add_flag("--markdown", c.markdown, "print the generated Markdown table (spec/CATALOGUE.md)");
@@ -573,10 +554,15 @@ void add_info_commands(CLI::App& app, InfoCommands& c) {
 
 // The status of the info command given, or -1 when none was.
 int run_info_command(InfoCommands& c) {
-  auto& [list, slots, bench, subjects, cat, slots_python, slots_octave, bench_file, bench_calls, markdown, trace,
+  auto& [list, slots, bench, subjects, cat, langs, ids_only, listed, slots_in, bench_file, bench_calls, markdown, trace,
          catalogue_path] = c;
   if (*list) return run_list();
-  if (*slots) return run_slots(slots_python ? "python" : slots_octave ? "octave" : "");
+  if (*langs) return run_languages(ids_only, listed);
+  if (*slots) {
+    for (const auto& [id, given] : slots_in)
+      if (given) return run_slots(*harness::language_named(id));
+    return run_slots(harness::suite_language());
+  }
   if (*bench) return run_protocol_bench(bench_file, bench_calls);
   if (*subjects) return run_subjects();
   if (*cat) return run_catalogue(markdown, trace, catalogue_path);

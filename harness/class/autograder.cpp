@@ -1,5 +1,5 @@
 #include "harness/class/autograder.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include "core/data_path.hpp"
 #include "core/subject.hpp"
@@ -120,8 +120,11 @@ std::string item_output(const StudentView& s, const ScoreItem& i) {
       const std::string replay = replay_of(s, i.name);
       if (!replay.empty()) os << "\nReplay this failure: " << replay;
     } else if (i.state == "missing") {
+      std::string flags;  // the listings of the table's other languages: --python, --octave
+      for (const auto& l : languages())
+        if (l.signature && &l != &suite_language()) flags += (flags.empty() ? "--" : ", --") + l.id;
       os << "not provided: your submission has no function '" << i.name
-         << "' (`geomech slots` lists each slot's name and signature; --python, --octave for yours)";
+         << "' (`geomech slots` lists each slot's name and signature; " << flags << " for yours)";
     } else {
       os << i.state << ": " << i.detail;
     }
@@ -329,7 +332,7 @@ std::string lay_out_submission(const std::string& submission, const std::string&
     const auto top = entries(root);
     if (top.size() == 1 && fs::is_directory(fs::symlink_status(top[0], ec))) root = top[0];
   }
-  // The files of each language at the top of the submission (harness/submissions/languages.hpp).
+  // The files of each language at the top of the submission (harness/languages/language.hpp).
   std::map<const Language*, std::vector<fs::path>> files;
   for (const auto& e : entries(root))
     if (const Language* l = language_of_extension(e.extension().string())) files[l].push_back(e);

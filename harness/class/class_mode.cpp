@@ -6,7 +6,7 @@
 #include "harness/class/grader_machine.hpp"
 #include "harness/remote/remote_subject.hpp"
 #include "harness/submissions/check_submission.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 #include "harness/remote/slot_names.hpp"
 #include "harness/class/gradebook.hpp"
 #include "harness/isolation/sandbox.hpp"
@@ -154,6 +154,11 @@ std::string check_conditions(const ClassOptions& o, const std::string& extension
   // The interpreter that runs a served file: another one (GEOMECH_PYTHON set after a refusal, a
   // venv) checks it again.
   if (l && l->interpreter) text += '\0' + l->id + '\0' + l->interpreter();
+  // A notebook runs in the interpreter of the row its kernel names: any of them, so that another
+  // one checks it again too.
+  if (l && l->route == Route::Notebook)
+    for (const auto& k : languages())
+      if (!k.kernels.empty() && k.interpreter) text += '\0' + k.id + '\0' + k.interpreter();
   return text;
 }
 
@@ -676,6 +681,9 @@ void refuse_on_the_graders_machine(const ClassOptions& o, const Toolchain& tc,
     if (!impl.refused.empty()) continue;
     const Language* l = language_of_origin(impl.origin);
     if (l && l->route == Route::Served) needs.served.insert(l->id);
+    if (l && l->route == Route::Notebook)  // its kernel's row, any of them (not read here)
+      for (const auto& k : languages())
+        if (!k.kernels.empty() && k.route == Route::Served) needs.served.insert(k.id);
   }
   if (const auto problems = grader_machine_problems(needs); !problems.empty())
     throw MachineError(grader_machine_message(problems));

@@ -1,5 +1,5 @@
 #include "harness/class/class_record.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/report.hpp"
@@ -307,6 +307,7 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
     }
     const Language* language = language_named(row.report.value("language", "c++"));
     s.language = language ? language->name : "C++";  // the language table's name for it
+    if (row.report.contains("notebook")) s.language += " notebook";  // its code cells in that language
     for (const auto& v : row.report.value("verdicts", json::array())) {
       auto& c = s.areas[v.value("area", "?")];
       const std::string out = v.at("outcome").get<std::string>();

@@ -4,7 +4,7 @@
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/sandboxed_interpreter.hpp"
 #include "harness/remote/remote_subject.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include <filesystem>
 #include <unistd.h>
@@ -41,7 +41,8 @@ void try_interpreter(const Language& language, std::vector<std::string>& problem
   std::error_code ec;
   if (!fs::path(program).is_absolute() || !fs::exists(program, ec))
     return;  // not installed: each check says so in its own words (a missing interpreter is not a sandbox's fault)
-  const SandboxedInterpreter si = interpreter_for_sandbox(language.id, program);
+  if (!language.for_sandbox) return;
+  const SandboxedInterpreter si = language.for_sandbox(program);
   if (!si.error.empty()) {
     problems.push_back(si.error);
     return;

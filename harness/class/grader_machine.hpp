@@ -14,7 +14,7 @@ namespace gm::harness {
 struct GraderNeeds {
   bool untrusted = true;         // trusted runs in-process: nothing of the sandbox is needed
   std::string cache_dir;         // the compilers' cache (made if missing)
-  std::set<std::string> served;  // the served languages (harness/submissions/languages.hpp) to be checked
+  std::set<std::string> served;  // the served languages (harness/languages/language.hpp) to be checked
 };
 
 // Each problem in words: what fails, where, and the fix. Empty: the machine can check.

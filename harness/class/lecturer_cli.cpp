@@ -6,6 +6,7 @@
 #include "harness/program/build.hpp"
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/sandbox_cgroup.hpp"
+#include "harness/languages/language.hpp"
 #include "harness/program/cli.hpp"
 #include "harness/reports/report.hpp"
 
@@ -14,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 
@@ -122,7 +124,8 @@ void add_lecturer_commands(CLI::App& app) {
 
   // geomech self-test: the grader's machine, checked as a class run checks it before any student.
   struct SelfTest {
-    bool trusted = false, no_python = false, octave = false;
+    bool trusted = false;
+    std::map<std::string, bool> flag;  // a served language's id -> its flag (--no-<id> or --<id>) given
     std::string cache_dir;
   };
   auto st = std::make_shared<SelfTest>();
@@ -132,21 +135,33 @@ void add_lecturer_commands(CLI::App& app) {
                                "fix when something fails)");
   t->add_flag("--trusted", st->trusted, "checks will run in-process (nothing of the sandbox is needed)");
   t->add_option("--cache-dir", st->cache_dir, "the compilers' cache to try (default: the build tree's)");
-  t->add_flag("--no-python", st->no_python, "do not try the Python interpreter");
-  t->add_flag("--octave", st->octave, "try the Octave interpreter too");
+  // A flag per served language of the table: --no-<id> for one tried unless told not to, --<id> for
+  // one tried only when asked.
+  for (const auto& l : languages()) {
+    if (l.route != Route::Served) continue;
+    auto& given = st->flag[l.id];
+    if (l.self_test_by_default)
+      t->add_flag("--no-" + l.id, given, "do not try the " + l.name + " interpreter");
+    else
+      t->add_flag("--" + l.id, given, "try the " + l.name + " interpreter too");
+  }
   t->callback([st] {
     run_command([&] {
       GraderNeeds needs;
       needs.untrusted = !st->trusted;
       needs.cache_dir = st->cache_dir.empty() ? load_toolchain(default_toolchain_path()).cache_dir : st->cache_dir;
-      if (!st->no_python) needs.served.insert("python");
-      if (st->octave) needs.served.insert("octave");
+      std::string tried;
+      for (const auto& l : languages()) {
+        if (l.route != Route::Served || l.self_test_by_default == st->flag[l.id]) continue;
+        needs.served.insert(l.id);
+        // A language with a start probe is started in the sandbox; one without is shown to it.
+        tried += ", " + l.name + (l.start_probe.empty() ? " can be shown to it" : " starts in it");
+      }
       const auto problems = grader_machine_problems(needs);
       if (!problems.empty()) throw MachineError(grader_machine_message(problems));
       std::cout << "geomech self-test: this machine can check submissions"
                 << (needs.untrusted ? " sandboxed (the sandbox starts, the cache " + needs.cache_dir +
-                                          " is within its reach" + (needs.served.count("python") ? ", Python starts in it" : "") +
-                                          (needs.served.count("octave") ? ", Octave can be shown to it" : "") + ")"
+                                          " is within its reach" + tried + ")"
                                     : " in-process (trusted)")
                 << "\n";
       // What the kernel keeps of a sandbox here (a cgroup as root; per user namespace and per process

@@ -627,9 +627,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   const auto start = std::chrono::steady_clock::now();
   // Values and types in failures are written in the implementation's language (support/show.hpp);
   // the checks' processes inherit it.
-  show_style() = info.language == "python"   ? ShowStyle::Python
-                 : info.language == "octave" ? ShowStyle::Octave
-                                             : ShowStyle::Cpp;
+  value_style() = info.language->values;
   CheckResult result;
   result.subject = s.name;
   result.description = s.description;

@@ -10,6 +10,8 @@
 #include "harness/engine/check_events.hpp"
 #include "harness/engine/first_fix.hpp"
 #include "harness/isolation/process_cpu.hpp"
+#include "harness/languages/language.hpp"
+#include "harness/languages/notebook.hpp"
 #include "properties/runner.hpp"
 
 #include <functional>
@@ -43,10 +45,15 @@ struct SubjectInfo {
   // process tree): a check's limit counts the code's CPU, wherever it runs, and tells a starved
   // server from a sleeping one. Empty in process.
   std::function<harness::TreeTimes(int)> worker_times;
-  // "python" or "octave" for an implementation in another language: the report then names the
-  // function to fix in that language ("Python function `casimir` in mine.py") instead of the slot,
-  // and its checks get longer by default (timeout_factor).
-  std::string language;
+  // The language of the implementation (harness/languages/language.hpp): the report names the
+  // function to fix in it ("Python function `casimir` in mine.py", or the slot in the suite's own),
+  // writes values as it writes them, and its checks get longer by default (timeout_factor).
+  const Language* language = &suite_language();
+  // A notebook (harness/languages/notebook.hpp): its code cells as they run, which the source readers
+  // read and the first fix names ("cell 4, In [3], line 2"), and what of it runs and what does not,
+  // in words, for the report. Empty for any other implementation.
+  std::vector<CodeCell> cells;
+  std::string notebook;
   // Behind the protocol (harness/remote/remote_subject.hpp): every slot call is a round trip to another
   // process, so the costly 50-digit runs of spec/thorough_only.json wait for --thorough.
   bool out_of_process = false;
@@ -55,14 +62,10 @@ struct SubjectInfo {
   std::string interpreter;
 };
 
-// An interpreted implementation computes 50-digit flows tens of times slower than compiled code:
-// one case of a long 50-digit flow can take longer than the 60 s a check gets by default. When
-// --timeout is not given its checks get this many times the default timeout: 3 for Python, 6 for
-// Octave, whose calls cost about 5 times Python's (its JSON codec, an interpreted loop per call).
-// The case budget is not scaled, so a check still starts no new case after it.
-inline double timeout_factor(const SubjectInfo& info) {
-  return info.language == "octave" ? 6 : info.language == "python" ? 3 : 1;
-}
+// When --timeout is not given, the checks of an implementation in an interpreted language get its
+// row's multiple of the default timeout (Language::timeout_factor, and why). The case budget is not
+// scaled, so a check still starts no new case after it.
+inline double timeout_factor(const SubjectInfo& info) { return info.language->timeout_factor; }
 
 struct CheckConfig {
   std::vector<std::string> properties;  // only these (empty: all)

@@ -37,14 +37,15 @@ std::string slot_of_direct_check(const Verdict& v) {
   return {};
 }
 
-FirstFixesSoFar::FirstFixesSoFar(const SubjectInfo& info) : source_(info.source), language_(info.language) {}
+FirstFixesSoFar::FirstFixesSoFar(const SubjectInfo& info)
+    : source_(info.source), language_(info.language), cells_(info.cells) {}
 
 std::optional<FirstFixesSoFar::Named> FirstFixesSoFar::on_problem(const Verdict& v) {
   if (!is_problem(v.outcome) || !v.machine_fault.empty()) return std::nullopt;
   const std::string slot = slot_of_direct_check(v);
   if (slot.empty() || !named_.insert(slot).second) return std::nullopt;
   if (!calls_)
-    calls_ = source_.empty() ? std::map<std::string, std::set<std::string>>{} : slot_calls(source_, language_);
+    calls_ = source_.empty() ? std::map<std::string, std::set<std::string>>{} : slot_calls(source_, *language_, cells_);
   Named n{slot, ""};
   if (auto it = calls_->find(slot); it != calls_->end())
     for (const auto& c : it->second)
@@ -77,7 +78,7 @@ RootCauses root_causes(const CheckResult& r) {
   // A wrong slot that calls another wrong slot (read from the student's source, across the
   // files of a folder too) most likely fails through it: the callee is the first fix.
   if (rc.broken.size() > 1 && !r.info.source.empty()) {
-    const auto calls = slot_calls(r.info.source, r.info.language);
+    const auto calls = slot_calls(r.info.source, *r.info.language, r.info.cells);
     for (const auto& [slot, direct] : rc.broken)
       if (auto it = calls.find(slot); it != calls.end())
         for (const auto& callee : it->second)

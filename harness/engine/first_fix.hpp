@@ -8,6 +8,8 @@
 // Order: callees before their callers, then the slot most other failures call.
 #pragma once
 
+#include "harness/languages/language.hpp"
+#include "harness/languages/notebook.hpp"
 #include "properties/verdict.hpp"
 
 #include <map>
@@ -60,7 +62,9 @@ class FirstFixesSoFar {
   std::optional<Named> on_problem(const Verdict& v);
 
  private:
-  std::string source_, language_;
+  std::string source_;
+  const Language* language_;
+  std::vector<CodeCell> cells_;  // a notebook's
   std::set<std::string> named_;
   // Which slots each slot of the source calls (harness/engine/source_calls.hpp), read at the first one.
   std::optional<std::map<std::string, std::set<std::string>>> calls_;

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
-#include <regex>
 #include <vector>
 
 #include <fcntl.h>
@@ -38,58 +37,11 @@ std::string read_regular(const fs::path& p) {
 
 bool is_word(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
-// Comments and string literals blanked (same length), so that neither a comment naming a slot nor a
-// string counts as a call.
-std::string code_only(const std::string& text, const std::string& language) {
-  std::string out = text;
-  const bool python = language == "python", octave = language == "octave";
-  std::size_t i = 0;
-  auto blank = [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to && k < out.size(); ++k)
-      if (out[k] != '\n') out[k] = ' ';
-  };
-  while (i < text.size()) {
-    const char c = text[i];
-    if ((python && c == '#') || (octave && (c == '%' || c == '#')) ||
-        (!python && !octave && text.compare(i, 2, "//") == 0)) {
-      const std::size_t end = text.find('\n', i);
-      blank(i, end == std::string::npos ? text.size() : end);
-      i = end == std::string::npos ? text.size() : end;
-    } else if (!python && !octave && text.compare(i, 2, "/*") == 0) {
-      const std::size_t end = text.find("*/", i + 2);
-      blank(i, end == std::string::npos ? text.size() : end + 2);
-      i = end == std::string::npos ? text.size() : end + 2;
-    } else if (python && (text.compare(i, 3, "\"\"\"") == 0 || text.compare(i, 3, "'''") == 0)) {
-      const std::size_t end = text.find(text.substr(i, 3), i + 3);
-      blank(i + 3, end == std::string::npos ? text.size() : end);
-      i = end == std::string::npos ? text.size() : end + 3;
-    } else if (c == '"' || (c == '\'' && !octave)) {
-      // (In Octave a ' is also the transpose: only "..." strings are blanked there.)
-      std::size_t k = i + 1;
-      while (k < text.size() && text[k] != c && text[k] != '\n') k += text[k] == '\\' ? 2 : 1;
-      blank(i + 1, k);
-      i = k + 1;
-    } else {
-      ++i;
-    }
-  }
-  return out;
-}
-
 // Where each slot is defined: (offset, slot), sorted.
-std::vector<std::pair<std::size_t, std::string>> definitions(const std::string& code, const std::string& language) {
+std::vector<std::pair<std::size_t, std::string>> definitions(const std::string& code, const Language& language) {
   std::vector<std::pair<std::size_t, std::string>> out;
-  std::regex def;
-  if (language == "python")
-    def = std::regex(R"((^|\n)[ \t]*def[ \t]+([A-Za-z_]\w*)[ \t]*\()");
-  else if (language == "octave")
-    def = std::regex(R"((^|\n)[ \t]*function[ \t]+(?:[^\n=]*=[ \t]*)?([A-Za-z_]\w*)[ \t]*[\(\n;])");
-  else
-    def = std::regex(R"((^|[\s>*&])([A-Za-z_]\w*)[ \t]*\([^;{}]*\)[^;{}]*\{)");
-  for (auto it = std::sregex_iterator(code.begin(), code.end(), def); it != std::sregex_iterator(); ++it) {
-    const std::string name = (*it)[2].str();
-    if (is_slot_name(name)) out.emplace_back(static_cast<std::size_t>(it->position(2)), name);
-  }
+  for (const auto& d : language.definitions(code))
+    if (is_slot_name(d.name)) out.emplace_back(d.offset, d.name);
   std::sort(out.begin(), out.end());
   return out;
 }
@@ -121,10 +73,11 @@ std::set<std::string> calls_in(const std::string& body, const std::string& self)
 
 }  // namespace
 
-std::map<std::string, std::set<std::string>> slot_calls_in_text(const std::string& text, const std::string& language) {
-  const std::string code = code_only(text, language);
-  const auto defs = definitions(code, language);
+std::map<std::string, std::set<std::string>> slot_calls_in_text(const std::string& text, const Language& language) {
   std::map<std::string, std::set<std::string>> out;
+  if (!language.code_only || !language.definitions) return out;
+  const std::string code = language.code_only(text);
+  const auto defs = definitions(code, language);
   for (std::size_t i = 0; i < defs.size(); ++i) {
     const std::size_t from = defs[i].first + defs[i].second.size();
     const std::size_t to = i + 1 < defs.size() ? defs[i + 1].first : code.size();
@@ -133,22 +86,29 @@ std::map<std::string, std::set<std::string>> slot_calls_in_text(const std::strin
   return out;
 }
 
-std::map<std::string, std::set<std::string>> slot_calls(const std::string& source, const std::string& language) {
-  std::error_code ec;
-  const std::string lang = language == "python" || language == "octave" ? language : "c++";
-  if (fs::is_directory(fs::symlink_status(source, ec))) {
-    // An Octave folder: each NAME.m holds the function NAME (and maybe subfunctions).
+std::map<std::string, std::set<std::string>> slot_calls(const std::string& source, const Language& language,
+                                                        const std::vector<CodeCell>& cells) {
+  if (!cells.empty()) {
     std::map<std::string, std::set<std::string>> out;
+    for (const auto& c : cells)
+      for (const auto& [slot, callees] : slot_calls_in_text(c.code, language)) out[slot] = callees;  // the last wins
+    return out;
+  }
+  std::error_code ec;
+  if (fs::is_directory(fs::symlink_status(source, ec))) {
+    // A folder of function files: each NAME<ext> holds the function NAME (and maybe subfunctions).
+    std::map<std::string, std::set<std::string>> out;
+    if (!language.folder_of_files || !language.code_only || language.extensions.empty()) return out;
     for (const auto& e : fs::directory_iterator(source, ec)) {
-      if (e.path().extension() != ".m" || !e.is_regular_file(ec) || e.is_symlink(ec)) continue;
+      if (e.path().extension() != language.extensions.front() || !e.is_regular_file(ec) || e.is_symlink(ec)) continue;
       const std::string name = e.path().stem().string();
       if (!is_slot_name(name)) continue;
-      const std::string code = code_only(read_regular(e.path()), "octave");
+      const std::string code = language.code_only(read_regular(e.path()));
       for (const auto& c : calls_in(code, name)) out[name].insert(c);
     }
     return out;
   }
-  return slot_calls_in_text(read_regular(source), lang);
+  return slot_calls_in_text(read_regular(source), language);
 }
 
 }  // namespace gm::harness

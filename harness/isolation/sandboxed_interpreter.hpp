@@ -17,7 +17,14 @@ struct SandboxedInterpreter {
   std::string error;                   // why it cannot run in the sandbox (empty: it can)
 };
 
-// `language` "python" or "octave"; `interpreter` as server_command chose it.
-SandboxedInterpreter interpreter_for_sandbox(const std::string& language, const std::string& interpreter);
+// A Python interpreter (as a language's row chose it): asked where it lives (sys.prefix,
+// sys.base_prefix, the real executable). `fix` ends the error when a folder is out of the sandbox's
+// reach ("Set GEOMECH_PYTHON to ...").
+SandboxedInterpreter python_for_sandbox(const std::string& interpreter, const std::string& fix);
+
+// An interpreter that lives in an installation of its own (<prefix>/bin/program, as Octave's):
+// that installation, `what` naming it in an error ("the Octave installation").
+SandboxedInterpreter installation_for_sandbox(const std::string& interpreter, const std::string& what,
+                                              const std::string& fix);
 
 }  // namespace gm::harness

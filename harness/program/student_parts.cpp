@@ -77,7 +77,7 @@ int student_main(int argc, char** argv) {
     std::ifstream in(source);
     std::ostringstream text;
     text << in.rdbuf();
-    for (const auto& advice : harness::slot_name_advice(harness::cpp_function_names(text.str())))
+    for (const auto& advice : harness::slot_name_advice(info.language->function_names(text.str())))
       info.warnings.push_back(advice);
   }
 

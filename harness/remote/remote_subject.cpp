@@ -6,6 +6,7 @@
 #include "harness/isolation/run_queue_account.hpp"
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/submission_intake.hpp"
+#include "harness/languages/language.hpp"
 #include "harness/remote/slot_names.hpp"
 
 #include "core/data_path.hpp"
@@ -863,27 +864,32 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   for (const auto& [scalar, slots] : d.notes)
     for (const auto& [slot, why] : slots) info.slot_notes[scalar][slot] = harness::inert_text(why);
   for (const auto& w : d.warnings) info.warnings.push_back(harness::inert_text(w));
-  if (d.language == "python" || d.language == "octave") info.language = d.language;
+  // The language the server speaks, as its row knows it (harness/languages/language.hpp); a
+  // language of no row keeps the suite's words.
+  const harness::Language* spoken = harness::language_named(d.language);
+  if (spoken) info.language = spoken;
   // Which interpreter ran it, and its version, as the server says.
   if (!d.interpreter.empty())
-    info.interpreter = harness::inert_text(d.interpreter) + (d.language_version.empty()
-                                                                 ? std::string()
-                                                                 : " (" +
-                                                                       std::string(d.language == "python"   ? "Python "
-                                                                                   : d.language == "octave" ? "Octave "
-                                                                                                            : "") +
-                                                                       harness::inert_text(d.language_version) + ")");
-  // "did you mean" for a function named like a slot but not as one (`energy`, `euler`), as for C++.
-  if (!info.source.empty() && !info.language.empty()) {
+    info.interpreter = harness::inert_text(d.interpreter) +
+                       (d.language_version.empty()
+                            ? std::string()
+                            : " (" + (spoken && !spoken->version_label.empty() ? spoken->version_label + " " : "") +
+                                  harness::inert_text(d.language_version) + ")");
+  // "did you mean" for a function named like a slot but not as one (`energy`, `euler`).
+  if (spoken && spoken->function_names && !info.source.empty()) {
     std::vector<std::string> names;
     std::error_code ec;
-    if (std::filesystem::is_directory(info.source, ec)) {
-      for (const auto& e : std::filesystem::directory_iterator(info.source, ec))
-        if (e.path().extension() == ".m") names.push_back(e.path().stem().string());
+    if (!info.cells.empty()) {  // a notebook: its code cells, as they run
+      for (const auto& c : info.cells)
+        for (auto& n : spoken->function_names(c.code))
+          if (std::find(names.begin(), names.end(), n) == names.end()) names.push_back(std::move(n));
+    } else if (std::filesystem::is_directory(info.source, ec)) {
+      if (spoken->folder_of_files)
+        for (const auto& e : std::filesystem::directory_iterator(info.source, ec))
+          if (e.path().extension() == spoken->extensions.front()) names.push_back(e.path().stem().string());
     } else {
       try {  // a stranger's file: read without following a link (harness/isolation/submission_intake.hpp)
-        const std::string text = harness::read_stranger_file(info.source);
-        names = info.language == "python" ? harness::python_function_names(text) : harness::octave_function_names(text);
+        names = spoken->function_names(harness::read_stranger_file(info.source));
       } catch (const harness::RefusedEntry&) {
         // not read: no advice
       }
@@ -897,26 +903,10 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
                        : std::string(scalar) == "mp50" ? s.mp != nullptr
                                                        : s.q != nullptr);
     if (!have && !info.scalar_unavailable.count(scalar))
-      info.scalar_unavailable[scalar] = d.language + " implementation provides nothing in " + scalar +
-                                        (d.language == "octave" ? " (Octave code is checked in double only)" : "");
+      info.scalar_unavailable[scalar] =
+          d.language + " implementation provides nothing in " + scalar + (spoken ? spoken->scalars_note : "");
   }
   return s;
-}
-
-std::string on_path(const std::string& program) {
-  if (program.find('/') != std::string::npos) return program;
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "";
-  std::size_t from = 0;
-  for (;;) {
-    const std::size_t colon = dirs.find(':', from);
-    const std::string dir = dirs.substr(from, colon == std::string::npos ? std::string::npos : colon - from);
-    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / program;
-    if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return fs::absolute(candidate).string();
-    if (colon == std::string::npos) break;
-    from = colon + 1;
-  }
-  return "";
 }
 
 }  // namespace gm::protocol

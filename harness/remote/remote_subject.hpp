@@ -197,9 +197,6 @@ RemoteDescription parse_hello(const json& hello);
 // each process that calls a slot starts its own.
 SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::string& name, harness::SubjectInfo& info);
 
-// `program` found on PATH (absolute), itself if it names a path, "" if not found.
-std::string on_path(const std::string& program);
-
 // Writes all of `text` to `fd` (retrying short writes and EINTR); false if the descriptor is gone.
 // The client's requests and the C++ server's replies (harness/remote/protocol_server.cpp) both use it.
 bool write_all(int fd, const std::string& text);

@@ -71,52 +71,11 @@ std::string slot_convention(std::string_view slot) {
   return it == t.end() ? std::string() : it->second;
 }
 
-std::string integrator_interface(const std::string& language) {
-  const char* state =
-      "The state of the rigid body is (Pi, O): Pi the body angular momentum, O in SO(3) mapping body coordinates to "
-      "space coordinates, moving by dO/dt = O Omega_hat (2.10) with Omega = I^-1 Pi (3.5); Pi moves by (3.8). "
-      "Manakov's state is (M, O): M in so(n), O in SO(n), dO/dt = O Omega. The canonical steps act on (Q, P): "
-      "3-vectors "
-      "of (3.21), or n x n matrices of (3.23).";
-  std::string out = std::string("Integrators. ") + state + "\n";
-  if (language == "python") {
-    out +=
-        "  class Midpoint:                           # one class (or dict) per integrator, at module level\n"
-        "      name = \"midpoint\"\n"
-        "      claims = {\"order\": 2, \"casimir\": True}  # keys: order symmetric casimir energy orthogonality "
-        "spectrum\n"
-        "                                            #   poisson noether equivariant bounded_energy symplectic\n"
-        "      def rigid_body_step(I, x, h):         # I: 3-list, x[\"Pi\"]: 3-list, x[\"O\"]: 3x3 list of rows\n"
-        "          return {\"Pi\": Pi, \"O\": O}         # or the pair (Pi, O)\n"
-        "      # manakov_step(A, x, h): x[\"M\"], x[\"O\"] n x n; clebsch_step(I, QP, h), manakov_clebsch_step(A, QP, "
-        "h):\n"
-        "      # QP the pair (Q, P); h a float or an mpmath.mpf (steps are not run in rationals)\n";
-  } else if (language == "octave") {
-    out +=
-        "  function list = geomech_integrators()     % a struct array, one element per integrator\n"
-        "    list = struct('name', 'midpoint', 'claims', struct('order', 2, 'casimir', true), ...\n"
-        "                  'rigid_body_step', @midpoint_step);\n"
-        "  end\n"
-        "  function x = midpoint_step(I, x0, h)      % I: 3x1; x0.Pi: 3x1 column; x0.O: 3x3; return x.Pi, x.O\n"
-        "  % manakov_step(A, x, h): x.M, x.O n x n; clebsch_step(I, QP, h), manakov_clebsch_step(A, QP, h): QP = {Q, "
-        "P}\n"
-        "  % claims fields: order symmetric casimir energy orthogonality spectrum poisson noether equivariant\n"
-        "  %                bounded_energy symplectic\n";
-  } else {
-    out +=
-        "  struct Midpoint {\n"
-        "    static constexpr const char* name = \"midpoint\";\n"
-        "    static constexpr gm::student::Claims claims{.order = 2, .casimir = true};\n"
-        "    template <class T>\n"
-        "    static RigidBodyState<T> rigid_body_step(const Vec3<T>& I, const RigidBodyState<T>& x, const T& h);\n"
-        "    // also: manakov_step(const MatX<T>& A, const ManakovState<T>& x, const T& h) (x.M, x.O),\n"
-        "    //       clebsch_step(I, const Vec3Pair<T>& QP, h), manakov_clebsch_step(A, const MatXPair<T>& QP, h)\n"
-        "  };\n"
-        "  GEOMECH_STUDENT(MyRigidBody, Midpoint);   // the slots' type, then the integrators\n"
-        "  // claims: order symmetric casimir energy orthogonality spectrum poisson noether equivariant\n"
-        "  //         bounded_energy symplectic\n";
-  }
-  return out;
+std::string integrator_state() {
+  return "Integrators. The state of the rigid body is (Pi, O): Pi the body angular momentum, O in SO(3) mapping body "
+         "coordinates to space coordinates, moving by dO/dt = O Omega_hat (2.10) with Omega = I^-1 Pi (3.5); Pi moves "
+         "by (3.8). Manakov's state is (M, O): M in so(n), O in SO(n), dO/dt = O Omega. The canonical steps act on (Q, "
+         "P): 3-vectors of (3.21), or n x n matrices of (3.23).";
 }
 
 }  // namespace gm::harness

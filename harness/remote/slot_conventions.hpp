@@ -2,7 +2,7 @@
 // fix (the hat map (2.11), the pairing (2.15), the sign of (3.8), ...) and what they leave to the
 // student (the order and signs of the coordinates of so(n), the basis of sl(2, R)), which the
 // suite then learns from the student's own hat (properties/support/coordinates.hpp). Also the
-// integrator interface and its state, in each language.
+// integrators' state, in words.
 #pragma once
 
 #include <string>
@@ -14,8 +14,8 @@ namespace gm::harness {
 // others (their signature and formula say everything).
 std::string slot_convention(std::string_view slot);
 
-// The integrators' interface in "cpp", "python" or "octave": the step's signature, the state, what
-// O maps, dO/dt = O Omega_hat, and the claims.
-std::string integrator_interface(const std::string& language);
+// The integrators' interface in words, as every language shares it: the state, what O maps,
+// dO/dt = O Omega_hat; each language's row gives it as code (Language::integrator_interface).
+std::string integrator_state();
 
 }  // namespace gm::harness

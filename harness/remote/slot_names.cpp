@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <regex>
 #include <set>
 
 namespace gm::harness {
@@ -108,31 +107,6 @@ const std::vector<SlotConcept>& slot_concepts() {
        "rigid_body_step, manakov_step, clebsch_step, manakov_clebsch_step (in a struct with a name and claims)"},
   };
   return c;
-}
-
-std::vector<std::string> cpp_function_names(const std::string& source) {
-  // `name(` preceded by a return type: static members and free functions alike.
-  static const std::regex decl(R"((?:static|inline|constexpr|auto|void|T|double|int|float|>)\s+([A-Za-z_]\w*)\s*\()");
-  std::set<std::string> names;
-  for (auto it = std::sregex_iterator(source.begin(), source.end(), decl); it != std::sregex_iterator(); ++it)
-    names.insert((*it)[1].str());
-  return {names.begin(), names.end()};
-}
-
-std::vector<std::string> python_function_names(const std::string& source) {
-  static const std::regex decl(R"((?:^|\n)def\s+([A-Za-z_]\w*)\s*\()");
-  std::set<std::string> names;
-  for (auto it = std::sregex_iterator(source.begin(), source.end(), decl); it != std::sregex_iterator(); ++it)
-    names.insert((*it)[1].str());
-  return {names.begin(), names.end()};
-}
-
-std::vector<std::string> octave_function_names(const std::string& source) {
-  static const std::regex decl(R"((?:^|\n)\s*function\s+(?:\[?[\w\s,]*\]?\s*=\s*)?([A-Za-z_]\w*)\s*[\(\n;])");
-  std::set<std::string> names;
-  for (auto it = std::sregex_iterator(source.begin(), source.end(), decl); it != std::sregex_iterator(); ++it)
-    names.insert((*it)[1].str());
-  return {names.begin(), names.end()};
 }
 
 std::string closest_claim(const std::string& key, const std::vector<std::string>& known) {

@@ -9,20 +9,12 @@
 
 namespace gm::harness {
 
-// The names of the functions a C++ source defines as static members or free functions (a
-// lexical scan, good enough to give advice; never used to decide what is checked).
-std::vector<std::string> cpp_function_names(const std::string& source);
-
-// The functions a Python file defines at module level (`def name(`), and those of an Octave file
-// (`function [r] = name(` or `function name(`) or folder (one function per `name.m`).
-std::vector<std::string> python_function_names(const std::string& source);
-std::vector<std::string> octave_function_names(const std::string& source);
-
 // The claim an unknown claim key probably means ("symmetry" -> "symmetric"), or "" when none is
 // close; `known` lists the claim names.
 std::string closest_claim(const std::string& key, const std::vector<std::string>& known);
 
-// One line of advice per name that is not a slot but looks like one: "`energy` is not a slot
+// One line of advice per name that is not a slot but looks like one (the names a file defines, as its
+// language's row reads them, harness/languages/language.hpp): "`energy` is not a slot
 // name, so nothing checks it; did you mean `hamiltonian_3_4` ((3.4): h = Pi . I^-1 Pi / 2)?".
 std::vector<std::string> slot_name_advice(const std::vector<std::string>& names);
 

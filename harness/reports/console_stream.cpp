@@ -127,10 +127,9 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
               v.step_raised_where + ": " + first_line(v.step_raised) +
               " (the claims whose checks it stops are NOT VERIFIED; the rest NOT CHARACTERISED)";
       // A step written for floats, given 50-digit numbers (an mpf to numpy or math): its precision says so.
-      if (v.scalar == "mp50" && stub_.info.language == "python" && v.step_raised.find("TypeError") != std::string::npos)
-        lead +=
-            "\n  (a TypeError in 50 digits: a step that computes in double only says so with precision = \"double\" "
-            "in its class, and is then run in double only; docs/STUDENTS.md, \"A step's stated precision\")";
+      const Language& l = *stub_.info.language;
+      if (v.scalar == "mp50" && !l.double_only_error.empty() && v.step_raised.find(l.double_only_error) != std::string::npos)
+        lead += "\n  " + l.double_only_hint;
     }
     for (const auto& c : v.claims)
       if (c.claimed && !c.holds && v.step_raised.empty())

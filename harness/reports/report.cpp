@@ -99,9 +99,11 @@ std::vector<Figure> report_figures(const CheckResult& r) {
 std::string slot_named(const SubjectInfo& info, const std::string& slot, const char* quote) {
   const std::string q(quote), name = q + slot + q;
   const std::string file = std::filesystem::path(info.source).filename().string();
-  if (info.language == "python") return "Python function " + name + (file.empty() ? "" : " in " + file);
-  if (info.language == "octave") return "Octave function " + name + (file.empty() ? "" : " in " + file);
-  return "slot " + name;
+  const Language& l = *info.language;
+  if (l.function_noun.empty()) return "slot " + name;
+  // In a notebook, the cell that defines it and the line there, as the notebook shows them.
+  const std::string where = info.cells.empty() ? std::string() : where_defined(info.cells, l, slot);
+  return l.function_noun + " " + name + (file.empty() ? "" : " in " + file) + (where.empty() ? "" : " (" + where + ")");
 }
 
 std::string first_line(const std::string& s) {

@@ -24,6 +24,7 @@ void write_head(std::ostream& os, const CheckResult& r) {
   if (!r.description.empty()) os << " (" << r.description << ")";
   os << "\nseed " << r.seed << "; " << r.selection << "; residuals in units of eps * scale\n";
   if (!r.info.interpreter.empty()) os << "interpreter: " << inert_text(r.info.interpreter) << "\n";
+  if (!r.info.notebook.empty()) os << "notebook: " << inert_text(r.info.notebook) << "\n";
   for (const auto& w : r.info.warnings) os << "warning: " << w << "\n";
 }
 

@@ -70,7 +70,8 @@ json json_report(const CheckResult& r, const Catalogue* c) {
   j["integrators"] = integrators;
   // The slots wrong by their own check, the one most other failures call first, each with the line
   // the console's FIRST FIX prints (a class summary says them in words).
-  j["language"] = r.info.language.empty() ? "c++" : r.info.language;
+  j["language"] = r.info.language->id;
+  if (!r.info.notebook.empty()) j["notebook"] = r.info.notebook;  // a notebook's code cells, and what did not run
   if (!r.info.interpreter.empty()) j["interpreter"] = r.info.interpreter;
   json first_fix = json::array();
   {

@@ -34,6 +34,7 @@ void write_header(std::ostream& md, const CheckResult& r) {
     if (!src.has_filename()) src = src.parent_path();
     md << "Source: " << md_inline(src.filename().string()) << "\n\n";
   }
+  if (!r.info.notebook.empty()) md << "Notebook: " << md_inline(r.info.notebook) << "\n\n";
   if (!r.info.interpreter.empty()) md << "Interpreter: " << md_inline(r.info.interpreter) << "\n\n";
   md << "**Result: " << r.verdict_word() << "** - " << summary_counts(r) << ". Exit status " << r.exit_code()
      << ".\n\n";

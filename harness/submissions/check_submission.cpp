@@ -10,11 +10,12 @@
 #include "harness/program/library_flags.hpp"
 #include "harness/program/student_registry.hpp"
 #include "harness/remote/remote_subject.hpp"
-#include "harness/remote/slot_names.hpp"
 #include "harness/reports/report.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
+#include "harness/languages/notebook.hpp"
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -130,6 +131,37 @@ int run_student_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   return pr.exit_code;
 }
 
+// A notebook's code cells for its kernel's server: the notebook read as a stranger's file (within the
+// intake's limits, never through a link) and as nbformat 4 (harness/languages/notebook.hpp), its
+// cells file written in a private folder of ours, removed with this object. Throws NotebookError
+// (what is wrong, naming the notebook by its file name) or RefusedEntry.
+class NotebookCells {
+ public:
+  // `folder`: where the cells' imports are found ("" in the sandbox: nothing beside the notebook).
+  NotebookCells(const std::string& file, const std::string& folder) {
+    const std::string name = std::filesystem::path(file).filename().string();
+    notebook_ = read_notebook(name, read_stranger_file(file));
+    std::string pattern = (std::filesystem::temp_directory_path() / "geomech-notebook-XXXXXX").string();
+    if (::mkdtemp(pattern.data()) == nullptr) throw std::runtime_error("cannot make a folder in " + pattern);
+    folder_ = pattern;
+    cells_file_ = (std::filesystem::path(folder_) / (name + ".json")).string();
+    write_file_atomically(cells_file_, cells_file_text(notebook_, name, folder));
+  }
+  ~NotebookCells() {
+    std::error_code ec;
+    std::filesystem::remove_all(folder_, ec);
+  }
+  NotebookCells(const NotebookCells&) = delete;
+  NotebookCells& operator=(const NotebookCells&) = delete;
+  const Notebook& notebook() const { return notebook_; }
+  const Language& language() const { return *notebook_.language; }
+  const std::string& cells_file() const { return cells_file_; }
+
+ private:
+  Notebook notebook_;
+  std::string folder_, cells_file_;
+};
+
 // `geomech check mine.py` / `mine.m` / a folder of .m files: the implementation runs as a child
 // process speaking docs/PROTOCOL.md; the check runs here, with the remote subject.
 bool is_remote_file(const std::string& file) {
@@ -139,10 +171,11 @@ bool is_remote_file(const std::string& file) {
 
 // The check of an implementation that runs as its own process (`cmd`, speaking the protocol).
 // `build_notes` is what compiling it found (C++ in untrusted mode), `how` the reproduce command's options.
+// `notebook`: the notebook whose cells the server runs, when the implementation is one.
 int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string>& cmd, const std::string& language,
                        const nlohmann::json& build_notes, const std::string& how,
                        std::chrono::steady_clock::time_point t0, SubmissionOutcome& out,
-                       const std::string& name_in = "") {
+                       const std::string& name_in = "", const Notebook* notebook = nullptr) {
   const std::string& file = r.file;
   CheckCliOptions o = r.check;
   auto conn = std::make_shared<protocol::Connection>(cmd, language);
@@ -155,6 +188,11 @@ int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string
                                ? std::filesystem::path(file).lexically_normal().parent_path().filename().string()
                                : std::filesystem::path(file).lexically_normal().stem().string();
   student::apply_build_notes(info, build_notes);  // what the compiler found
+  if (notebook) {
+    info.language = notebook->language;
+    info.cells = notebook->cells;
+    info.notebook = set_aside_in_words(*notebook, file);
+  }
   SubjectSet s;
   try {
     s = protocol::remote_subject(conn, name, info);
@@ -165,15 +203,10 @@ int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string
   } catch (const std::exception& e) {
     // What the implementation said when it could not start is a stranger's text.
     std::cerr << "geomech check: " << file << ": " << inert_text(bounded_text(e.what())) << "\n";
+    if (notebook)  // a cell that failed when run, named by the server
+      std::cerr << "(a cell that only shows something, a plot, can carry the tag skip-execution: the suite, as "
+                   "Jupyter's nbclient, does not run it)\n";
     return 2;
-  }
-  if (language == "c++") {  // functions named like a slot but not one
-    try {
-      for (const auto& advice : slot_name_advice(cpp_function_names(read_stranger_file(file))))
-        info.warnings.push_back(advice);
-    } catch (const RefusedEntry&) {
-      // not read: no advice
-    }
   }
   std::cerr << "geomech: " << language << " implementation " << file << " started and described itself in "
             << std::fixed << std::setprecision(2)
@@ -200,6 +233,29 @@ int run_remote_check(const SubmissionRequest& r, SubmissionOutcome& out) {
     return 2;
   }
   return run_protocol_check(r, cmd, language, nlohmann::json(), "", t0, out);
+}
+
+// `geomech check week3.ipynb`: its code cells, in order, served by the row its kernel names.
+int run_notebook_check(const SubmissionRequest& r, SubmissionOutcome& out) {
+  const auto t0 = std::chrono::steady_clock::now();
+  std::error_code ec;
+  if (!std::filesystem::exists(r.file, ec)) {
+    std::cerr << "geomech check: " << r.file << ": no such file\n";
+    return 2;
+  }
+  std::optional<NotebookCells> nb;
+  try {
+    const std::filesystem::path folder = std::filesystem::absolute(r.file, ec).parent_path();
+    nb.emplace(r.file, folder.string());
+  } catch (const RefusedEntry& e) {
+    std::cerr << "geomech check: " << inert_text(e.what()) << "\n";
+    return 2;
+  } catch (const std::exception& e) {  // NotebookError: what is wrong in it
+    std::cerr << "geomech check: " << e.what() << "\n";
+    return 2;
+  }
+  return run_protocol_check(r, nb->language().server(nb->cells_file()), nb->language().id, nlohmann::json(), "", t0,
+                            out, "", &nb->notebook());
 }
 
 // Untrusted mode: the implementation runs as its own process in the sandbox, behind the
@@ -248,6 +304,18 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   spec.report_start = true;
   std::string language, why;
   std::vector<std::string> cmd = server_command(file, &language, &why);
+  // A notebook: its cells file, served by its kernel's row (nothing beside it is shown to the sandbox).
+  std::optional<NotebookCells> nb;
+  if (const Language* l = language_of(file); l && l->route == Route::Notebook) {
+    try {
+      nb.emplace(file, "");
+    } catch (const std::exception& e) {  // NotebookError: what is wrong in it
+      std::cerr << "geomech check: " << e.what() << "\n";
+      return 2;
+    }
+    cmd = nb->language().server(nb->cells_file());
+    language = nb->language().id;
+  }
   nlohmann::json notes;
   // What the sandbox sees of this machine besides the system: a private copy of the submission
   // and of the suite's server, under neutral names (harness/isolation/private_copy.hpp).
@@ -262,8 +330,9 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
     // Python or Octave: the interpreter and its libraries are in /usr, or shown read-only where they
     // are (a venv, pyenv: harness/isolation/sandboxed_interpreter.hpp); the server script and the student's
     // file (or folder) are the last two arguments.
-    if (cmd.size() > 2) {
-      const SandboxedInterpreter si = interpreter_for_sandbox(language, cmd[0]);
+    const Language* served = nb ? &nb->language() : language_of(file);
+    if (cmd.size() > 2 && served && served->for_sandbox) {
+      const SandboxedInterpreter si = served->for_sandbox(cmd[0]);
       if (!si.error.empty()) {  // the grader's set-up, not the submission
         std::cerr << "geomech check: " << file << ": the grader's machine: " << si.error << "\n";
         out.machine_fault = "the grader's machine: " + si.error;
@@ -317,7 +386,7 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   }
   spec.mounts = copy->mounts();
   return run_protocol_check(r, sandboxed(cmd, spec), language, notes, " --untrusted" + replay_build_options(bo), t0,
-                            out, bo.name);
+                            out, bo.name, nb ? &nb->notebook() : nullptr);
 }
 
 int route(const SubmissionRequest& r, SubmissionOutcome& out) {
@@ -328,6 +397,7 @@ int route(const SubmissionRequest& r, SubmissionOutcome& out) {
     return 2;
   }
   if (r.sandboxed) return run_untrusted_check(r, out);
+  if (const Language* l = language_of(r.file); l && l->route == Route::Notebook) return run_notebook_check(r, out);
   if (is_remote_file(r.file)) return run_remote_check(r, out);
   return run_student_check(r, out);
 }

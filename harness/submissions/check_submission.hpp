@@ -1,6 +1,7 @@
 // A file in, a check out: the routes by which an implementation is checked.
 //   - a C++ file, trusted: compiled with the suite into a check program (harness/program/build.hpp);
 //   - a Python or Octave file: started as a protocol server (docs/PROTOCOL.md), checked from here;
+//   - a Jupyter notebook: its code cells served by the row its kernel names, checked from here;
 //   - any of them, untrusted: in the sandbox, behind the protocol, a C++ file compiled there into a
 //     server that links nothing of the judge (docs/UNTRUSTED.md);
 //   - a built-in subject (the reference, a negative control): checked in this process.
@@ -16,7 +17,7 @@
 namespace gm::harness {
 
 struct SubmissionRequest {
-  std::string file;                    // the implementation: a .cpp, .py or .m file, or a folder of .m files
+  std::string file;                    // the implementation: a file of a language of the table, or a folder of .m files
   bool sandboxed = false;              // untrusted mode (--untrusted)
   CheckCliOptions check;               // what to check and how (harness/program/cli.hpp)
   BuildOptions build;                  // how a C++ file is compiled

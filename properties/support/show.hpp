@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/linalg.hpp"
+#include "properties/support/value_style.hpp"
 
 #include <ostream>
 #include <sstream>
@@ -11,28 +12,19 @@
 
 namespace gm {
 
-// Values are shown in the language of the implementation under test: C++ (and the
-// suite's own tests) as [a, b, c] and [a, b; c, d]; Python as lists, [a, b, c] and [[a, b], [c, d]],
-// with mpf('...') in 50 digits and Fraction(p, q) in rationals; Octave as MATLAB writes them,
-// column vectors [a; b; c] and matrices [a, b; c, d]. The harness sets it before a check's
-// processes are forked.
-enum class ShowStyle { Cpp, Python, Octave };
-inline ShowStyle& show_style() {
-  static ShowStyle style = ShowStyle::Cpp;
-  return style;
-}
-
 template <class T>
 std::string show_scalar(const T& x) {
   std::string text = to_string_full(x);
   if constexpr (!std::is_arithmetic_v<T>) {
-    if (show_style() != ShowStyle::Python) return text;
+    const ValueStyle& style = value_style();
     if constexpr (is_exact_v<T>) {
+      if (style.rational_before.empty() && style.rational_after.empty()) return text;
       const auto slash = text.find('/');
-      return slash == std::string::npos ? "Fraction(" + text + ")"
-                                        : "Fraction(" + text.substr(0, slash) + ", " + text.substr(slash + 1) + ")";
+      return style.rational_before +
+             (slash == std::string::npos ? text : text.substr(0, slash) + style.rational_between + text.substr(slash + 1)) +
+             style.rational_after;
     } else {
-      return "mpf('" + text + "')";
+      return style.mp50_before + text + style.mp50_after;
     }
   }
   return text;
@@ -42,24 +34,19 @@ template <class Derived>
 std::string show_matrix(const Eigen::MatrixBase<Derived>& m) {
   std::ostringstream os;
   const bool column = m.cols() == 1;
-  const ShowStyle style = show_style();
+  const ValueStyle& style = value_style();
   auto entry = [&](Eigen::Index i, Eigen::Index j) { return show_scalar(typename Derived::Scalar(m(i, j))); };
-  if (style == ShowStyle::Python) {  // a list, or a list of rows
+  if (style.nested_rows && !column) {  // a list of rows
     os << "[";
     for (Eigen::Index i = 0; i < m.rows(); ++i) {
-      if (i) os << ", ";
-      if (column) {
-        os << entry(i, 0);
-        continue;
-      }
-      os << "[";
+      os << (i ? ", [" : "[");
       for (Eigen::Index j = 0; j < m.cols(); ++j) os << (j ? ", " : "") << entry(i, j);
       os << "]";
     }
     os << "]";
     return os.str();
   }
-  const char* row_separator = column && style == ShowStyle::Cpp ? ", " : "; ";  // Octave: a column is rows
+  const char* row_separator = column ? style.column_separator.c_str() : "; ";
   os << "[";
   for (Eigen::Index i = 0; i < m.rows(); ++i) {
     if (i) os << row_separator;

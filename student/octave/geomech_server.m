@@ -2,6 +2,7 @@
 %
 %   octave-cli geomech_server.m mine.m        (one file of functions)
 %   octave-cli geomech_server.m folder/       (one .m file per function)
+%   octave-cli geomech_server.m week3.ipynb.json  (a notebook's code cells, written by the harness)
 %
 % Checked in double only. Vectors are passed as column vectors, matrices as matrices, the Lie
 % algebra as 'so3'/'so4'/'sl2', states as structs with fields Pi and O (or M and O), the canonical
@@ -183,8 +184,39 @@ function gm_send(out, s)
   fflush(out);
 end
 
+% A frame's file and line as the student knows them: the sourced copy of a file (its line 1 added)
+% named as the file, a notebook cell's copy as the cell ("week3.ipynb, cell 4, In [3]").
+function [fl, ln] = gm_where(sources, fl, ln)
+  for k = 1:numel(sources)
+    if strcmp(fl, sources(k).file)
+      fl = sources(k).name;
+      ln = ln - sources(k).added;
+      return;
+    end
+  end
+end
+
+% The text of a failed load: its message, the sourced copies named as the student knows them, and
+% the student's frames.
+function tb = gm_load_error(err, sources)
+  tb = err.message;
+  for k = 1:numel(sources)
+    tb = strrep(tb, sources(k).file, sources(k).name);
+  end
+  for s = 1:numel(err.stack)
+    [fl, ln] = gm_where(sources, err.stack(s).file, err.stack(s).line);
+    if ~isempty(strfind(fl, 'geomech_server.m')), continue; end
+    [~, stem] = fileparts(err.stack(s).file);
+    if strcmp(err.stack(s).name, err.stack(s).file) || strcmp(err.stack(s).name, stem)  % a copy's own code
+      tb = sprintf('%s\n    at line %d (%s)', tb, ln, fl);
+    else
+      tb = sprintf('%s\n    at %s, line %d (%s)', tb, err.stack(s).name, ln, fl);
+    end
+  end
+end
+
 % The reply to {"id", "calls": [...]}: one {"ok": value} or {"error", "traceback"} per call.
-function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
+function reply = gm_answer(req, slot_kinds, integ, step_kinds, sources)
   calls = req.calls;
   results = cell(1, numel(calls));
   for c = 1:numel(calls)
@@ -278,7 +310,7 @@ function reply = gm_answer(req, slot_kinds, integ, step_kinds, target, tmp)
       tb = err.message;
       for s = 1:numel(err.stack)
         fl = err.stack(s).file; ln = err.stack(s).line;
-        if ~isempty(tmp) && strcmp(fl, tmp), fl = target; ln = ln - 1; end
+        [fl, ln] = gm_where(sources, fl, ln);
         if ~isempty(strfind(fl, 'geomech_server.m')), continue; end
         tb = sprintf('%s\n    at %s, line %d (%s)', tb, err.stack(s).name, ln, fl);
       end
@@ -304,7 +336,7 @@ function gm_write_profile(where)
 end
 
 % Answers requests until the input ends (0) or, in a session, until {"session": "end"} (1).
-function r = gm_serve(out, in_session, slot_kinds, integ, step_kinds, target, tmp)
+function r = gm_serve(out, in_session, slot_kinds, integ, step_kinds, sources)
   r = 0;
   while true
     line = fgetl(stdin);
@@ -325,7 +357,7 @@ function r = gm_serve(out, in_session, slot_kinds, integ, step_kinds, target, tm
           gm_send(out, sprintf('{"id":%d,"session":"begun","pid":%d}', req.id, getpid()));
           where = getenv('GEOMECH_PROFILE');
           if ~isempty(where), profile on; end
-          gm_serve(out, true, slot_kinds, integ, step_kinds, target, tmp);
+          gm_serve(out, true, slot_kinds, integ, step_kinds, sources);
           if ~isempty(where), gm_write_profile(where); end
           exit(77);   % ended by request or at the end of input; 77, so that the student's exit(0) is not taken for it
         end
@@ -343,7 +375,7 @@ function r = gm_serve(out, in_session, slot_kinds, integ, step_kinds, target, tm
       gm_send(out, sprintf('{"id":%d,"fatal":"unexpected session request"}', req.id));
       continue;
     end
-    gm_send(out, gm_answer(req, slot_kinds, integ, step_kinds, target, tmp));
+    gm_send(out, gm_answer(req, slot_kinds, integ, step_kinds, sources));
   end
 end
 
@@ -372,18 +404,51 @@ for k = 1:numel(step_names)
   step_kinds.(step_names{k}) = gm_kinds(sig);
 end
 
-tmp = '';
+% What was sourced: each copy's file, the name it stands for and the lines added at its top.
+sources = struct('file', {}, 'name', {}, 'added', {});
+is_cells = numel(target) > 5 && strcmp(target(end - 4:end), '.json');
 try
   if isfolder(target)
     addpath(target);
+  elseif is_cells
+    % A notebook's code cells (docs/PROTOCOL.md, "Notebooks"), run in order as its kernel runs them,
+    % each from a copy of its own: a frame in it, or a parse error, names the cell.
+    nb = jsondecode(fileread(target), 'makeValidName', false);
+    list = nb.cells;
+    if ~isempty(nb.folder), addpath(nb.folder); end
+    % The cells' functions are named otherwise than their copies, which is not worth a warning.
+    warning('off', 'Octave:function-name-clash');
+    for k = 1:numel(list)
+      if iscell(list), cell_k = list{k}; else, cell_k = list(k); end
+      copy = [tempname() '.m'];
+      fid = fopen(copy, 'w');
+      % "1;" first, so that a cell that begins with a function defines them all; on the cell's first
+      % line, so that its lines keep their numbers (but after a block comment's %{, alone on its line).
+      block = ~isempty(regexp(cell_k.code, '^\s*[%#]\{', 'once'));
+      if block, fprintf(fid, '1;\n%s', cell_k.code); else, fprintf(fid, '1; %s', cell_k.code); end
+      fclose(fid);
+      sources(end + 1) = struct('file', copy, 'name', cell_k.name, 'added', block);
+      try
+        __parse_file__(copy);  % a syntax error's line, which source() does not say
+        source(copy);
+      catch err
+        delete(copy);
+        gm_send(out, ['{"protocol":"geomech-slots","version":2,"language":"octave","fatal":' ...
+                      jsonencode([cell_k.name ' failed when run (the cells before it ran): ' ...
+                                  gm_load_error(err, sources)]) '}']);
+        exit(1);
+      end
+      delete(copy);
+    end
   else
     text = fileread(target);
-    tmp = [tempname() '.m'];
-    fid = fopen(tmp, 'w');
+    copy = [tempname() '.m'];
+    fid = fopen(copy, 'w');
     fprintf(fid, '1;\n%s\n', text);
     fclose(fid);
-    source(tmp);
-    delete(tmp);
+    sources(end + 1) = struct('file', copy, 'name', target, 'added', 1);
+    source(copy);
+    delete(copy);
   end
 catch err
   gm_send(out, ['{"protocol":"geomech-slots","version":2,"language":"octave","fatal":' ...
@@ -458,4 +523,4 @@ gm_send(out, sprintf(['{"protocol":"geomech-slots","version":2,"language":"octav
                       '"description":%s,"slots":{"double":[%s]},"integrators":[%s],"notes":{},"warnings":[],' ...
                       '"sessions":true,"repeat":true}'], ...
                      jsonencode(version()), jsonencode(me), jsonencode(desc), strjoin(quoted, ','), strjoin(ijson, ',')));
-gm_serve(out, false, slot_kinds, integ, step_kinds, target, tmp);
+gm_serve(out, false, slot_kinds, integ, step_kinds, sources);

@@ -295,7 +295,14 @@ struct Integrator {
 struct Server {
   octave::interpreter* interp = nullptr;
   int out = 3;
-  std::string target, tmp;  // tmp: the copy of a single file that was sourced (its line 1 added)
+  std::string target;
+  // What was sourced: each copy's file, the name it stands for (the student's file, or a notebook
+  // cell: "week3.ipynb, cell 4, In [3]") and the lines added at its top.
+  struct Source {
+    std::string file, name;
+    int added = 0;
+  };
+  std::vector<Source> sources;
   std::map<std::string, Kinds> slot_kinds, step_kinds;
   std::vector<Integrator> integrators;
   std::string buffer;  // what stdin gave beyond the last line read
@@ -341,16 +348,43 @@ struct Server {
   // "    at NAME, line L (FILE)" per frame, the sourced copy's lines named in the student's file.
   std::string traceback(const octave::execution_exception& e) const {
     std::string tb = e.message();
+    for (const auto& s : sources)  // a parse error names the copy
+      for (std::size_t at = tb.find(s.file); at != std::string::npos; at = tb.find(s.file, at + s.name.size()))
+        tb.replace(at, s.file.size(), s.name);
     for (const auto& f : e.stack_info()) {
-      std::string file = f.file_name();
+      std::string file = f.file_name(), name = f.fcn_name();
       int line = f.line();
-      if (!tmp.empty() && file == tmp) {
-        file = target;
-        line -= 1;
-      }
-      tb += "\n    at " + f.fcn_name() + ", line " + std::to_string(line) + " (" + file + ")";
+      for (const auto& s : sources)
+        if (file == s.file) {
+          // The copy's own code, outside any function: its frame is named after the copy.
+          const std::string stem = file.substr(file.rfind('/') + 1, file.size() - file.rfind('/') - 3);
+          if (name == file || name == stem) name.clear();
+          file = s.name;
+          line -= s.added;
+        }
+      tb += "\n    at " + (name.empty() ? std::string() : name + ", ") + "line " + std::to_string(line) + " (" + file +
+            ")";
     }
     return tb;
+  }
+
+  // A copy of `code` in /tmp, sourced as a script, standing for `name` in messages; `added` lines at
+  // its top. Throws octave::execution_exception for an error in it (a parse error with its line).
+  void source_copy(const std::string& code, const std::string& name, int added) {
+    char path[] = "/tmp/geomech_octave_XXXXXX.m";
+    const int fd = ::mkstemps(path, 2);
+    if (fd < 0) throw std::runtime_error("cannot write a temporary copy in /tmp");
+    sources.push_back(Source{path, name, added});
+    const bool written = ::write(fd, code.data(), code.size()) == static_cast<ssize_t>(code.size());
+    ::close(fd);
+    if (!written) throw std::runtime_error("cannot write a temporary copy in /tmp");
+    struct Unlink {
+      const char* p;
+      ~Unlink() { ::unlink(p); }
+    } unlink_it{path};
+    if (name != target)  // a notebook cell: a syntax error's line, which sourcing does not say
+      interp->feval("__parse_file__", octave_value_list(octave_value(std::string(path))), 0);
+    interp->source_file(path);
   }
 
   octave_value call_one(const octave_value& f, const std::string& name, const octave_value_list& args) {
@@ -546,20 +580,37 @@ struct Server {
         if (!in) throw std::runtime_error("cannot read it");
         std::ostringstream text;
         text << in.rdbuf();
-        // Sourced as a script: "1;" first, so that a file that begins with a function defines them all.
-        char name[] = "/tmp/geomech_octave_XXXXXX.m";
-        const int fd = ::mkstemps(name, 2);
-        if (fd < 0) throw std::runtime_error("cannot write a temporary copy in /tmp");
-        tmp = name;
-        const std::string copy = "1;\n" + text.str() + "\n";
-        const bool written = ::write(fd, copy.data(), copy.size()) == static_cast<ssize_t>(copy.size());
-        ::close(fd);
-        if (!written) throw std::runtime_error("cannot write a temporary copy in /tmp");
-        interp->source_file(tmp);
-        ::unlink(tmp.c_str());
+        if (target.size() > 5 && target.compare(target.size() - 5, 5, ".json") == 0) {
+          // A notebook's code cells (docs/PROTOCOL.md, "Notebooks"), run in order as its kernel runs
+          // them, each from a copy of its own: a frame in it, or a parse error, names the cell. Its
+          // functions' names differ from the copy's, which is not worth a warning.
+          const json nb = json::parse(text.str());
+          if (nb.contains("folder") && !nb["folder"].get<std::string>().empty())
+            interp->feval("addpath", octave_value_list(octave_value(nb["folder"].get<std::string>())), 0);
+          interp->feval("warning", ovl(octave_value("off"), octave_value("Octave:function-name-clash")), 0);
+          for (const auto& cell : nb.at("cells")) {
+            const std::string name = cell.at("name").get<std::string>();
+            try {
+              // Sourced as a script: "1;" first, so that a cell that begins with a function defines
+              // them all; on the cell's first line, so that its lines keep their numbers (but after
+              // a block comment's %{, which must stand alone on its line).
+              const std::string code = cell.at("code").get<std::string>();
+              const std::size_t first = code.find_first_not_of(" \t");
+              const bool block = first != std::string::npos &&
+                                 (code.compare(first, 2, "%{") == 0 || code.compare(first, 2, "#{") == 0);
+              source_copy((block ? "1;\n" : "1; ") + code, name, block ? 1 : 0);
+            } catch (const octave::execution_exception& e) {
+              interp->recover_from_exception();
+              send(handshake_fatal(name + " failed when run (the cells before it ran): " + traceback(e)));
+              return false;
+            }
+          }
+        } else {
+          // Sourced as a script: "1;" first, so that a file that begins with a function defines them all.
+          source_copy("1;\n" + text.str() + "\n", target, 1);
+        }
       }
     } catch (const octave::execution_exception& e) {
-      if (!tmp.empty()) ::unlink(tmp.c_str());
       send(handshake_fatal("loading " + target + " failed: " + e.message()));
       return false;
     } catch (const std::exception& e) {

@@ -2,8 +2,10 @@
 """geomech slot server for Python implementations (protocol: docs/PROTOCOL.md, version 2).
 
     python3 geomech_server.py mine.py
+    python3 geomech_server.py week3.ipynb.json     (a notebook's code cells, written by the harness)
 
-Imports mine.py, finds the functions named after the harness's slots (the slot table comes from
+Imports mine.py (or runs a notebook's code cells in order, in one module, each under its own name:
+"week3.ipynb, cell 4, In [3]" is the file name its tracebacks give, docs/PROTOCOL.md, "Notebooks"), finds the functions named after the harness's slots (the slot table comes from
 the harness in $GEOMECH_SLOT_TABLE; `geomech slots --python` prints it for people), probes each in
 the three scalars (float, mpmath.mpf at the harness's 50-digit precision, fractions.Fraction),
 writes the handshake line, then answers one request line with one reply line until its input ends.
@@ -15,9 +17,11 @@ one; without it (by hand), to stdout, and print() goes to stderr.
 """
 import importlib.util
 import json
+import linecache
 import os
 import sys
 import traceback
+import types
 from fractions import Fraction
 
 PROTOCOL = "geomech-slots"
@@ -227,7 +231,51 @@ def encode(kind, scalar, x):
 
 # ---- the student's module ------------------------------------------------------------------------
 
+class CellFailed(Exception):
+    """A notebook cell that raised when run: its name ("week3.ipynb, cell 4, In [3]") and the error."""
+
+    def __init__(self, name, error):
+        Exception.__init__(self, name)
+        self.name, self.error = name, error
+
+
+def display(*objs, **kwargs):
+    """Jupyter's display(), which IPython puts in a notebook's namespace: IPython's own when it is
+    installed, else each object's repr on stderr (a check shows nothing)."""
+    try:
+        from IPython.display import display as shown
+    except ImportError:
+        for obj in objs:
+            print(repr(obj), file=sys.stderr)
+        return None
+    return shown(*objs, **kwargs)
+
+
+def load_cells(path):
+    """A notebook's code cells (the cells file the harness wrote from it), run in order in one module,
+    as Jupyter's kernel runs them. Each is compiled under its own name, which tracebacks give as the
+    file (with its lines, through linecache); the first to raise stops the loading (CellFailed)."""
+    with open(path, encoding="utf-8") as f:
+        cells = json.load(f)
+    mod = types.ModuleType("student_impl", None)
+    mod.__file__ = cells.get("notebook", path)
+    mod.display = display
+    folder = cells.get("folder") or os.path.dirname(os.path.abspath(path))
+    sys.path.insert(0, folder)
+    os.environ.setdefault("MPLBACKEND", "Agg")  # a plot in a cell draws nothing and opens no window
+    for cell in cells.get("cells", []):
+        name, code = cell["name"], cell["code"]
+        linecache.cache[name] = (len(code), None, code.splitlines(True), name)
+        try:
+            exec(compile(code, name, "exec"), mod.__dict__)
+        except BaseException as e:
+            raise CellFailed(name, e)
+    return mod
+
+
 def load(path):
+    if path.endswith(".json"):
+        return load_cells(path)
     spec = importlib.util.spec_from_file_location("student_impl", path)
     mod = importlib.util.module_from_spec(spec)
     sys.path.insert(0, os.path.dirname(os.path.abspath(path)))
@@ -497,7 +545,7 @@ def serve(lines, functions, steps, in_session):
 def main():
     global MP_BITS
     if len(sys.argv) != 2:
-        _out.write(json.dumps({"fatal": "usage: geomech_server.py FILE.py"}) + "\n")
+        _out.write(json.dumps({"fatal": "usage: geomech_server.py FILE.py (or a notebook's CELLS.json)"}) + "\n")
         return 2
     table = json.loads(os.environ.get("GEOMECH_SLOT_TABLE", "{}") or "{}")
     MP_BITS = int(table.get("mp50_bits", 168))
@@ -527,13 +575,16 @@ def main():
     try:
         mod = load(sys.argv[1])
     except BaseException as e:
+        what = "importing %s failed" % sys.argv[1]
+        if isinstance(e, CellFailed):  # the student's cell, named as the notebook shows it
+            what, e = "%s failed when run (the cells before it ran)" % e.name, e.error
         hint = ""
         if isinstance(e, ImportError):  # Which interpreter, and how to choose another
             hint = ("\n(the interpreter running it is %s, Python %s: a module the file imports is not installed for it; "
                     "install it there, or set GEOMECH_PYTHON to an interpreter that has it)"
                     % (sys.executable, sys.version.split()[0]))
         _out.write(json.dumps({"protocol": PROTOCOL, "version": VERSION, "language": "python",
-                               "fatal": "importing %s failed:\n%s%s" % (sys.argv[1], student_traceback(e), hint)}) + "\n")
+                               "fatal": "%s:\n%s%s" % (what, student_traceback(e), hint)}) + "\n")
         _out.flush()
         return 1
 

@@ -13,6 +13,7 @@ namespace {
 
 std::vector<std::string> labels(const std::string& suite, const std::string&) {
   if (suite == "TrajectoryFiles") return {"meta", "harness", "bad-input"};
+  if (suite == "Notebook") return {"meta", "harness", "notebook", "bad-input"};
   if (suite == "RemoteSubject" || suite == "ProtocolCodec") return {"meta", "harness", "protocol", "python"};
   if (suite == "Gradebook" || suite == "SourceCalls" || suite == "HtmlPage" || suite == "ClassRecord" ||
       suite == "Autograder")

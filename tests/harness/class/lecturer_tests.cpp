@@ -6,6 +6,7 @@
 #include "harness/class/class_html.hpp"
 #include "harness/class/class_record.hpp"
 #include "harness/class/feedback_files.hpp"
+#include "harness/languages/language.hpp"
 
 #include "tests/support/scratch.hpp"
 
@@ -107,7 +108,12 @@ TEST(Autograder, ResultsRenderTheDecidedStudentInEachFormat) {
   EXPECT_EQ(gs["tests"][2]["name"].get<std::string>().rfind("slot casimir: ", 0), 0u);
   EXPECT_EQ(gs["tests"][2]["status"], "failed");
   EXPECT_EQ(gs["tests"][2]["max_score"], 8.0);
-  EXPECT_EQ(gs["tests"][3]["output"].get<std::string>().rfind("not provided", 0), 0u);
+  const std::string missing = gs["tests"][3]["output"].get<std::string>();
+  EXPECT_EQ(missing.rfind("not provided", 0), 0u);
+  for (const auto& l : languages())  // the listings a student may ask for: every listed row's flag
+    if (l.signature && &l != &suite_language()) {
+      EXPECT_NE(missing.find("--" + l.id), std::string::npos) << missing;
+    }
   EXPECT_EQ(gs["output"].get<std::string>().rfind("FAIL, 8.00 of 20: 2 of 4 slots correct (weight 2 of 5)", 0), 0u)
       << gs["output"];
   const json pl = prairielearn_results(v.students[0], "# report\n");
@@ -219,17 +225,24 @@ TEST(Autograder, ASubmissionFolderIsLaidOutAsAClassOfOne) {
   write_file(root / "cc" / "fay.cc", "GEOMECH_STUDENT(F);\n");
   EXPECT_EQ(lay_out_submission((root / "cc").string(), (root / "c5").string()), "fay");
   EXPECT_TRUE(fs::is_regular_file(root / "c5" / "fay" / "fay.cc"));
+  // A notebook uploaded alone is the submission, as a file of any language of the table.
+  write_file(root / "nb" / "week3.ipynb", "{}");
+  EXPECT_EQ(lay_out_submission((root / "nb").string(), (root / "c6").string()), "week3");
+  EXPECT_TRUE(fs::is_regular_file(root / "c6" / "week3.ipynb"));
   write_file(root / "two" / "a.py", "");
   write_file(root / "two" / "b.py", "");
   try {
     lay_out_submission((root / "two").string(), (root / "c4").string());
     ADD_FAILURE() << "two Python files were taken as one implementation";
   } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find(
-                  "the submission holds 0 .cpp, 0 .cc, 2 .py and 0 .m files; expected one .cpp or .cc file using "
-                  "GEOMECH_STUDENT"),
-              std::string::npos)
-        << e.what();
+    // Every extension of the table counted (two .py files, none of the others), then what is expected.
+    const std::string said = e.what();
+    EXPECT_NE(said.find("the submission holds 0 .cpp, 0 .cc, 2 .py, "), std::string::npos) << said;
+    for (const auto& l : languages())
+      for (const auto& x : l.extensions) {
+        EXPECT_NE(said.find((x == ".py" ? "2 " : "0 ") + x), std::string::npos) << x << ": " << said;
+      }
+    EXPECT_NE(said.find(" files; expected one .cpp or .cc file using GEOMECH_STUDENT"), std::string::npos) << said;
   }
   fs::remove_all(root);
 }

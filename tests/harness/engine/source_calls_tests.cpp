@@ -26,21 +26,21 @@ TEST(SourceCalls, ACallerIsReadFromPythonOctaveAndCpp) {
       "def manakov_Omega(A, M):\n    \"\"\"not manakov_M(A, W) in a docstring\"\"\"\n    return solve(A, M)  # "
       "manakov_M( here\n\n"
       "def manakov_2_34(A, M):\n    W = manakov_Omega(A, M)\n    return madd(matmul(M, W), matmul(W, M), -1)\n";
-  const auto p = slot_calls_in_text(py, "python");
+  const auto p = slot_calls_in_text(py, *language_named("python"));
   EXPECT_EQ(p.count("manakov_Omega"), 0u);  // neither the docstring nor the comment is a call
   ASSERT_EQ(p.count("manakov_2_34"), 1u);
   EXPECT_EQ(p.at("manakov_2_34"), (std::set<std::string>{"manakov_Omega"}));
   const std::string m =
       "function W = manakov_Omega(A, M)\n  W = A';  % manakov_M(A, W)\nend\n"
       "function d = euler_3_8(I, P)\n  d = cross(P, omega_3_5(I, P));\nend\n";
-  EXPECT_EQ(slot_calls_in_text(m, "octave"),
+  EXPECT_EQ(slot_calls_in_text(m, *language_named("octave")),
             (std::map<std::string, std::set<std::string>>{{"euler_3_8", {"omega_3_5"}}}));
   const std::string cpp =
       "struct S {\n  template <class T>\n  static Vec3<T> omega_3_5(const Vec3<T>& I, const Vec3<T>& P) {\n"
       "    return P.cwiseQuotient(I);\n  }\n  template <class T>\n"
       "  static Vec3<T> euler_3_8(const Vec3<T>& I, const Vec3<T>& P) {\n    return P.cross(omega_3_5<T>(I, P));\n  "
       "}\n};\n";
-  EXPECT_EQ(slot_calls_in_text(cpp, "c++"),
+  EXPECT_EQ(slot_calls_in_text(cpp, *language_named("c++")),
             (std::map<std::string, std::set<std::string>>{{"euler_3_8", {"omega_3_5"}}}));
   // A folder of Octave function files: calls across files; a link is not read (the control: the
   // same file as a regular file is).
@@ -49,11 +49,11 @@ TEST(SourceCalls, ACallerIsReadFromPythonOctaveAndCpp) {
              "function d = manakov_2_34(A, M)\n  W = manakov_Omega(A, M);\n  d = M * W - W * M;\nend\n");
   write_file(dir / "elsewhere" / "euler.m", "function d = euler_3_8(I, P)\n  d = cross(P, omega_3_5(I, P));\nend\n");
   fs::create_symlink(dir / "elsewhere" / "euler.m", dir / "euler_3_8.m");
-  const auto f = slot_calls(dir.string(), "octave");
+  const auto f = slot_calls(dir.string(), *language_named("octave"));
   EXPECT_EQ(f, (std::map<std::string, std::set<std::string>>{{"manakov_2_34", {"manakov_Omega"}}}));
   fs::remove(dir / "euler_3_8.m");
   fs::copy_file(dir / "elsewhere" / "euler.m", dir / "euler_3_8.m");
-  EXPECT_EQ(slot_calls(dir.string(), "octave").count("euler_3_8"), 1u);
+  EXPECT_EQ(slot_calls(dir.string(), *language_named("octave")).count("euler_3_8"), 1u);
   fs::remove_all(dir);
 }
 
@@ -64,7 +64,7 @@ TEST(SourceCalls, TheFirstFixIsTheCalleeNotTheCaller) {
   gm::harness::harness_testing::write_omega_and_its_caller(dir);
   CheckResult r;
   r.info.source = dir.string();
-  r.info.language = "octave";
+  r.info.language = language_named("octave");
   for (const char* p : {"definition_manakov_2_34", "definition_manakov_Omega"}) {
     gm::Verdict v;
     v.property = p;
@@ -100,7 +100,7 @@ TEST(SourceCalls, TheLiveFirstFixFollowsTheSameRule) {
   gm::harness::harness_testing::write_omega_and_its_caller(dir);
   SubjectInfo info;
   info.source = dir.string();
-  info.language = "octave";
+  info.language = language_named("octave");
   auto failing = [](const char* property, const std::string& machine_fault = "") {
     gm::Verdict v;
     v.property = property;

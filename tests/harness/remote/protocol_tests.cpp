@@ -7,7 +7,8 @@
 #include "harness/isolation/isolate.hpp"
 #include "harness/remote/protocol_codec.hpp"
 #include "harness/remote/remote_subject.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
+#include "harness/languages/rows.hpp"
 #include "tests/harness/harness_support.hpp"
 
 #include <gtest/gtest.h>

@@ -184,7 +184,7 @@ TEST(Reports, TheConsoleStreamNamesTheFirstFixAsItArrives) {
   write_omega_and_its_caller(dir);
   SubjectInfo info;
   info.source = dir.string();
-  info.language = "octave";
+  info.language = language_named("octave");
   std::ostringstream out, err;
   ConsoleStream console("dave", info, 0, false, out, err, false);
   auto failing = [](const char* property) {

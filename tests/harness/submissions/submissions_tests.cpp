@@ -1,7 +1,7 @@
 // harness/submissions/: the language table and what reads it. Each statement has its failing
 // side in the same test (an extension of no language, a file of no served language).
 #include "harness/class/class_mode.hpp"
-#include "harness/submissions/languages.hpp"
+#include "harness/languages/language.hpp"
 
 #include "tests/support/scratch.hpp"
 
@@ -32,7 +32,7 @@ TEST(LanguageTable, EveryExtensionNamesOneLanguage) {
   EXPECT_EQ(language_of("mine.cc")->id, "c++");
   EXPECT_EQ(language_of("mine.cpp"), language_of("mine.cc"));
   EXPECT_EQ(language_of("notes.txt"), nullptr);
-  EXPECT_EQ(extensions_in_words(), ".cpp, .cc, .py or .m");
+  EXPECT_EQ(extensions_in_words(), ".cpp, .cc, .py, .m or .ipynb");
 }
 
 TEST(LanguageTable, ServedLanguagesSayHowTheyStart) {

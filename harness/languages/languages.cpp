@@ -1,0 +1,161 @@
+// The language table: its rows, in the order messages list them, and what finds a row.
+#include "harness/languages/language.hpp"
+
+#include "harness/languages/rows.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdlib>
+#include <filesystem>
+#include <unistd.h>
+
+namespace gm::harness {
+
+namespace fs = std::filesystem;
+
+const std::vector<Language>& languages() {
+  // A new language: its row's file in this room and its line here (docs/DEVELOPING.md, "Adding a language").
+  static const std::vector<Language> table{cpp_row(), python_row(), octave_row(), notebook_row()};
+  return table;
+}
+
+const Language& suite_language() { return languages().front(); }
+
+const Language* language_of_extension(std::string_view extension) {
+  for (const auto& l : languages())
+    for (const auto& e : l.extensions)
+      if (e == extension) return &l;
+  return nullptr;
+}
+
+const Language* language_of(const std::string& path) {
+  const fs::path p(path);
+  if (const Language* l = language_of_extension(p.extension().string())) return l;
+  std::error_code ec;
+  if (fs::is_directory(p, ec) && !fs::is_empty(p, ec))
+    for (const auto& l : languages())
+      if (l.folder_of_files) return &l;
+  return nullptr;
+}
+
+const Language* language_named(std::string_view id) {
+  for (const auto& l : languages())
+    if (l.id == id) return &l;
+  return nullptr;
+}
+
+const Language* language_of_kernel(std::string_view kernel) {
+  auto lower = [](std::string_view s) {
+    std::string out(s);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+  };
+  const std::string k = lower(kernel);
+  for (const auto& l : languages())
+    for (const auto& name : l.kernels)
+      if (lower(name) == k) return &l;
+  return nullptr;
+}
+
+namespace {
+
+std::string in_words(const std::vector<std::string>& all, const char* last) {
+  std::string out;
+  for (std::size_t i = 0; i < all.size(); ++i) out += (i == 0 ? "" : i + 1 == all.size() ? last : ", ") + all[i];
+  return out;
+}
+
+}  // namespace
+
+std::string extensions_in_words() {
+  std::vector<std::string> all;
+  for (const auto& l : languages()) all.insert(all.end(), l.extensions.begin(), l.extensions.end());
+  return in_words(all, " or ");
+}
+
+std::string folder_in_words() {
+  std::string out;
+  for (const auto& l : languages())
+    if (l.folder_of_files) out += ", nor a folder of " + l.extensions.front() + " files";
+  return out;
+}
+
+std::string kernels_in_words() {
+  std::vector<std::string> rows;
+  for (const auto& l : languages())
+    if (!l.kernels.empty()) rows.push_back(l.name + " (" + in_words(l.kernels, ", ") + ")");
+  return in_words(rows, " or ");
+}
+
+std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why) {
+  const Language* l = language_of(file);
+  if (l && l->route == Route::Served) {
+    if (language) *language = l->id;
+    return l->server(file);
+  }
+  if (why) {
+    std::string served;
+    for (const auto& s : languages())
+      if (s.route == Route::Served)
+        for (const auto& e : s.extensions) served += (served.empty() ? "" : " or ") + e;
+    *why = "not a " + served + " file" + folder_in_words();
+  }
+  return {};
+}
+
+std::string on_path(const std::string& program) {
+  if (program.find('/') != std::string::npos) return program;
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  std::size_t from = 0;
+  for (;;) {
+    const std::size_t colon = dirs.find(':', from);
+    const std::string dir = dirs.substr(from, colon == std::string::npos ? std::string::npos : colon - from);
+    const fs::path candidate = fs::path(dir.empty() ? "." : dir) / program;
+    if (::access(candidate.c_str(), X_OK) == 0 && !fs::is_directory(candidate)) return fs::absolute(candidate).string();
+    if (colon == std::string::npos) break;
+    from = colon + 1;
+  }
+  return "";
+}
+
+std::pair<int, int> line_and_column(const std::string& text, std::size_t offset) {
+  int line = 1, column = 1;
+  for (std::size_t i = 0; i < offset && i < text.size(); ++i) {
+    if (text[i] == '\n')
+      ++line, column = 1;
+    else
+      ++column;
+  }
+  return {line, column};
+}
+
+std::vector<std::pair<std::string, std::string>> slot_parameters(const std::string& sig) {
+  const auto open = sig.find('(');
+  const std::string args = sig.substr(open + 1, sig.rfind(')') - open - 1);
+  std::vector<std::string> parts;
+  std::size_t depth = 0, start = 0;
+  for (std::size_t i = 0; i <= args.size(); ++i) {
+    if (i == args.size() || (args[i] == ',' && depth == 0)) {
+      parts.push_back(args.substr(start, i - start));
+      start = i + 1;
+    } else if (args[i] == '<') {
+      ++depth;
+    } else if (args[i] == '>') {
+      --depth;
+    }
+  }
+  std::vector<std::pair<std::string, std::string>> out;
+  for (auto q : parts) {
+    while (!q.empty() && q.back() == ' ') q.pop_back();
+    const auto sp = q.find_last_of(" &");
+    out.emplace_back(q, q.substr(sp + 1));
+  }
+  return out;
+}
+
+std::string slot_result_type(const std::string& sig) {
+  return sig.substr(0, sig.find('('));
+}
+
+}  // namespace gm::harness

@@ -1,0 +1,22 @@
+// The rows of the language table, each built by its own file of this room (cpp.cpp, python.cpp,
+// octave.cpp, notebook.cpp); languages.cpp lists them in the order messages name them.
+#pragma once
+
+#include "harness/languages/language.hpp"
+
+#include <string>
+
+namespace gm::harness {
+
+Language cpp_row();
+Language python_row();
+Language octave_row();
+Language notebook_row();
+
+// The Octave server with Octave's interpreter linked in (student/octave/octave_server.cpp), beside
+// this program when liboctave-dev was installed at build time; empty when it is not there, or when
+// $GEOMECH_OCTAVE_SERVER=script or $GEOMECH_OCTAVE (an octave-cli to run) asks for the script
+// server. Both answer alike; the linked one costs a half to a quarter of the time per call.
+std::string octave_server_program();
+
+}  // namespace gm::harness

@@ -1,0 +1,2 @@
+// A server says which language it is.
+const bool mine = language == "python";

@@ -1,0 +1,2 @@
+enum class ShowStyle { Cpp, Python, Octave };
+inline bool nested(ShowStyle s) { return s == ShowStyle::Python; }

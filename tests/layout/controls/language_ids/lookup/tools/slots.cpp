@@ -1,0 +1,1 @@
+int slots(bool python) { return run_slots(*language_named("python")); }
