@@ -10,7 +10,8 @@ precision, and this test asserts them, each confirmed by a computation of its ow
                            orthogonality, Noether, equivariance, bounded energy), at float's round-off
   float_midpoint_unstated  the same verdicts, the precision said to be detected
   float_splitting          every claim of the splitting verified
-  float_rk4                order 4 verified, measured where its truncation stands above float's floor
+  float_rk4                order 4 verified, or NOT VERIFIED "not decided within 0.1": in float, the steps whose
+                           truncation stands above the floor are too large for its leading term alone
   float_rounds_up          the Casimir a FALSE CLAIM named as systematic round-off with its rate per step
                            (this test's own rate at a tiny step agrees within a factor 2); the order
                            verified (a bias is not an order failure); the bounded energy does not hold
