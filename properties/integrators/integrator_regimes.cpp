@@ -640,7 +640,8 @@ void integrator_local_order(const Subject<T>&, const Integrator<T>& in, const In
   const T t_s = T(1) / dyn::at_least_one(T(norm_inf(x0.Pi) / I.minCoeff()));
   std::vector<T> steps;
   for (int k : local_order_exponents<T>(c.order)) steps.push_back(T(factor * gen::pow2<T>(-k) * t_s));
-  std::erase_if(steps, [](const T& h) { return to_double(h) < current_step_domain().min_h; });  // issue 47
+  // Not below the smallest step the integrator declares it takes (its domain).
+  std::erase_if(steps, [](const T& h) { return to_double(h) < current_step_domain().min_h; });
   // The oracle's times must increase; the steps decrease.
   std::vector<T> times(steps.rbegin(), steps.rend());
   std::vector<RigidBodyState<T>> exact = dyn::oracle_rigid_body(I, x0, times);
@@ -671,7 +672,8 @@ void manakov_integrator_local_order(const Subject<T>&, const Integrator<T>& in, 
   const T factor = draw_step_factor<T>();
   std::vector<T> steps;
   for (int k : local_order_exponents<T>(c.order)) steps.push_back(T(factor * gen::pow2<T>(-k)));
-  std::erase_if(steps, [](const T& h) { return to_double(h) < current_step_domain().min_h; });  // issue 47
+  // Not below the smallest step the integrator declares it takes (its domain).
+  std::erase_if(steps, [](const T& h) { return to_double(h) < current_step_domain().min_h; });
   std::vector<T> times(steps.rbegin(), steps.rend());
   std::vector<ManakovState<T>> exact = dyn::oracle_manakov(a, x0, times);
   std::reverse(exact.begin(), exact.end());
