@@ -1,4 +1,4 @@
-// The exact free-rigid-body solution in double (oracle/elliptic.hpp), issue 7:
+// The exact free-rigid-body solution in double (oracle/elliptic.hpp), its accuracy and cost:
 //
 //   accuracy: over 1000 random bodies (moments satisfying the triangle inequality, momenta in
 //   [-1, 1]^3, t in [0, 20], fixed seed), the double solution against the same formula evaluated

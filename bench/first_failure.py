@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Time from a command to the first thing a student can act on (issue 32): runs the command, reads
+"""Time from a command to the first thing a student can act on: runs the command, reads
 its output as it comes, and stops it at the first FIRST FIX or FALSE CLAIM line, printing the time.
 The whole run is then one command whose duration is that time, so a timing tool that runs a command
 several times (hyperfine, for instance) measures it directly:

@@ -10,7 +10,7 @@
 a line) for the tests of at least 0.5 s, costliest first. tests/CMakeLists.txt copies
 tests/ctest_costs.txt there in a build tree that has none, so that a fresh clone's ctest -j starts
 the longest tests first, as a tree that has run ctest before does. One exception: the yardstick
-golden_check.manakov_so5 (the speed of a run, issue 56) is given 3 s, so that it starts after the
+golden_check.manakov_so5 (the speed of a run, .ci/run) is given 3 s, so that it starts after the
 tests of more than 3 s, beside short tests of one process each, as it did in declaration order in
 the runs its figures are compared with. At its own cost it would start in the first minute beside the
 three compilers of student.end_to_end.correct, and read 28.4 s instead of 24.7 (2026-11-29).

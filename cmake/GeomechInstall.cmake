@@ -49,7 +49,7 @@ file(GENERATE OUTPUT ${CMAKE_BINARY_DIR}/student/installed-toolchain.json CONTEN
   \"server_object\": \"${_gm_rel_lib}/geomech_server_driver.o\",
   \"harness_library\": \"${_gm_rel_lib}/$<TARGET_FILE_NAME:geomech_harness>\",
   \"property_library\": \"${_gm_rel_lib}/$<TARGET_FILE_NAME:geomech>\",
-  \"other_libraries\": [\"$<TARGET_LINKER_FILE:rapidcheck>\"],
+  \"other_libraries\": [${_gm_other_libraries_json}],
   \"cache_dir\": \"\"
 }
 ")
@@ -76,5 +76,5 @@ set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 # What a student's own file needs to compile and link against the installed libraries.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "g++ (>= 12), cmake (>= 3.25), libeigen3-dev (>= 3.4), librapidcheck-dev, libboost-dev (>= 1.74), libflint-arb2")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "g++ (>= 12), cmake (>= 3.25), libeigen3-dev (>= 3.4), librapidcheck-dev, libboost-dev (>= 1.74), libflint-arb2, libcmark-gfm-dev, libcmark-gfm-extensions-dev")
 include(CPack)

@@ -35,7 +35,7 @@ struct MutantsOptions {
   // A mutants.json written by an earlier `--matrix --report` run: its matrix is read instead of
   // running the mutants again (28 minutes on 2 cores), to choose the profiles from it anew.
   std::string from_report;
-  // Issue 32, item 5: each mutant is also served out of process by the C++ protocol server
+  // The protocol, measured too: each mutant is also served out of process by the C++ protocol server
   // (`program serve-mutant NAME`, mutation/served_mutant.hpp) and checked through the protocol,
   // as an untrusted submission is; the score through the protocol is reported beside the other.
   bool through_protocol = false;

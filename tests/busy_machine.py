@@ -1,4 +1,4 @@
-"""Slow is judged by the work done, not by the clock of a busy machine (issue 47).
+"""Slow is judged by the work done, not by the clock of a busy machine (a machine fault is not graded).
 
     python3 busy_machine.py GEOMECH OUT_DIR
 

@@ -1,4 +1,4 @@
-// The geomech tool's own argument handling (issue 7's bad-input catalogue): nonsense arguments
+// The geomech tool's own argument handling (bad input gets a clear error): nonsense arguments
 // get a message naming the argument and exit status 2; nothing is written.
 #include <gtest/gtest.h>
 

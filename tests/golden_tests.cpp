@@ -808,7 +808,7 @@ TEST(golden_cli, RegenerateAndValidateBadArguments) {
                    dir.file("bad.golden") + ":" + std::to_string(kFirstRow + 2) + ": wrong number of columns");
 }
 
-// Moments violating the triangle inequality describe no body (issue 7's bad-input catalogue):
+// Moments violating the triangle inequality describe no body (bad input, which gets a clear error):
 // refused, with the argument named and nothing written, unless --allow-nonphysical says otherwise.
 TEST(golden_cli, TrajectoryRefusesNonphysicalInertiaUnlessAllowed) {
   ScratchDir dir("nonphysical");

@@ -1,4 +1,4 @@
-"""A class folder as a hostile student makes it (issue 46), checked by `geomech check-class`.
+"""A class folder as a hostile student makes it, checked by `geomech check-class`.
 
     python3 hostile_class.py GEOMECH SOURCE_DIR OUT_DIR MODE
 

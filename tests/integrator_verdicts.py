@@ -1,4 +1,4 @@
-"""Every verdict true, and the same wherever it is shown.
+"""Every verdict true, and the same wherever it is shown (console, report.md, verdicts.json, JUnit).
 
     python3 integrator_verdicts.py GEOMECH SOURCE_DIR OUT_DIR
 

@@ -1,4 +1,4 @@
-"""An engine shaped like a library, checked with no flag written by hand (issue 55).
+"""An engine shaped like a library, checked with no flag written by hand (its // geomech: lines suffice).
 
     python3 library_shaped.py GEOMECH OUT
 

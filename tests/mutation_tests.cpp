@@ -106,7 +106,7 @@ TEST(Mutation, RunsLeftToThoroughKeepEveryKill) {
   EXPECT_EQ(j.at("format"), "geomech-thorough-only 1");
 }
 
-// Issue 32, item 5: a mutant killed in-process but not through the protocol (or the reverse) is
+// The protocol, measured too: a mutant killed in-process but not through the protocol (or the reverse) is
 // named as a difference, and the score through the protocol counts what the protocol run killed.
 TEST(Mutation, AVerdictThatDiffersThroughTheProtocolIsNamed) {
   using namespace gm::mutation;

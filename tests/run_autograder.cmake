@@ -1,4 +1,4 @@
-# The autograders of issue 49, run as their platform runs them: `geomech autograder PLATFORM` writes
+# The Gradescope and PrairieLearn autograders, run as their platform runs them: `geomech autograder PLATFORM` writes
 # the autograder from examples/class/rubric.json; each submission of examples/class is put into a
 # folder tree made like the platform's in a temporary root (Gradescope: /autograder/{source,
 # submission,results}, the zip unpacked into source/; PrairieLearn: /grade/{serverFilesCourse,

@@ -179,7 +179,7 @@ file(READ ${OUT}/full/summary.md rechecked)
 if(NOT rechecked STREQUAL full)
   message(FATAL_ERROR "after --not-checked the summary should be the uninterrupted run's:\n${rechecked}\n---\n${full}")
 endif()
-# Issue 57's defects: a refused rubric leaves no report folder behind; the roster's warnings reach
+# Two defects once seen, kept fixed: a refused rubric leaves no report folder behind; the roster's warnings reach
 # the summary (a student with no roster row is graded under their implementation's name).
 file(WRITE ${OUT}/bad_rubric.json "{\"slots\": {\"vei\": 1}}")
 run_class(${OUT}/refused "GEOMECH_UNUSED=1" 2 --rubric ${OUT}/bad_rubric.json)

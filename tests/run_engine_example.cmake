@@ -1,6 +1,6 @@
 # The Open Dynamics Engine's free body (examples/engines/ode_free_body.cpp, which links ODE by its own
 # `// geomech: pkg ode` line) checked in one mode, then each finding confirmed by the test's own
-# computation (tests/engines/ode_confirm.cpp). Issue 48.
+# computation (tests/engines/ode_confirm.cpp), so that no finding on a real engine rests on the suite alone.
 #   cmake -DGEOMECH=... -DCONFIRM=ode_confirm -DFILE=ode_free_body.cpp -DMODE=trusted|untrusted|class
 #         -DOUT=dir -P run_engine_example.cmake
 if(NOT CONFIRM)

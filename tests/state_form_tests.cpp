@@ -1,6 +1,6 @@
 // The state forms engines keep (core/state_form.hpp), the suite's conversions, the adapter that
 // keeps a user's own state along a run (core/declared_step.hpp), and the step field read in the
-// declared form (properties/integrators/support/step_field_form.hpp). Issue 48.
+// declared form (properties/integrators/support/step_field_form.hpp): engines speak back in their own form.
 #include "core/declared_step.hpp"
 #include "impl/integrators.hpp"
 #include "properties/integrators/support/step_field.hpp"

@@ -1,4 +1,4 @@
-"""ctest (issue 46): what a submission sees of the machine in untrusted mode.
+"""ctest: what a submission sees of the machine in untrusted mode (docs/UNTRUSTED.md).
 
     python3 system_probe.py GEOMECH PEEK_SYSTEM_PY OUT_DIR [control]
 

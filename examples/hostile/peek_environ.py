@@ -1,9 +1,9 @@
-"""Hostile (issue 34): a submission that reads the environment and command line of every process it
+"""Hostile: a submission that reads the environment and command line of every process it
 can see (/proc/*/environ, /proc/*/cmdline) and raises them as its error message, which would print
 them into its own report, the one a lecturer hands back. Untrusted mode must leave it nothing
 secret to find: the test runs it with a canary in the harness's environment and asserts the canary
 never reaches the report; in-process (the control) it does. Like a real attacker, it keeps its
-message short (a report shows a message up to 8 KiB, issue 46): of an environment, only the
+message short (a report shows a message up to 8 KiB, cut beyond): of an environment, only the
 variables that look worth stealing."""
 import os
 import re

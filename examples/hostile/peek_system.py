@@ -1,4 +1,4 @@
-"""Hostile (issue 46): a submission that looks at the machine it runs on (the accounts in
+"""Hostile: a submission that looks at the machine it runs on (the accounts in
 /etc/passwd, the host's name, what was installed by hand in /usr/local, /etc/shadow, the hosts and
 network files) and raises what it saw as its error message, into its own report. Untrusted mode
 shows it a minimal system (docs/UNTRUSTED.md, "What a submission can see"): accounts root and

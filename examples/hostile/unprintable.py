@@ -1,4 +1,4 @@
-"""Hostile (issue 34): a submission whose error message holds a lone surrogate ('\\udcff', which
+"""Hostile: a submission whose error message holds a lone surrogate ('\\udcff', which
 Python's json escapes and a UTF-8 reader rejects) and terminal escape sequences that would erase a
 line and print a green PASS where report.md is shown with cat or less -R. Expected: the check of
 casimir FAILS with that message shown as inert text (\\udcff and \\x1b visible, no escape byte in

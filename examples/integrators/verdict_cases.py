@@ -1,4 +1,4 @@
-"""Integrators whose true behaviour is known by theory (issue 47), in Python: the same steps as
+"""Integrators whose true behaviour is known by theory, in Python: the same steps as
 verdict_cases.hpp, for the checks that must say the same in every language, and for
 tests/integrator_verdict_tests.py, which calls these steps itself to confirm each verdict by a
 computation of its own.

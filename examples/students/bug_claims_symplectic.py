@@ -1,4 +1,4 @@
-"""Buggy claim (issue 16): Stormer-Verlet for the Clebsch system (3.21) written explicitly, as for a
+"""Buggy claim: Stormer-Verlet for the Clebsch system (3.21) written explicitly, as for a
 separable H = T(P) + V(Q). H(Q, P) = h(P x Q) is not separable, and for such an H the first two
 stages of Stormer-Verlet are implicit: the explicit version is not symplectic. Beside it, the
 implicit midpoint rule on (Q, P), which is. Expected: clebsch_midpoint's symplectic claim is

@@ -1,4 +1,4 @@
-"""Buggy names (issue 33): the energy written as `energy` (the slot is hamiltonian_3_4, named after
+"""Buggy names: the energy written as `energy` (the slot is hamiltonian_3_4, named after
 (3.4)) and a midpoint rule whose claims say "symmetry" (the claim is `symmetric`). Expected: a
 warning naming the slot `energy` probably means, and the check UNCHECKED (exit status 1), because a
 claim nothing can verify is not a pass, naming the claim it probably means and listing all of them."""

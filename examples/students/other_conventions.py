@@ -1,4 +1,4 @@
-"""Correct, in other conventions than the suite's documented ones (issue 36): every choice the notes
+"""Correct, in other conventions than the suite's documented ones: every choice the notes
 leave open is made differently here, and the check must pass with zero failures.
 
   so(n) in hat_n (every n, n = 3 included): the entries above the diagonal row by row, with sign +,

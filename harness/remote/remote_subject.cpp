@@ -852,8 +852,7 @@ SubjectSet remote_subject(const std::shared_ptr<Connection>& conn, const std::st
   for (const auto& i : d.integrators)
     if (i.has_claims) s.claims.push_back(i.claims);
   for (const auto& i : d.integrators)
-    if (!i.claims.precision
-             .empty()) {  // the author's own words: shown as inert text (the lead's md helpers after issue 46)
+    if (!i.claims.precision.empty()) {  // the author's own words: inert text (md_inline quotes it in a report)
       auto& c = s.claims[static_cast<std::size_t>(
           std::find_if(s.claims.begin(), s.claims.end(),
                        [&](const IntegratorClaims& x) { return x.integrator == i.name; }) -

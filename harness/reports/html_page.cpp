@@ -1,16 +1,24 @@
 #include "harness/reports/html_page.hpp"
 
+#include <cmark-gfm-core-extensions.h>
+#include <cmark-gfm-extension_api.h>
+#include <cmark-gfm.h>
+#include <cmark-gfm/render.h>
+
 #include <cctype>
+#include <cstdlib>
+#include <memory>
+#include <mutex>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace gm::harness {
 
 namespace {
 
-bool is_punct(char c) { return std::ispunct(static_cast<unsigned char>(c)) != 0; }
-
-// An anchor or a relative path inside the report folder: the only link targets a page keeps.
+// An anchor or a relative path inside the report folder: the only link targets a page keeps. No
+// scheme (no ':'), no absolute path, no "..", nothing percent-encoded: a path of the report's own files.
 bool safe_target(const std::string& t) {
   if (t.empty()) return false;
   if (t[0] == '#') {
@@ -33,161 +41,7 @@ std::string link_target(std::string t, const MarkdownHtml& o) {
   return path + frag;
 }
 
-// The closing `)` of a link or image target starting at `at` (after the `(`), or npos.
-std::size_t target_end(const std::string& s, std::size_t at) {
-  for (std::size_t i = at; i < s.size(); ++i) {
-    if (s[i] == ')') return i;
-    if (s[i] == ' ' || s[i] == '\n') return std::string::npos;
-  }
-  return std::string::npos;
-}
-
-// The `]` closing a bracket opened before `at`, skipping escapes and code spans, or npos.
-std::size_t bracket_end(const std::string& s, std::size_t at) {
-  int depth = 1;
-  for (std::size_t i = at; i < s.size(); ++i) {
-    if (s[i] == '\\') {
-      ++i;
-    } else if (s[i] == '[') {
-      ++depth;
-    } else if (s[i] == ']' && --depth == 0) {
-      return i;
-    }
-  }
-  return std::string::npos;
-}
-
-std::string inline_html(const std::string& s, const MarkdownHtml& o, bool in_link = false) {
-  std::string out;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    const char c = s[i];
-    if (c == '\\' && i + 1 < s.size() && is_punct(s[i + 1])) {
-      out += html_escape(std::string(1, s[++i]));
-      continue;
-    }
-    if (c == '`') {
-      std::size_t n = 0;
-      while (i + n < s.size() && s[i + n] == '`') ++n;
-      const std::string fence(n, '`');
-      std::size_t close = s.find(fence, i + n);
-      while (close != std::string::npos && close + n < s.size() && s[close + n] == '`')
-        close = s.find(fence, close + n + 1);
-      if (close == std::string::npos) {
-        out += fence;
-        i += n - 1;
-        continue;
-      }
-      std::string code = s.substr(i + n, close - i - n);
-      if (code.size() >= 2 && code.front() == ' ' && code.back() == ' ') code = code.substr(1, code.size() - 2);
-      out += "<code>" + html_escape(code) + "</code>";
-      i = close + n - 1;
-      continue;
-    }
-    if (c == '*' && i + 1 < s.size() && s[i + 1] == '*') {
-      const std::size_t close = s.find("**", i + 2);
-      if (close != std::string::npos && close > i + 2) {
-        out += "<strong>" + inline_html(s.substr(i + 2, close - i - 2), o, in_link) + "</strong>";
-        i = close + 1;
-        continue;
-      }
-    }
-    const bool image = c == '!' && i + 1 < s.size() && s[i + 1] == '[';
-    if ((c == '[' || image) && !in_link) {
-      const std::size_t open = image ? i + 1 : i;
-      const std::size_t close = bracket_end(s, open + 1);
-      if (close != std::string::npos && close + 1 < s.size() && s[close + 1] == '(') {
-        const std::size_t end = target_end(s, close + 2);
-        if (end != std::string::npos) {
-          const std::string text = s.substr(open + 1, close - open - 1), target = s.substr(close + 2, end - close - 2);
-          if (image) {
-            const std::string src = o.image && safe_target(target) ? o.image(target) : "";
-            out += src.empty() ? "<em>[figure: " + html_escape(target) + "]</em>"
-                               : "<img src=\"" + html_escape(src) + "\" alt=\"" + html_escape(text) + "\">";
-          } else if (safe_target(target)) {
-            out += "<a href=\"" + html_escape(link_target(target, o)) + "\">" + inline_html(text, o, true) + "</a>";
-          } else {
-            out += inline_html(text, o, true) + " (" + html_escape(target) + ")";
-          }
-          i = end;
-          continue;
-        }
-      }
-    }
-    if (c == '<' && s.compare(i, 4, "<br>") == 0) {
-      out += "<br>";
-      i += 3;
-      continue;
-    }
-    // An entity the Markdown already spells (md_inline writes < as &lt;) is one character, not
-    // text to escape again ("&amp;lt;" showed "&lt;ad*_xi mu, eta&gt;" in report.html).
-    if (c == '&') {
-      bool entity = false;
-      for (const char* e : {"&lt;", "&gt;", "&amp;", "&quot;", "&#39;"})
-        if (s.compare(i, std::char_traits<char>::length(e), e) == 0) {
-          out += e;
-          i += std::char_traits<char>::length(e) - 1;
-          entity = true;
-          break;
-        }
-      if (entity) continue;
-    }
-    out += html_escape(std::string(1, c));
-  }
-  return out;
-}
-
-std::string trim(const std::string& s) {
-  const auto a = s.find_first_not_of(" \t");
-  if (a == std::string::npos) return "";
-  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
-}
-
-// The cells of a table row, split at unescaped pipes outside code spans.
-std::vector<std::string> table_cells(const std::string& line) {
-  std::string s = trim(line);
-  if (!s.empty() && s.front() == '|') s.erase(0, 1);
-  if (!s.empty() && s.back() == '|' && (s.size() < 2 || s[s.size() - 2] != '\\')) s.pop_back();
-  std::vector<std::string> cells;
-  std::string cur;
-  bool code = false;
-  for (std::size_t i = 0; i < s.size(); ++i) {
-    if (s[i] == '\\' && i + 1 < s.size()) {
-      cur += s[i];
-      cur += s[++i];
-    } else if (s[i] == '`') {
-      code = !code;
-      cur += s[i];
-    } else if (s[i] == '|' && !code) {
-      cells.push_back(trim(cur));
-      cur.clear();
-    } else {
-      cur += s[i];
-    }
-  }
-  cells.push_back(trim(cur));
-  return cells;
-}
-
-bool is_table_rule(const std::string& line) {
-  const std::string t = trim(line);
-  if (t.empty() || t[0] != '|') return false;
-  for (char c : t)
-    if (c != '|' && c != '-' && c != ':' && c != ' ') return false;
-  return t.find("---") != std::string::npos;
-}
-
-bool anchor_line(const std::string& line, std::string* id) {
-  static const std::string open = "<a id=\"", close = "\"></a>";
-  const std::string t = trim(line);
-  if (t.rfind(open, 0) != 0 || t.size() < open.size() + close.size() ||
-      t.compare(t.size() - close.size(), close.size(), close) != 0)
-    return false;
-  const std::string x = t.substr(open.size(), t.size() - open.size() - close.size());
-  if (!safe_target("#" + x)) return false;
-  *id = x;
-  return true;
-}
-
+// A heading's id, from its words: "What to fix" -> "what-to-fix".
 std::string slug(const std::string& text) {
   std::string out;
   for (char c : text) {
@@ -199,6 +53,127 @@ std::string slug(const std::string& text) {
   while (!out.empty() && out.back() == '-') out.pop_back();
   return out;
 }
+
+// The words of a node as a reader sees them (a heading's, an image's description).
+std::string plain_text(cmark_node* node) {
+  std::string out;
+  cmark_iter* it = cmark_iter_new(node);
+  for (cmark_event_type ev; (ev = cmark_iter_next(it)) != CMARK_EVENT_DONE;) {
+    cmark_node* n = cmark_iter_get_node(it);
+    if (ev != CMARK_EVENT_ENTER) continue;
+    const cmark_node_type type = cmark_node_get_type(n);
+    if (type == CMARK_NODE_TEXT || type == CMARK_NODE_CODE) out += cmark_node_get_literal(n);
+    if (type == CMARK_NODE_SOFTBREAK || type == CMARK_NODE_LINEBREAK) out += ' ';
+  }
+  cmark_iter_free(it);
+  return out;
+}
+
+cmark_node* text_node(const std::string& text) {
+  cmark_node* n = cmark_node_new(CMARK_NODE_TEXT);
+  cmark_node_set_literal(n, text.c_str());
+  return n;
+}
+
+// The HTML the page writes itself, not the Markdown: a line break, an anchor, a figure's <img>.
+// Such a node is an HTML node marked with this extension, and only a node so marked is written as
+// it is; the library's safe mode drops every other HTML node, so raw HTML from the Markdown never
+// reaches the page. (A marked node rather than a custom one: a table cell may hold no custom node
+// and no line break, but may hold HTML.) The renderer's buffer is the one the library's own
+// extensions write to (cmark-gfm/render.h).
+void write_page_html(cmark_syntax_extension*, cmark_html_renderer* renderer, cmark_node* node, cmark_event_type ev,
+                     int) {
+  if (ev != CMARK_EVENT_EXIT) cmark_strbuf_puts(renderer->html, cmark_node_get_literal(node));
+}
+
+cmark_syntax_extension* page_html() {
+  static cmark_syntax_extension* const extension = [] {
+    cmark_syntax_extension* e = cmark_syntax_extension_new("geomech-page-html");
+    cmark_syntax_extension_set_html_render_func(e, write_page_html);
+    return e;
+  }();
+  return extension;
+}
+
+void mark_as_page_html(cmark_node* n) {
+  if (!cmark_node_set_syntax_extension(n, page_html())) throw std::logic_error("libcmark-gfm: cannot mark a node");
+}
+
+// A new node of the page's own HTML; every value in `html` escaped by the caller.
+cmark_node* page_html_node(cmark_node_type type, const std::string& html) {
+  cmark_node* n = cmark_node_new(type);
+  cmark_node_set_literal(n, html.c_str());
+  mark_as_page_html(n);
+  return n;
+}
+
+void replace(cmark_node* old, cmark_node* with) {
+  if (!cmark_node_replace(old, with)) {
+    cmark_node_free(with);
+    throw std::logic_error(std::string("libcmark-gfm: a ") + cmark_node_get_type_string(old) + " cannot become a " +
+                           cmark_node_get_type_string(with));
+  }
+  cmark_node_free(old);
+}
+
+// The two forms of HTML the reports write themselves: `<br>` (md_inline's newline, inside a table
+// cell or a list item) and a paragraph of just `<a id="..."></a>` (the anchor before a section,
+// which report.md's links point to). Any other raw HTML is left to the library's safe mode.
+bool is_line_break(cmark_node* n) { return std::string(cmark_node_get_literal(n)) == "<br>"; }
+
+bool anchor_paragraph(cmark_node* p, std::string* id) {
+  static const std::string open = "<a id=\"", close = "\">";
+  cmark_node* a = cmark_node_first_child(p);
+  cmark_node* b = a ? cmark_node_next(a) : nullptr;
+  if (!b || cmark_node_next(b) || cmark_node_get_type(a) != CMARK_NODE_HTML_INLINE ||
+      cmark_node_get_type(b) != CMARK_NODE_HTML_INLINE || std::string(cmark_node_get_literal(b)) != "</a>")
+    return false;
+  const std::string t = cmark_node_get_literal(a);
+  if (t.rfind(open, 0) != 0 || t.size() < open.size() + close.size() ||
+      t.compare(t.size() - close.size(), close.size(), close) != 0)
+    return false;
+  *id = t.substr(open.size(), t.size() - open.size() - close.size());
+  return safe_target("#" + *id);
+}
+
+// A link to a file of the report (or an anchor) is kept, "X.md" pointing to "X.html"; any other
+// is unlinked: its text stays, followed by its target as text ("far (https://example.org/x)").
+void keep_or_unlink(cmark_node* link, const MarkdownHtml& o) {
+  const std::string url = cmark_node_get_url(link);
+  if (safe_target(url)) {
+    cmark_node_set_url(link, link_target(url, o).c_str());
+    return;
+  }
+  while (cmark_node* child = cmark_node_first_child(link))
+    if (!cmark_node_insert_before(link, child)) throw std::logic_error("libcmark-gfm: cannot unlink a link's text");
+  replace(link, text_node(" (" + url + ")"));
+}
+
+// A figure of the report, inline as a data: URI (the page loads nothing), or its path in words.
+// The <img> is the page's own: the library's safe mode blanks every data: URI but png, gif, jpeg
+// and webp ones, and the figures are SVG.
+void inline_figure(cmark_node* image, const MarkdownHtml& o) {
+  const std::string url = cmark_node_get_url(image);
+  const std::string src = o.image && safe_target(url) ? o.image(url) : "";
+  if (src.empty()) {
+    cmark_node* em = cmark_node_new(CMARK_NODE_EMPH);
+    cmark_node_append_child(em, text_node("[figure: " + url + "]"));
+    replace(image, em);
+  } else {
+    replace(image, page_html_node(CMARK_NODE_HTML_INLINE, "<img src=\"" + html_escape(src) + "\" alt=\"" +
+                                                              html_escape(plain_text(image)) + "\">"));
+  }
+}
+
+struct ParserFree {
+  void operator()(cmark_parser* p) const { cmark_parser_free(p); }
+};
+struct NodeFree {
+  void operator()(cmark_node* n) const { cmark_node_free(n); }
+};
+struct CharFree {
+  void operator()(char* s) const { std::free(s); }
+};
 
 }  // namespace
 
@@ -255,113 +230,61 @@ std::string base64(std::string_view bytes) {
 }
 
 std::string markdown_to_html(const std::string& md, const MarkdownHtml& o) {
-  std::vector<std::string> lines;
-  {
-    std::istringstream in(md);
-    for (std::string line; std::getline(in, line);) {
-      if (!line.empty() && line.back() == '\r') line.pop_back();
-      lines.push_back(line);
-    }
-  }
-  std::ostringstream html;
-  std::vector<std::string> paragraph;
-  auto flush_paragraph = [&] {
-    if (paragraph.empty()) return;
-    std::string text;
-    for (const auto& l : paragraph) text += (text.empty() ? "" : "\n") + l;
-    html << "<p>" << inline_html(text, o) << "</p>\n";
-    paragraph.clear();
-  };
-  for (std::size_t i = 0; i < lines.size(); ++i) {
-    const std::string& line = lines[i];
-    const std::string t = trim(line);
+  static std::once_flag registered;
+  std::call_once(registered, cmark_gfm_core_extensions_ensure_registered);
+  // Safe mode: CMARK_OPT_UNSAFE is never set, so the library writes raw HTML as
+  // "<!-- raw HTML omitted -->" and blanks javascript:, vbscript:, file: and data: links. (In
+  // 0.29 that is the default; CMARK_OPT_SAFE is kept for its name and does nothing.) Invalid UTF-8
+  // becomes U+FFFD.
+  const int options = CMARK_OPT_SAFE | CMARK_OPT_VALIDATE_UTF8;
+  std::unique_ptr<cmark_parser, ParserFree> parser(cmark_parser_new(options));
+  cmark_syntax_extension* table = cmark_find_syntax_extension("table");
+  if (!parser || !table || !cmark_parser_attach_syntax_extension(parser.get(), table))
+    throw std::runtime_error("libcmark-gfm: cannot start a parser with GitHub's tables");
+  cmark_parser_feed(parser.get(), md.data(), md.size());
+  std::unique_ptr<cmark_node, NodeFree> doc(cmark_parser_finish(parser.get()));
+
+  // The nodes to change, innermost first (the reverse of document order), so that a node is changed
+  // before anything holding it is replaced and freed.
+  std::vector<cmark_node*> nodes;
+  cmark_iter* it = cmark_iter_new(doc.get());
+  for (cmark_event_type ev; (ev = cmark_iter_next(it)) != CMARK_EVENT_DONE;)
+    if (ev == CMARK_EVENT_ENTER) nodes.push_back(cmark_iter_get_node(it));
+  cmark_iter_free(it);
+  for (auto n = nodes.rbegin(); n != nodes.rend(); ++n) {
     std::string id;
-    // Fenced code: as long a fence closes it.
-    if (t.rfind("```", 0) == 0 || t.rfind("~~~", 0) == 0) {
-      flush_paragraph();
-      const char f = t[0];
-      std::size_t n = 0;
-      while (n < t.size() && t[n] == f) ++n;
-      std::string code;
-      std::size_t j = i + 1;
-      for (; j < lines.size(); ++j) {
-        const std::string u = trim(lines[j]);
-        if (u.size() >= n && u.find_first_not_of(f) == std::string::npos) break;
-        code += lines[j] + "\n";
-      }
-      html << "<pre><code>" << html_escape(code) << "</code></pre>\n";
-      i = j;
-      continue;
+    switch (cmark_node_get_type(*n)) {
+      case CMARK_NODE_HTML_INLINE:
+        if (is_line_break(*n)) mark_as_page_html(*n);
+        break;
+      case CMARK_NODE_PARAGRAPH:
+        if (anchor_paragraph(*n, &id))
+          replace(*n, page_html_node(CMARK_NODE_HTML_BLOCK, "<a id=\"" + html_escape(id) + "\"></a>\n"));
+        break;
+      case CMARK_NODE_LINK:
+        keep_or_unlink(*n, o);
+        break;
+      case CMARK_NODE_IMAGE:
+        inline_figure(*n, o);
+        break;
+      default:
+        break;
     }
-    if (t.empty()) {
-      flush_paragraph();
-      continue;
-    }
-    if (anchor_line(line, &id)) {
-      flush_paragraph();
-      html << "<a id=\"" << html_escape(id) << "\"></a>\n";
-      continue;
-    }
-    if (t[0] == '#') {
-      std::size_t level = 0;
-      while (level < t.size() && t[level] == '#') ++level;
-      if (level <= 6 && level < t.size() && t[level] == ' ') {
-        flush_paragraph();
-        const std::string text = trim(t.substr(level + 1));
-        html << "<h" << level << " id=\"" << slug(text) << "\">" << inline_html(text, o) << "</h" << level << ">\n";
-        continue;
-      }
-    }
-    if (t[0] == '|' && i + 1 < lines.size() && is_table_rule(lines[i + 1])) {
-      flush_paragraph();
-      html << "<table>\n<thead><tr>";
-      for (const auto& c : table_cells(line)) html << "<th>" << inline_html(c, o) << "</th>";
-      html << "</tr></thead>\n<tbody>\n";
-      std::size_t j = i + 2;
-      for (; j < lines.size() && !trim(lines[j]).empty() && trim(lines[j])[0] == '|'; ++j) {
-        html << "<tr>";
-        for (const auto& c : table_cells(lines[j])) html << "<td>" << inline_html(c, o) << "</td>";
-        html << "</tr>\n";
-      }
-      html << "</tbody>\n</table>\n";
-      i = j - 1;
-      continue;
-    }
-    if (t.rfind("- ", 0) == 0 || t.rfind("* ", 0) == 0) {
-      flush_paragraph();
-      // A list: items by their indent (two spaces a level); a line without a marker continues the item.
-      int depth = 0;
-      std::size_t j = i;
-      bool open_item = false;
-      for (; j < lines.size(); ++j) {
-        const std::string& l = lines[j];
-        const std::string u = trim(l);
-        if (u.empty()) break;
-        const bool item = u.rfind("- ", 0) == 0 || u.rfind("* ", 0) == 0;
-        if (!item) {
-          if (!open_item) break;
-          html << "\n" << inline_html(u, o);
-          continue;
-        }
-        const int level = static_cast<int>(l.find_first_not_of(' ') / 2) + 1;
-        if (level > depth) {
-          for (; depth < level; ++depth) html << "\n<ul>\n<li>";
-        } else {
-          html << "</li>\n";
-          for (; depth > level; --depth) html << "</ul>\n</li>\n";
-          html << "<li>";
-        }
-        html << inline_html(u.substr(2), o);
-        open_item = true;
-      }
-      for (; depth > 0; --depth) html << "</li>\n</ul>\n";
-      i = j - 1;
-      continue;
-    }
-    paragraph.push_back(t);
   }
-  flush_paragraph();
-  return html.str();
+
+  // Block by block, so that each top-level heading gets the id its words give it ("## What to fix"
+  // -> <h2 id="what-to-fix">): the library writes none, and its <hN> is the first thing it writes.
+  std::string html;
+  cmark_llist* extensions = cmark_parser_get_syntax_extensions(parser.get());
+  for (cmark_node* block = cmark_node_first_child(doc.get()); block; block = cmark_node_next(block)) {
+    const std::unique_ptr<char, CharFree> rendered(cmark_render_html(block, options, extensions));
+    std::string part = rendered.get();
+    if (cmark_node_get_type(block) == CMARK_NODE_HEADING)
+      if (const std::string id = slug(plain_text(block)); !id.empty() && part.rfind("<h", 0) == 0)
+        part.insert(3, " id=\"" + id + "\"");
+    html += part;
+  }
+  return html;
 }
 
 std::string html_page(const std::string& title, const std::string& body, const std::string& script) {

@@ -1,9 +1,10 @@
-// Reports as HTML pages that need nothing but themselves: the Markdown the reports write,
-// turned into HTML, and a page around it. A page loads nothing (its Content-Security-Policy allows
-// no network at all), its figures are inline (data: URIs), and every text is escaped: raw HTML in the
-// Markdown is shown as text, but for the two forms the reports write themselves (`<br>` in a table
-// cell, `<a id="..."></a>` before a heading). Links go only to anchors and to relative paths inside
-// the report folder; anything else is shown as text.
+// Reports as HTML pages that need nothing but themselves: the Markdown the reports write, rendered
+// by libcmark-gfm (CommonMark with GitHub's tables) in its safe mode, and a page around it. A page
+// loads nothing (its Content-Security-Policy allows no network at all), its figures are inline
+// (data: URIs), and every text is escaped once. Raw HTML in the Markdown is dropped, but for the two
+// forms the reports write themselves (`<br>` in a table cell or list item, a paragraph of
+// `<a id="..."></a>` before a heading). Links go only to anchors and to relative paths inside the
+// report folder; any other link is unlinked, its text kept and its target shown as text.
 #pragma once
 
 #include <functional>
@@ -26,8 +27,8 @@ struct MarkdownHtml {
   bool md_links_to_html = true;
 };
 
-// The HTML of the Markdown the reports write: headings, paragraphs, lists (nested by two spaces),
-// pipe tables, fenced code, **bold**, `code`, links and images.
+// The HTML of CommonMark with GitHub's pipe tables: each top-level heading with an id from its words
+// ("## What to fix" -> <h2 id="what-to-fix">), links and images as above.
 std::string markdown_to_html(const std::string& markdown, const MarkdownHtml& options = {});
 
 // A whole page: <!DOCTYPE html>, the title, the suite's style, `body`, and `script` (inline; may be

@@ -1,4 +1,4 @@
-// Integrator claims, verified for any subject's integrators (the harness of issue 6 runs these on
+// Integrator claims, verified for any subject's integrators (harness/ runs these on
 // students' code): order, symmetry (time reversibility), the invariants claimed to be kept to
 // round-off (Casimir, energy, orthogonality of O, spectrum of M), and the Poisson property.
 //

@@ -820,7 +820,7 @@ void integrator_local_order(const Subject<T>&, const Integrator<T>& in, const In
   const T factor = draw_step_factor<T>();
   const T t_s = T(1) / dyn::at_least_one(T(norm_inf(x0.Pi) / I.minCoeff()));
   std::vector<T> steps = local_order_steps<T>(c.order, factor, t_s);
-  // Not below a declared smallest step.
+  // Not below the smallest step the integrator declares it takes (its domain).
   std::erase_if(steps, [](const T& h) { return to_double(h) < current_step_domain().min_h; });
   // The oracle's times must increase; the steps decrease.
   std::vector<T> times(steps.rbegin(), steps.rend());
@@ -915,7 +915,7 @@ void manakov_integrator_local_order(const Subject<T>&, const Integrator<T>& in, 
   const ManakovState<T> x0{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
   const T factor = draw_step_factor<T>();
   std::vector<T> steps = local_order_steps<T>(c.order, factor, T(1));
-  // Not below a declared smallest step.
+  // Not below the smallest step the integrator declares it takes (its domain).
   std::erase_if(steps, [](const T& h) { return to_double(h) < current_step_domain().min_h; });
   std::vector<T> times(steps.rbegin(), steps.rend());
   std::vector<ManakovState<T>> exact = dyn::oracle_manakov(a, x0, times);

@@ -1,5 +1,5 @@
 // Pointwise forms of two dynamical ingredients, checked exactly: the reconstruction formula
-// (2.10) and the recovery of Manakov's Omega from M (2.34). Flows along them are issue 4's;
+// (2.10) and the recovery of Manakov's Omega from M (2.34). Flows along them are checked by integrating;
 // these catch the convention mistakes (a right-invariant reconstruction, an Omega recovered as if
 // A commuted with it) at a single point, with exact rational inputs.
 #include "properties/registry.hpp"

@@ -66,7 +66,7 @@ inline constexpr int kVectorRegimes = 8;
 
 // Non-dyadic values k / (3 * 2^bits): exact in rationals, correctly rounded in Real50 and double,
 // and not representable in double: a 50-digit computation that passes through double changes
-// them in the 17th digit (regime "thirds", issue 12's precision class).
+// them in the 17th digit (regime "thirds", of the precision class: it catches a cast to double).
 template <class T>
 T third(const T& x) {
   return x / T(3);

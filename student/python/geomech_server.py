@@ -284,7 +284,7 @@ def load(path):
 
 
 def inert(text):
-    """Text from the student's code as it may travel and be shown (issue 34): a lone surrogate (from
+    """Text from the student's code as it may travel and be shown: a lone surrogate (from
     bytes decoded with surrogateescape, or '\\udcff' written in a string), which json.dumps would
     send as an escape no UTF-8 reader accepts, becomes the visible text \\udcff. Control characters
     are made visible on the harness's side, where every report is written."""
@@ -383,7 +383,7 @@ def probe(fn, sig, scalar):
     """None when fn works in this scalar; ("inexact", why) when its result is not of this scalar (a
     float where an mpf or a Fraction is asked: the code computes in double only); ("raised", why)
     when it raises. Only the first leaves the slot out of the scalar: an exception is the slot's own
-    failure there, and its checks show it with the traceback (issue 49: a TypeError in 50-digit code
+    failure there, and its checks show it with the traceback (a TypeError in 50-digit code was once
     read as "not provided")."""
     result, args = sig
     try:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Validates a results.json against the format its platform documents (issue 49).
+"""Validates a results.json against the format its platform documents (Gradescope, PrairieLearn).
 
   validate_results.py gradescope FILE     Gradescope's autograder output
   validate_results.py prairielearn FILE   PrairieLearn's external grader results

@@ -2,7 +2,7 @@
 // confirmed by this test's own computation, written here without the suite: ODE called directly,
 // a reference solution of the free rigid body by classical RK4 on Euler's equations (2.2) and the
 // quaternion's kinematics, and the invariants computed from ODE's own state (its quaternion and
-// world-frame angular velocity). Issue 48.
+// world-frame angular velocity), so that a finding on a real engine never rests on the suite alone.
 //
 //   ode_confirm REPORT_DIR/verdicts.json
 //

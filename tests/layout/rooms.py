@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks that no file includes a room above its own (issue 50; docs/DEVELOPING.md, "Layout").
+"""Checks that no file includes a room above its own (docs/DEVELOPING.md, "Layout").
 
 A room is a folder whose README.md has a line
 

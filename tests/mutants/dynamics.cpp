@@ -196,7 +196,7 @@ GM_MUTANT(manakov_isospectral_explicit,
             }
           });
 
-// Issue 33's negative control for the Manakov step's own equation: the implicit midpoint rule of
+// The negative control for the Manakov step's own equation: the implicit midpoint rule of
 // dM/dt = [Omega, M], the commutator of (2.36) reversed (its M is the reference step's taken with
 // -h), the attitude still turned by dO/dt = O Omega. A midpoint rule, so it keeps tr(M^2), the
 // energy and O^T O; of the midpoint's claims only the order is false, and the failure must say why:

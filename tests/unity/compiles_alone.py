@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Checks that every file compiled in a unity batch also compiles alone (issue 37).
+"""Checks that every file compiled in a unity batch also compiles alone (its own includes suffice).
 
 In a unity batch (CMakeLists.txt, GEOMECH_UNITY_BUILD) a file sees everything the files before it
 included: one that forgot an #include compiles there and fails the day it is compiled alone (with

@@ -92,7 +92,7 @@ GM_MUTANT(clebsch_midpoint_loose_solve,
           LooseMidpoint{});
 GM_MUTANT_WRONG_ONLY_IN(clebsch_midpoint_loose_solve, ScalarKind::MP50);
 
-// Issue 33's negative controls for the Clebsch steps' own equations. (3.23) written with the
+// Negative controls for the Clebsch steps' own fields, against the notes'. (3.23) written with the
 // notes' printed momentum M = (P^T Q - Q^T P)/2 (erratum mm.manakov-clebsch): Omega is linear in M,
 // so the field is -1/2 of (3.23)'s and the step is the midpoint rule with -h/2. (3.21) with the
 // sign of both equations reversed (dQ/dt = Omega x Q): the midpoint rule with -h. Both stay

@@ -1,4 +1,4 @@
-// Negative controls for what issue 47 added to the integrator checks: the domain check
+// Negative controls for two integrator checks that judge behaviour, not formulas: the domain check
 // (properties/integrators/integrator_domain.cpp) and the long-time energy told apart by its trend
 // (properties/integrators/support/long_time.hpp).
 #include "impl/integrators.hpp"
