@@ -42,11 +42,6 @@ struct Probe {
   std::string message;
 };
 
-template <class T>
-T pow2(int k) {
-  return gen::pow2<T>(k);
-}
-
 // What the probes say, in one sentence, and whether the step works everywhere they went.
 inline std::string verdict_of(const std::vector<Probe>& probes, const StepDomain& declared, bool* works) {
   std::vector<const Probe*> bad;

@@ -22,6 +22,7 @@
 #pragma once
 
 #include "properties/support/generators.hpp"
+#include "properties/support/pow2.hpp"
 #include "properties/support/show.hpp"
 
 #include <ostream>
@@ -34,14 +35,7 @@ namespace gm::gen {
 // last regimes only in the last cases. Still shrinks toward lo (the generic regime).
 inline rc::Gen<int> uniform(int lo, int hi) { return rc::gen::resize(100, rc::gen::inRange(lo, hi)); }
 
-// 2^e exactly, in any scalar.
-template <class T>
-T pow2(int e) {
-  T x(1);
-  for (int i = 0; i < e; ++i) x *= T(2);
-  for (int i = 0; i > e; --i) x /= T(2);
-  return x;
-}
+using gm::pow2;  // 2^e exactly, in any scalar (pow2.hpp)
 
 // The scale lambda of a motion seen in other units: 2^k, k = 0, 1, -1, ..., 64, -64, in `in`
 // cases of `of`, else 1 (both shrink toward 1). Euler's equations, (2.20) and (2.34) are

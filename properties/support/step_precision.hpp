@@ -19,6 +19,7 @@
 #pragma once
 
 #include "core/subject.hpp"
+#include "properties/support/pow2.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/step_guard.hpp"
 #include "properties/support/tolerance.hpp"
@@ -109,12 +110,7 @@ bool returned_input(const RigidBodyState<T>& y, const RigidBodyState<T>& x) {
 
 namespace stepprecision {
 
-template <class T>
-T pow2(int k) {
-  T x(1);
-  for (int i = 0; i < (k < 0 ? -k : k); ++i) x = k < 0 ? x / T(2) : x * T(2);
-  return x;
-}
+using gm::pow2;  // 2^k exactly, in any scalar (pow2.hpp)
 
 // The smallest relative delta of the largest component of Pi that step(x + delta, h) - step(x, h)
 // still follows (within a factor of 4: the step is near the identity at h |Omega| = 2^-6), or 0 when

@@ -22,6 +22,7 @@
 #include "core/declared_step.hpp"
 #include "core/subject.hpp"
 #include "properties/support/named_inputs.hpp"
+#include "properties/support/pow2.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/show.hpp"
 #include "properties/support/step_guard.hpp"
@@ -36,12 +37,7 @@
 
 namespace gm::stepprobe {
 
-template <class T>
-T pow2(int k) {
-  T x(1);
-  for (int i = 0; i < (k < 0 ? -k : k); ++i) x = k < 0 ? x / T(2) : x * T(2);
-  return x;
-}
+using gm::pow2;  // 2^k exactly, in any scalar (pow2.hpp)
 
 // |Omega| = max |Pi_i / I_i|, the motion's rate (at least 2^-40: a body at rest has none).
 template <class T>
