@@ -352,8 +352,21 @@ TEST(RemoteSubject, AStarvedHandshakeIsTheMachinesNotTheCodes) {
       ADD_FAILURE() << "a starved handshake was called the code's: " << e.what();
     }
   }
-  auto alone = limited(connect("tests/remote/stateful.py"));
-  EXPECT_NO_THROW(alone->hello());
+  // Alone, it answers. On a machine busy with other work the kernel's accounting may starve this
+  // one too, rightly the machine's: it is asked again, as the fault's own fix says, up to three
+  // times; any other error, or a fourth starved handshake, fails the test.
+  std::string starved;
+  bool answered = false;
+  for (int attempt = 0; attempt < 4 && !answered; ++attempt) {
+    auto alone = limited(connect("tests/remote/stateful.py"));
+    try {
+      alone->hello();
+      answered = true;
+    } catch (const RemoteMachineFault& e) {
+      starved = e.what();
+    }
+  }
+  EXPECT_TRUE(answered) << "alone, the handshake was starved four times: " << starved;
   ::unsetenv("GEOMECH_TEST_HEAVY_IMPORT");
 }
 
