@@ -49,7 +49,7 @@ Catalogue load_catalogue(const std::string& path) {
   json j;
   try {
     j = json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number past double's range (1e999)
     throw std::runtime_error(path + ": not valid JSON: " + e.what());
   }
   Catalogue c;

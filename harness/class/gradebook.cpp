@@ -274,7 +274,7 @@ Rubric parse_rubric(std::string_view json_text, const std::string& source) {
   json doc;
   try {
     doc = json::parse(json_text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number past double's range (1e999)
     throw std::runtime_error("rubric \"" + source + "\": not valid JSON: " + e.what());
   }
   if (!doc.is_object()) rubric_error(r, "(top level)", "expected a JSON object");

@@ -94,7 +94,7 @@ Notebook read_notebook(const std::string& file, const std::string& text) {
   json nb;
   try {
     nb = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number past double's range (1e999)
     std::string why = e.what();
     if (const auto at = why.find("] "); at != std::string::npos) why = why.substr(at + 2);
     throw NotebookError(file + " is not a notebook: its JSON does not parse (" + inert_text(bounded_text(why, 300)) +

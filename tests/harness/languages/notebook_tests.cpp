@@ -107,6 +107,10 @@ TEST(Notebook, AMalformedNotebookIsNamedWithWhatIsWrong) {
   EXPECT_EQ(error("[1, 2]"), "w.ipynb is not a notebook: its JSON is a list, not an object");
   EXPECT_NE(error("{\"cells\": [").find("w.ipynb is not a notebook: its JSON does not parse (parse error at line 1"),
             std::string::npos);
+  // A number past double's range is nlohmann's out_of_range, not its parse_error: still a refusal (the
+  // fuzzer found it uncaught, std::terminate).
+  EXPECT_EQ(error("{\"cells\": [], \"nbformat\": 8e530}"),
+            "w.ipynb is not a notebook: its JSON does not parse (number overflow parsing '8e530')");
   json bad = json::parse(notebook({code("x = 1")}));
   bad["cells"][0]["source"] = {"x = 1\n", 2};
   EXPECT_EQ(error(bad.dump()), "w.ipynb: cell 1: line 2 of its \"source\" is a number; nbformat 4 has a text there");
