@@ -139,8 +139,10 @@ void write_all(int fd, const std::string& s) {
 #ifndef GM_UNDER_ASAN
   if (memory_limit_mb > 0) {
     const rlim_t bytes = static_cast<rlim_t>(memory_limit_mb) * 1024 * 1024;
-    rlimit as{bytes, bytes};
-    ::setrlimit(RLIMIT_AS, &as);
+    // Writable memory (RLIMIT_DATA), not address space: an interpreter started by the check (Node,
+    // whose V8 reserves gigabytes of inaccessible address space for a WebAssembly memory) inherits it.
+    rlimit data{bytes, bytes};
+    ::setrlimit(RLIMIT_DATA, &data);
   }
 #else
   (void)memory_limit_mb;

@@ -37,7 +37,7 @@ struct IsolationOptions {
   // The CPU and run-queue delay the server of worker slot w has had so far (out-of-process
   // implementations); none: the code runs in the task's own process.
   std::function<TreeTimes(int)> worker_times;
-  long memory_limit_mb = 4096;  // address-space limit of a child (not applied under AddressSanitizer)
+  long memory_limit_mb = 4096;  // writable-memory limit of a child, RLIMIT_DATA (not under AddressSanitizer)
   bool isolate = true;          // false: run the tasks in this process, one after the other (debugging)
   // Called in the parent as each task starts (index), and as it finishes (index, its result): a
   // check reports each result the moment it is known (harness/engine/check_events.hpp).

@@ -154,7 +154,10 @@ std::string limits_script(const SandboxLimits& l) {
   limit("-f", (static_cast<long long>(l.file_mb) << 20) / 512);  // dash counts 512-byte blocks
   limit("-n", l.open_files);
   limit("-c", 0);
-  if (l.memory_mb > 0 && !cgroup_keeps("memory")) limit("-v", static_cast<long long>(l.memory_mb) << 10);  // KiB
+  // Without a cgroup, each process's writable memory (RLIMIT_DATA: its heap and private writable
+  // mappings), not its address space: V8 reserves gigabytes of inaccessible address space for
+  // WebAssembly memories (and Node died under a 4 GiB RLIMIT_AS), which RLIMIT_DATA does not count.
+  if (l.memory_mb > 0 && !cgroup_keeps("memory")) limit("-d", static_cast<long long>(l.memory_mb) << 10);  // KiB
   s << "exec \"$@\"\n";
   return s.str();
 }
@@ -258,7 +261,7 @@ std::string sandbox_limits_in_words(const SandboxLimits& l) {
   else if (cgroup_keeps("memory"))
     s << l.memory_mb << " MiB in all (its cgroup)";
   else
-    s << l.memory_mb << " MiB of address space per process (no cgroup here: " << cgroup_limits_in_words() << ")";
+    s << l.memory_mb << " MiB of writable memory per process (no cgroup here: " << cgroup_limits_in_words() << ")";
   s << "; CPU: one share (setsid() refused" << (cgroup_keeps("cpu") ? "; its own cgroup" : "")
     << "), " << l.cpu_seconds << " s per process; files written up to " << l.file_mb << " MiB; " << l.open_files
     << " open files; /tmp " << l.scratch_mb << " MiB";

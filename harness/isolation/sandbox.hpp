@@ -36,7 +36,8 @@ namespace gm::harness {
 
 struct SandboxLimits {
   // The memory of the whole sandbox, its /tmp included: a cgroup's total as root; else each
-  // process's address space (RLIMIT_AS). 0: none (AddressSanitizer reserves terabytes of address space).
+  // process's writable memory (RLIMIT_DATA, which V8's WebAssembly reservations do not count; an
+  // address-space limit would). 0: none (AddressSanitizer maps terabytes of shadow memory).
   long memory_mb = 4096;
   int cpu_seconds = 600;  // RLIMIT_CPU (the harness's own timeout stops a hang sooner)
   // Tasks (processes and threads) of the sandbox's program, its first process included; bubblewrap's

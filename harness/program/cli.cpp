@@ -54,8 +54,8 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
   app.add_option("--jobs,-j", o.jobs, "checks run at once, each in its own process (default: the number of cores)")
       ->check(CLI::Range(1, 256));
   app.add_option("--memory-limit", o.memory_limit_mb,
-                 "memory per check, in MiB (default 4096): each check's address space; untrusted, the whole "
-                 "sandbox's memory as root (a cgroup), else each of its processes' address space")
+                 "memory per check, in MiB (default 4096): each check's writable memory; untrusted, the whole "
+                 "sandbox's memory as root (a cgroup), else each of its processes' writable memory")
       ->check(CLI::Range(64L, 1L << 30));
   app.add_option("--report", o.report_dir,
                  "write report.md, junit.xml, verdicts.json and figures/ into this directory");

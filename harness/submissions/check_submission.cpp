@@ -298,8 +298,8 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   // The sandbox clears the environment: what the harness sets for the server is passed again (the
   // reply descriptor itself, 3, is inherited through bubblewrap like 0, 1 and 2).
   spec.env = {{"GEOMECH_SLOT_TABLE", protocol::slot_table_json()}, {"GEOMECH_REPLY_FD", "3"}};
-  // --memory-limit: the whole sandbox's memory (a cgroup's total as root; else each process's address
-  // space, harness/isolation/sandbox.hpp). Whether the sandbox started the server is bubblewrap's word.
+  // --memory-limit: the whole sandbox's memory (a cgroup's total as root; else each process's writable
+  // memory, harness/isolation/sandbox.hpp). Whether the sandbox started the server is bubblewrap's word.
   spec.limits.memory_mb = r.check.memory_limit_mb;
   spec.report_start = true;
   std::string language, why;
