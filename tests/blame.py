@@ -188,8 +188,8 @@ elif MODE == "limits":
               "memory_total.py: the sandbox's processes held more than its 600 MiB total:\n" + text[-2500:])
         print("memory_total.py: " + (m.group(0) if m else "the kernel killed what went past the total"))
     else:
-        print("memory_total.py: no cgroup keeps a memory total here (not root): each process has its own address "
-              "space limit, " + (m.group(0) if m else "nothing held"))
+        print("memory_total.py: no cgroup keeps a memory total here (not root): each process has its own writable-memory "
+              "limit, " + (m.group(0) if m else "nothing held"))
 
 elif MODE == "starved":
     slow = os.path.join(SOURCE, "tests", "blame", "slow_hat.py")
