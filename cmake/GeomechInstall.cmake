@@ -26,9 +26,10 @@ install(DIRECTORY core/ DESTINATION ${GM_INSTALL_INCLUDEDIR}/core FILES_MATCHING
 install(FILES student/geomech/student.hpp DESTINATION ${GM_INSTALL_INCLUDEDIR}/geomech)
 install(FILES student/geomech/detail/scalar_selection.hpp DESTINATION ${GM_INSTALL_INCLUDEDIR}/geomech/detail)
 install(FILES spec/catalogue.json spec/quick_profile.json spec/thorough_only.json DESTINATION ${GM_INSTALL_DATADIR}/spec)
-# The protocol servers that run Python and Octave implementations (core/data_path.hpp finds them).
+# The protocol servers that run Python, Octave and JavaScript implementations (core/data_path.hpp finds them).
 install(FILES student/python/geomech_server.py DESTINATION ${GM_INSTALL_DATADIR}/student/python)
 install(FILES student/octave/geomech_server.m DESTINATION ${GM_INSTALL_DATADIR}/student/octave)
+install(FILES student/javascript/geomech_server.mjs DESTINATION ${GM_INSTALL_DATADIR}/student/javascript)
 
 # The installed toolchain of `geomech check FILE.cpp`, with the prebuilt files named relative to
 # share/geomech-spec/, so that the tree still works after it is moved.

@@ -343,7 +343,8 @@ void add_check_command(CLI::App& app, CheckCommand& c) {
       "Interpreters: a .py file runs in $GEOMECH_PYTHON, else the python3 first on PATH (a venv or pyenv works), else "
       "/usr/bin/python3; it needs mpmath for the 50-digit checks. A .m file runs in geomech-octave-server (Octave's "
       "interpreter linked in) when the octave-cli on PATH is the system's, else in $GEOMECH_OCTAVE or the octave-cli "
-      "on PATH. The report names the interpreter and its version.");
+      "on PATH. A .mjs or .js file runs in $GEOMECH_NODE, else the node first on PATH, else /usr/bin/node (double "
+      "only). The report names the interpreter and its version.");
 }
 
 int run_check_command(CheckCommand& c) {

@@ -130,7 +130,7 @@ const Language* language_named(std::string_view id);
 // The language whose code a notebook kernel runs (`kernel` as the notebook names it, any case), or nullptr.
 const Language* language_of_kernel(std::string_view kernel);
 
-// The extensions in words, for messages: ".cpp, .cc, .py, .m or .ipynb"; and ", nor a folder of .m
+// The extensions in words, for messages: ".cpp, .cc, .py, .m, .mjs, .js or .ipynb"; and ", nor a folder of .m
 // files" (the folder_of_files languages), to follow "not a ... file".
 std::string extensions_in_words();
 std::string folder_in_words();

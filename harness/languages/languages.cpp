@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 const std::vector<Language>& languages() {
   // A new language: its row's file in this room and its line here (docs/DEVELOPING.md, "Adding a language").
-  static const std::vector<Language> table{cpp_row(), python_row(), octave_row(), notebook_row()};
+  static const std::vector<Language> table{cpp_row(), python_row(), octave_row(), javascript_row(), notebook_row()};
   return table;
 }
 
@@ -94,11 +94,10 @@ std::vector<std::string> server_command(const std::string& file, std::string* la
     return l->server(file);
   }
   if (why) {
-    std::string served;
+    std::vector<std::string> served;
     for (const auto& s : languages())
-      if (s.route == Route::Served)
-        for (const auto& e : s.extensions) served += (served.empty() ? "" : " or ") + e;
-    *why = "not a " + served + " file" + folder_in_words();
+      if (s.route == Route::Served) served.insert(served.end(), s.extensions.begin(), s.extensions.end());
+    *why = "not a " + in_words(served, " or ") + " file" + folder_in_words();
   }
   return {};
 }

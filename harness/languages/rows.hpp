@@ -1,5 +1,5 @@
 // The rows of the language table, each built by its own file of this room (cpp.cpp, python.cpp,
-// octave.cpp, notebook.cpp); languages.cpp lists them in the order messages name them.
+// octave.cpp, javascript.cpp, notebook.cpp); languages.cpp lists them in the order messages name them.
 #pragma once
 
 #include "harness/languages/language.hpp"
@@ -11,6 +11,7 @@ namespace gm::harness {
 Language cpp_row();
 Language python_row();
 Language octave_row();
+Language javascript_row();
 Language notebook_row();
 
 // The Octave server with Octave's interpreter linked in (student/octave/octave_server.cpp), beside

@@ -54,6 +54,8 @@ TEST(LanguageRows, ValuesAreWrittenAsTheRowSays) {
   value_style() = language_named("octave")->values;
   EXPECT_EQ(show_value(v), "[1; 2; 3]");
   EXPECT_EQ(show_value(m), "[1, 0, 0; 0, 1, 0; 0, 0, 1]");
+  value_style() = language_named("javascript")->values;
+  EXPECT_EQ(show_value(m), "[[1, 0, 0], [0, 1, 0], [0, 0, 1]]");
   value_style() = before;
 }
 
@@ -64,6 +66,9 @@ TEST(LanguageRows, ReportsNameTheFunctionInTheRowsWords) {
   EXPECT_EQ(slot_named(info, "casimir", "`"), "slot `casimir`");
   info.language = language_named("python");
   EXPECT_EQ(slot_named(info, "casimir", "`"), "Python function `casimir` in mine.py");
+  info.language = language_named("javascript");
+  info.source = "/somewhere/engine.mjs";
+  EXPECT_EQ(slot_named(info, "casimir", "`"), "JavaScript function `casimir` in engine.mjs");
   info.language = language_named("octave");
   EXPECT_EQ(timeout_factor(info), 6);
   info.language = &suite_language();
@@ -81,6 +86,16 @@ TEST(LanguageRows, SourceIsReadByItsRow) {
   const std::string text = "def euler_3_8(I, Pi):\n    return cross(Pi, omega_3_5(I, Pi))\n";
   EXPECT_TRUE(slot_calls_in_text(text, none).empty());
   EXPECT_EQ(slot_calls_in_text(text, py).at("euler_3_8"), (std::set<std::string>{"omega_3_5"}));
+  // JavaScript: what a module exports (ES and CommonJS), not its inner helpers; a call in a comment
+  // or a string is not a call.
+  const Language& js = *language_named("javascript");
+  EXPECT_EQ(js.function_names("export function energy(I, Pi) {}\nfunction helper() {}\nexport const hat = (v) => v;\n"
+                              "exports.vee = function (m) {};\nmodule.exports = { casimir, euler_3_8: e };\n"),
+            (std::vector<std::string>{"casimir", "energy", "euler_3_8", "hat", "vee"}));
+  const std::string js_text =
+      "export function euler_3_8(I, Pi) {\n  // not hat(Pi)\n  const s = \"vee(m)\";\n"
+      "  return cross(Pi, omega_3_5(I, Pi));\n}\nexport const casimir = (Pi) => dot(Pi, Pi);\n";
+  EXPECT_EQ(slot_calls_in_text(js_text, js).at("euler_3_8"), (std::set<std::string>{"omega_3_5"}));
 }
 
 // `geomech slots --<id>`: each row writes a slot's signature in its language.
@@ -92,6 +107,8 @@ TEST(LanguageRows, SignaturesAreWrittenInTheLanguage) {
   const std::string name = casimir->name, signature = casimir->signature;
   EXPECT_EQ(language_named("python")->signature(name, signature), "def casimir(Pi: 3-list) -> scalar");
   EXPECT_EQ(language_named("octave")->signature(name, signature), "function r = casimir(Pi %3x1)  % r: scalar");
+  EXPECT_EQ(language_named("javascript")->signature(name, signature),
+            "export function casimir(Pi)  // (Pi: vec3) -> number");
   EXPECT_EQ(suite_language().signature(name, signature), "casimir  " + signature);
 }
 

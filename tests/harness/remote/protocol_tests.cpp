@@ -1,5 +1,5 @@
-// The slot protocol's client (harness/remote/remote_subject, protocol_codec) against the Python and Octave
-// servers: exact round trips in all three scalars, shape validation naming the slot, an error reply
+// The slot protocol's client (harness/remote/remote_subject, protocol_codec) against the Python, Octave
+// and JavaScript servers: exact round trips in all three scalars, shape validation naming the slot, an error reply
 // carrying the Python traceback; sessions (each check starts from the handshake's state, on one
 // server per worker), a crash failing its check alone with how it died, printing that neither
 // blocks nor breaks the protocol, a hang while loading caught by the handshake's deadline, which is
@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -541,6 +542,74 @@ TEST(RemoteSubject, ARunOfStepsIsTheStepsOneByOne) {
     ASSERT_FALSE(o.d->integrators.empty());
     for (const auto& in : o.d->integrators) check(in, I, RigidBodyState<double>{P, Mat3<double>::Identity()}, 0.125);
   }
+}
+
+// A JavaScript implementation on Node (student/javascript/geomech_server.mjs), in double only: the
+// same values as the Python one, a run of steps the steps one by one.
+TEST(RemoteSubject, JavaScriptCorrectMatchesPython) {
+  ASSERT_EQ(std::system("command -v node > /dev/null 2>&1"), 0)
+      << "node is not installed: apt-get install -y nodejs (./geomech installs it; CI has it)";
+  harness::SubjectInfo ji, pi;
+  const SubjectSet j = remote_subject(connect("examples/students/correct.mjs"), "correct_mjs", ji);
+  const SubjectSet p = remote_subject(python("correct.py"), "correct_py", pi);
+  ASSERT_TRUE(j.d);
+  EXPECT_FALSE(j.mp) << "JavaScript numbers are doubles";
+  EXPECT_FALSE(j.q);
+  EXPECT_NE(ji.scalar_unavailable["mp50"].find("JavaScript numbers are doubles"), std::string::npos);
+  const Vec3<double> I(2, 1, 0.5), P(0.25, -1.5, 3), Q(1, 2, 3);
+  EXPECT_EQ(j.d->euler_3_8(I, P), p.d->euler_3_8(I, P));
+  EXPECT_EQ(j.d->hat(Q), p.d->hat(Q));
+  const auto a = j.d->clebsch_3_21(I, Q, P), b = p.d->clebsch_3_21(I, Q, P);
+  EXPECT_LT((a.first - b.first).norm(), 1e-14 * b.first.norm());
+  EXPECT_LT((a.second - b.second).norm(), 1e-14 * b.second.norm());
+  ASSERT_FALSE(j.d->integrators.empty());
+  const RigidBodyState<double> x{P, Mat3<double>::Identity()};
+  const auto& in = j.d->integrators[0];
+  ASSERT_TRUE(in.rigid_body_run);
+  auto y = x;
+  const auto run = in.rigid_body_run(I, x, 0.125, 5);
+  ASSERT_EQ(run.size(), 5u);
+  for (int k = 0; k < 5; ++k) {
+    y = in.rigid_body_step(I, y, 0.125);
+    EXPECT_EQ(run[k].Pi, y.Pi) << "step " << k + 1;
+    EXPECT_EQ(run[k].O, y.O) << "step " << k + 1;
+  }
+}
+
+// Every way a JavaScript reply goes wrong (tests/remote/javascript_faults.mjs): a step's NaN and
+// infinities cross as what they are (JSON.stringify would write null), a slot's NaN is refused with
+// its place, a throw carries its name, message and the student's stack, a missing return is said,
+// and a vector in a WebAssembly memory's Float64Array is a vector.
+TEST(RemoteSubject, JavaScriptRepliesCarryWhatTheCodeComputed) {
+  ASSERT_EQ(std::system("command -v node > /dev/null 2>&1"), 0)
+      << "node is not installed: apt-get install -y nodejs (./geomech installs it; CI has it)";
+  harness::SubjectInfo info;
+  const SubjectSet s = remote_subject(connect("tests/remote/javascript_faults.mjs"), "faults", info);
+  ASSERT_TRUE(s.d);
+  const Vec3<double> I(2, 1, 0.5), P(0.25, -1.5, 3);
+  EXPECT_EQ(s.d->euler_3_8(I, P), Vec3<double>(P.cross(P.cwiseQuotient(I))));
+  ASSERT_EQ(s.d->integrators.size(), 1u);
+  const auto y = s.d->integrators[0].rigid_body_step(I, RigidBodyState<double>{P, Mat3<double>::Identity()}, 0.01);
+  EXPECT_EQ(y.Pi[0], std::numeric_limits<double>::infinity());
+  EXPECT_EQ(y.Pi[1], std::numeric_limits<double>::infinity());
+  EXPECT_TRUE(std::isnan(y.Pi[2]));
+  auto error_of = [](const std::function<void()>& f) {
+    try {
+      f();
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  const std::string hat = error_of([&] { s.d->hat(P); });
+  EXPECT_NE(hat.find("RangeError: hat is not written yet"), std::string::npos) << hat;
+  EXPECT_NE(hat.find("javascript_faults.mjs:8"), std::string::npos) << "the student's own line: " << hat;
+  EXPECT_EQ(hat.find("geomech_server.mjs"), std::string::npos) << "the server's frames are not the student's: " << hat;
+  const std::string vee = error_of([&] { s.d->vee(Mat3<double>::Identity()); });
+  EXPECT_NE(vee.find("not finite"), std::string::npos) << vee;
+  EXPECT_NE(vee.find("[2]"), std::string::npos) << vee;
+  const std::string casimir = error_of([&] { s.d->casimir(P); });
+  EXPECT_NE(casimir.find("undefined (a function that returns nothing?)"), std::string::npos) << casimir;
 }
 
 TEST(RemoteSubject, RoundTripCost) {

@@ -32,7 +32,7 @@ TEST(LanguageTable, EveryExtensionNamesOneLanguage) {
   EXPECT_EQ(language_of("mine.cc")->id, "c++");
   EXPECT_EQ(language_of("mine.cpp"), language_of("mine.cc"));
   EXPECT_EQ(language_of("notes.txt"), nullptr);
-  EXPECT_EQ(extensions_in_words(), ".cpp, .cc, .py, .m or .ipynb");
+  EXPECT_EQ(extensions_in_words(), ".cpp, .cc, .py, .m, .mjs, .js or .ipynb");
 }
 
 TEST(LanguageTable, ServedLanguagesSayHowTheyStart) {
@@ -50,7 +50,7 @@ TEST(LanguageTable, ServedLanguagesSayHowTheyStart) {
   }
   std::string language, why;
   EXPECT_TRUE(server_command("mine.cc", &language, &why).empty()) << "a compiled language is not served";
-  EXPECT_EQ(why, "not a .py or .m file, nor a folder of .m files");
+  EXPECT_EQ(why, "not a .py, .m, .mjs or .js file, nor a folder of .m files");
 }
 
 TEST(LanguageTable, AFolderOfFunctionFilesIsOneImplementation) {
