@@ -2,8 +2,8 @@
 # through the JavaScript route, then each finding confirmed by the test's own computation with MuJoCo
 # called directly (tests/engines/mujoco_confirm.mjs), so that no finding on a real engine rests on
 # the suite alone.
-#   cmake -DGEOMECH=... -DNODE=node -DFILE=mujoco_free_body.mjs -DCONFIRM=mujoco_confirm.mjs -DOUT=dir
-#         -P run_mujoco_example.cmake
+#   cmake -DGEOMECH=... -DFILE=mujoco_free_body.mjs -DCONFIRM=mujoco_confirm.mjs -DMODE=trusted|untrusted
+#         -DOUT=dir -P run_mujoco_example.cmake
 find_program(NODE_PROGRAM node)
 if(NOT NODE_PROGRAM)
   message(FATAL_ERROR "node is not installed, so MuJoCo cannot be checked: apt-get install -y nodejs (./geomech installs it)")
@@ -14,7 +14,23 @@ if(NOT EXISTS ${dir}/node_modules/mujoco-js/package.json)
                       "(cd examples/engines && npm ci)")
 endif()
 file(REMOVE_RECURSE ${OUT})
-execute_process(COMMAND ${GEOMECH} check ${FILE} --scalar double -p integrator_order -p integrator_unit_quaternion
+set(extra "")
+if(MODE STREQUAL "untrusted")
+  # The package the file names (`// geomech: npm mujoco-js`) is shown to the sandbox only from a
+  # folder the grader trusts: without one, the grader's machine is at fault (exit 3), with its fix.
+  unset(ENV{GEOMECH_LIBRARY_ROOTS})
+  execute_process(COMMAND ${GEOMECH} check ${FILE} --untrusted --scalar double -p integrator_order --quiet
+                          --report ${OUT}/untrusted-without-roots
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(FIND "${err}" "names the npm package mujoco-js (`// geomech: npm mujoco-js`), which is in no folder the grader trusts" at)
+  if(NOT status EQUAL 3 OR at EQUAL -1)
+    message(FATAL_ERROR "without GEOMECH_LIBRARY_ROOTS: exit status ${status} (expected 3, the grader's machine), "
+                        "and the message naming the package and its fix expected in:\n${err}")
+  endif()
+  set(ENV{GEOMECH_LIBRARY_ROOTS} ${dir})
+  set(extra --untrusted)
+endif()
+execute_process(COMMAND ${GEOMECH} check ${FILE} ${extra} --scalar double -p integrator_order -p integrator_unit_quaternion
                         --quiet --report ${OUT}/report
                 RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
 message("${out}")

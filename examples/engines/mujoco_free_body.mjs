@@ -14,6 +14,11 @@
 // integration"; the XML reference, option/integrator): RK4 is "the fourth-order Runge-Kutta method",
 // Euler semi-implicit Euler, implicit and implicitfast first-order implicit-in-velocity methods.
 // Nothing else is claimed: the rest is characterised. MuJoCo computes in double (mjtNum).
+//
+// The `// geomech: npm mujoco-js` line names the package for untrusted mode: behind the sandbox it is
+// found in a folder the grader trusts (GEOMECH_LIBRARY_ROOTS=DIR, DIR/node_modules/mujoco-js) and
+// shown read-only; trusted, Node finds it beside this file (examples/engines/node_modules).
+// geomech: npm mujoco-js
 import loadMujoco from "mujoco-js";
 
 export const description = "MuJoCo 3 (npm mujoco-js 0.0.7, WebAssembly) free rigid body, mj_step";

@@ -103,6 +103,18 @@ std::vector<Definition> javascript_definitions(const std::string& code) {
   return out;
 }
 
+// The npm packages a file names, one `// geomech: npm NAME` line each (NAME as npm spells a package:
+// lower case, digits, - . _ ~, not first a - . or _; an @scope/ before it); a line that names anything else is left out
+// (the import then fails inside the sandbox with Node's own message).
+std::vector<std::string> javascript_named_packages(const std::string& source) {
+  static const std::regex line(R"((?:^|\n)[ \t]*//[ \t]*geomech:[ \t]*npm[ \t]+(\S+)[ \t]*(?=\r?\n|$))");
+  static const std::regex name(R"(^(@[a-z0-9~][a-z0-9._~-]*/)?[a-z0-9~][a-z0-9._~-]*$)");
+  std::set<std::string> names;
+  for (auto it = std::sregex_iterator(source.begin(), source.end(), line); it != std::sregex_iterator(); ++it)
+    if (const std::string n = (*it)[1].str(); n.size() <= 214 && std::regex_match(n, name)) names.insert(n);
+  return {names.begin(), names.end()};
+}
+
 // An argument or result type of the slot table (C++) in JavaScript's words.
 std::string javascript_type(const std::string& t) {
   auto has = [&](const char* w) { return t.find(w) != std::string::npos; };
@@ -183,6 +195,8 @@ Language javascript_row() {
   js.start_probe = {"-e", "new WebAssembly.Memory({ initial: 1 })"};
   js.for_sandbox = node_in_sandbox;
   js.server = node_server;
+  js.named_packages = javascript_named_packages;
+  js.package_folder = "node_modules";
   return js;
 }
 

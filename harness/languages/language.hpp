@@ -102,6 +102,13 @@ struct Language {
   SandboxedInterpreter (*for_sandbox)(const std::string& interpreter) = nullptr;
   bool self_test_by_default = false;
   std::vector<std::string> (*server)(const std::string& file) = nullptr;
+  // The packages a file names for its interpreter's package manager (JavaScript: `// geomech: npm
+  // NAME` lines; null: none), and the folder its interpreter finds them in ("node_modules"). Behind
+  // the sandbox, a named package is found in a folder the grader trusts (GEOMECH_LIBRARY_ROOTS:
+  // ROOT/<package_folder>/NAME) and shown read-only at /<package_folder>/NAME, where the interpreter
+  // looks from the submission's folder.
+  std::vector<std::string> (*named_packages)(const std::string& source) = nullptr;
+  std::string package_folder;
 
   // ---- Notebooks (harness/languages/notebook.hpp): the kernels whose cells are code of this
   // language (a notebook's kernelspec language, language_info name or kernelspec name, compared

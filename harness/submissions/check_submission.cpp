@@ -261,6 +261,50 @@ int run_notebook_check(const SubmissionRequest& r, SubmissionOutcome& out) {
 // Untrusted mode: the implementation runs as its own process in the sandbox, behind the
 // protocol; a C++ file is compiled (sandboxed too) into a protocol server that links the student's
 // code and nothing of the judge. Verdicts are computed here alone.
+// The packages a served file names (`// geomech: npm NAME`), each found under a folder the grader
+// trusts (GEOMECH_LIBRARY_ROOTS: ROOT/node_modules/NAME, or ROOT/NAME when ROOT is itself such a
+// folder) and shown read-only inside at /node_modules/NAME, where the interpreter looks from
+// /submission. Never from the submission's own folder: a stranger's node_modules may link anywhere.
+// False, with what is missing and its fix, when a named package is in no trusted folder: the
+// grader's set-up, not the code.
+bool show_named_packages(const Language& l, const std::string& source, SandboxSpec& spec, std::string& missing) {
+  namespace fs = std::filesystem;
+  const auto names = l.named_packages(source);
+  if (names.empty()) return true;
+  std::vector<std::string> roots;
+  try {
+    roots = trusted_library_roots();
+  } catch (const std::invalid_argument& e) {
+    missing = e.what();
+    return false;
+  }
+  for (const auto& name : names) {
+    std::string found;
+    for (const auto& root : roots) {
+      const fs::path r(root);
+      for (const fs::path& candidate : {r / l.package_folder / name, r.filename() == l.package_folder ? r / name : fs::path()}) {
+        std::error_code ec;
+        if (!candidate.empty() && fs::is_regular_file(candidate / "package.json", ec)) {
+          found = fs::weakly_canonical(candidate, ec).string();
+          break;
+        }
+      }
+      if (!found.empty()) break;
+    }
+    if (found.empty()) {
+      std::string where;
+      for (const auto& root : roots) where += (where.empty() ? "" : ", ") + root;
+      missing = "the file names the npm package " + name + " (`// geomech: npm " + name +
+                "`), which is in no folder the grader trusts (GEOMECH_LIBRARY_ROOTS: " +
+                (where.empty() ? std::string("not set") : where) + "). Fix: `npm install " + name +
+                " --prefix DIR` and GEOMECH_LIBRARY_ROOTS=DIR";
+      return false;
+    }
+    spec.mounts.emplace_back(found, "/" + l.package_folder + "/" + name);
+  }
+  return true;
+}
+
 int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   const std::string& file = r.file;
   BuildOptions bo = r.build;
@@ -348,6 +392,14 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
       std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
       return 2;
     }
+    if (served && !nb && served->named_packages) {
+      std::string missing;
+      if (!show_named_packages(*served, read_stranger_file(file), spec, missing)) {
+        std::cerr << "geomech check: " << file << ": the grader's machine: " << missing << "\n";
+        out.machine_fault = "the grader's machine: " + missing;
+        return kExitMachine;
+      }
+    }
   } else if (const Language* l = language_of(file); l && l->route == Route::Compiled) {
     const Toolchain tc = load_toolchain(default_toolchain_path());
     bo.server = true;
@@ -384,7 +436,8 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
               << "\n";
     return 2;
   }
-  spec.mounts = copy->mounts();
+  const auto copies = copy->mounts();
+  spec.mounts.insert(spec.mounts.begin(), copies.begin(), copies.end());
   return run_protocol_check(r, sandboxed(cmd, spec), language, notes, " --untrusted" + replay_build_options(bo), t0,
                             out, bo.name, nb ? &nb->notebook() : nullptr);
 }

@@ -96,6 +96,14 @@ TEST(LanguageRows, SourceIsReadByItsRow) {
       "export function euler_3_8(I, Pi) {\n  // not hat(Pi)\n  const s = \"vee(m)\";\n"
       "  return cross(Pi, omega_3_5(I, Pi));\n}\nexport const casimir = (Pi) => dot(Pi, Pi);\n";
   EXPECT_EQ(slot_calls_in_text(js_text, js).at("euler_3_8"), (std::set<std::string>{"omega_3_5"}));
+  // The npm packages a file names for the sandbox: npm's spelling only (a path or a flag is no
+  // package); the control: the same name off its own line is not named.
+  ASSERT_NE(js.named_packages, nullptr);
+  EXPECT_EQ(js.named_packages("// geomech: npm mujoco-js\n//geomech: npm @dimforge/rapier3d\n"
+                              "// geomech: npm ../../etc\n// geomech: npm --prefix\nimport x from 'y';\n"),
+            (std::vector<std::string>{"@dimforge/rapier3d", "mujoco-js"}));
+  EXPECT_TRUE(js.named_packages("const s = 'x'; // geomech: npm mujoco-js\n").empty());
+  EXPECT_EQ(language_named("python")->named_packages, nullptr);
 }
 
 // `geomech slots --<id>`: each row writes a slot's signature in its language.
