@@ -5,10 +5,10 @@
 #include "impl/reference_subject.hpp"
 #include "mutation/catalogue.hpp"
 
+#include <unistd.h>
 #include <cstdlib>
 #include <iostream>
 #include <memory>
-#include <unistd.h>
 
 namespace gm::mutation {
 

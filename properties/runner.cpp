@@ -7,10 +7,10 @@
 #include <rapidcheck.h>
 
 #include <chrono>
-#include <ctime>
-#include <functional>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
+#include <functional>
 #include <optional>
 #include <regex>
 #include <sstream>

@@ -2,12 +2,12 @@
 // get a message naming the argument and exit status 2; nothing is written.
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 #include <vector>
 
 #ifndef GM_GEOMECH_BIN

@@ -13,8 +13,8 @@
 
 #include <cstdlib>
 #include <iostream>
-#include <stdexcept>
 #include <map>
+#include <stdexcept>
 
 namespace gm {
 namespace {

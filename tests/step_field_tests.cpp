@@ -7,8 +7,8 @@
 #include "impl/canonical_integrators.hpp"
 #include "impl/manakov.hpp"
 #include "impl/reference_subject.hpp"
-#include "properties/runner.hpp"
 #include "properties/integrators/support/step_field_matrix.hpp"
+#include "properties/runner.hpp"
 #include "tests/mutants/mutants.hpp"
 
 #include <gtest/gtest.h>
@@ -243,8 +243,9 @@ TEST(StepField, ACapOfConstantSizeIsNamedWhereItActs) {
   const Vec3<double> I(1.75, 1.5, 1.25);
   const RigidBodyState<double> fast{Vec3<double>(128, 128, 128), Mat3<double>::Identity()};
   const std::string said = stepfield::explain_rigid_body_step(in, I, {fast}, {1.0 / 8192});
-  EXPECT_NE(said.find("a cap, by experiment: your step's field is (3.8) shrunk to the constant size max |dPi_i/dt| = 1024"),
-            std::string::npos)
+  EXPECT_NE(
+      said.find("a cap, by experiment: your step's field is (3.8) shrunk to the constant size max |dPi_i/dt| = 1024"),
+      std::string::npos)
       << said;
 }
 

@@ -1,9 +1,9 @@
 // The property machinery itself: scalars, comparisons (NaN never passes, exact means zero,
 // roundoff scales with eps), generators (exactly representable, rotations exactly orthogonal).
-#include "properties/support/generators.hpp"
 #include "properties/integrators/support/long_time.hpp"
 #include "properties/integrators/support/order_claim.hpp"
 #include "properties/integrators/support/step_runs.hpp"
+#include "properties/support/generators.hpp"
 #include "properties/support/tolerance.hpp"
 
 #include "tests/support/rc_failure.hpp"

@@ -14,27 +14,27 @@
 //   geomech mutants    mutation score: single-mistake variants of the reference through the properties
 //   geomech golden     golden trajectories: regenerate/check the fixtures, make your own (golden/cli.hpp)
 #include "golden/cli.hpp"
-#include "harness/program/build.hpp"
-#include "harness/program/library_flags.hpp"
 #include "harness/class/class_mode.hpp"
-#include "harness/program/cli.hpp"
+#include "harness/class/lecturer_cli.hpp"
+#include "harness/engine/trajectory.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/isolation/isolate.hpp"
-#include "harness/class/lecturer_cli.hpp"
-#include "harness/isolation/process.hpp"
-#include "harness/remote/protocol_codec.hpp"
-#include "harness/remote/remote_subject.hpp"
-#include "harness/reports/report.hpp"
 #include "harness/isolation/private_copy.hpp"
+#include "harness/isolation/process.hpp"
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/sandboxed_interpreter.hpp"
+#include "harness/isolation/submission_intake.hpp"
+#include "harness/languages/language.hpp"
+#include "harness/program/build.hpp"
+#include "harness/program/cli.hpp"
+#include "harness/program/library_flags.hpp"
+#include "harness/program/student_registry.hpp"
+#include "harness/remote/protocol_codec.hpp"
+#include "harness/remote/remote_subject.hpp"
 #include "harness/remote/slot_conventions.hpp"
 #include "harness/remote/slot_names.hpp"
-#include "harness/program/student_registry.hpp"
-#include "harness/isolation/submission_intake.hpp"
-#include "harness/engine/trajectory.hpp"
+#include "harness/reports/report.hpp"
 #include "harness/submissions/check_submission.hpp"
-#include "harness/languages/language.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/runner.hpp"
 #include "mutation/served_mutant.hpp"
@@ -44,21 +44,21 @@
 
 #include <CLI/CLI.hpp>
 
+#include <sys/prctl.h>
+#include <unistd.h>
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <optional>
 #include <fstream>
-#include <thread>
-#include <csignal>
-#include <sys/prctl.h>
-#include <unistd.h>
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
+#include <thread>
 
 namespace gm {
 namespace {
@@ -522,8 +522,7 @@ int run_trajectory_command(TrajectoryCommand& c) {
 
 // The commands that describe the suite: list, slots, subjects, catalogue, and bench-protocol.
 struct InfoCommands {
-  CLI::App *list = nullptr, *slots = nullptr, *bench = nullptr, *subjects = nullptr, *cat = nullptr,
-           *langs = nullptr;
+  CLI::App *list = nullptr, *slots = nullptr, *bench = nullptr, *subjects = nullptr, *cat = nullptr, *langs = nullptr;
   bool ids_only = false, listed = false;
   std::map<std::string, bool> slots_in;  // a language's id -> --<id> given (its listing)
   std::string bench_file;

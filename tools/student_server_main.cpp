@@ -1,13 +1,13 @@
 // main() of the C++ protocol server (untrusted mode): linked with the student's objects,
 // the part registry and the protocol's server code only; no property, reference implementation or
 // verdict is in this program. It answers docs/PROTOCOL.md on stdin and the reply descriptor.
-#include "harness/remote/protocol_server.hpp"
 #include "harness/program/student_registry.hpp"
+#include "harness/remote/protocol_server.hpp"
 
+#include <unistd.h>
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <unistd.h>
 
 int main() {
   // Replies go to the descriptor the harness names ($GEOMECH_REPLY_FD, docs/PROTOCOL.md), so that

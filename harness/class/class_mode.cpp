@@ -3,15 +3,15 @@
 #include "harness/class/class_html.hpp"
 #include "harness/class/class_record.hpp"
 #include "harness/class/feedback_files.hpp"
-#include "harness/class/grader_machine.hpp"
-#include "harness/remote/remote_subject.hpp"
-#include "harness/submissions/check_submission.hpp"
-#include "harness/languages/language.hpp"
-#include "harness/remote/slot_names.hpp"
 #include "harness/class/gradebook.hpp"
-#include "harness/isolation/sandbox.hpp"
+#include "harness/class/grader_machine.hpp"
 #include "harness/isolation/inert_text.hpp"
+#include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/submission_intake.hpp"
+#include "harness/languages/language.hpp"
+#include "harness/remote/remote_subject.hpp"
+#include "harness/remote/slot_names.hpp"
+#include "harness/submissions/check_submission.hpp"
 
 #include "harness/isolation/isolate.hpp"
 #include "harness/isolation/process.hpp"
@@ -30,8 +30,8 @@
 #include <map>
 #include <optional>
 #include <set>
-#include <thread>
 #include <sstream>
+#include <thread>
 
 namespace gm::harness {
 

@@ -119,8 +119,9 @@ namespace {
 
 // A machine fault's kind, from the words every fault of that kind is said in.
 std::string fault_kind(const std::string& f) {
-  for (const char* kind : {"the machine starved it", "run-queue accounting", "the sandbox could not start",
-                           "could not run the compiler", "out of the sandbox's reach", "cannot be shown to the sandbox"})
+  for (const char* kind :
+       {"the machine starved it", "run-queue accounting", "the sandbox could not start", "could not run the compiler",
+        "out of the sandbox's reach", "cannot be shown to the sandbox"})
     if (f.find(kind) != std::string::npos) return kind;
   return f.substr(0, 80);
 }
@@ -306,7 +307,7 @@ ClassView decide_class(const std::vector<ClassRow>& rows, const Rubric& rubric) 
       continue;
     }
     const Language* language = language_named(row.report.value("language", "c++"));
-    s.language = language ? language->name : "C++";  // the language table's name for it
+    s.language = language ? language->name : "C++";                  // the language table's name for it
     if (row.report.contains("notebook")) s.language += " notebook";  // its code cells in that language
     for (const auto& v : row.report.value("verdicts", json::array())) {
       auto& c = s.areas[v.value("area", "?")];

@@ -124,7 +124,7 @@ struct ScoreItem {
 };
 
 struct Score {
-  double points = 0;                   // 0 .. rubric.points, rounded to 2 decimals
+  double points = 0;  // 0 .. rubric.points, rounded to 2 decimals
   // No grade at all (the grader's machine failed the check, or it is not checked yet): every view
   // shows none (an empty gradebook cell, "-" in a summary), never `points`.
   bool no_grade = false;

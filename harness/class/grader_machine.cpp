@@ -3,11 +3,11 @@
 #include "harness/isolation/process.hpp"
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/sandboxed_interpreter.hpp"
-#include "harness/remote/remote_subject.hpp"
 #include "harness/languages/language.hpp"
+#include "harness/remote/remote_subject.hpp"
 
-#include <filesystem>
 #include <unistd.h>
+#include <filesystem>
 
 namespace gm::harness {
 

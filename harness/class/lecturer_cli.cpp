@@ -3,10 +3,10 @@
 #include "harness/class/autograder.hpp"
 #include "harness/class/class_html.hpp"
 #include "harness/class/grader_machine.hpp"
-#include "harness/program/build.hpp"
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/sandbox_cgroup.hpp"
 #include "harness/languages/language.hpp"
+#include "harness/program/build.hpp"
 #include "harness/program/cli.hpp"
 #include "harness/reports/report.hpp"
 

@@ -1,13 +1,13 @@
 #include "harness/engine/check.hpp"
 
-#include "harness/isolation/inert_text.hpp"
 #include "harness/engine/first_fix.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
+#include "harness/engine/portrait.hpp"
+#include "harness/engine/verdict_io.hpp"
+#include "harness/engine/work_precision.hpp"
+#include "harness/isolation/inert_text.hpp"
 #include "harness/isolation/isolate.hpp"
 #include "harness/isolation/sandbox.hpp"
-#include "harness/engine/portrait.hpp"
-#include "harness/engine/work_precision.hpp"
-#include "harness/engine/verdict_io.hpp"
 #include "properties/support/show.hpp"
 
 #include <algorithm>

@@ -96,8 +96,8 @@ std::vector<const Property*> judging(const std::string& claim, const IntegratorI
 // One scalar's state for one claim.
 struct ScalarState {
   enum Kind { NotApplicable, NotRun, Partial, Incomplete, False, Complete } kind = NotApplicable;
-  std::string why;    // NotRun, Partial, Incomplete: which checks and why; False: the check that contradicts
-  bool holds = true;  // Complete: every finding holds
+  std::string why;            // NotRun, Partial, Incomplete: which checks and why; False: the check that contradicts
+  bool holds = true;          // Complete: every finding holds
   std::string contradicting;  // False: what the contradicting check measured ("order 0.24 in the regime ...")
   const Verdict* contradicted_by = nullptr;  // False: the verdict of that check
 };

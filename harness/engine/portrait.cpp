@@ -1,8 +1,8 @@
 #include "harness/engine/portrait.hpp"
 
-#include "harness/trajectories/reference_flow.hpp"
 #include "harness/engine/trajectory.hpp"
 #include "harness/engine/verdict_io.hpp"
+#include "harness/trajectories/reference_flow.hpp"
 
 #include "properties/support/loglog_fit.hpp"
 

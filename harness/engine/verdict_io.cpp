@@ -85,7 +85,8 @@ json to_json(const Verdict& v) {
   j["claims"] = claims;
   if (!v.word.empty()) j["word"] = v.word;
   if (!v.machine_fault.empty()) j["machine_fault"] = v.machine_fault;
-  if (!v.judged_precision.empty()) j["judged_precision"] = {{"name", v.judged_precision}, {"how", v.judged_precision_how}};
+  if (!v.judged_precision.empty())
+    j["judged_precision"] = {{"name", v.judged_precision}, {"how", v.judged_precision_how}};
   j["owner"] = v.outcome == Outcome::Pass || v.outcome == Outcome::NotProvided ? "none"
                : !v.machine_fault.empty()                                      ? "machine"
                                                                                : "code";

@@ -1,7 +1,7 @@
 #include "harness/engine/work_precision.hpp"
 
-#include "harness/trajectories/reference_flow.hpp"
 #include "harness/engine/verdict_io.hpp"
+#include "harness/trajectories/reference_flow.hpp"
 #include "impl/canonical_integrators.hpp"
 #include "impl/integrators.hpp"
 #include "oracle/fields.hpp"

@@ -4,15 +4,15 @@
 #include "harness/isolation/run_queue_account.hpp"
 #include "harness/isolation/work_limit.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
 #include <deque>
-#include <algorithm>
-#include <set>
 #include <iostream>
 #include <memory>
+#include <set>
 #include <stdexcept>
 
 #include <fcntl.h>
@@ -56,7 +56,7 @@ struct Running {
   Clock::time_point start;
   std::string result;
   std::string output;
-  std::string sanitizer_report;         // the first line of a sanitizer's report in the output, if any
+  std::string sanitizer_report;              // the first line of a sanitizer's report in the output, if any
   TreeTimes worker0;                         // the worker's server's times when the task started
   TreeTimes times;                           // the code's CPU and run-queue delay so far (sampled)
   std::shared_ptr<QueuedSoFar> queued;       // the tree's delay, ended processes included

@@ -13,8 +13,8 @@
 
 #include "harness/isolation/submission_intake.hpp"
 
-#include <filesystem>
 #include <cstdint>
+#include <filesystem>
 #include <string>
 #include <utility>
 #include <vector>

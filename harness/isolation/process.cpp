@@ -1,8 +1,8 @@
 #include "harness/isolation/process.hpp"
 
 #include <cerrno>
-#include <cstdlib>
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>

@@ -2,8 +2,8 @@
 // exit status and everything written to stdout and stderr out.
 #pragma once
 
-#include <string>
 #include <sys/types.h>
+#include <string>
 #include <vector>
 
 namespace gm::harness {

@@ -1,16 +1,16 @@
 #include "harness/isolation/process_cpu.hpp"
 
+#include <dirent.h>
+#include <sched.h>
+#include <unistd.h>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <dirent.h>
-#include <sched.h>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <thread>
-#include <unistd.h>
 #include <vector>
 
 namespace gm::harness {

@@ -31,15 +31,15 @@ class RunQueueAccount {
   void look(const TreeTimes& tree, double wall) { look(std::vector<TreeTimes>{tree}, wall); }
 
   // Over the looks so far, in seconds:
-  double waited_runnable() const { return waited_runnable_; }     // the tasks waited on: on a CPU or queued
-  double waited_queued() const { return waited_queued_; }         // ... queued
+  double waited_runnable() const { return waited_runnable_; }      // the tasks waited on: on a CPU or queued
+  double waited_queued() const { return waited_queued_; }          // ... queued
   double queued_by_machine() const { return queued_by_machine_; }  // ... queued while no other task of it ran
-  double tree_runnable() const { return tree_runnable_; }         // every task's time runnable, summed
-  double tree_queued() const { return tree_queued_; }             // ... queued, summed
-  double capacity() const { return capacity_; }                   // the cores it may use times the wall clock
-  double seconds() const { return wall_; }                        // the wall clock the looks cover
-  int cores() const { return cores_; }                            // at the last look
-  int most_tasks() const { return most_tasks_; }                  // the most tasks seen at once
+  double tree_runnable() const { return tree_runnable_; }          // every task's time runnable, summed
+  double tree_queued() const { return tree_queued_; }              // ... queued, summed
+  double capacity() const { return capacity_; }                    // the cores it may use times the wall clock
+  double seconds() const { return wall_; }                         // the wall clock the looks cover
+  int cores() const { return cores_; }                             // at the last look
+  int most_tasks() const { return most_tasks_; }                   // the most tasks seen at once
 
   // More tasks runnable than its cores could run (on average a quarter of a task more: a single task,
   // runnable all along, stays clear of it whatever the jitter of the looks), and queued for much of

@@ -4,6 +4,8 @@
 #include "harness/isolation/sandbox_cgroup.hpp"
 #include "harness/isolation/session_filter.hpp"
 
+#include <sys/stat.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
@@ -12,8 +14,6 @@
 #include <mutex>
 #include <sstream>
 #include <string>
-#include <sys/stat.h>
-#include <unistd.h>
 
 namespace gm::harness {
 
@@ -262,9 +262,9 @@ std::string sandbox_limits_in_words(const SandboxLimits& l) {
     s << l.memory_mb << " MiB in all (its cgroup)";
   else
     s << l.memory_mb << " MiB of writable memory per process (no cgroup here: " << cgroup_limits_in_words() << ")";
-  s << "; CPU: one share (setsid() refused" << (cgroup_keeps("cpu") ? "; its own cgroup" : "")
-    << "), " << l.cpu_seconds << " s per process; files written up to " << l.file_mb << " MiB; " << l.open_files
-    << " open files; /tmp " << l.scratch_mb << " MiB";
+  s << "; CPU: one share (setsid() refused" << (cgroup_keeps("cpu") ? "; its own cgroup" : "") << "), " << l.cpu_seconds
+    << " s per process; files written up to " << l.file_mb << " MiB; " << l.open_files << " open files; /tmp "
+    << l.scratch_mb << " MiB";
   return s.str();
 }
 
@@ -287,8 +287,9 @@ std::string sandbox_unavailable() {
   static std::string why;
   std::call_once(once, [] {
     if (bwrap_program().empty()) {
-      why = "untrusted mode needs bwrap (Debian package bubblewrap), which is not installed: `apt-get install "
-            "bubblewrap`, or check with --trusted (in-process: only for code you trust)";
+      why =
+          "untrusted mode needs bwrap (Debian package bubblewrap), which is not installed: `apt-get install "
+          "bubblewrap`, or check with --trusted (in-process: only for code you trust)";
       return;
     }
     if (which("dash").empty()) {

@@ -26,8 +26,8 @@
 // program's output: see SandboxStart.
 #pragma once
 
-#include <stdexcept>
 #include <sys/types.h>
+#include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>

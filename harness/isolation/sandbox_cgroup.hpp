@@ -18,9 +18,9 @@ namespace gm::harness {
 
 // What a sandbox's control groups hold, in MiB, tasks and the CPU weight of a nice-0 task (1024).
 struct CgroupLimits {
-  long memory_mb = 0;  // 0: no total
-  long tasks = 0;      // 0: no count (processes and threads, the sandbox's own init among them)
-  long cpu_weight = 0; // 0: the default share
+  long memory_mb = 0;   // 0: no total
+  long tasks = 0;       // 0: no count (processes and threads, the sandbox's own init among them)
+  long cpu_weight = 0;  // 0: the default share
 };
 
 // The arguments of the sandbox's first command that make its groups and move it into them (see

@@ -3,9 +3,9 @@
 #include "harness/isolation/process.hpp"
 #include "harness/isolation/sandbox.hpp"
 
+#include <sys/stat.h>
 #include <filesystem>
 #include <sstream>
-#include <sys/stat.h>
 
 namespace gm::harness {
 

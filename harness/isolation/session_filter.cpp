@@ -1,11 +1,11 @@
 #include "harness/isolation/session_filter.hpp"
 
-#include <cerrno>
-#include <cstddef>
 #include <linux/audit.h>
 #include <linux/filter.h>
 #include <linux/seccomp.h>
 #include <sys/syscall.h>
+#include <cerrno>
+#include <cstddef>
 #include <vector>
 
 namespace gm::harness {

@@ -43,10 +43,10 @@ LimitVerdict judge_work(const WorkLimit& limit, const WorkSoFar& w) {
   const double waited_cpu = waited - a.waited_queued();
   const double asleep = std::max(0.0, looked - waited);
   // The tree's own load, when it has more than one task: its sums, which count each task's queue.
-  const std::string tree =
-      a.most_tasks() <= 1 ? std::string()
-                          : format(" (its tasks, up to %d at once: %.1f s runnable, %.1f s of it queued, summed)",
-                                   a.most_tasks(), a.tree_runnable(), a.tree_queued());
+  const std::string tree = a.most_tasks() <= 1
+                               ? std::string()
+                               : format(" (its tasks, up to %d at once: %.1f s runnable, %.1f s of it queued, summed)",
+                                        a.most_tasks(), a.tree_runnable(), a.tree_queued());
   if (cpu_out) {
     v.detail = format("did not finish within %.0f s of CPU time (%.0f s of wall clock) and was stopped",
                       limit.cpu_seconds, w.wall);
@@ -66,19 +66,22 @@ LimitVerdict judge_work(const WorkLimit& limit, const WorkSoFar& w) {
         limit.cpu_seconds, a.most_tasks(), a.tree_runnable(), looked, a.cores(), a.cores() == 1 ? "core" : "cores",
         a.tree_queued(), a.waited_queued(), a.queued_by_machine());
   } else if (waiting || wall_out || !starved) {
-    v.detail = format(
-        "did not finish within %.0f s: stopped by the wall clock after %.0f s, of which the kernel counts, for the "
-        "task it waits on, %.1f s on a CPU, %.1f s queued for one (%.1f s of it while no task of its own ran) and "
-        "%.0f s asleep: it waits (a sleep, an input it reads, a lock) rather than computes",
-        limit.cpu_seconds, w.wall, waited_cpu, a.waited_queued(), a.queued_by_machine(), asleep) +
+    v.detail =
+        format(
+            "did not finish within %.0f s: stopped by the wall clock after %.0f s, of which the kernel counts, for the "
+            "task it waits on, %.1f s on a CPU, %.1f s queued for one (%.1f s of it while no task of its own ran) and "
+            "%.0f s asleep: it waits (a sleep, an input it reads, a lock) rather than computes",
+            limit.cpu_seconds, w.wall, waited_cpu, a.waited_queued(), a.queued_by_machine(), asleep) +
         tree;
   } else {
     v.machine = true;
-    v.detail = format(
-        "could not do its work: the machine starved it, by the kernel's accounting the task it waits on was %.1f s "
-        "on a CPU and %.1f s runnable but queued for one in %.0f s of wall clock, %.1f s of it while no task of its "
-        "own ran (stopped at %g times the wall guard)",
-        waited_cpu, a.waited_queued(), w.wall, a.queued_by_machine(), std::max(1.0, limit.busy_factor)) +
+    v.detail =
+        format(
+            "could not do its work: the machine starved it, by the kernel's accounting the task it waits on was %.1f s "
+            "on a CPU and %.1f s runnable but queued for one in %.0f s of wall clock, %.1f s of it while no task of "
+            "its "
+            "own ran (stopped at %g times the wall guard)",
+            waited_cpu, a.waited_queued(), w.wall, a.queued_by_machine(), std::max(1.0, limit.busy_factor)) +
         tree;
   }
   return v;

@@ -33,9 +33,9 @@ struct WorkLimit {
 
 // What a task has done so far.
 struct WorkSoFar {
-  double wall = 0;  // since it started
-  double cpu = 0;   // the CPU time of the code under test (its trees)
-  bool known = false;  // the kernel keeps run-queue accounting (schedstat)
+  double wall = 0;               // since it started
+  double cpu = 0;                // the CPU time of the code under test (its trees)
+  bool known = false;            // the kernel keeps run-queue accounting (schedstat)
   bool looked_a_second = false;  // the account covers more than its first second
   const RunQueueAccount* account = nullptr;
 };

@@ -3,11 +3,11 @@
 
 #include "harness/languages/rows.hpp"
 
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
-#include <unistd.h>
 
 namespace gm::harness {
 
@@ -153,8 +153,6 @@ std::vector<std::pair<std::string, std::string>> slot_parameters(const std::stri
   return out;
 }
 
-std::string slot_result_type(const std::string& sig) {
-  return sig.substr(0, sig.find('('));
-}
+std::string slot_result_type(const std::string& sig) { return sig.substr(0, sig.find('(')); }
 
 }  // namespace gm::harness

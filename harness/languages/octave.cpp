@@ -122,7 +122,8 @@ std::string octave_type(const std::string& t) {
 
 std::string octave_signature(const std::string& slot, const std::string& signature) {
   std::string out;
-  for (const auto& [type, name] : slot_parameters(signature)) out += (out.empty() ? "" : ", ") + name + " %" + octave_type(type);
+  for (const auto& [type, name] : slot_parameters(signature))
+    out += (out.empty() ? "" : ", ") + name + " %" + octave_type(type);
   return "function r = " + slot + "(" + out + ")  % r: " + octave_type(slot_result_type(signature));
 }
 

@@ -102,7 +102,8 @@ std::string python_type(const std::string& t) {
 
 std::string python_signature(const std::string& slot, const std::string& signature) {
   std::string out;
-  for (const auto& [type, name] : slot_parameters(signature)) out += (out.empty() ? "" : ", ") + name + ": " + python_type(type);
+  for (const auto& [type, name] : slot_parameters(signature))
+    out += (out.empty() ? "" : ", ") + name + ": " + python_type(type);
   return "def " + slot + "(" + out + ") -> " + python_type(slot_result_type(signature));
 }
 
@@ -202,8 +203,7 @@ Language python_row() {
   python.function_names = python_function_names;
   python.code_only = python_code_only;
   python.definitions = python_definitions;
-  python.slots_heading =
-      "## Python: functions named after the slots (scalars: float, mpmath.mpf, fractions.Fraction)";
+  python.slots_heading = "## Python: functions named after the slots (scalars: float, mpmath.mpf, fractions.Fraction)";
   python.slots_fence = "python";
   python.comment = "# ";
   python.signature = python_signature;

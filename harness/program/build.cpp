@@ -2,14 +2,14 @@
 
 #include "core/subject.hpp"
 #include "harness/isolation/process.hpp"
-#include "harness/reports/report.hpp"
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/submission_intake.hpp"
+#include "harness/reports/report.hpp"
 
 #include <chrono>
-#include <functional>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -683,7 +683,7 @@ bool compile_rounds(const CompileSetting& cs, const BuildOptions& o, const fs::p
       const int k = todo[i];
       const std::string scalar = kScalars[kUnits[k].scalar];
       const ProcessResult& pr = results[i];
-      if (pr.cancelled) {  // stopped when double failed: nothing learnt, nothing kept
+      if (pr.cancelled) {                            // stopped when double failed: nothing learnt, nothing kept
         if (o.sandbox) (void)sandbox_start(pr.pid);  // its status, read and removed
         continue;
       }
@@ -869,9 +869,9 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
     if (!st[k].wanted) {
       st[k].done = true;
       st[k].ok = false;
-      st[k].unavailable = std::string("not compiled for ") + kScalars[unit.scalar] +
-                          (o.scalars_left_out_because.empty() ? " in this run (--scalar)"
-                                                              : ": " + o.scalars_left_out_because);
+      st[k].unavailable =
+          std::string("not compiled for ") + kScalars[unit.scalar] +
+          (o.scalars_left_out_because.empty() ? " in this run (--scalar)" : ": " + o.scalars_left_out_because);
     }
   }
 

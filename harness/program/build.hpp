@@ -52,13 +52,13 @@ Toolchain load_toolchain(const std::string& path);
 std::string default_toolchain_path();
 
 struct BuildOptions {
-  int jobs = 2;              // compilers at once
-  std::string name;          // implementation name (default: the file's stem)
-  std::string cache_dir;     // default: the toolchain's
-  bool verbose = false;      // print each command
-  bool force = false;        // ignore the cache
-  bool mp50 = true;          // compile the 50-digit instantiation (double is always compiled)
-  bool exact = true;         // compile the exact-rational instantiation
+  int jobs = 2;           // compilers at once
+  std::string name;       // implementation name (default: the file's stem)
+  std::string cache_dir;  // default: the toolchain's
+  bool verbose = false;   // print each command
+  bool force = false;     // ignore the cache
+  bool mp50 = true;       // compile the 50-digit instantiation (double is always compiled)
+  bool exact = true;      // compile the exact-rational instantiation
   // Why mp50 and exact are not compiled when they are not (the reports' words); empty: "--scalar".
   std::string scalars_left_out_because;
   bool integrators = true;   // compile the integrators (a first look, which checks the slots alone, does not)

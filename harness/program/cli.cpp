@@ -2,16 +2,16 @@
 #include "harness/engine/quick_profile.hpp"
 #include "harness/engine/thorough_only.hpp"
 
-#include "harness/reports/console_stream.hpp"
 #include "harness/isolation/process.hpp"
+#include "harness/reports/console_stream.hpp"
 #include "harness/reports/report.hpp"
 #include "harness/reports/report_parts.hpp"
 
+#include <algorithm>
 #include <iostream>
 #include <optional>
 #include <sstream>
 #include <thread>
-#include <algorithm>
 
 #include <unistd.h>
 

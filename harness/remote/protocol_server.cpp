@@ -3,12 +3,12 @@
 #include "harness/remote/protocol_codec.hpp"
 #include "harness/remote/remote_subject.hpp"
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <string>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <utility>
 
 namespace gm::protocol {

@@ -15,24 +15,24 @@
 #include "harness/isolation/isolate.hpp"
 #include "harness/remote/protocol_codec.hpp"
 
-#include <algorithm>
-#include <cerrno>
-#include <chrono>
-#include <csignal>
-#include <cstring>
 #include <fcntl.h>
-#include <filesystem>
-#include <fstream>
-#include <cmath>
-#include <limits>
-#include <optional>
-#include <sstream>
 #include <poll.h>
 #include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <sstream>
 
 namespace gm::protocol {
 
@@ -252,7 +252,8 @@ std::string Connection::read_reply(ServerProcess& s, const std::string& what, do
   // for a process that sleeps, and the machine's fault only when it starved the task waited on.
   harness::WorkLimit limit = reply_limit;
   limit.cpu_seconds = deadline_seconds;
-  const harness::TreeTimes before = deadline_seconds > 0 && s.pid > 0 ? harness::tree_times(s.pid) : harness::TreeTimes{};
+  const harness::TreeTimes before =
+      deadline_seconds > 0 && s.pid > 0 ? harness::tree_times(s.pid) : harness::TreeTimes{};
   harness::RunQueueAccount account(before);
   auto looked = start;
   for (;;) {
@@ -279,8 +280,8 @@ std::string Connection::read_reply(ServerProcess& s, const std::string& what, do
         const harness::LimitVerdict v = harness::judge_work(limit, so_far);
         if (v.stop) {
           drain_output(s);
-          const std::string head = "the implementation's process (" + program_name(argv_) + ") did not answer " +
-                                   what + " within " + std::to_string(static_cast<int>(deadline_seconds)) + " s";
+          const std::string head = "the implementation's process (" + program_name(argv_) + ") did not answer " + what +
+                                   " within " + std::to_string(static_cast<int>(deadline_seconds)) + " s";
           if (v.machine)
             throw RemoteMachineFault("the grader's machine, not the implementation: " + head + ": it " + v.detail +
                                      ". Fix: run it again on a less busy machine");

@@ -8,18 +8,18 @@
 // it (the harness's per-check timeout and process-group kill apply to it).
 #pragma once
 
-#include "harness/remote/call_memo.hpp"
 #include "harness/engine/check.hpp"
 #include "harness/isolation/work_limit.hpp"
+#include "harness/remote/call_memo.hpp"
 
 #include <nlohmann/json.hpp>
 
+#include <sys/types.h>
 #include <map>
 #include <memory>
-#include <set>
 #include <mutex>
+#include <set>
 #include <string>
-#include <sys/types.h>
 #include <vector>
 
 namespace gm::protocol {

@@ -128,7 +128,8 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
               " (the claims whose checks it stops are NOT VERIFIED; the rest NOT CHARACTERISED)";
       // A step written for floats, given 50-digit numbers (an mpf to numpy or math): its precision says so.
       const Language& l = *stub_.info.language;
-      if (v.scalar == "mp50" && !l.double_only_error.empty() && v.step_raised.find(l.double_only_error) != std::string::npos)
+      if (v.scalar == "mp50" && !l.double_only_error.empty() &&
+          v.step_raised.find(l.double_only_error) != std::string::npos)
         lead += "\n  " + l.double_only_hint;
     }
     for (const auto& c : v.claims)

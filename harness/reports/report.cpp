@@ -1,13 +1,13 @@
 #include "harness/reports/report.hpp"
 
-#include "harness/reports/html_page.hpp"
-#include "harness/isolation/inert_text.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
-
-#include "harness/reports/svg.hpp"
-#include "harness/engine/verdict_io.hpp"
 #include "harness/isolation/inert_text.hpp"
+#include "harness/reports/html_page.hpp"
+
+#include "harness/engine/verdict_io.hpp"
 #include "harness/engine/work_precision.hpp"
+#include "harness/isolation/inert_text.hpp"
+#include "harness/reports/svg.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,8 +1,8 @@
 // The console summary of a finished check (report.hpp, console_report); it renders the engine's decisions.
-#include "harness/reports/report.hpp"
-#include "harness/reports/report_parts.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
 #include "harness/isolation/inert_text.hpp"
+#include "harness/reports/report.hpp"
+#include "harness/reports/report_parts.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -149,9 +149,9 @@ void write_claims(std::ostream& os, const CheckResult& r) {
         if (!row.measured.empty()) rows << ": " << row.measured;
         // Why, where it is not in the measurement: what kept a claim from being decided, what
         // contradicts a claim made.
-        if (!row.why.empty() && (row.fails || row.status.rfind("not established", 0) == 0 ||
-                                 row.status.rfind("does not hold", 0) == 0 ||
-                                 row.status.find("by the checks that ran") != std::string::npos))
+        if (!row.why.empty() &&
+            (row.fails || row.status.rfind("not established", 0) == 0 || row.status.rfind("does not hold", 0) == 0 ||
+             row.status.find("by the checks that ran") != std::string::npos))
           rows << "\n  " << std::setw(24) << ""
                << "(" << row.why << ")";
       }

@@ -1,8 +1,8 @@
 // junit.xml: the JUnit report of a check, for CI (report.hpp, junit_report).
-#include "harness/reports/report.hpp"
-#include "harness/reports/report_parts.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
 #include "harness/reports/html_page.hpp"
+#include "harness/reports/report.hpp"
+#include "harness/reports/report_parts.hpp"
 #include "harness/reports/svg.hpp"
 
 #include <algorithm>

@@ -1,14 +1,14 @@
 // report.md: the Markdown report of a check, for people (report.hpp, markdown_report); it renders the engine's decisions.
-#include "harness/reports/report.hpp"
-#include "harness/reports/report_parts.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
 #include "harness/engine/work_precision.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/html_page.hpp"
+#include "harness/reports/report.hpp"
+#include "harness/reports/report_parts.hpp"
 
 #include <algorithm>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <map>
 #include <set>
@@ -125,8 +125,7 @@ void write_what_to_fix(std::ostream& md, const CheckResult& r, std::vector<const
       }
       md << ". The claimed checks it stopped: ";
       for (std::size_t i = 0; i < vs.size(); ++i)
-        md << (i ? ", " : "") << "[`" << row_name(*vs[i]) << "` " << vs[i]->scalar << "](#" << anchor_of(*vs[i])
-           << ")";
+        md << (i ? ", " : "") << "[`" << row_name(*vs[i]) << "` " << vs[i]->scalar << "](#" << anchor_of(*vs[i]) << ")";
       md << "\n";
     }
     // Then the rest, an integrator's claimed checks before the ones nobody claimed.

@@ -3,9 +3,9 @@
 
 #include "harness/reports/report.hpp"
 
+#include "harness/engine/integrator_verdicts.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/html_page.hpp"
-#include "harness/engine/integrator_verdicts.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -160,7 +160,8 @@ std::string precision_words(const IntegratorInfo& integ) {
   const std::string reason = bounded_text(inert_text(integ.claims.precision_reason), 300);
   std::string out;
   if (!integ.judged_precision.empty() && integ.claims.precision.empty())
-    out = "computes in " + integ.judged_precision + " (" + bounded_text(inert_text(integ.judged_precision_how), 300) + ")";
+    out = "computes in " + integ.judged_precision + " (" + bounded_text(inert_text(integ.judged_precision_how), 300) +
+          ")";
   else if (!stated.empty())
     out = "computes in " + stated + (reason.empty() ? " (stated, without a reason)" : " (stated: " + reason + ")");
   if (integ.judged_precision == "float") out += "; judged at float's round-off, eps = 1.19e-07";

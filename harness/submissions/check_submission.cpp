@@ -7,12 +7,12 @@
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/sandboxed_interpreter.hpp"
 #include "harness/isolation/submission_intake.hpp"
+#include "harness/languages/language.hpp"
+#include "harness/languages/notebook.hpp"
 #include "harness/program/library_flags.hpp"
 #include "harness/program/student_registry.hpp"
 #include "harness/remote/remote_subject.hpp"
 #include "harness/reports/report.hpp"
-#include "harness/languages/language.hpp"
-#include "harness/languages/notebook.hpp"
 
 #include <chrono>
 #include <cstdlib>
@@ -80,7 +80,8 @@ int run_student_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   // says so from its own registrations.
   BuildOptions full = bo;
   if (!one_precision_program.empty()) {
-    const ProcessResult described = run_process(ProcessSpec{{one_precision_program, "--states-its-precision"}, {}, true});
+    const ProcessResult described =
+        run_process(ProcessSpec{{one_precision_program, "--states-its-precision"}, {}, true});
     if (described.started && !described.signal && described.exit_code == 0) {
       full.mp50 = full.exact = false;
       full.scalars_left_out_because =
@@ -282,7 +283,8 @@ bool show_named_packages(const Language& l, const std::string& source, SandboxSp
     std::string found;
     for (const auto& root : roots) {
       const fs::path r(root);
-      for (const fs::path& candidate : {r / l.package_folder / name, r.filename() == l.package_folder ? r / name : fs::path()}) {
+      for (const fs::path& candidate :
+           {r / l.package_folder / name, r.filename() == l.package_folder ? r / name : fs::path()}) {
         std::error_code ec;
         if (!candidate.empty() && fs::is_regular_file(candidate / "package.json", ec)) {
           found = fs::weakly_canonical(candidate, ec).string();

@@ -33,17 +33,17 @@
 #include <cstdio>
 
 #include "impl/canonical_integrators.hpp"
+#include "properties/integrators/support/convergence.hpp"
+#include "properties/integrators/support/order_claim.hpp"
+#include "properties/integrators/support/roundoff_claim.hpp"
+#include "properties/integrators/support/step_field_matrix.hpp"
 #include "properties/registry.hpp"
 #include "properties/support/claims.hpp"
-#include "properties/integrators/support/convergence.hpp"
 #include "properties/support/derivatives.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
 #include "properties/support/named_inputs.hpp"
-#include "properties/integrators/support/order_claim.hpp"
-#include "properties/integrators/support/roundoff_claim.hpp"
 #include "properties/support/scalar_text.hpp"
-#include "properties/integrators/support/step_field_matrix.hpp"
 #include "properties/support/tolerance.hpp"
 
 namespace gm {

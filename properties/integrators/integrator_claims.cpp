@@ -15,20 +15,20 @@
 // Spec entries: the rigid-body properties check the integrator against the properties of the
 // exact flow stated in s3.euler-flow (and s2.reconstruction for O in SO(3)); the Manakov ones
 // against s2.manakov-flow and s2.isospectral.
-#include "properties/registry.hpp"
-#include "properties/support/claims.hpp"
 #include "properties/integrators/support/convergence.hpp"
-#include "properties/support/derivatives.hpp"
-#include "properties/support/dynamics.hpp"
-#include "properties/support/figures.hpp"
-#include "properties/support/scalar_text.hpp"
-#include "properties/support/named_inputs.hpp"
 #include "properties/integrators/support/order_claim.hpp"
 #include "properties/integrators/support/roundoff_claim.hpp"
 #include "properties/integrators/support/roundoff_drift.hpp"
-#include "properties/support/regimes.hpp"
-#include "properties/support/spectrum.hpp"
 #include "properties/integrators/support/step_field_matrix.hpp"
+#include "properties/registry.hpp"
+#include "properties/support/claims.hpp"
+#include "properties/support/derivatives.hpp"
+#include "properties/support/dynamics.hpp"
+#include "properties/support/figures.hpp"
+#include "properties/support/named_inputs.hpp"
+#include "properties/support/regimes.hpp"
+#include "properties/support/scalar_text.hpp"
+#include "properties/support/spectrum.hpp"
 #include "properties/support/step_guard.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
@@ -176,9 +176,10 @@ void integrator_order(const Subject<T>&, const Integrator<T>& in, const Integrat
         I = If;
         x0 = xf;
         exact = fixed_exact;
-        steps = "h = 1/4 down to 1/128 by factors of about sqrt(2); t = 1; a fixed generic state, since at the "
-                "drawn one, sped up, fewer than three steps stood above " + current_step_precision().name +
-                "'s round-off floor";
+        steps =
+            "h = 1/4 down to 1/128 by factors of about sqrt(2); t = 1; a fixed generic state, since at the "
+            "drawn one, sped up, fewer than three steps stood above " +
+            current_step_precision().name + "'s round-off floor";
       }
     }
   }
@@ -386,8 +387,8 @@ void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, c
     const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
     const T h = T(1) / max_abs(Vec3<T>(x0.Pi.cwiseQuotient(I)));
     const StepDomain& d = current_step_domain();
-    if (!(d.min_h > 0 && to_double(h) < d.min_h) && within_domain<T>(T(1), stepguard::rate_of(I, x0),
-                                                                      stepguard::size_of(x0), to_double(h)) == T(1)) {
+    if (!(d.min_h > 0 && to_double(h) < d.min_h) &&
+        within_domain<T>(T(1), stepguard::rate_of(I, x0), stepguard::size_of(x0), to_double(h)) == T(1)) {
       const T scale = scale_of(I, x0), v0 = invariant(I, x0);
       run(in, I, x0, h, 16, [&](int, const RigidBodyState<T>& x) {
         const T r = abs_value(T(invariant(I, x) - v0));
@@ -421,12 +422,11 @@ void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, c
           const roundoffdrift::Drift& drift = roundoffdrift::rigid_body_drift<T>(in, name, invariant);
           std::string cause = drift.words;
           if (fails && large_turn && !drift.systematic) cause = speed_cap_cause<T>(in, I_worst, x_worst);
-          judge_roundoff_claim<T>(claim, claimed, in.name,
-                                  std::string(name) + " is kept to round-off over " + std::to_string(steps_worst) +
-                                      " steps" +
-                                      (fails && !drift.systematic ? scaled_note(worst_lambda, unscaled, allowed)
-                                                                  : std::string()),
-                                  worst, T(kSteps), 16.0 * degree, cause, drift.systematic, drift.rate);
+          judge_roundoff_claim<T>(
+              claim, claimed, in.name,
+              std::string(name) + " is kept to round-off over " + std::to_string(steps_worst) + " steps" +
+                  (fails && !drift.systematic ? scaled_note(worst_lambda, unscaled, allowed) : std::string()),
+              worst, T(kSteps), 16.0 * degree, cause, drift.systematic, drift.rate);
         });
   });
 }

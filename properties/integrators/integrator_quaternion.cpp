@@ -6,11 +6,11 @@
 //
 // Spec entry: s2.reconstruction (the attitude stays in SO(3); a unit quaternion is a point of SU(2),
 // its double cover, so |q| = 1 is the same statement in the declared form).
+#include "properties/integrators/support/roundoff_claim.hpp"
 #include "properties/registry.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
 #include "properties/support/named_inputs.hpp"
-#include "properties/integrators/support/roundoff_claim.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/tolerance.hpp"
 

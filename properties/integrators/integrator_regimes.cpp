@@ -44,17 +44,17 @@
 //    smallest turn, and truncation is h^p smaller still.
 //
 // Spec entries: the flows of (2.20) and Manakov's (M, O) (s3.euler-flow, s2.manakov-flow).
-#include "properties/registry.hpp"
-#include "properties/support/scalar_text.hpp"
-#include "properties/support/claims.hpp"
 #include "properties/integrators/support/convergence.hpp"
+#include "properties/integrators/support/step_field.hpp"
+#include "properties/integrators/support/step_field_matrix.hpp"
+#include "properties/integrators/support/step_runs.hpp"
+#include "properties/registry.hpp"
+#include "properties/support/claims.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
 #include "properties/support/named_inputs.hpp"
 #include "properties/support/regimes.hpp"
-#include "properties/integrators/support/step_field.hpp"
-#include "properties/integrators/support/step_field_matrix.hpp"
-#include "properties/integrators/support/step_runs.hpp"
+#include "properties/support/scalar_text.hpp"
 #include "properties/support/step_guard.hpp"
 #include "properties/support/step_precision.hpp"
 #include "properties/support/tolerance.hpp"
@@ -200,7 +200,7 @@ void judge_convergence(const std::string& integrator, const IntegratorClaims& c,
     const std::string stall = conv::stall_words(errs, floors.back());
     record_claim_finding(
         "order", c.order > 0, converged,
-        exact       ? integrator + ": at round-off in the regime '" + regime + "' (" + scalar + "): no order contradicted"
+        exact ? integrator + ": at round-off in the regime '" + regime + "' (" + scalar + "): no order contradicted"
         : converged ? integrator + ": fewer than three step sizes above the round-off floor in the regime '" + regime +
                           "' (" + scalar + "): order not measurable at this precision"
                     : integrator + ": does not converge in the regime '" + regime + "' (" + scalar + "): " + stall,
@@ -215,15 +215,16 @@ void judge_convergence(const std::string& integrator, const IntegratorClaims& c,
   }
   const double needed = c.order > 0 ? c.order - 0.1 : 0.9;
   const bool holds = fit.slope >= needed;
-  showing_inputs([&] { return inputs + "  the error at t against h:\n" + fit.table + hints; },
-                 [&] {
-                   judge_claim("order", c.order > 0, holds,
-                               integrator + fmt(": measured order %.3f in the regime '", fit.slope) + regime +
-                                   (c.order > 0 ? fmt("', claimed %g", c.order)
-                                                : std::string("', no order claimed: at least 0.9")) +
-                                   " (" + scalar + ")",
-                               holds ? std::string() : fmt("order %.2f", fit.slope) + " in the regime '" + regime + "'");
-                 });
+  showing_inputs(
+      [&] { return inputs + "  the error at t against h:\n" + fit.table + hints; },
+      [&] {
+        judge_claim(
+            "order", c.order > 0, holds,
+            integrator + fmt(": measured order %.3f in the regime '", fit.slope) + regime +
+                (c.order > 0 ? fmt("', claimed %g", c.order) : std::string("', no order claimed: at least 0.9")) +
+                " (" + scalar + ")",
+            holds ? std::string() : fmt("order %.2f", fit.slope) + " in the regime '" + regime + "'");
+      });
   require(integrator + ": in the regime '" + regime + "' the error at t converges at order >= " + fmt("%.1f", needed) +
               (c.order > 0 ? fmt(" (claimed order %g)", c.order) : std::string(" (any convergent method)")),
           holds,
@@ -422,14 +423,16 @@ std::string regime_evidence(const Integrator<T>& in, const RigidBodyRegime<T>& r
       if (near_identity) {
         const auto [big, small] = turn_at_rest(in, r.I);
         if (big > 0 && small > 0)
-          at_rest = fmt("; besides, a body at rest 2^-12 rad from the identity is turned by %.3g at h = 1/4 and by ",
-                        big) +
-                    fmt("%.3g at h = 2^-10 (a step must leave it where it is)", small);
+          at_rest =
+              fmt("; besides, a body at rest 2^-12 rad from the identity is turned by %.3g at h = 1/4 and by ", big) +
+              fmt("%.3g at h = 2^-10 (a step must leave it where it is)", small);
       }
       return "  cause, by experiment: the attitude comes within " + fmt("%.2g", near_identity ? angle : from_pi) +
-             " rad of " + where + " along the run; turned in space by about 1/4 rad (the same body, momentum and time), "
+             " rad of " + where +
+             " along the run; turned in space by about 1/4 rad (the same body, momentum and time), "
              "the step "
-             "converges (" + measured + "): the step branches on the attitude's own angle near " + where +
+             "converges (" +
+             measured + "): the step branches on the attitude's own angle near " + where +
              " (a small-angle series or a threshold on the rotation angle, a quaternion's sign)" + at_rest + "\n";
     }
     out += "    with the attitude turned 1/4 rad in space, away from " + where + ", it " +
@@ -877,32 +880,36 @@ void integrator_small_turns(const Subject<T>&, const Integrator<T>& in, const In
     const RigidBodyState<T> flow = dyn::oracle_rigid_body(I, x0, {T(h * T(kSteps))}).front();
     const T moved = relative_distance(flow, x0, size), off = relative_distance(x, flow, size);
     const double share = to_double(T(off / moved));
-    table += fmt("    h |Omega| = 2^-%.0f: the flow moves the state by %.3g, the step leaves it %.3g from the flow",
-                 j, to_double(moved), to_double(off)) +
+    table += fmt("    h |Omega| = 2^-%.0f: the flow moves the state by %.3g, the step leaves it %.3g from the flow", j,
+                 to_double(moved), to_double(off)) +
              fmt(" (%.3g of the move)\n", share);
     if (!(share <= 0.5) && first_stuck == 0) first_stuck = j, stuck_share = share;
   }
   stepfield::explaining_step(
       in, I, [&] { return std::vector<RigidBodyState<T>>{x0}; }, h_run,
       [&] {
-        showing_inputs([&] { return inputs + table; },
-                       [&] {
-                         const bool holds = first_stuck == 0;
-                         judge_claim("order", c.order > 0, holds,
-                                     in.name + (holds ? ": the state follows the flow when one step turns it by 2^-10 "
-                                                        "down to 2^-" + std::to_string(small_turn_exponents<T>().back()) + " rad"
-                                                      : ": the state does not follow the flow when one step turns it by 2^-" +
-                                                            std::to_string(first_stuck) +
-                                                            fmt(" rad: after 1024 steps it is %.3g of the flow's move "
-                                                                "away from the flow (a skip of small turns leaves all of "
-                                                                "it)",
-                                                                stuck_share)) +
-                                         judged_tag<T>(),
-                                     holds ? std::string() : "does not turn for turns of 2^-" + std::to_string(first_stuck) + " rad a step");
-                         require(in.name + ": the state follows the flow at small turns per step (h |Omega| down to 2^-" +
-                                     std::to_string(small_turn_exponents<T>().back()) + ")",
-                                 holds, table + "  inputs, by the notes' names:\n" + inputs);
-                       });
+        showing_inputs(
+            [&] { return inputs + table; },
+            [&] {
+              const bool holds = first_stuck == 0;
+              judge_claim("order", c.order > 0, holds,
+                          in.name +
+                              (holds ? ": the state follows the flow when one step turns it by 2^-10 "
+                                       "down to 2^-" +
+                                           std::to_string(small_turn_exponents<T>().back()) + " rad"
+                                     : ": the state does not follow the flow when one step turns it by 2^-" +
+                                           std::to_string(first_stuck) +
+                                           fmt(" rad: after 1024 steps it is %.3g of the flow's move "
+                                               "away from the flow (a skip of small turns leaves all of "
+                                               "it)",
+                                               stuck_share)) +
+                              judged_tag<T>(),
+                          holds ? std::string()
+                                : "does not turn for turns of 2^-" + std::to_string(first_stuck) + " rad a step");
+              require(in.name + ": the state follows the flow at small turns per step (h |Omega| down to 2^-" +
+                          std::to_string(small_turn_exponents<T>().back()) + ")",
+                      holds, table + "  inputs, by the notes' names:\n" + inputs);
+            });
       });
 }
 

@@ -17,16 +17,16 @@
 // Spec entries: s2.noether (Theorem 2.2) for Noether, mm.equivariance for equivariance (the
 // momentum map of the left action is equivariant, and a left-invariant method keeps that symmetry),
 // s3.euler-flow / s2.manakov-flow for the long-time energy.
+#include "properties/integrators/support/long_time.hpp"
+#include "properties/integrators/support/roundoff_claim.hpp"
+#include "properties/integrators/support/roundoff_drift.hpp"
+#include "properties/integrators/support/step_runs.hpp"
 #include "properties/registry.hpp"
 #include "properties/runner.hpp"
 #include "properties/support/claims.hpp"
 #include "properties/support/dynamics.hpp"
 #include "properties/support/figures.hpp"
-#include "properties/integrators/support/long_time.hpp"
-#include "properties/integrators/support/step_runs.hpp"
 #include "properties/support/named_inputs.hpp"
-#include "properties/integrators/support/roundoff_claim.hpp"
-#include "properties/integrators/support/roundoff_drift.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/tolerance.hpp"
 
@@ -245,10 +245,9 @@ void integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const
                          if (n > 0) x = run.next();
                          return dyn::energy(I, x.Pi);
                        },
-                       roundoffdrift::rigid_body_drift<T>(in, "the energy h (3.4)", [](const Vec3<T>& J,
-                                                                                        const RigidBodyState<T>& y) {
-                         return dyn::energy(J, y.Pi);
-                       }));
+                       roundoffdrift::rigid_body_drift<T>(
+                           in, "the energy h (3.4)",
+                           [](const Vec3<T>& J, const RigidBodyState<T>& y) { return dyn::energy(J, y.Pi); }));
                  });
 }
 

@@ -21,7 +21,8 @@ std::string show_scalar(const T& x) {
       if (style.rational_before.empty() && style.rational_after.empty()) return text;
       const auto slash = text.find('/');
       return style.rational_before +
-             (slash == std::string::npos ? text : text.substr(0, slash) + style.rational_between + text.substr(slash + 1)) +
+             (slash == std::string::npos ? text
+                                         : text.substr(0, slash) + style.rational_between + text.substr(slash + 1)) +
              style.rational_after;
     } else {
       return style.mp50_before + text + style.mp50_after;

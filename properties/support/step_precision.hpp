@@ -35,9 +35,9 @@
 namespace gm {
 
 struct StepPrecision {
-  double eps = 0;     // the unit round-off the step is judged with: 2^-23 (float), 2^-52 (double); 0: T's own
-  std::string name;   // "float" or "double"; empty: the scalar's own
-  std::string how;    // "stated", "stated: <reason>", "detected: ..." (what the reports say of it)
+  double eps = 0;    // the unit round-off the step is judged with: 2^-23 (float), 2^-52 (double); 0: T's own
+  std::string name;  // "float" or "double"; empty: the scalar's own
+  std::string how;   // "stated", "stated: <reason>", "detected: ..." (what the reports say of it)
   bool detected = false;
   // Whether the checks judge at a precision coarser than the scalar's own.
   template <class T>
@@ -49,8 +49,8 @@ struct StepPrecision {
 // The precision of the integrator whose property runs on this thread (set by the runner).
 StepPrecision& current_step_precision();
 
-inline constexpr double kFloatEps = 1.1920928955078125e-07;   // 2^-23, std::numeric_limits<float>::epsilon()
-inline constexpr double kDoubleEps = 2.220446049250313e-16;   // 2^-52
+inline constexpr double kFloatEps = 1.1920928955078125e-07;  // 2^-23, std::numeric_limits<float>::epsilon()
+inline constexpr double kDoubleEps = 2.220446049250313e-16;  // 2^-52
 
 // A stated precision by its name: "float" and "single" are float, "double" is double; anything
 // else is not a precision (nullopt), and the caller says so.

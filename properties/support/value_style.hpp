@@ -13,9 +13,9 @@ namespace gm {
 // check's processes are forked: RapidCheck prints a counterexample through the showValue overloads
 // of support/show.hpp, found by argument-dependent lookup and given no context, hence one style per process.
 struct ValueStyle {
-  bool nested_rows = false;              // a matrix as a list of rows, [[a, b], [c, d]]; else [a, b; c, d]
-  std::string column_separator = ", ";   // between the entries of a column vector: [a, b, c] or [a; b; c]
-  std::string mp50_before, mp50_after;   // around a 50-digit number's digits: mpf('...')
+  bool nested_rows = false;             // a matrix as a list of rows, [[a, b], [c, d]]; else [a, b; c, d]
+  std::string column_separator = ", ";  // between the entries of a column vector: [a, b, c] or [a; b; c]
+  std::string mp50_before, mp50_after;  // around a 50-digit number's digits: mpf('...')
   // Around a rational's p and q (or its integer): Fraction(p, q), Fraction(n); "p/q" by default.
   std::string rational_before, rational_between = "/", rational_after;
   // A counterexample's type in the language's words ("3-list of float"): {n} stands for the

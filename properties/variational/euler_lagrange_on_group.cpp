@@ -32,12 +32,12 @@
 // sl(2, R), det(Id +- X) = 1 + det X >= 1/2).
 #include "properties/registry.hpp"
 #include "properties/support/derivatives.hpp"
-#include "properties/variational/support/general_lagrangian.hpp"
 #include "properties/support/generators.hpp"
 #include "properties/support/lie_groups.hpp"
 #include "properties/support/named_inputs.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
+#include "properties/variational/support/general_lagrangian.hpp"
 
 #include <Eigen/LU>
 

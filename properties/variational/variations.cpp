@@ -13,15 +13,15 @@
 // Tolerances. Along the computed solution the integrand is zero up to the flow's error, which is
 // ~64 eps |x| (1 + lambda t) kappa (support/dynamics.hpp), times the integrand's sensitivity to
 // the state; scale = T * (size of the integrand's terms) * (1 + lambda T) * kappa, k = 64.
+#include "properties/variational/support/variations.hpp"
 #include "properties/registry.hpp"
 #include "properties/support/derivatives.hpp"
 #include "properties/support/dynamics.hpp"
-#include "properties/variational/support/general_lagrangian.hpp"
 #include "properties/support/generators.hpp"
 #include "properties/support/regimes.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
-#include "properties/variational/support/variations.hpp"
+#include "properties/variational/support/general_lagrangian.hpp"
 
 namespace gm {
 namespace properties_variations {

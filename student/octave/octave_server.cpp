@@ -12,9 +12,9 @@
 //
 // Requests on stdin, replies on $GEOMECH_REPLY_FD (3), the slot table in $GEOMECH_SLOT_TABLE; the
 // implementation's printf and disp go to stdout, never to the reply channel.
-#include <octave/oct.h>
 #include <octave/interpreter.h>
 #include <octave/oct-map.h>
+#include <octave/oct.h>
 #include <octave/ov-struct.h>
 #include <octave/parse.h>
 #include <octave/quit.h>
@@ -22,6 +22,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -29,14 +32,11 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <stdexcept>
-#include <limits>
 #include <string>
-#include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 #include <vector>
 
 namespace {

@@ -284,10 +284,11 @@ int main(int argc, char** argv) {
                     fast.omega[0] * L[1] - fast.omega[1] * L[0]};
     const double term = std::sqrt(wxL[0] * wxL[0] + wxL[1] * wxL[1] + wxL[2] * wxL[2]);
     const double capped = torque(fast, 1e-4), slow = torque(x0, 1e-4);
-    std::printf("explicit gyroscopic term at |omega| = 83: |omega x L| = %.4g, and L moves by |dL/dt| = %.4g: "
-                "the term applied is %.4g (Bullet's default maximum gyroscopic force: 100); at |omega| = 0.8 L "
-                "moves by %.3g\n",
-                term, capped, term - capped, slow);
+    std::printf(
+        "explicit gyroscopic term at |omega| = 83: |omega x L| = %.4g, and L moves by |dL/dt| = %.4g: "
+        "the term applied is %.4g (Bullet's default maximum gyroscopic force: 100); at |omega| = 0.8 L "
+        "moves by %.3g\n",
+        term, capped, term - capped, slow);
     ++compared;
     if (!(std::fabs(term - capped - 100) <= 2)) {
       std::cout << "  <-- the explicit gyroscopic term was expected to be clamped at 100\n";

@@ -9,8 +9,8 @@
 //     slope must still be at least 1 - 0.1: a step that does not converge integrates nothing.
 #pragma once
 
-#include "properties/support/claims.hpp"
 #include "properties/integrators/support/convergence.hpp"
+#include "properties/support/claims.hpp"
 #include "properties/support/figures.hpp"
 #include "properties/support/tolerance.hpp"
 
@@ -104,8 +104,10 @@ inline void judge_order_claim(const std::string& integrator, int claimed, const 
     char turn[64];
     std::snprintf(turn, sizeof turn, "steps up to h |Omega| = %.2g", largest_turn);
     judge_claim("order", true, true,
-                measured + buf + ", over " + turn + ", where the error is not yet its leading term alone: "
-                                 "not decided within 0.1" + scalar,
+                measured + buf + ", over " + turn +
+                    ", where the error is not yet its leading term alone: "
+                    "not decided within 0.1" +
+                    scalar,
                 std::string(order) + " (" + turn + ": not decided within 0.1)", false);
     return;
   }

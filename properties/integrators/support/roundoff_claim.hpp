@@ -31,10 +31,10 @@ void log_roundoff_residual(const std::string& what, const T& residual, const T& 
   auto& log = residual_log();
   ++log.checks;
   const T unit = step_eps<T>() * scale;
-  const double units = !is_finite(residual)     ? std::numeric_limits<double>::infinity()
-                       : residual == T(0)        ? 0.0
-                       : unit == T(0)            ? std::numeric_limits<double>::infinity()
-                                                 : to_double(T(residual / unit));
+  const double units = !is_finite(residual) ? std::numeric_limits<double>::infinity()
+                       : residual == T(0)   ? 0.0
+                       : unit == T(0)       ? std::numeric_limits<double>::infinity()
+                                            : to_double(T(residual / unit));
   if (units >= log.worst_eps_units) {
     log.worst_eps_units = units;
     log.worst_absolute = to_double(residual);
@@ -53,8 +53,8 @@ void judge_roundoff_claim(const char* claim, bool claimed, const std::string& in
   const std::string tag = judged_tag<T>();
   const bool holds = within_roundoff(residual, scale, k) && !defect;
   const std::string units = step_eps_units(residual, scale);
-  const std::string evidence = integrator + ": " + what + ": residual " + units + ", allowed " +
-                               fmt("%g ", k) + eps_word<T>() + " * scale, scale " + to_string_full(scale) +
+  const std::string evidence = integrator + ": " + what + ": residual " + units + ", allowed " + fmt("%g ", k) +
+                               eps_word<T>() + " * scale, scale " + to_string_full(scale) +
                                (cause.empty() ? std::string() : "; " + cause) + tag;
   if (claimed) log_roundoff_residual(integrator + ": " + what + " (claimed)", residual, scale);
   judge_claim(claim, claimed, holds, evidence,

@@ -84,17 +84,17 @@ Drift measure(Values&& values, const T& rate, const T& h, const std::string& nam
   d.systematic = true;
   d.at_h = moments_of(values(h, 64)).mean;
   d.at_h4 = moments_of(values(T(h / T(4)), 64)).mean;
-  const auto same = [&](double a) { return a * d.per_step > 0 && std::abs(a) <= 2 * std::abs(d.per_step) &&
-                                           std::abs(a) >= std::abs(d.per_step) / 2; };
+  const auto same = [&](double a) {
+    return a * d.per_step > 0 && std::abs(a) <= 2 * std::abs(d.per_step) && std::abs(a) >= std::abs(d.per_step) / 2;
+  };
   const bool whatever_h = same(d.at_h) && same(d.at_h4);
   const bool gains = d.per_step > 0;
   const std::string over = fmt("%.2g%% over 10^5 steps", 100 * std::abs(std::expm1(1e5 * std::log1p(d.per_step))));
   d.rate = "systematic round-off: " + name + (gains ? " gains " : " loses ") + fmt("%.2g", std::abs(d.per_step)) +
            " of itself per step" + (whatever_h ? " whatever h" : "") + ", " + over;
   d.words = "systematic round-off, by experiment: " + name + (gains ? " gains " : " loses ") +
-            fmt("%.2g", std::abs(d.per_step)) + " of itself per step (" +
-            fmt("%.2g", std::abs(d.per_step) / eps) + " " + eps_word<T>() + ") at h = " + fmt("%.3g", d.tiny_h) +
-            ", a step far too small to move the state, " +
+            fmt("%.2g", std::abs(d.per_step)) + " of itself per step (" + fmt("%.2g", std::abs(d.per_step) / eps) +
+            " " + eps_word<T>() + ") at h = " + fmt("%.3g", d.tiny_h) + ", a step far too small to move the state, " +
             fmt("%.0f%% of 256 steps ", 100 * (gains ? d.gaining : 1 - d.gaining)) + (gains ? "raising" : "lowering") +
             " it; at the check's h = " + fmt("%.3g", d.h) + " and at h/4: " + fmt("%+.2g", d.at_h) + " and " +
             fmt("%+.2g", d.at_h4) + " per step" +
@@ -132,8 +132,7 @@ const Drift& rigid_body_drift(const Integrator<T>& in, const std::string& name, 
     d = measure<T>(values, T(max_abs(Vec3<T>(x0.Pi.cwiseQuotient(I)))), T(1) / T(8), name);
   } catch (const StepRaised&) {
     current_step_raise().reset();
-  } catch (const OutsideDomain&) {
-  }
+  } catch (const OutsideDomain&) {}
   return found[key] = d;
 }
 

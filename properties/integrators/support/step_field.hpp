@@ -15,11 +15,11 @@
 #pragma once
 
 #include "core/subject.hpp"
+#include "properties/integrators/support/step_probe.hpp"
 #include "properties/support/claims.hpp"
 #include "properties/support/scalar_text.hpp"
 #include "properties/support/show.hpp"
 #include "properties/support/step_guard.hpp"
-#include "properties/integrators/support/step_probe.hpp"
 #include "properties/support/step_precision.hpp"
 #include "properties/support/tolerance.hpp"
 #include "properties/support/truth.hpp"
@@ -27,8 +27,8 @@
 #include <rapidcheck.h>
 
 #include <algorithm>
-#include <utility>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace gm::stepfield {

@@ -13,8 +13,8 @@
 
 #include "impl/canonical_integrators.hpp"
 #include "impl/manakov.hpp"
-#include "properties/support/named_inputs.hpp"
 #include "properties/integrators/support/step_field.hpp"
+#include "properties/support/named_inputs.hpp"
 
 #include <string>
 #include <vector>

@@ -246,8 +246,8 @@ std::string cap_of(const Vec3<T>& I, const RigidBodyState<T>& x, Field&& field) 
     // field_first_exponent): its round-off is eps |Pi| |Omega| amplified by up to 2^(k0 + 12) with the
     // extrapolation. Where that is not small against the field, the field cannot be read (double at
     // a large scale with a small field): the scan ends there.
-    const T noise = T(std::ldexp(1.0, field_first_exponent<T>() + 12)) * step_eps<T>() * max_abs(xl.Pi) *
-                    T(rate_of(I, xl.Pi));
+    const T noise =
+        T(std::ldexp(1.0, field_first_exponent<T>() + 12)) * step_eps<T>() * max_abs(xl.Pi) * T(rate_of(I, xl.Pi));
     const T tolerance = field_agree_tolerance<T>() * n + T(4) * noise;
     // In double a reading whose round-off is above 1e-3 of the field is not read; in float every reading
     // carries about that much (float's field is known to a few 1e-3, its noise bound here), so the
@@ -279,8 +279,8 @@ std::string cap_of(const Vec3<T>& I, const RigidBodyState<T>& x, Field&& field) 
     return true;
   };
   const std::string range = " for every max |Pi_i| >= " + fmt("%.3g", to_double(at[from].pi)) + ", this state's " +
-                            fmt("%.3g", to_double(size)) +
-                            " among them, and exactly (3.8) up to max |Pi_i| = " + fmt("%.3g", to_double(at[from - 1].pi));
+                            fmt("%.3g", to_double(size)) + " among them, and exactly (3.8) up to max |Pi_i| = " +
+                            fmt("%.3g", to_double(at[from - 1].pi));
   if (constant([](const Point& p) { return p.ratio; }, [](const Point& p) { return T(abs_value(p.ratio) / p.force); }))
     return "a cap, by experiment: your step's field is " + fmt("%.4g", to_double(at[here].ratio)) + " x (3.8)" + range +
            ": (3.8) shrunk to a constant fraction beyond a size (a cap on the angular velocity or the momentum)";

@@ -17,8 +17,8 @@
 
 #include "core/linalg.hpp"
 #include "properties/support/figures.hpp"
-#include "properties/variational/support/quadrature.hpp"
 #include "properties/support/tolerance.hpp"
+#include "properties/variational/support/quadrature.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -2,8 +2,8 @@
 // assignment, "not written" apart from "double only", a roster student without a submission), and
 // the Gradescope and PrairieLearn results rendered from that decision.
 #include "harness/class/autograder.hpp"
-#include "harness/class/class_mode.hpp"
 #include "harness/class/class_html.hpp"
+#include "harness/class/class_mode.hpp"
 #include "harness/class/class_record.hpp"
 #include "harness/class/feedback_files.hpp"
 #include "harness/languages/language.hpp"

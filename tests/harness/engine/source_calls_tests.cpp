@@ -1,8 +1,8 @@
 // Who calls whom in a submission, read from its source: the first fix is the function
 // whose own check fails, not one that calls it.
-#include "harness/reports/report.hpp"
 #include "harness/engine/first_fix.hpp"
 #include "harness/engine/source_calls.hpp"
+#include "harness/reports/report.hpp"
 
 #include "tests/harness/harness_support.hpp"
 #include "tests/support/scratch.hpp"

@@ -1,30 +1,30 @@
 // harness/isolation/: each way of dying told apart, a starved task from one that waits, the memory
 // limit.
-#include "harness/program/build.hpp"
 #include "harness/engine/check.hpp"
+#include "harness/engine/integrator_verdicts.hpp"
+#include "harness/engine/thorough_only.hpp"
+#include "harness/engine/trajectory.hpp"
+#include "harness/engine/verdict_io.hpp"
 #include "harness/isolation/isolate.hpp"
 #include "harness/isolation/process_cpu.hpp"
 #include "harness/isolation/run_queue_account.hpp"
 #include "harness/isolation/work_limit.hpp"
-#include "harness/trajectories/reference_flow.hpp"
+#include "harness/program/build.hpp"
 #include "harness/reports/report.hpp"
-#include "harness/engine/integrator_verdicts.hpp"
 #include "harness/reports/svg.hpp"
-#include "harness/engine/thorough_only.hpp"
-#include "harness/engine/trajectory.hpp"
-#include "properties/support/loglog_fit.hpp"
-#include "harness/engine/verdict_io.hpp"
+#include "harness/trajectories/reference_flow.hpp"
 #include "impl/reference_subject.hpp"
 #include "properties/support/claims.hpp"
+#include "properties/support/loglog_fit.hpp"
 #include "properties/support/tolerance.hpp"
 #include "tests/support/ctest_script.hpp"
 
 #include <gtest/gtest.h>
 
-#include <csignal>
 #include <sched.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -268,8 +268,7 @@ TEST(Isolation, AHerdOfItsOwnChildrenStarvesItself) {
                                       const auto period = std::chrono::milliseconds(100);
                                       std::this_thread::sleep_for(period - Clock::now().time_since_epoch() % period);
                                       const auto start = Clock::now();
-                                      while (Clock::now() - start < std::chrono::milliseconds(30)) {
-                                      }
+                                      while (Clock::now() - start < std::chrono::milliseconds(30)) {}
                                     }
                                   }
                                 for (;;) std::this_thread::sleep_for(std::chrono::seconds(1));

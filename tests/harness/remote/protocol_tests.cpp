@@ -5,26 +5,26 @@
 // blocks nor breaks the protocol, a hang while loading caught by the handshake's deadline, which is
 // judged by the kernel's accounting (a starved handshake is the machine's); the per-call round-trip cost.
 #include "harness/isolation/isolate.hpp"
-#include "harness/remote/protocol_codec.hpp"
-#include "harness/remote/remote_subject.hpp"
 #include "harness/languages/language.hpp"
 #include "harness/languages/rows.hpp"
+#include "harness/remote/protocol_codec.hpp"
+#include "harness/remote/remote_subject.hpp"
 #include "tests/harness/harness_support.hpp"
 
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <limits>
 #include <map>
 #include <set>
 #include <sstream>
-#include <cstdio>
-#include <cstdlib>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace gm::protocol {
 namespace {

@@ -1,7 +1,7 @@
 // Reports as HTML pages: report.md as a page that loads nothing and runs nothing of the
 // student's, its structure kept (rendered by libcmark-gfm in its safe mode).
-#include "harness/reports/html_page.hpp"
 #include "harness/isolation/inert_text.hpp"
+#include "harness/reports/html_page.hpp"
 
 #include <gtest/gtest.h>
 

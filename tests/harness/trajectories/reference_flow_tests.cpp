@@ -1,27 +1,27 @@
 // harness/trajectories/: the 50-digit reference flow.
-#include "harness/program/build.hpp"
 #include "harness/engine/check.hpp"
-#include "harness/isolation/isolate.hpp"
-#include "harness/isolation/process_cpu.hpp"
-#include "harness/trajectories/reference_flow.hpp"
-#include "harness/reports/report.hpp"
 #include "harness/engine/integrator_verdicts.hpp"
-#include "harness/reports/svg.hpp"
 #include "harness/engine/thorough_only.hpp"
 #include "harness/engine/trajectory.hpp"
-#include "properties/support/loglog_fit.hpp"
 #include "harness/engine/verdict_io.hpp"
+#include "harness/isolation/isolate.hpp"
+#include "harness/isolation/process_cpu.hpp"
+#include "harness/program/build.hpp"
+#include "harness/reports/report.hpp"
+#include "harness/reports/svg.hpp"
+#include "harness/trajectories/reference_flow.hpp"
 #include "impl/reference_subject.hpp"
 #include "properties/support/claims.hpp"
+#include "properties/support/loglog_fit.hpp"
 #include "properties/support/tolerance.hpp"
 #include "tests/support/ctest_script.hpp"
 
 #include <gtest/gtest.h>
 
-#include <csignal>
 #include <sched.h>
 #include <sys/prctl.h>
 #include <sys/wait.h>
+#include <csignal>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
