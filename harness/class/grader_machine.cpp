@@ -1,9 +1,8 @@
 #include "harness/class/grader_machine.hpp"
 
-#include "harness/isolation/process.hpp"
 #include "harness/isolation/sandbox.hpp"
-#include "harness/isolation/sandboxed_interpreter.hpp"
 #include "harness/languages/language.hpp"
+#include "harness/languages/starts_in_sandbox.hpp"
 #include "harness/remote/remote_subject.hpp"
 
 #include <unistd.h>
@@ -36,31 +35,6 @@ void try_cache(const std::string& cache_dir, std::vector<std::string>& problems)
                      "`, or --cache-dir DIR in a folder every user may pass");
 }
 
-void try_interpreter(const Language& language, std::vector<std::string>& problems) {
-  const std::string program = language.interpreter();
-  std::error_code ec;
-  if (!fs::path(program).is_absolute() || !fs::exists(program, ec))
-    return;  // not installed: each check says so in its own words (a missing interpreter is not a sandbox's fault)
-  if (!language.for_sandbox) return;
-  const SandboxedInterpreter si = language.for_sandbox(program);
-  if (!si.error.empty()) {
-    problems.push_back(si.error);
-    return;
-  }
-  if (language.start_probe.empty()) return;  // its start is tried by its first check (Octave)
-  // Started inside the sandbox, as a check starts it.
-  SandboxSpec spec;
-  spec.read_only = si.read_only;
-  std::vector<std::string> argv{si.program};
-  argv.insert(argv.end(), language.start_probe.begin(), language.start_probe.end());
-  const ProcessResult r = run_process(ProcessSpec{sandboxed(argv, spec), {}, false}, 60);
-  if (!r.started || r.exit_code != 0)
-    problems.push_back("the " + language.name + " interpreter " + si.program + " does not start in the sandbox (as " +
-                       who() + "): " + r.output.substr(0, 600) + ". Fix: " + language.interpreter_variable + "=" +
-                       language.system_interpreter +
-                       " (the system's), or an interpreter whose folders every user may read");
-}
-
 }  // namespace
 
 std::vector<std::string> grader_machine_problems(const GraderNeeds& needs) {
@@ -72,7 +46,8 @@ std::vector<std::string> grader_machine_problems(const GraderNeeds& needs) {
   }
   if (!needs.cache_dir.empty()) try_cache(needs.cache_dir, problems);
   for (const auto& l : languages())
-    if (l.route == Route::Served && needs.served.count(l.id)) try_interpreter(l, problems);
+    if (l.route == Route::Served && needs.served.count(l.id))
+      if (const std::string p = interpreter_start_problem(l); !p.empty()) problems.push_back(p);
   return problems;
 }
 
