@@ -20,34 +20,7 @@ std::vector<std::string> cpp_function_names(const std::string& source) {
 }
 
 // Comments (// and /* */) and string literals blanked, newlines kept.
-std::string cpp_code_only(const std::string& text) {
-  std::string out = text;
-  auto blank = [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to && k < out.size(); ++k)
-      if (out[k] != '\n') out[k] = ' ';
-  };
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const char c = text[i];
-    if (text.compare(i, 2, "//") == 0) {
-      const std::size_t end = text.find('\n', i);
-      blank(i, end == std::string::npos ? text.size() : end);
-      i = end == std::string::npos ? text.size() : end;
-    } else if (text.compare(i, 2, "/*") == 0) {
-      const std::size_t end = text.find("*/", i + 2);
-      blank(i, end == std::string::npos ? text.size() : end + 2);
-      i = end == std::string::npos ? text.size() : end + 2;
-    } else if (c == '"' || c == '\'') {
-      std::size_t k = i + 1;
-      while (k < text.size() && text[k] != c && text[k] != '\n') k += text[k] == '\\' ? 2 : 1;
-      blank(i + 1, k);
-      i = k + 1;
-    } else {
-      ++i;
-    }
-  }
-  return out;
-}
+std::string cpp_code_only(const std::string& text) { return c_like_code_only(text, "\"'", 0); }
 
 // A function with a body: `name(...) ... {`.
 std::vector<Definition> cpp_definitions(const std::string& code) {

@@ -16,12 +16,7 @@ namespace {
 
 std::string node_interpreter() {
   // $GEOMECH_NODE, else the node first on PATH (nvm's, a distribution's), else Debian's.
-  if (const char* node = std::getenv("GEOMECH_NODE"); node && *node) {
-    const std::string found = on_path(node);
-    return found.empty() ? node : found;
-  }
-  if (const std::string found = on_path("node"); !found.empty()) return found;
-  return "/usr/bin/node";
+  return interpreter_named("GEOMECH_NODE", "node", "/usr/bin/node");
 }
 
 std::vector<std::string> node_server(const std::string& file) {
@@ -60,34 +55,7 @@ std::vector<std::string> javascript_function_names(const std::string& source) {
 }
 
 // Comments (// and /* */) and string literals ('...', "...", `...` across lines) blanked.
-std::string javascript_code_only(const std::string& text) {
-  std::string out = text;
-  auto blank = [&](std::size_t from, std::size_t to) {
-    for (std::size_t k = from; k < to && k < out.size(); ++k)
-      if (out[k] != '\n') out[k] = ' ';
-  };
-  std::size_t i = 0;
-  while (i < text.size()) {
-    const char c = text[i];
-    if (text.compare(i, 2, "//") == 0) {
-      const std::size_t end = std::min(text.find('\n', i), text.size());
-      blank(i, end);
-      i = end;
-    } else if (text.compare(i, 2, "/*") == 0) {
-      const std::size_t end = text.find("*/", i + 2);
-      blank(i, end == std::string::npos ? text.size() : end + 2);
-      i = end == std::string::npos ? text.size() : end + 2;
-    } else if (c == '"' || c == '\'' || c == '`') {
-      std::size_t k = i + 1;
-      while (k < text.size() && text[k] != c && (c == '`' || text[k] != '\n')) k += text[k] == '\\' ? 2 : 1;
-      blank(i + 1, k);
-      i = k + 1;
-    } else {
-      ++i;
-    }
-  }
-  return out;
-}
+std::string javascript_code_only(const std::string& text) { return c_like_code_only(text, "\"'`", '`'); }
 
 // Where functions begin: `function name(`, `name = (...) =>` or `name = function`, and methods
 // (`name(...) {` at a line's start, in a class or an object).

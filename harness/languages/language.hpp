@@ -160,5 +160,9 @@ std::pair<int, int> line_and_column(const std::string& text, std::size_t offset)
 // ("Mat3<T>"). For the rows' signature printers.
 std::vector<std::pair<std::string, std::string>> slot_parameters(const std::string& cpp_signature);
 std::string slot_result_type(const std::string& cpp_signature);
+// A row's interpreter: the one its variable names ($GEOMECH_PYTHON; a bare name as PATH finds it),
+// else `program` first on PATH (a venv's, nvm's), else `fallback` (the system's, or the bare name).
+std::string interpreter_named(const char* variable, const std::string& program, const std::string& fallback);
+
 
 }  // namespace gm::harness

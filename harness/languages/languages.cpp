@@ -38,6 +38,44 @@ const Language* language_of(const std::string& path) {
   return nullptr;
 }
 
+std::string interpreter_named(const char* variable, const std::string& program, const std::string& fallback) {
+  if (const char* named = std::getenv(variable); named && *named) {
+    const std::string found = on_path(named);
+    return found.empty() ? named : found;
+  }
+  const std::string found = on_path(program);
+  return found.empty() ? fallback : found;
+}
+
+std::string c_like_code_only(const std::string& text, const std::string& quotes, char multiline) {
+  std::string out = text;
+  auto blank = [&](std::size_t from, std::size_t to) {
+    for (std::size_t k = from; k < to && k < out.size(); ++k)
+      if (out[k] != '\n') out[k] = ' ';
+  };
+  std::size_t i = 0;
+  while (i < text.size()) {
+    const char c = text[i];
+    if (text.compare(i, 2, "//") == 0) {
+      const std::size_t end = std::min(text.find('\n', i), text.size());
+      blank(i, end);
+      i = end;
+    } else if (text.compare(i, 2, "/*") == 0) {
+      const std::size_t end = text.find("*/", i + 2);
+      blank(i, end == std::string::npos ? text.size() : end + 2);
+      i = end == std::string::npos ? text.size() : end + 2;
+    } else if (quotes.find(c) != std::string::npos) {
+      std::size_t k = i + 1;
+      while (k < text.size() && text[k] != c && (c == multiline || text[k] != '\n')) k += text[k] == '\\' ? 2 : 1;
+      blank(i + 1, k);
+      i = k + 1;
+    } else {
+      ++i;
+    }
+  }
+  return out;
+}
+
 const Language* language_named(std::string_view id) {
   for (const auto& l : languages())
     if (l.id == id) return &l;

@@ -36,12 +36,8 @@ std::string octave_server_program() {
 namespace {
 
 std::string octave_interpreter() {
-  if (const char* oc = std::getenv("GEOMECH_OCTAVE"); oc && *oc) {
-    const std::string found = on_path(oc);
-    return found.empty() ? oc : found;
-  }
-  const std::string found = on_path("octave-cli");
-  return found.empty() ? "octave-cli" : found;
+  // $GEOMECH_OCTAVE, else the octave-cli first on PATH (the script server names it so when missing).
+  return interpreter_named("GEOMECH_OCTAVE", "octave-cli", "octave-cli");
 }
 
 std::vector<std::string> octave_server(const std::string& file) {

@@ -18,12 +18,7 @@ namespace {
 std::string python_interpreter() {
   // The user's interpreter: $GEOMECH_PYTHON, else the python3 that comes first on PATH (a
   // venv's or pyenv's), else Debian's.
-  if (const char* py = std::getenv("GEOMECH_PYTHON"); py && *py) {
-    const std::string found = on_path(py);
-    return found.empty() ? py : found;
-  }
-  if (const std::string found = on_path("python3"); !found.empty()) return found;
-  return "/usr/bin/python3";
+  return interpreter_named("GEOMECH_PYTHON", "python3", "/usr/bin/python3");
 }
 
 std::vector<std::string> python_server(const std::string& file) {

@@ -14,6 +14,12 @@ Language octave_row();
 Language javascript_row();
 Language notebook_row();
 
+// A text of a language with C's comments (C++, JavaScript) with its comments (// and /* */) and
+// string literals blanked, same length, lines kept: `quotes` the characters that open a literal
+// ("\"'", and JavaScript's backquote too), `multiline` the one whose literal may cross lines ('`'; 0:
+// none). For the rows' code_only.
+std::string c_like_code_only(const std::string& text, const std::string& quotes, char multiline);
+
 // The Octave server with Octave's interpreter linked in (student/octave/octave_server.cpp), beside
 // this program when liboctave-dev was installed at build time; empty when it is not there, or when
 // $GEOMECH_OCTAVE_SERVER=script or $GEOMECH_OCTAVE (an octave-cli to run) asks for the script
