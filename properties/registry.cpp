@@ -42,7 +42,11 @@ std::string source_in_tree(std::string_view path) {
   return std::string(path);
 }
 
-PropertyDef registered_in(PropertyDef def, std::string_view path) {
+PropertyDef registered_as(PropertyDef def, std::string_view fn, std::string_view path) {
+  if (!def.id.empty())
+    throw std::logic_error("GM_PROPERTY(" + std::string(fn) + ", ...) in " + std::string(path) + " spells its id (\"" +
+                           def.id + "\"): a property's id is its function's name, set by GM_PROPERTY; leave .id out");
+  def.id = std::string(fn);
   def.file = source_in_tree(path);
   return def;
 }

@@ -6,7 +6,8 @@
 //
 // Register a property in its own .cpp under the folder of its part of the notes (properties/README.md)
 // with
-//   GM_PROPERTY(body_template, all_scalars | float_scalars, {.id = ..., .spec = ..., ...});
+//   GM_PROPERTY(body_template, all_scalars | float_scalars, {.spec = ..., .title = ..., ...});
+// (its id is the function's name, spelt once, there).
 // Nothing else needs editing: tests, the report and the student harness all read the registry, and
 // spec/CATALOGUE.md names the file (recorded by GM_PROPERTY).
 #pragma once
@@ -75,7 +76,7 @@ struct Cases {
 };
 
 struct PropertyDef {
-  std::string id;     // stable, snake_case: the test name
+  std::string id{};   // stable, snake_case: the test name, the function's name (set by GM_PROPERTY)
   std::string spec;   // catalogue entry id
   std::string title;  // the statement being checked, one line
   ToleranceClass tolerance = ToleranceClass::Exact;
@@ -93,9 +94,10 @@ struct PropertyDef {
   std::string file{};
 };
 
-// `def` with `file` set to `path` from its last "properties/" folder on (source_in_tree), whatever
-// the build's source directory is.
-PropertyDef registered_in(PropertyDef def, std::string_view path);
+// `def` with its id the name of its function (`fn`, GM_PROPERTY's first argument; a `def` that
+// spells an id of its own throws std::logic_error: a name is spelt once) and `file` set to `path`
+// from its last "properties/" folder on (source_in_tree), whatever the build's source directory is.
+PropertyDef registered_as(PropertyDef def, std::string_view fn, std::string_view path);
 std::string source_in_tree(std::string_view path);
 
 struct Property : PropertyDef {
@@ -169,11 +171,11 @@ struct Registrar {
 #define GM_PROPERTY_CONCAT2(a, b) a##b
 #define GM_PROPERTY_CONCAT(a, b) GM_PROPERTY_CONCAT2(a, b)
 
-// GM_PROPERTY(fn, all_scalars | float_scalars | integrator_scalars, {.id = ..., ...}):
-// registers the function template `fn`, taking (const Subject<T>&), or for integrator_scalars
-// (const Subject<T>&, const Integrator<T>&, const IntegratorClaims&).
-#define GM_PROPERTY(fn, scalars, ...)                                            \
-  static const ::gm::Registrar GM_PROPERTY_CONCAT(gm_property_registrar_, fn) {  \
-    ::gm::scalars, ::gm::registered_in(::gm::PropertyDef __VA_ARGS__, __FILE__), \
-        [](const auto&... args) { fn(args...); }                                 \
+// GM_PROPERTY(fn, all_scalars | float_scalars | integrator_scalars, {.spec = ..., ...}):
+// registers the function template `fn` as the property whose id is "fn", taking (const Subject<T>&),
+// or for integrator_scalars (const Subject<T>&, const Integrator<T>&, const IntegratorClaims&).
+#define GM_PROPERTY(fn, scalars, ...)                                                 \
+  static const ::gm::Registrar GM_PROPERTY_CONCAT(gm_property_registrar_, fn) {       \
+    ::gm::scalars, ::gm::registered_as(::gm::PropertyDef __VA_ARGS__, #fn, __FILE__), \
+        [](const auto&... args) { fn(args...); }                                      \
   }

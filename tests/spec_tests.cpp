@@ -11,6 +11,8 @@
 #include <fstream>
 #include <set>
 #include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace gm {
 namespace {
@@ -87,6 +89,25 @@ TEST(Spec, SourceInTreeKeepsFromTheLastPropertiesFolder) {
   // controls: a folder whose name only ends in "properties", and a file outside properties/
   EXPECT_EQ(source_in_tree("/x/myproperties/a.cpp"), "/x/myproperties/a.cpp");
   EXPECT_EQ(source_in_tree("/x/tests/harness_tests.cpp"), "/x/tests/harness_tests.cpp");
+}
+
+// A property's id is its function's name, spelt once: GM_PROPERTY sets it; the control, a
+// definition that spells an id of its own, is refused naming the function and its file.
+TEST(Spec, APropertysIdIsItsFunctionsName) {
+  const PropertyDef def = registered_as(PropertyDef{.spec = "s2.hat-map"}, "hat_is_cross_product",
+                                        "/src/properties/s2_1_rigid_body/hat_map.cpp");
+  EXPECT_EQ(def.id, "hat_is_cross_product");
+  EXPECT_EQ(def.file, "properties/s2_1_rigid_body/hat_map.cpp");
+  ASSERT_NE(find_property("hat_is_cross_product"), nullptr);
+  EXPECT_EQ(find_property("hat_is_cross_product")->file, "properties/s2_1_rigid_body/hat_map.cpp");
+  try {
+    (void)registered_as(PropertyDef{.id = "hat_is_cross_product"}, "hat_is_cross_product", "properties/x.cpp");
+    ADD_FAILURE() << "a spelt id was accepted";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("GM_PROPERTY(hat_is_cross_product, ...) in properties/x.cpp spells its id"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(Spec, MalformedCatalogueIsRejectedWithItsName) {

@@ -388,8 +388,7 @@ void definition_momentum_map(const Subject<T>& s) {
 
 #define GM_DEFINITION(slot, entry, statement, tolerance_class, ...) \
   GM_PROPERTY(definition_##slot, all_scalars,                       \
-              {.id = "definition_" #slot,                           \
-               .spec = entry,                                       \
+              {.spec = entry,                                       \
                .title = "slot " #slot " alone: " statement,         \
                .tolerance = ToleranceClass::tolerance_class,        \
                .needs = {#slot},                                    \

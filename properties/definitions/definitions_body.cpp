@@ -327,8 +327,7 @@ void definition_inertia_bilinear_2_3(const Subject<T>& s) {
 
 #define GM_BODY_DEFINITION(slot, entry, statement, ...)     \
   GM_PROPERTY(definition_##slot, all_scalars,               \
-              {.id = "definition_" #slot,                   \
-               .spec = entry,                               \
+              {.spec = entry,                               \
                .title = "slot " #slot " alone: " statement, \
                .tolerance = ToleranceClass::Exact,          \
                .needs = {#slot},                            \

@@ -137,8 +137,7 @@ void definition_manakov_clebsch_3_23(const Subject<T>& s) {
 
 #define GM_MANAKOV_DEFINITION(slot, entry, statement, ...)  \
   GM_PROPERTY(definition_##slot, all_scalars,               \
-              {.id = "definition_" #slot,                   \
-               .spec = entry,                               \
+              {.spec = entry,                               \
                .title = "slot " #slot " alone: " statement, \
                .tolerance = ToleranceClass::Exact,          \
                .needs = {#slot},                            \

@@ -384,8 +384,7 @@ void manakov_clebsch_integrator_symplectic(const Subject<T>&, const Integrator<T
 
 GM_PROPERTY(
     clebsch_integrator_order, integrator_scalars,
-    {.id = "clebsch_integrator_order",
-     .spec = "s3.clebsch-reconstruction",
+    {.spec = "s3.clebsch-reconstruction",
      .title = "Clebsch (3.21) integrator: measured order at t = 1 (against Q(t) = O(t)^-1 Q(0)) matches the claim",
      .tolerance = ToleranceClass::Truncation,
      .needs = {},
@@ -394,8 +393,7 @@ GM_PROPERTY(
      .judges = {"order"}});
 
 GM_PROPERTY(manakov_clebsch_integrator_order, integrator_scalars,
-            {.id = "manakov_clebsch_integrator_order",
-             .spec = "mm.manakov-clebsch",
+            {.spec = "mm.manakov-clebsch",
              .title = "Clebsch (3.23) integrator: measured order at t = 1 (against Q(t) = Q(0) O(t)) matches the claim",
              .tolerance = ToleranceClass::Truncation,
              .needs = {},
@@ -404,8 +402,7 @@ GM_PROPERTY(manakov_clebsch_integrator_order, integrator_scalars,
              .judges = {"order"}});
 
 GM_PROPERTY(clebsch_integrator_symmetric, integrator_scalars,
-            {.id = "clebsch_integrator_symmetric",
-             .spec = "s3.clebsch-reconstruction",
+            {.spec = "s3.clebsch-reconstruction",
              .title = "Clebsch (3.21) integrator claimed symmetric: step(h) then step(-h) is the identity to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -414,8 +411,7 @@ GM_PROPERTY(clebsch_integrator_symmetric, integrator_scalars,
              .judges = {"symmetric"}});
 
 GM_PROPERTY(manakov_clebsch_integrator_symmetric, integrator_scalars,
-            {.id = "manakov_clebsch_integrator_symmetric",
-             .spec = "mm.manakov-clebsch",
+            {.spec = "mm.manakov-clebsch",
              .title = "Clebsch (3.23) integrator claimed symmetric: step(h) then step(-h) is the identity to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -424,8 +420,7 @@ GM_PROPERTY(manakov_clebsch_integrator_symmetric, integrator_scalars,
              .judges = {"symmetric"}});
 
 GM_PROPERTY(clebsch_integrator_energy, integrator_scalars,
-            {.id = "clebsch_integrator_energy",
-             .spec = "s3.clebsch-euler",
+            {.spec = "s3.clebsch-euler",
              .title = "Clebsch (3.21) integrator claiming energy: H(Q, P) = h(P x Q) kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -435,8 +430,7 @@ GM_PROPERTY(clebsch_integrator_energy, integrator_scalars,
 
 GM_PROPERTY(
     manakov_clebsch_integrator_energy, integrator_scalars,
-    {.id = "manakov_clebsch_integrator_energy",
-     .spec = "mm.manakov-clebsch",
+    {.spec = "mm.manakov-clebsch",
      .title = "Clebsch (3.23) integrator claiming energy: -tr(Omega M)/4 of M = Q^T P - P^T Q kept to round-off",
      .tolerance = ToleranceClass::Roundoff,
      .needs = {},
@@ -445,8 +439,7 @@ GM_PROPERTY(
      .judges = {"energy"}});
 
 GM_PROPERTY(clebsch_integrator_symplectic, integrator_scalars,
-            {.id = "clebsch_integrator_symplectic",
-             .spec = "s3.clebsch-poisson",
+            {.spec = "s3.clebsch-poisson",
              .title = "Clebsch (3.21) integrator claimed symplectic: D Phi preserves dQ ^ dP (to the accuracy of an "
                       "order-8 Jacobian)",
              .tolerance = ToleranceClass::Roundoff,
@@ -457,8 +450,7 @@ GM_PROPERTY(clebsch_integrator_symplectic, integrator_scalars,
              .judges = {"symplectic"}});
 
 GM_PROPERTY(manakov_clebsch_integrator_symplectic, integrator_scalars,
-            {.id = "manakov_clebsch_integrator_symplectic",
-             .spec = "mm.manakov-clebsch",
+            {.spec = "mm.manakov-clebsch",
              .title = "Clebsch (3.23) integrator claimed symplectic: D Phi preserves the canonical two-form (n = 3..6)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},

@@ -810,8 +810,7 @@ void manakov_integrator_poisson(const Subject<T>&, const Integrator<T>& in, cons
 
 GM_PROPERTY(
     integrator_order, integrator_scalars,
-    {.id = "integrator_order",
-     .spec = "s3.euler-flow",
+    {.spec = "s3.euler-flow",
      .title = "rigid-body integrator: the claimed order is the log-log slope of the error against h (within 0.1)",
      .tolerance = ToleranceClass::Truncation,
      .needs = {},
@@ -820,8 +819,7 @@ GM_PROPERTY(
      .judges = {"order"}});
 
 GM_PROPERTY(integrator_symmetric, integrator_scalars,
-            {.id = "integrator_symmetric",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "rigid-body integrator claimed symmetric: step(h) then step(-h) is the identity to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -830,8 +828,7 @@ GM_PROPERTY(integrator_symmetric, integrator_scalars,
              .judges = {"symmetric"}});
 
 GM_PROPERTY(integrator_casimir, integrator_scalars,
-            {.id = "integrator_casimir",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "rigid-body integrator claiming the Casimir: |Pi|^2 kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -840,8 +837,7 @@ GM_PROPERTY(integrator_casimir, integrator_scalars,
              .judges = {"casimir"}});
 
 GM_PROPERTY(integrator_energy, integrator_scalars,
-            {.id = "integrator_energy",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "rigid-body integrator claiming the energy: h (3.4) kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -850,8 +846,7 @@ GM_PROPERTY(integrator_energy, integrator_scalars,
              .judges = {"energy"}});
 
 GM_PROPERTY(integrator_orthogonality, integrator_scalars,
-            {.id = "integrator_orthogonality",
-             .spec = "s2.reconstruction",
+            {.spec = "s2.reconstruction",
              .title = "rigid-body integrator claiming orthogonality: O^T O = Id kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -863,8 +858,7 @@ GM_PROPERTY(integrator_orthogonality, integrator_scalars,
              .judges = {"orthogonality"}});
 
 GM_PROPERTY(integrator_poisson, integrator_scalars,
-            {.id = "integrator_poisson",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "rigid-body integrator claimed Poisson: D Phi J D Phi^T = J o Phi for the bracket (3.6)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -873,8 +867,7 @@ GM_PROPERTY(integrator_poisson, integrator_scalars,
              .judges = {"poisson"}});
 
 GM_PROPERTY(manakov_integrator_order, integrator_scalars,
-            {.id = "manakov_integrator_order",
-             .spec = "s2.manakov-flow",
+            {.spec = "s2.manakov-flow",
              .title = "Manakov integrator: the claimed order is the log-log slope of the error against h (within 0.1)",
              .tolerance = ToleranceClass::Truncation,
              .needs = {},
@@ -884,8 +877,7 @@ GM_PROPERTY(manakov_integrator_order, integrator_scalars,
              .judges = {"order"}});
 
 GM_PROPERTY(manakov_integrator_symmetric, integrator_scalars,
-            {.id = "manakov_integrator_symmetric",
-             .spec = "s2.manakov-flow",
+            {.spec = "s2.manakov-flow",
              .title = "Manakov integrator claimed symmetric: step(h) then step(-h) is the identity to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -894,8 +886,7 @@ GM_PROPERTY(manakov_integrator_symmetric, integrator_scalars,
              .judges = {"symmetric"}});
 
 GM_PROPERTY(manakov_integrator_casimir, integrator_scalars,
-            {.id = "manakov_integrator_casimir",
-             .spec = "s2.isospectral",
+            {.spec = "s2.isospectral",
              .title = "Manakov integrator claiming the Casimir: tr(M^2) kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -904,8 +895,7 @@ GM_PROPERTY(manakov_integrator_casimir, integrator_scalars,
              .judges = {"casimir"}});
 
 GM_PROPERTY(manakov_integrator_energy, integrator_scalars,
-            {.id = "manakov_integrator_energy",
-             .spec = "s2.manakov-flow",
+            {.spec = "s2.manakov-flow",
              .title = "Manakov integrator claiming the energy: -tr(Omega M)/4 kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -915,8 +905,7 @@ GM_PROPERTY(manakov_integrator_energy, integrator_scalars,
              .judges = {"energy"}});
 
 GM_PROPERTY(manakov_integrator_orthogonality, integrator_scalars,
-            {.id = "manakov_integrator_orthogonality",
-             .spec = "s2.manakov-flow",
+            {.spec = "s2.manakov-flow",
              .title = "Manakov integrator claiming orthogonality: O^T O = Id kept to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -926,8 +915,7 @@ GM_PROPERTY(manakov_integrator_orthogonality, integrator_scalars,
 
 GM_PROPERTY(
     manakov_integrator_spectrum, integrator_scalars,
-    {.id = "manakov_integrator_spectrum",
-     .spec = "s2.isospectral",
+    {.spec = "s2.isospectral",
      .title = "Manakov integrator claiming the spectrum: eigenvalues of M and tr(M^4) kept to round-off (n = 5)",
      .tolerance = ToleranceClass::Roundoff,
      .needs = {},
@@ -936,8 +924,7 @@ GM_PROPERTY(
      .judges = {"spectrum"}});
 
 GM_PROPERTY(manakov_integrator_poisson, integrator_scalars,
-            {.id = "manakov_integrator_poisson",
-             .spec = "s2.manakov-flow",
+            {.spec = "s2.manakov-flow",
              .title = "Manakov integrator claimed Poisson: D Phi J D Phi^T = J o Phi on so(4)*",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},

@@ -244,8 +244,7 @@ void manakov_integrator_domain(const Subject<T>&, const Integrator<T>& in, const
 }  // namespace
 
 GM_PROPERTY(integrator_domain, integrator_scalars,
-            {.id = "integrator_domain",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "rigid-body integrator: the step returns a finite state at every state and step probed in its "
                       "domain (scales 2^-64 to 2^64, h |Omega| from 2^-50 to 1)",
              .tolerance = ToleranceClass::Truncation,
@@ -255,8 +254,7 @@ GM_PROPERTY(integrator_domain, integrator_scalars,
              .step = StepKind::RigidBody});
 
 GM_PROPERTY(manakov_integrator_domain, integrator_scalars,
-            {.id = "manakov_integrator_domain",
-             .spec = "s2.manakov-flow",
+            {.spec = "s2.manakov-flow",
              .title = "Manakov integrator: the step returns a finite state at every state and step probed in its "
                       "domain (scales 2^-64 to 2^64, h |Omega| from 2^-50 to 1)",
              .tolerance = ToleranceClass::Truncation,

@@ -58,8 +58,7 @@ void integrator_unit_quaternion(const Subject<T>&, const Integrator<T>& in, cons
 
 GM_PROPERTY(
     integrator_unit_quaternion, integrator_scalars,
-    {.id = "integrator_unit_quaternion",
-     .spec = "s2.reconstruction",
+    {.spec = "s2.reconstruction",
      .title = "rigid-body integrator keeping a quaternion and claiming unit_quaternion: |q| = 1 kept to round-off",
      .tolerance = ToleranceClass::Roundoff,
      .needs = {},

@@ -948,8 +948,7 @@ void manakov_integrator_local_order(const Subject<T>&, const Integrator<T>& in, 
 }  // namespace
 
 GM_PROPERTY(integrator_local_order, integrator_scalars,
-            {.id = "integrator_local_order",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "the error of one step from a generic state shrinks like h^(p+1) down to h ~ 2^-10 (double) and "
                       "2^-28 (50 digits), for steps that are not dyadic (a step taken with a slightly wrong h fails)",
              .tolerance = ToleranceClass::Truncation,
@@ -960,8 +959,7 @@ GM_PROPERTY(integrator_local_order, integrator_scalars,
              .judges = {"order"}});
 
 GM_PROPERTY(integrator_small_turns, integrator_scalars,
-            {.id = "integrator_small_turns",
-             .spec = "s2.reconstruction",
+            {.spec = "s2.reconstruction",
              .title = "the state follows the flow of (2.20) when one step turns it by 2^-10 rad down to two bits above "
                       "the step's precision (a step that skips small rotations fails)",
              .tolerance = ToleranceClass::Truncation,
@@ -972,8 +970,7 @@ GM_PROPERTY(integrator_small_turns, integrator_scalars,
              .judges = {"order"}});
 
 GM_PROPERTY(manakov_integrator_local_order, integrator_scalars,
-            {.id = "manakov_integrator_local_order",
-             .spec = "s2.manakov-flow",
+            {.spec = "s2.manakov-flow",
              .title = "the error of one Manakov step shrinks like h^(p+1) down to h ~ 2^-10 (double) and 2^-28 "
                       "(50 digits), for steps that are not dyadic",
              .tolerance = ToleranceClass::Truncation,
@@ -984,8 +981,7 @@ GM_PROPERTY(manakov_integrator_local_order, integrator_scalars,
              .judges = {"order"}});
 
 GM_PROPERTY(integrator_converges_in_every_regime, integrator_scalars,
-            {.id = "integrator_converges_in_every_regime",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "the step converges to the flow of (2.20) at its claimed order (at least order 1 if none) at "
                       "relative equilibria and near them, for symmetric and spherical tops, at every scale",
              .tolerance = ToleranceClass::Truncation,
@@ -996,8 +992,7 @@ GM_PROPERTY(integrator_converges_in_every_regime, integrator_scalars,
              .judges = {"order"}});
 
 GM_PROPERTY(manakov_integrator_converges_in_every_frame, integrator_scalars,
-            {.id = "manakov_integrator_converges_in_every_frame",
-             .spec = "s2.manakov-flow",
+            {.spec = "s2.manakov-flow",
              .title = "the Manakov step converges to the flow of (2.34) at its claimed order (at least order 1 if "
                       "none) for a non-diagonal A (a diagonal body in a rotated frame) and at every scale of M",
              .tolerance = ToleranceClass::Truncation,
@@ -1008,8 +1003,7 @@ GM_PROPERTY(manakov_integrator_converges_in_every_frame, integrator_scalars,
              .judges = {"order"}});
 
 GM_PROPERTY(integrator_50_digit_floor, integrator_mp50_scalars,
-            {.id = "integrator_50_digit_floor",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "in 50 digits one step of h = 2^-40 is accurate far below double round-off (no part of the "
                       "step is computed in double)",
              .tolerance = ToleranceClass::Truncation,
@@ -1020,8 +1014,7 @@ GM_PROPERTY(integrator_50_digit_floor, integrator_mp50_scalars,
              .judges = {"order"}});
 
 GM_PROPERTY(manakov_integrator_50_digit_floor, integrator_mp50_scalars,
-            {.id = "manakov_integrator_50_digit_floor",
-             .spec = "s2.manakov-flow",
+            {.spec = "s2.manakov-flow",
              .title = "in 50 digits one Manakov step of h = 2^-40 is accurate far below double round-off",
              .tolerance = ToleranceClass::Truncation,
              .needs = {},

@@ -281,8 +281,7 @@ void manakov_integrator_bounded_energy(const Subject<T>&, const Integrator<T>& i
 
 GM_PROPERTY(
     integrator_noether, integrator_scalars,
-    {.id = "integrator_noether",
-     .spec = "s2.noether",
+    {.spec = "s2.noether",
      .title = "rigid-body integrator claiming Noether: the spatial momentum O Pi is kept to round-off (Thm 2.2)",
      .tolerance = ToleranceClass::Roundoff,
      .needs = {},
@@ -292,8 +291,7 @@ GM_PROPERTY(
 
 GM_PROPERTY(
     manakov_integrator_noether, integrator_scalars,
-    {.id = "manakov_integrator_noether",
-     .spec = "s2.noether",
+    {.spec = "s2.noether",
      .title = "Manakov integrator claiming Noether: the spatial momentum O M O^T is kept to round-off (n = 3..6)",
      .tolerance = ToleranceClass::Roundoff,
      .needs = {},
@@ -302,8 +300,7 @@ GM_PROPERTY(
      .judges = {"noether"}});
 
 GM_PROPERTY(integrator_equivariant, integrator_scalars,
-            {.id = "integrator_equivariant",
-             .spec = "mm.equivariance",
+            {.spec = "mm.equivariance",
              .title = "rigid-body integrator claimed equivariant: step(Pi, R O) = (Pi', R O') to round-off",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -312,8 +309,7 @@ GM_PROPERTY(integrator_equivariant, integrator_scalars,
              .judges = {"equivariant"}});
 
 GM_PROPERTY(manakov_integrator_equivariant, integrator_scalars,
-            {.id = "manakov_integrator_equivariant",
-             .spec = "mm.equivariance",
+            {.spec = "mm.equivariance",
              .title = "Manakov integrator claimed equivariant: step(M, R O) = (M', R O') to round-off (n = 3..6)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
@@ -322,8 +318,7 @@ GM_PROPERTY(manakov_integrator_equivariant, integrator_scalars,
              .judges = {"equivariant"}});
 
 GM_PROPERTY(integrator_bounded_energy, integrator_scalars,
-            {.id = "integrator_bounded_energy",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "rigid-body integrator claiming bounded energy: no secular drift of h over 10^5 steps of h = 1/4",
              .tolerance = ToleranceClass::Truncation,
              .needs = {},
@@ -334,8 +329,7 @@ GM_PROPERTY(integrator_bounded_energy, integrator_scalars,
 
 GM_PROPERTY(
     manakov_integrator_bounded_energy, integrator_scalars,
-    {.id = "manakov_integrator_bounded_energy",
-     .spec = "s2.manakov-flow",
+    {.spec = "s2.manakov-flow",
      .title = "Manakov integrator claiming bounded energy: no secular drift of -tr(Omega M)/4 over 2 10^4 steps",
      .tolerance = ToleranceClass::Truncation,
      .needs = {},

@@ -115,8 +115,7 @@ void ad_star_definition(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(ad_star_components_exercise, all_scalars,
-            {.id = "ad_star_components_exercise",
-             .spec = "s1.ad-star-coordinates",
+            {.spec = "s1.ad-star-coordinates",
              .title = "(ad*_xi mu)_k = xi^j mu_i c^i_jk for so(3), so(4) (and its R^6 slots) and sl(2, R)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_hat", "lie_vee", "ad_star", "so4_bracket_R6", "ad_star_so4_R6"},
@@ -124,8 +123,7 @@ GM_PROPERTY(ad_star_components_exercise, all_scalars,
                                    "ad_star_so4_R6_sign_slip"}});
 
 GM_PROPERTY(ad_star_definition, all_scalars,
-            {.id = "ad_star_definition",
-             .spec = "s1.ad-star-definition",
+            {.spec = "s1.ad-star-definition",
              .title = "<ad*_xi mu, eta> = <mu, [xi, eta]> for so(3), so(4), sl(2, R); ad*_xi mu = mu x xi on so(3)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_hat", "lie_vee", "ad_star", "so4_bracket_R6", "ad_star_so4_R6"},

@@ -91,16 +91,14 @@ void right_invariant_sign_1_1(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(left_invariance_definition_1_1, all_scalars,
-            {.id = "left_invariance_definition_1_1",
-             .spec = "s1.left-invariance",
+            {.spec = "s1.left-invariance",
              .title = "Definition 1.1: L(O, O') = l(O^-1 O') is invariant under O -> R O, not under O -> O R",
              .tolerance = ToleranceClass::Exact,
              .needs = {"reconstruction_2_10", "lagrangian_2_5", "lagrangian_2_13"},
              .negative_controls = {"reconstruction_2_10_right_trivialized", "lagrangian_2_13_pairing_without_half"}});
 
 GM_PROPERTY(right_invariant_sign_1_1, all_scalars,
-            {.id = "right_invariant_sign_1_1",
-             .spec = "s1.right-invariant-sign",
+            {.spec = "s1.right-invariant-sign",
              .title = "(1.1): for h = O^-1 (right-invariant), d/dt dl/deta = -ad*_eta dl/deta with eta = h' h^-1",
              .tolerance = ToleranceClass::Exact,
              .needs = {"omega_3_5", "reconstruction_2_10", "lagrangian_2_5", "euler_3_8", "ad_star"},

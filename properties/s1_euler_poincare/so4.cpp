@@ -52,16 +52,14 @@ void so4_euler_poincare_R6(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(so4_hat_is_lie_algebra_isomorphism, all_scalars,
-            {.id = "so4_hat_is_lie_algebra_isomorphism",
-             .spec = "s1.so4-hat",
+            {.spec = "s1.so4-hat",
              .title = "so(4) = R^6: hat([a, b]) = [hat(a), hat(b)], vee inverts hat, (2.15) is the dot product",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hat_n", "vee_n", "so4_bracket_R6", "pairing"},
              .negative_controls = {"so4_bracket_R6_sign_slip"}});
 
 GM_PROPERTY(so4_euler_poincare_R6, all_scalars,
-            {.id = "so4_euler_poincare_R6",
-             .spec = "s1.so4-ep-r6",
+            {.spec = "s1.so4-ep-r6",
              .title = "SO(4): dmu/dt = ad*_Omega mu in R^6 is dM/dt = [M, Omega], M = A Omega + Omega A",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hat_n", "vee_n", "manakov_M", "manakov_2_34", "ad_star_so4_R6"},

@@ -72,40 +72,35 @@ void euler_matrix_form_2_12(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(euler_form_2_1, all_scalars,
-            {.id = "euler_form_2_1",
-             .spec = "s2.euler-equations",
+            {.spec = "s2.euler-equations",
              .title = "(2.1): I1 dOmega1/dt = (I2 - I3) Omega2 Omega3, and cyclically",
              .tolerance = ToleranceClass::Exact,
              .needs = {"euler_2_1"},
              .negative_controls = {"euler_2_1_sign_error", "euler_2_1_missing_division"}});
 
 GM_PROPERTY(euler_form_2_2, all_scalars,
-            {.id = "euler_form_2_2",
-             .spec = "s2.euler-equations",
+            {.spec = "s2.euler-equations",
              .title = "(2.2): I dOmega/dt = I Omega x Omega is (2.1)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"euler_2_2"},
              .negative_controls = {"euler_2_2_cross_reversed"}});
 
 GM_PROPERTY(euler_form_3_7, all_scalars,
-            {.id = "euler_form_3_7",
-             .spec = "s3.euler-momentum-form",
+            {.spec = "s3.euler-momentum-form",
              .title = "(3.7): dPi1/dt = (1/I3 - 1/I2) Pi2 Pi3, and cyclically, is (2.1) with Pi = I Omega",
              .tolerance = ToleranceClass::Exact,
              .needs = {"euler_3_7"},
              .negative_controls = {"euler_3_7_index_slip"}});
 
 GM_PROPERTY(euler_form_3_8, all_scalars,
-            {.id = "euler_form_3_8",
-             .spec = "s3.euler-momentum-form",
+            {.spec = "s3.euler-momentum-form",
              .title = "(3.8): dPi/dt = Pi x I^-1 Pi is (2.1) with Pi = I Omega",
              .tolerance = ToleranceClass::Exact,
              .needs = {"euler_3_8"},
              .negative_controls = {"euler_3_8_cross_reversed", "euler_3_8_I_not_inverted"}});
 
 GM_PROPERTY(euler_matrix_form_2_12, all_scalars,
-            {.id = "euler_matrix_form_2_12",
-             .spec = "s2.matrix-euler",
+            {.spec = "s2.matrix-euler",
              .title = "(2.12): dPi/dt = -[Omega_hat, Pi] is (2.1) through the hat map",
              .tolerance = ToleranceClass::Exact,
              .needs = {"euler_matrix_2_12"},

@@ -53,32 +53,28 @@ void trace_pairing_is_dot_product(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(hat_is_cross_product, all_scalars,
-            {.id = "hat_is_cross_product",
-             .spec = "s2.hat-map",
+            {.spec = "s2.hat-map",
              .title = "hat(a) v = a x v, with hat(a)_jk = -a_i eps_ijk as in (2.11)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hat"},
              .negative_controls = {"hat_transposed"}});
 
 GM_PROPERTY(hat_is_lie_algebra_isomorphism, all_scalars,
-            {.id = "hat_is_lie_algebra_isomorphism",
-             .spec = "s2.hat-map",
+            {.spec = "s2.hat-map",
              .title = "[hat(a), hat(b)] = hat(a x b)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hat"},
              .negative_controls = {"hat_transposed", "hat_scaled"}});
 
 GM_PROPERTY(vee_inverts_hat, all_scalars,
-            {.id = "vee_inverts_hat",
-             .spec = "s2.hat-map",
+            {.spec = "s2.hat-map",
              .title = "vee(hat(a)) = a, hat(vee(S)) = S for skew S, and hat(a) is skew",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hat", "vee"},
              .negative_controls = {"vee_reads_upper_triangle"}});
 
 GM_PROPERTY(trace_pairing_is_dot_product, all_scalars,
-            {.id = "trace_pairing_is_dot_product",
-             .spec = "s2.trace-pairing",
+            {.spec = "s2.trace-pairing",
              .title = "<hat(a), hat(b)> = (1/2) trace(hat(a)^T hat(b)) = a . b",
              .tolerance = ToleranceClass::Exact,
              .needs = {"pairing"},

@@ -180,8 +180,7 @@ void inertia_triangle_inequalities(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(inertia_bilinear_form_2_3, all_scalars,
-            {.id = "inertia_bilinear_form_2_3",
-             .spec = "s2.inertia",
+            {.spec = "s2.inertia",
              .title = "(2.3): sum m (a x X).(b x X) = I a . b for bodies of point masses",
              .tolerance = ToleranceClass::Exact,
              .needs = {"inertia_bilinear_2_3", "inertia_tensor_2_3"},
@@ -189,16 +188,14 @@ GM_PROPERTY(inertia_bilinear_form_2_3, all_scalars,
 
 GM_PROPERTY(
     inertia_positive_definite, all_scalars,
-    {.id = "inertia_positive_definite",
-     .spec = "s2.inertia",
+    {.spec = "s2.inertia",
      .title = "(2.3): I symmetric, positive semidefinite; definite iff the masses are not on one line through 0",
      .tolerance = ToleranceClass::Exact,
      .needs = {"inertia_tensor_2_3"},
      .negative_controls = {"inertia_tensor_missing_identity"}});
 
 GM_PROPERTY(inertia_triangle_inequalities, all_scalars,
-            {.id = "inertia_triangle_inequalities",
-             .spec = "s2.inertia",
+            {.spec = "s2.inertia",
              .title = "(2.3): principal moments satisfy I_i <= I_j + I_k (tr(I)/2 - I >= 0), equality iff planar",
              .tolerance = ToleranceClass::Exact,
              .needs = {"inertia_tensor_2_3"},

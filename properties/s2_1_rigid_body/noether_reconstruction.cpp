@@ -267,8 +267,7 @@ void hamilton_pontryagin_and_clebsch_are_one_motion(const Subject<T>& s) {
 
 GM_PROPERTY(
     noether_spatial_momentum_conserved, float_scalars,
-    {.id = "noether_spatial_momentum_conserved",
-     .spec = "s2.noether",
+    {.spec = "s2.noether",
      .title = "Theorem 2.2: the subject's spatial momentum is constant along the motion (2.20) and equals pi = O Pi",
      .tolerance = ToleranceClass::Roundoff,
      .needs = {"spatial_momentum"},
@@ -276,16 +275,14 @@ GM_PROPERTY(
      .cases = {.d = 20, .mp = 2, .q = 0}});
 
 GM_PROPERTY(noether_endpoint_term_2_28, all_scalars,
-            {.id = "noether_endpoint_term_2_28",
-             .spec = "s2.noether",
+            {.spec = "s2.noether",
              .title = "(2.28): <Pi, Xi> = <pi, xi> for Xi = O^-1 xi O (xi = delta O O^-1) and pi the spatial momentum",
              .tolerance = ToleranceClass::Exact,
              .needs = {"spatial_momentum", "pairing"},
              .negative_controls = {"spatial_momentum_as_printed_2_30"}});
 
 GM_PROPERTY(space_momentum_is_conserved, float_scalars,
-            {.id = "space_momentum_is_conserved",
-             .spec = "s2.space-momentum",
+            {.spec = "s2.space-momentum",
              .title = "exercise after Remark 2.1: pi = I_space(t) omega(t) is constant along the motion",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"inertia_space"},
@@ -293,8 +290,7 @@ GM_PROPERTY(space_momentum_is_conserved, float_scalars,
              .cases = {.d = 20, .mp = 2, .q = 0}});
 
 GM_PROPERTY(reconstruction_stays_in_so3, float_scalars,
-            {.id = "reconstruction_stays_in_so3",
-             .spec = "s2.reconstruction",
+            {.spec = "s2.reconstruction",
              .title = "Remark 2.2: integrating the subject's (2.10) along its Euler flow keeps O^T O = Id, det O = 1",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"euler_3_8", "reconstruction_2_10"},
@@ -302,8 +298,7 @@ GM_PROPERTY(reconstruction_stays_in_so3, float_scalars,
              .cases = {.d = 10, .mp = 2, .q = 0}});
 
 GM_PROPERTY(coadjoint_motion_2_33, float_scalars,
-            {.id = "coadjoint_motion_2_33",
-             .spec = "s2.coadjoint-motion",
+            {.spec = "s2.coadjoint-motion",
              .title = "(2.33): along the subject's (3.8) and (2.10), Pi(t) = Ad*_{O(t)} pi with pi constant",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"euler_3_8", "reconstruction_2_10"},
@@ -311,8 +306,7 @@ GM_PROPERTY(coadjoint_motion_2_33, float_scalars,
              .cases = {.d = 10, .mp = 2, .q = 0}});
 
 GM_PROPERTY(ad_star_identity_2_32, float_scalars,
-            {.id = "ad_star_identity_2_32",
-             .spec = "s2.ad-star-identity",
+            {.spec = "s2.ad-star-identity",
              .title = "(2.32): d/dt Ad*_{g^-1} mu = Ad*_{g^-1}(dmu/dt - ad*_Omega mu) on so(3), sl(2,R), so(4)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"lie_hat", "lie_vee", "ad_star"},
@@ -320,8 +314,7 @@ GM_PROPERTY(ad_star_identity_2_32, float_scalars,
              .cases = {.d = 50, .mp = 5, .q = 0}});
 
 GM_PROPERTY(hamilton_pontryagin_and_clebsch_are_one_motion, float_scalars,
-            {.id = "hamilton_pontryagin_and_clebsch_are_one_motion",
-             .spec = "s3.clebsch-reconstruction",
+            {.spec = "s3.clebsch-reconstruction",
              .title = "(3.20)-(3.21): from Pi(0) = P(0) x Q(0), the subject's Clebsch flow and (2.20) flow agree: "
                       "P x Q = Pi, Q = O^-1 Q(0), P = O^-1 P(0), and both agree with the oracle's motion",
              .tolerance = ToleranceClass::Roundoff,

@@ -70,16 +70,14 @@ void manakov_omega_solves_2_34(const Subject<T>& s) {
 
 GM_PROPERTY(
     reconstruction_is_left_invariant, all_scalars,
-    {.id = "reconstruction_is_left_invariant",
-     .spec = "s2.reconstruction-formula",
+    {.spec = "s2.reconstruction-formula",
      .title = "(2.10): dO/dt = O hat(Omega), so O^-1 dO/dt = hat(Omega) (left-invariant, body angular velocity)",
      .tolerance = ToleranceClass::Exact,
      .needs = {"reconstruction_2_10"},
      .negative_controls = {"reconstruction_right_invariant"}});
 
 GM_PROPERTY(manakov_omega_solves_2_34, all_scalars,
-            {.id = "manakov_omega_solves_2_34",
-             .spec = "s2.manakov-momentum",
+            {.spec = "s2.manakov-momentum",
              .title = "(2.34): the Omega recovered from M solves A Omega + Omega A = M (A symmetric positive definite)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"manakov_Omega"},

@@ -70,16 +70,14 @@ void space_inertia_variation_hint(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(space_lagrangian_remark_2_1, all_scalars,
-            {.id = "space_lagrangian_remark_2_1",
-             .spec = "s2.space-lagrangian",
+            {.spec = "s2.space-lagrangian",
              .title = "Remark 2.1: l(Omega) = l_space(omega) = (1/2) omega . I_space omega, I_space = O I O^-1",
              .tolerance = ToleranceClass::Exact,
              .needs = {"inertia_space", "lagrangian_2_5"},
              .negative_controls = {"inertia_space_inverted"}});
 
 GM_PROPERTY(space_inertia_variation_hint, all_scalars,
-            {.id = "space_inertia_variation_hint",
-             .spec = "s2.space-lagrangian",
+            {.spec = "s2.space-lagrangian",
              .title = "hint after Remark 2.1: delta I_space = [xi, I_space] with xi = delta O O^-1",
              .tolerance = ToleranceClass::Exact,
              .needs = {"inertia_space"},

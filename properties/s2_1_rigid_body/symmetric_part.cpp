@@ -43,16 +43,14 @@ void matrix_euler_keeps_pi_skew(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(symmetric_part_does_not_pair, all_scalars,
-            {.id = "symmetric_part_does_not_pair",
-             .spec = "s2.symmetric-part",
+            {.spec = "s2.symmetric-part",
              .title = "Remark 2.3: the symmetric part of Pi does not contribute to <Pi, Omega_hat>",
              .tolerance = ToleranceClass::Exact,
              .needs = {"pairing"},
              .negative_controls = {"pairing_upper_triangle", "pairing_without_half"}});
 
 GM_PROPERTY(matrix_euler_keeps_pi_skew, all_scalars,
-            {.id = "matrix_euler_keeps_pi_skew",
-             .spec = "s2.symmetric-part",
+            {.spec = "s2.symmetric-part",
              .title = "Remark 2.3: dPi/dt = -[Omega_hat, Pi] is skew for skew Pi, so a zero symmetric part stays zero",
              .tolerance = ToleranceClass::Exact,
              .needs = {"euler_matrix_2_12"},

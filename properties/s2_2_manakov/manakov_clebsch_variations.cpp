@@ -65,8 +65,7 @@ void manakov_clebsch_variations_in_Q_and_P(const Subject<T>& s) {
 
 GM_PROPERTY(
     manakov_clebsch_variations_in_Q_and_P, all_scalars,
-    {.id = "manakov_clebsch_variations_in_Q_and_P",
-     .spec = "mm.manakov-clebsch",
+    {.spec = "mm.manakov-clebsch",
      .title = "closing exercise: the variations of S in P and in Q give dQ/dt = Q Omega and dP/dt = P Omega (3.23)",
      .tolerance = ToleranceClass::Exact,
      .needs = {"manakov_clebsch_3_23"},

@@ -86,8 +86,7 @@ void manakov_eigenvector_system_gives_2_36(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(manakov_eigenvector_system_gives_2_36, float_scalars,
-            {.id = "manakov_eigenvector_system_gives_2_36",
-             .spec = "s2.eigenvectors",
+            {.spec = "s2.eigenvectors",
              .title = "Proposition 2.5 converse: M psi = lambda psi with dpsi/dt = -Omega psi gives back (2.36)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"manakov_2_34", "manakov_Omega"},

@@ -310,8 +310,7 @@ void matrix_euler_poincare_trace_pairing(const Subject<T>& s) {
 
 GM_PROPERTY(
     manakov_flow_is_isospectral, float_scalars,
-    {.id = "manakov_flow_is_isospectral",
-     .spec = "s2.isospectral",
+    {.spec = "s2.isospectral",
      .title = "(2.36), n = 3..6: tr(M^k) for k = 1..n and the eigenvalues of M are constant along the subject's "
               "Manakov flow",
      .tolerance = ToleranceClass::Roundoff,
@@ -320,8 +319,7 @@ GM_PROPERTY(
      .cases = {.d = 20, .mp = 10, .q = 0}});
 
 GM_PROPERTY(manakov_coadjoint_similarity, float_scalars,
-            {.id = "manakov_coadjoint_similarity",
-             .spec = "s2.isospectral",
+            {.spec = "s2.isospectral",
              .title = "section 2.4: M(t) = O(t)^-1 M(0) O(t) with dO/dt = O Omega along the subject's Manakov flow",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"manakov_2_34", "manakov_Omega"},
@@ -329,8 +327,7 @@ GM_PROPERTY(manakov_coadjoint_similarity, float_scalars,
              .cases = {.d = 20, .mp = 10, .q = 0}});
 
 GM_PROPERTY(manakov_eigenvectors_follow, float_scalars,
-            {.id = "manakov_eigenvectors_follow",
-             .spec = "s2.eigenvectors",
+            {.spec = "s2.eigenvectors",
              .title = "Proposition 2.5: psi(t) = O(t)^-1 psi(0), dpsi/dt = -Omega psi, keeps M psi = lambda psi",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"manakov_2_34", "manakov_Omega"},
@@ -339,8 +336,7 @@ GM_PROPERTY(manakov_eigenvectors_follow, float_scalars,
 
 GM_PROPERTY(
     manakov_clebsch_momentum_is_coadjoint, float_scalars,
-    {.id = "manakov_clebsch_momentum_is_coadjoint",
-     .spec = "mm.manakov-clebsch",
+    {.spec = "mm.manakov-clebsch",
      .title = "closing exercise: under the subject's (3.23), M = (P^T Q - Q^T P)/2 satisfies dM/dt = [M, Omega]",
      .tolerance = ToleranceClass::Roundoff,
      .needs = {"manakov_clebsch_3_23"},
@@ -348,8 +344,7 @@ GM_PROPERTY(
      .cases = {.d = 20, .mp = 4, .q = 0}});
 
 GM_PROPERTY(manakov_clebsch_momentum_is_dl_dOmega, all_scalars,
-            {.id = "manakov_clebsch_momentum_is_dl_dOmega",
-             .spec = "mm.manakov-clebsch",
+            {.spec = "mm.manakov-clebsch",
              .title = "closing exercise: the action is stationary in Omega at the subject's (3.23), i.e. "
                       "dl/dOmega = Q^T P - P^T Q in (2.15) (not the printed (P^T Q - Q^T P)/2)",
              .tolerance = ToleranceClass::Exact,
@@ -358,8 +353,7 @@ GM_PROPERTY(manakov_clebsch_momentum_is_dl_dOmega, all_scalars,
              .cases = {.d = 50, .mp = 10, .q = 10}});
 
 GM_PROPERTY(manakov_clebsch_momentum_follows_manakov, float_scalars,
-            {.id = "manakov_clebsch_momentum_follows_manakov",
-             .spec = "mm.manakov-clebsch",
+            {.spec = "mm.manakov-clebsch",
              .title = "closing exercise: M = Q^T P - P^T Q along the subject's (3.23) evolves by Manakov's (2.34)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"manakov_clebsch_3_23"},
@@ -367,8 +361,7 @@ GM_PROPERTY(manakov_clebsch_momentum_follows_manakov, float_scalars,
              .cases = {.d = 20, .mp = 6, .q = 0}});
 
 GM_PROPERTY(matrix_euler_poincare_trace_pairing, all_scalars,
-            {.id = "matrix_euler_poincare_trace_pairing",
-             .spec = "s2.matrix-euler-poincare",
+            {.spec = "s2.matrix-euler-poincare",
              .title = "Theorem 2.3 on so(3), so(4), sl(2,R): the EP equation is dM/dt = [M, Omega] for M = dl/dOmega "
                       "in the pairing tr(A B)",
              .tolerance = ToleranceClass::Exact,

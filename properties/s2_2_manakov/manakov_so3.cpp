@@ -39,8 +39,7 @@ void manakov_so3_is_euler(const Subject<T>& s) {
 
 GM_PROPERTY(
     manakov_so3_is_euler, all_scalars,
-    {.id = "manakov_so3_is_euler",
-     .spec = "s2.manakov-so3",
+    {.spec = "s2.manakov-so3",
      .title = "(2.34) for n = 3: M = hat(I Omega) with I1 = a2 + a3 etc., dM/dt = [M, Omega] is (3.8), l is (2.5)",
      .tolerance = ToleranceClass::Exact,
      .needs = {"manakov_M", "manakov_2_34", "manakov_lagrangian", "euler_3_8", "lagrangian_2_5"},

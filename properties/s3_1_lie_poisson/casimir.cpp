@@ -62,24 +62,21 @@ void casimir_conserved_by_euler(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(definition_casimir, all_scalars,
-            {.id = "definition_casimir",
-             .spec = "s3.casimir",
+            {.spec = "s3.casimir",
              .title = "slot casimir alone: c(Pi) = |Pi|^2 / 2, (2.27)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"casimir"},
              .negative_controls = {"casimir_without_half", "casimir_weighted"}});
 
 GM_PROPERTY(casimir_commutes_3_6, all_scalars,
-            {.id = "casimir_commutes_3_6",
-             .spec = "s3.casimir",
+            {.spec = "s3.casimir",
              .title = "{c, f} = 0 for every f under (3.6): c is a Casimir",
              .tolerance = ToleranceClass::Exact,
              .needs = {"casimir", "lie_poisson_3_6"},
              .negative_controls = {"casimir_weighted", "lie_poisson_3_6_cyclic_index_slip"}});
 
 GM_PROPERTY(casimir_conserved_by_euler, all_scalars,
-            {.id = "casimir_conserved_by_euler",
-             .spec = "s3.casimir",
+            {.spec = "s3.casimir",
              .title = "dc/dt = grad c . dPi/dt = 0 along Euler's equations (3.8)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"casimir", "euler_3_8"},

@@ -129,8 +129,7 @@ void manakov_n3_flow_is_euler_flow(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(euler_flow_conserves_casimir_and_energy, float_scalars,
-            {.id = "euler_flow_conserves_casimir_and_energy",
-             .spec = "s3.euler-flow",
+            {.spec = "s3.euler-flow",
              .title = "along the flow of the subject's (3.8), |Pi|^2 and h = sum Pi_i^2/(2 I_i) stay constant",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"euler_3_8"},
@@ -139,8 +138,7 @@ GM_PROPERTY(euler_flow_conserves_casimir_and_energy, float_scalars,
 
 GM_PROPERTY(
     euler_flow_is_elliptic_solution, float_scalars,
-    {.id = "euler_flow_is_elliptic_solution",
-     .spec = "s3.euler-flow",
+    {.spec = "s3.euler-flow",
      .title = "the flow of the subject's (3.8) is the exact solution in Jacobi elliptic functions (all regimes, "
               "separatrix included)",
      .tolerance = ToleranceClass::Roundoff,
@@ -149,8 +147,7 @@ GM_PROPERTY(
      .cases = {.d = 20, .mp = 2, .q = 0}});
 
 GM_PROPERTY(manakov_n3_flow_is_euler_flow, float_scalars,
-            {.id = "manakov_n3_flow_is_euler_flow",
-             .spec = "s2.manakov-so3",
+            {.spec = "s2.manakov-so3",
              .title = "for n = 3 the flow of the subject's (2.34) is Euler's (elliptic) flow with I1 = a2 + a3, "
                       "cyclically",
              .tolerance = ToleranceClass::Roundoff,

@@ -99,48 +99,42 @@ void legendre_matrix_2_21(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(lagrangian_2_5_is_kinetic_energy, all_scalars,
-            {.id = "lagrangian_2_5_is_kinetic_energy",
-             .spec = "s2.lagrangian",
+            {.spec = "s2.lagrangian",
              .title = "(2.5): l(Omega) = (1/2)(I1 Omega1^2 + I2 Omega2^2 + I3 Omega3^2)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lagrangian_2_5"},
              .negative_controls = {"lagrangian_missing_half"}});
 
 GM_PROPERTY(lagrangian_2_13_is_kinetic_energy, all_scalars,
-            {.id = "lagrangian_2_13_is_kinetic_energy",
-             .spec = "s2.lagrangian",
+            {.spec = "s2.lagrangian",
              .title = "(2.13): (1/2) <I Omega_hat, Omega_hat> is the kinetic energy (2.5)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lagrangian_2_13"},
              .negative_controls = {"lagrangian_2_13_pairing_without_half"}});
 
 GM_PROPERTY(fibre_derivative_3_1, all_scalars,
-            {.id = "fibre_derivative_3_1",
-             .spec = "s3.legendre",
+            {.spec = "s3.legendre",
              .title = "(3.1): Pi_i = I_i Omega_i = dl/dOmega_i",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lagrangian_2_5", "legendre_3_1"},
              .negative_controls = {"lagrangian_missing_half", "legendre_3_1_inverted"}});
 
 GM_PROPERTY(hamiltonian_3_3_is_3_4, all_scalars,
-            {.id = "hamiltonian_3_3_is_3_4",
-             .spec = "s3.hamiltonian",
+            {.spec = "s3.hamiltonian",
              .title = "(3.3), (3.4): Pi . Omega - l(Omega) = sum Pi_i^2 / (2 I_i)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hamiltonian_3_3", "hamiltonian_3_4"},
              .negative_controls = {"hamiltonian_with_I", "hamiltonian_3_3_plus_l"}});
 
 GM_PROPERTY(hamiltonian_gradient_3_5, all_scalars,
-            {.id = "hamiltonian_gradient_3_5",
-             .spec = "s3.hamiltonian",
+            {.spec = "s3.hamiltonian",
              .title = "(3.5): dh/dPi = I^-1 Pi = Omega",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hamiltonian_3_4", "omega_3_5"},
              .negative_controls = {"hamiltonian_with_I", "omega_3_5_not_inverted"}});
 
 GM_PROPERTY(legendre_matrix_2_21, all_scalars,
-            {.id = "legendre_matrix_2_21",
-             .spec = "s2.legendre-hamiltonian",
+            {.spec = "s2.legendre-hamiltonian",
              .title = "(2.21): h = <Pi, Omega_hat> - l(Omega_hat) is (3.4); Pi = dl/dOmega_hat, dh/dPi = Omega_hat",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lagrangian_2_13", "hamiltonian_2_21"},

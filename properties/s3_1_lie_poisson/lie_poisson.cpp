@@ -162,16 +162,14 @@ void lie_poisson_generates_euler_3_7(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(lie_poisson_table_3_11, all_scalars,
-            {.id = "lie_poisson_table_3_11",
-             .spec = "s3.lie-poisson-table",
+            {.spec = "s3.lie-poisson-table",
              .title = "(3.11)/(3.12): {Pi_i, Pi_j} = -eps_ijk Pi_k = Pi_hat_ij, in the forms (3.6) and (3.10)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_3_6", "lie_poisson_2_23"},
              .negative_controls = {"lie_poisson_3_6_sign_flipped", "lie_poisson_2_23_one_sided_product"}});
 
 GM_PROPERTY(lie_poisson_casimir, all_scalars,
-            {.id = "lie_poisson_casimir",
-             .spec = "s3.casimir",
+            {.spec = "s3.casimir",
              .title = "|Pi|^2 is a Casimir: {|Pi|^2, F} = 0 for polynomial F, in the forms (3.6) and (3.10)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_3_6", "lie_poisson_2_23"},
@@ -179,16 +177,14 @@ GM_PROPERTY(lie_poisson_casimir, all_scalars,
 
 GM_PROPERTY(
     lie_poisson_hat_map_2_25, all_scalars,
-    {.id = "lie_poisson_hat_map_2_25",
-     .spec = "s2.lie-poisson-r3",
+    {.spec = "s2.lie-poisson-r3",
      .title = "(2.25): the matrix bracket (2.23) is -Pi . df x dh through the hat map; (2.26): {Pi, h} = -dh x Pi",
      .tolerance = ToleranceClass::Exact,
      .needs = {"lie_poisson_3_6", "lie_poisson_2_23"},
      .negative_controls = {"lie_poisson_2_23_one_sided_product", "lie_poisson_3_6_sign_flipped"}});
 
 GM_PROPERTY(lie_poisson_matrix_2_22_2_23, all_scalars,
-            {.id = "lie_poisson_matrix_2_22_2_23",
-             .spec = "s2.lie-poisson-matrix",
+            {.spec = "s2.lie-poisson-matrix",
              .title = "(2.22): dPi/dt = -[dh/dPi, Pi]; (2.23): df/dt = -<Pi, [df/dPi, dh/dPi]> = {f, h}",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hamiltonian_2_21", "euler_matrix_2_12", "pairing", "lie_poisson_2_23"},
@@ -196,8 +192,7 @@ GM_PROPERTY(lie_poisson_matrix_2_22_2_23, all_scalars,
                                    "hamiltonian_2_21_sign_flipped"}});
 
 GM_PROPERTY(lie_poisson_generates_euler_3_7, all_scalars,
-            {.id = "lie_poisson_generates_euler_3_7",
-             .spec = "s3.lie-poisson-euler",
+            {.spec = "s3.lie-poisson-euler",
              .title = "(3.6)-(3.8): with h of (3.4), dPi/dt = {Pi, h} = Pi x dh/dPi is (3.7) and (3.8)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hamiltonian_3_4", "lie_poisson_3_6", "euler_3_7", "euler_3_8"},

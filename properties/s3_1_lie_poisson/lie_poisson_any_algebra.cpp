@@ -71,8 +71,7 @@ void lie_poisson_any_algebra_ad_star(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(lie_poisson_any_algebra_ad_star, all_scalars,
-            {.id = "lie_poisson_any_algebra_ad_star",
-             .spec = "s3.lie-poisson-any-algebra",
+            {.spec = "s3.lie-poisson-any-algebra",
              .title = "(3.10) -<mu, [dF, dG]> = -dG . ad*_dF mu is a Poisson bracket on so(3)*, sl(2,R)* and so(4)*",
              .tolerance = ToleranceClass::Exact,
              .needs = {"ad_star"},

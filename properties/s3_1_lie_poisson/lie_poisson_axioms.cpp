@@ -120,64 +120,56 @@ void lie_poisson_2_23_jacobi(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(lie_poisson_3_6_bilinear, all_scalars,
-            {.id = "lie_poisson_3_6_bilinear",
-             .spec = "s3.poisson-bracket-axioms",
+            {.spec = "s3.poisson-bracket-axioms",
              .title = "(3.6) is bilinear: {a F1 + b F2, G} = a {F1, G} + b {F2, G}, and in G",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_3_6"},
              .negative_controls = {"lie_poisson_3_6_affine_in_df"}});
 
 GM_PROPERTY(lie_poisson_3_6_skew, all_scalars,
-            {.id = "lie_poisson_3_6_skew",
-             .spec = "s3.poisson-bracket-axioms",
+            {.spec = "s3.poisson-bracket-axioms",
              .title = "(3.6) is skew-symmetric: {F, G} = -{G, F}",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_3_6"},
              .negative_controls = {"lie_poisson_3_6_with_symmetric_part", "lie_poisson_3_6_affine_in_df"}});
 
 GM_PROPERTY(lie_poisson_3_6_leibniz, all_scalars,
-            {.id = "lie_poisson_3_6_leibniz",
-             .spec = "s3.poisson-bracket-axioms",
+            {.spec = "s3.poisson-bracket-axioms",
              .title = "(3.6) satisfies the Leibniz rule {F G, H} = {F, H} G + F {G, H}",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_3_6"},
              .negative_controls = {"lie_poisson_3_6_affine_in_df"}});
 
 GM_PROPERTY(lie_poisson_3_6_jacobi, all_scalars,
-            {.id = "lie_poisson_3_6_jacobi",
-             .spec = "s3.poisson-bracket-axioms",
+            {.spec = "s3.poisson-bracket-axioms",
              .title = "(3.6) satisfies the Jacobi identity (3.2) for polynomial F, G, H of degree <= 4",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_3_6"},
              .negative_controls = {"lie_poisson_3_6_cyclic_index_slip", "lie_poisson_3_6_with_symmetric_part"}});
 
 GM_PROPERTY(lie_poisson_2_23_bilinear, all_scalars,
-            {.id = "lie_poisson_2_23_bilinear",
-             .spec = "s3.lie-poisson-matrix-r3",
+            {.spec = "s3.lie-poisson-matrix-r3",
              .title = "(3.10) is bilinear in F and in G",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_2_23"},
              .negative_controls = {"lie_poisson_2_23_affine_in_df"}});
 
 GM_PROPERTY(lie_poisson_2_23_skew, all_scalars,
-            {.id = "lie_poisson_2_23_skew",
-             .spec = "s3.lie-poisson-matrix-r3",
+            {.spec = "s3.lie-poisson-matrix-r3",
              .title = "(3.10) is skew-symmetric: {F, G} = -{G, F}",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_2_23"},
              .negative_controls = {"lie_poisson_2_23_with_symmetric_part"}});
 
 GM_PROPERTY(lie_poisson_2_23_leibniz, all_scalars,
-            {.id = "lie_poisson_2_23_leibniz",
-             .spec = "s3.lie-poisson-matrix-r3",
+            {.spec = "s3.lie-poisson-matrix-r3",
              .title = "(3.10) satisfies the Leibniz rule {F G, H} = {F, H} G + F {G, H}",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_2_23"},
              .negative_controls = {"lie_poisson_2_23_affine_in_df"}});
 
 GM_PROPERTY(lie_poisson_2_23_jacobi, all_scalars,
-            {.id = "lie_poisson_2_23_jacobi",
-             .spec = "s3.lie-poisson-matrix-r3",
+            {.spec = "s3.lie-poisson-matrix-r3",
              .title = "(3.10) satisfies the Jacobi identity (3.2) for polynomial F, G, H of degree <= 4",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_poisson_2_23"},

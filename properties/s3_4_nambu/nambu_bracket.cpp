@@ -234,56 +234,49 @@ void nambu_motion_recombination(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(nambu_3_13_bilinear, all_scalars,
-            {.id = "nambu_3_13_bilinear",
-             .spec = "s3.nambu-poisson",
+            {.spec = "s3.nambu-poisson",
              .title = "(3.13) with any polynomial c is bilinear in f and in h",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_13"},
              .negative_controls = {"nambu_3_13_affine_in_df"}});
 
 GM_PROPERTY(nambu_3_13_skew, all_scalars,
-            {.id = "nambu_3_13_skew",
-             .spec = "s3.nambu-poisson",
+            {.spec = "s3.nambu-poisson",
              .title = "(3.13) with any polynomial c is skew-symmetric",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_13"},
              .negative_controls = {"nambu_3_13_with_symmetric_part"}});
 
 GM_PROPERTY(nambu_3_13_leibniz, all_scalars,
-            {.id = "nambu_3_13_leibniz",
-             .spec = "s3.nambu-poisson",
+            {.spec = "s3.nambu-poisson",
              .title = "(3.13) with any polynomial c satisfies the Leibniz rule",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_13"},
              .negative_controls = {"nambu_3_13_affine_in_df"}});
 
 GM_PROPERTY(nambu_jacobi_theorem_3_1, all_scalars,
-            {.id = "nambu_jacobi_theorem_3_1",
-             .spec = "s3.nambu-poisson",
+            {.spec = "s3.nambu-poisson",
              .title = "Theorem 3.1: (3.13) satisfies Jacobi for any c (random polynomials c, F, G, H of degree <= 4)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_13"},
              .negative_controls = {"nambu_3_13_cyclic_index_slip", "nambu_3_13_with_symmetric_part"}});
 
 GM_PROPERTY(nambu_jacobi_quadratic_3_15, all_scalars,
-            {.id = "nambu_jacobi_quadratic_3_15",
-             .spec = "s3.nambu-jacobi-quadratic",
+            {.spec = "s3.nambu-jacobi-quadratic",
              .title = "Exercise (3.15): Jacobi for c = x^T C x / 2, C symmetric",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_13"},
              .negative_controls = {"nambu_3_13_cyclic_index_slip"}});
 
 GM_PROPERTY(nambu_motion_divergence_free, all_scalars,
-            {.id = "nambu_motion_divergence_free",
-             .spec = "s3.nambu-poisson",
+            {.spec = "s3.nambu-poisson",
              .title = "div(grad c x grad h) = 0 for polynomial c, h (the answer to the 'general c' exercise)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_motion_3_14"},
              .negative_controls = {"nambu_motion_3_14_half_cross"}});
 
 GM_PROPERTY(nambu_vector_fields_theorem_3_1, all_scalars,
-            {.id = "nambu_vector_fields_theorem_3_1",
-             .spec = "s3.nambu-poisson",
+            {.spec = "s3.nambu-poisson",
              .title = "proof of Theorem 3.1: X_H = {., H} = grad c x grad H and [X_G, X_H] = -X_{G,H}",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_13", "nambu_motion_3_14"},
@@ -291,16 +284,14 @@ GM_PROPERTY(nambu_vector_fields_theorem_3_1, all_scalars,
              .cases = {.d = 100, .mp = 25, .q = 15}});
 
 GM_PROPERTY(nambu_casimirs_are_functions_of_c, all_scalars,
-            {.id = "nambu_casimirs_are_functions_of_c",
-             .spec = "s3.nambu-casimirs",
+            {.spec = "s3.nambu-casimirs",
              .title = "{Phi(c), h} = 0 for Phi(c) = a0 + a1 c + a2 c^2 and every polynomial h",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_13"},
              .negative_controls = {"nambu_3_13_cyclic_index_slip"}});
 
 GM_PROPERTY(nambu_motion_3_14_tangent, all_scalars,
-            {.id = "nambu_motion_3_14_tangent",
-             .spec = "s3.nambu-motion",
+            {.spec = "s3.nambu-motion",
              .title = "(3.14): dx/dt = {x, h} = grad c x grad h, tangent to the level sets of c and h",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_13", "nambu_motion_3_14"},
@@ -309,8 +300,7 @@ GM_PROPERTY(nambu_motion_3_14_tangent, all_scalars,
 
 GM_PROPERTY(
     nambu_motion_recombination, all_scalars,
-    {.id = "nambu_motion_recombination",
-     .spec = "s3.nambu-recombination",
+    {.spec = "s3.nambu-recombination",
      .title = "(3.14) is unchanged under (c, h) -> (alpha c + beta h, gamma c + delta h), alpha delta - beta gamma = 1",
      .tolerance = ToleranceClass::Exact,
      .needs = {"nambu_motion_3_14"},

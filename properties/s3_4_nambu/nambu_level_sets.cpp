@@ -100,8 +100,7 @@ void nambu_level_sphere_motion_is_canonical(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(nambu_level_sphere_bracket_is_canonical, all_scalars,
-            {.id = "nambu_level_sphere_bracket_is_canonical",
-             .spec = "s3.nambu-level-sets",
+            {.spec = "s3.nambu-level-sets",
              .title = "exercise after Theorem 3.1: on the level spheres of c = |x|^2/2, (3.13) is the canonical "
                       "bracket in (q, p) = (x_3, azimuth)",
              .tolerance = ToleranceClass::Exact,
@@ -109,8 +108,7 @@ GM_PROPERTY(nambu_level_sphere_bracket_is_canonical, all_scalars,
              .negative_controls = {"nambu_3_13_sign_flipped", "nambu_3_13_cyclic_index_slip"}});
 
 GM_PROPERTY(nambu_level_sphere_motion_is_canonical, all_scalars,
-            {.id = "nambu_level_sphere_motion_is_canonical",
-             .spec = "s3.nambu-level-sets",
+            {.spec = "s3.nambu-level-sets",
              .title = "exercise after Theorem 3.1: (3.14) with c = |x|^2/2 stays on the sphere and is Hamilton's "
                       "canonical equations in (q, p) = (x_3, azimuth)",
              .tolerance = ToleranceClass::Exact,

@@ -169,16 +169,14 @@ void system_3_16_nambu_form(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(lie_poisson_is_nambu_2_27, all_scalars,
-            {.id = "lie_poisson_is_nambu_2_27",
-             .spec = "s2.nambu-form",
+            {.spec = "s2.nambu-form",
              .title = "(2.27): with c = |Pi|^2/2 the Lie-Poisson bracket is -grad c . grad f x grad h",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_13", "lie_poisson_3_6"},
              .negative_controls = {"nambu_3_13_sign_flipped", "lie_poisson_3_6_sign_flipped"}});
 
 GM_PROPERTY(rigid_body_sphere_energy_ellipsoid, all_scalars,
-            {.id = "rigid_body_sphere_energy_ellipsoid",
-             .spec = "s3.nambu-rigid-body-level-sets",
+            {.spec = "s3.nambu-rigid-body-level-sets",
              .title = "section 3.4: (3.8) is grad c x grad h, on spheres c = |x|^2/2 and ellipsoids h = x . I^-1 x / 2",
              .tolerance = ToleranceClass::Exact,
              .needs = {"hamiltonian_3_4", "euler_3_8", "nambu_motion_3_14"},
@@ -186,24 +184,21 @@ GM_PROPERTY(rigid_body_sphere_energy_ellipsoid, all_scalars,
 
 GM_PROPERTY(
     rigid_body_hyperbolic_cylinders, all_scalars,
-    {.id = "rigid_body_hyperbolic_cylinders",
-     .spec = "s3.nambu-hyperbolic-cylinders",
+    {.spec = "s3.nambu-hyperbolic-cylinders",
      .title = "I = diag(1, 1/2, 1/3): (3.7) keeps x1^2 - x3^2 and |x|^2; motion = grad c x grad (x3^2 - x1^2)/2",
      .tolerance = ToleranceClass::Exact,
      .needs = {"euler_3_7", "euler_3_8", "nambu_motion_3_14", "hamiltonian_3_4"},
      .negative_controls = {"euler_3_7_index_slip", "euler_3_8_I_not_inverted", "nambu_motion_3_14_reversed"}});
 
 GM_PROPERTY(system_3_16_is_rigid_body, all_scalars,
-            {.id = "system_3_16_is_rigid_body",
-             .spec = "s3.nambu-3.16",
+            {.spec = "s3.nambu-3.16",
              .title = "(3.16) with 1/a1 + 1/a2 = 1/a3 conserves |x|^2 and is (3.7) for suitable I",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_16", "euler_3_7"},
              .negative_controls = {"nambu_3_16_as_printed_answer", "euler_3_7_index_slip"}});
 
 GM_PROPERTY(system_3_16_nambu_form, all_scalars,
-            {.id = "system_3_16_nambu_form",
-             .spec = "s3.nambu-3.16",
+            {.spec = "s3.nambu-3.16",
              .title = "(3.16) = (1/4) grad(a2 x1^2 + a3 x3^2) x grad(a1 x2^2 + a3 x3^2) (the answer corrected)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"nambu_3_16", "nambu_motion_3_14"},

@@ -80,40 +80,35 @@ void canonical_bracket_jacobi(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(canonical_bracket_coordinates, all_scalars,
-            {.id = "canonical_bracket_coordinates",
-             .spec = "s3.poisson-bracket-axioms",
+            {.spec = "s3.poisson-bracket-axioms",
              .title = "canonical brackets: {Q_i, P_j} = delta_ij = -{P_j, Q_i}, {Q_i, Q_j} = 0 = {P_i, P_j}",
              .tolerance = ToleranceClass::Exact,
              .needs = {"canonical_bracket"},
              .negative_controls = {"canonical_bracket_sign_flipped", "canonical_bracket_symmetric"}});
 
 GM_PROPERTY(canonical_bracket_bilinear, all_scalars,
-            {.id = "canonical_bracket_bilinear",
-             .spec = "s3.poisson-bracket-axioms",
+            {.spec = "s3.poisson-bracket-axioms",
              .title = "the canonical bracket is bilinear (polynomials on R^6)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"canonical_bracket"},
              .negative_controls = {"canonical_bracket_affine_in_df"}});
 
 GM_PROPERTY(canonical_bracket_skew, all_scalars,
-            {.id = "canonical_bracket_skew",
-             .spec = "s3.poisson-bracket-axioms",
+            {.spec = "s3.poisson-bracket-axioms",
              .title = "the canonical bracket is skew-symmetric",
              .tolerance = ToleranceClass::Exact,
              .needs = {"canonical_bracket"},
              .negative_controls = {"canonical_bracket_symmetric"}});
 
 GM_PROPERTY(canonical_bracket_leibniz, all_scalars,
-            {.id = "canonical_bracket_leibniz",
-             .spec = "s3.poisson-bracket-axioms",
+            {.spec = "s3.poisson-bracket-axioms",
              .title = "the canonical bracket satisfies the Leibniz rule",
              .tolerance = ToleranceClass::Exact,
              .needs = {"canonical_bracket"},
              .negative_controls = {"canonical_bracket_affine_in_df"}});
 
 GM_PROPERTY(canonical_bracket_jacobi, all_scalars,
-            {.id = "canonical_bracket_jacobi",
-             .spec = "s3.poisson-bracket-axioms",
+            {.spec = "s3.poisson-bracket-axioms",
              .title = "the canonical bracket satisfies the Jacobi identity (3.2) (polynomials of degree <= 4 on R^6)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"canonical_bracket"},

@@ -87,8 +87,7 @@ void clebsch_implies_euler(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(clebsch_map_is_poisson, all_scalars,
-            {.id = "clebsch_map_is_poisson",
-             .spec = "s3.clebsch-poisson",
+            {.spec = "s3.clebsch-poisson",
              .title = "(3.22), Remark 3.6: canonical brackets of f(P x Q), h(P x Q) are the Lie-Poisson bracket (3.6)",
              .tolerance = ToleranceClass::Exact,
              .needs = {"momentum_map", "canonical_bracket", "lie_poisson_3_6"},
@@ -97,8 +96,7 @@ GM_PROPERTY(clebsch_map_is_poisson, all_scalars,
              .cases = {.d = 100, .mp = 25, .q = 15}});
 
 GM_PROPERTY(clebsch_implies_euler, all_scalars,
-            {.id = "clebsch_implies_euler",
-             .spec = "s3.clebsch-euler",
+            {.spec = "s3.clebsch-euler",
              .title = "Proposition 3.1: (3.21) implies dPi/dt = -Omega x Pi, Euler's equation, for Pi = P x Q",
              .tolerance = ToleranceClass::Exact,
              .needs = {"clebsch_3_21", "momentum_map", "euler_3_8"},

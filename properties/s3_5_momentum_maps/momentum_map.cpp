@@ -76,24 +76,21 @@ void momentum_map_equivariance(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(momentum_map_generates_rotations, all_scalars,
-            {.id = "momentum_map_generates_rotations",
-             .spec = "mm.hamiltonian-action",
+            {.spec = "mm.hamiltonian-action",
              .title = "J = p x q; J^xi generates q' = {q, J^xi} = -xi x q, p' = {p, J^xi} = -xi x p",
              .tolerance = ToleranceClass::Exact,
              .needs = {"momentum_map", "canonical_bracket"},
              .negative_controls = {"momentum_map_reversed", "canonical_bracket_sign_flipped"}});
 
 GM_PROPERTY(momentum_map_infinitesimal_equivariance, all_scalars,
-            {.id = "momentum_map_infinitesimal_equivariance",
-             .spec = "mm.infinitesimal-equivariance",
+            {.spec = "mm.infinitesimal-equivariance",
              .title = "along q' = -xi x q, p' = -xi x p: J' = -xi x J = ad*_xi J",
              .tolerance = ToleranceClass::Exact,
              .needs = {"momentum_map", "ad_star"},
              .negative_controls = {"momentum_map_sign_slip", "ad_star_is_ad"}});
 
 GM_PROPERTY(momentum_map_equivariance, all_scalars,
-            {.id = "momentum_map_equivariance",
-             .spec = "mm.equivariance",
+            {.spec = "mm.equivariance",
              .title = "J(R q, R p) = R J(q, p) for rational R in SO(3); -R' J for improper R'",
              .tolerance = ToleranceClass::Exact,
              .needs = {"momentum_map"},

@@ -129,8 +129,7 @@ void momentum_map_right_action_equivariance(const Subject<T>& s) {
 
 GM_PROPERTY(
     momentum_map_right_action_generates_lift, all_scalars,
-    {.id = "momentum_map_right_action_generates_lift",
-     .spec = "mm.second-action",
+    {.spec = "mm.second-action",
      .title = "SO(n) on R^{n x n} by Q -> Q g, n = 3..6: J^xi = <Q^T P - P^T Q, xi> generates Q' = Q xi, P' = P xi",
      .tolerance = ToleranceClass::Exact,
      .needs = {"pairing", "canonical_bracket"},
@@ -138,8 +137,7 @@ GM_PROPERTY(
      .cases = {.d = 100, .mp = 10, .q = 5}});
 
 GM_PROPERTY(momentum_map_right_action_equivariance, all_scalars,
-            {.id = "momentum_map_right_action_equivariance",
-             .spec = "mm.second-action",
+            {.spec = "mm.second-action",
              .title = "SO(3), SO(4) on R^{n x n} by Q -> Q g: along Q' = Q xi, P' = P xi, J' = ad*_xi J",
              .tolerance = ToleranceClass::Exact,
              .needs = {"lie_hat", "ad_star"},

@@ -288,8 +288,7 @@ void matrix_euler_poincare_any_lagrangian_so_n(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(euler_lagrange_on_group_iff_euler_poincare, all_scalars,
-            {.id = "euler_lagrange_on_group_iff_euler_poincare",
-             .spec = "s1.ep-euler-lagrange",
+            {.spec = "s1.ep-euler-lagrange",
              .title = "Theorem 1.1 (ii)<=>(iv) on SO(3), SO(4), SL(2,R), l neither quadratic nor diagonal: in a Cayley "
                       "chart, the Euler-Lagrange equations on G hold iff dmu/dt = ad*_xi mu (subject's ad*)",
              .tolerance = ToleranceClass::Exact,
@@ -298,8 +297,7 @@ GM_PROPERTY(euler_lagrange_on_group_iff_euler_poincare, all_scalars,
              .cases = {.d = 100, .mp = 25, .q = 10}});
 
 GM_PROPERTY(matrix_euler_poincare_any_lagrangian, all_scalars,
-            {.id = "matrix_euler_poincare_any_lagrangian",
-             .spec = "s2.matrix-euler-poincare",
+            {.spec = "s2.matrix-euler-poincare",
              .title = "Theorem 2.3 on SO(3), SO(4), SL(2,R), l neither quadratic nor diagonal: the Euler-Lagrange "
                       "equations on G in a Cayley chart hold iff dM/dt = [M, Omega] (tr(A B) pairing)",
              .tolerance = ToleranceClass::Exact,
@@ -309,8 +307,7 @@ GM_PROPERTY(matrix_euler_poincare_any_lagrangian, all_scalars,
 
 GM_PROPERTY(
     matrix_euler_poincare_any_lagrangian_so_n, all_scalars,
-    {.id = "matrix_euler_poincare_any_lagrangian_so_n",
-     .spec = "s2.matrix-euler-poincare",
+    {.spec = "s2.matrix-euler-poincare",
      .title =
          "Theorem 2.3 on SO(n), n = 3..6 (3..5 exact), l neither quadratic nor diagonal: the Euler-Lagrange equations "
          "on SO(n) in a Cayley chart hold iff dM/dt = [M, Omega] (subject's hat_n, vee_n)",

@@ -825,8 +825,7 @@ void ep_product_space_variation(const Subject<T>& s) {
 }  // namespace
 
 GM_PROPERTY(restricted_variation_2_8, all_scalars,
-            {.id = "restricted_variation_2_8",
-             .spec = "s2.restricted-variation",
+            {.spec = "s2.restricted-variation",
              .title = "Proposition 2.1: for O(t, s) in SO(3), dOmega/ds - dXi/dt = Omega x Xi (2.8), "
                       "exact derivatives",
              .tolerance = ToleranceClass::Exact,
@@ -836,8 +835,7 @@ GM_PROPERTY(restricted_variation_2_8, all_scalars,
 
 GM_PROPERTY(
     euler_variational_principle, float_scalars,
-    {.id = "euler_variational_principle",
-     .spec = "s2.euler-variational",
+    {.spec = "s2.euler-variational",
      .title = "Theorem 2.1: along the subject's (2.1), delta int l dt = 0 for delta Omega = dXi/dt + Omega x Xi",
      .tolerance = ToleranceClass::Roundoff,
      .needs = {"euler_2_1", "lagrangian_2_5"},
@@ -845,8 +843,7 @@ GM_PROPERTY(
      .cases = {.d = 10, .mp = 10, .q = 0}});
 
 GM_PROPERTY(ep_reduced_variation_vanishes, float_scalars,
-            {.id = "ep_reduced_variation_vanishes",
-             .spec = "s1.ep-theorem",
+            {.spec = "s1.ep-theorem",
              .title = "Theorem 1.1 (iii)<=>(iv) on so(3), so(4), sl(2,R), l neither quadratic nor diagonal: along the "
                       "subject's EP flow, delta int l dt = 0 for delta xi = deta/dt + [xi, eta], and a perturbed curve "
                       "is not stationary",
@@ -856,8 +853,7 @@ GM_PROPERTY(ep_reduced_variation_vanishes, float_scalars,
              .cases = {.d = 10, .mp = 4, .q = 0}});
 
 GM_PROPERTY(hamilton_pontryagin_variation, float_scalars,
-            {.id = "hamilton_pontryagin_variation",
-             .spec = "s2.hamilton-pontryagin",
+            {.spec = "s2.hamilton-pontryagin",
              .title = "Proposition 2.3: the Hamilton-Pontryagin action (2.16) is stationary along the subject's (2.20)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"euler_matrix_2_12", "reconstruction_2_10", "lagrangian_2_13", "pairing"},
@@ -865,8 +861,7 @@ GM_PROPERTY(hamilton_pontryagin_variation, float_scalars,
              .cases = {.d = 10, .mp = 10, .q = 0}});
 
 GM_PROPERTY(hamilton_pontryagin_variation_so_n, float_scalars,
-            {.id = "hamilton_pontryagin_variation_so_n",
-             .spec = "s2.hamilton-pontryagin",
+            {.spec = "s2.hamilton-pontryagin",
              .title = "Proposition 2.3 on SO(n), n = 3..6, both directions: the Hamilton-Pontryagin action (2.16) with "
                       "Manakov's l and a non-diagonal A is stationary along the subject's (2.34), a perturbed M is not",
              .tolerance = ToleranceClass::Roundoff,
@@ -876,8 +871,7 @@ GM_PROPERTY(hamilton_pontryagin_variation_so_n, float_scalars,
              .cases = {.d = 10, .mp = 5, .q = 0}});
 
 GM_PROPERTY(hp_hamiltonian_action_variation, float_scalars,
-            {.id = "hp_hamiltonian_action_variation",
-             .spec = "s2.hp-hamiltonian-action",
+            {.spec = "s2.hp-hamiltonian-action",
              .title = "exercise (2.24): int <Pi, O^-1 dO/dt> - h(Pi) dt is stationary along the subject's (2.20)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"euler_matrix_2_12", "reconstruction_2_10", "hamiltonian_2_21", "pairing"},
@@ -885,8 +879,7 @@ GM_PROPERTY(hp_hamiltonian_action_variation, float_scalars,
              .cases = {.d = 10, .mp = 10, .q = 0}});
 
 GM_PROPERTY(clebsch_variational_principle, float_scalars,
-            {.id = "clebsch_variational_principle",
-             .spec = "s3.clebsch-variational",
+            {.spec = "s3.clebsch-variational",
              .title = "Proposition 3.1: the Clebsch action (3.18) is stationary along the subject's (3.21)",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {"clebsch_3_21", "lagrangian_2_5"},
@@ -895,8 +888,7 @@ GM_PROPERTY(clebsch_variational_principle, float_scalars,
 
 GM_PROPERTY(
     manakov_variational_principle, float_scalars,
-    {.id = "manakov_variational_principle",
-     .spec = "s2.manakov",
+    {.spec = "s2.manakov",
      .title = "Proposition 2.4, both directions: along the subject's (2.34), delta int -tr(Omega A Omega)/2 dt = 0 "
               "for delta Omega = dXi/dt + [Omega, Xi], and a perturbed curve is not stationary",
      .tolerance = ToleranceClass::Roundoff,
@@ -905,8 +897,7 @@ GM_PROPERTY(
      .cases = {.d = 10, .mp = 10, .q = 0}});
 
 GM_PROPERTY(reconstruction_solves_euler_lagrange, float_scalars,
-            {.id = "reconstruction_solves_euler_lagrange",
-             .spec = "s1.reconstruction",
+            {.spec = "s1.reconstruction",
              .title = "section 1: g from the left-invariant EP solution by dg/dt = g xi makes the unreduced action "
                       "stationary (Theorem 1.1 (i))",
              .tolerance = ToleranceClass::Roundoff,
@@ -916,8 +907,7 @@ GM_PROPERTY(reconstruction_solves_euler_lagrange, float_scalars,
 
 GM_PROPERTY(
     right_invariant_ep_sign, float_scalars,
-    {.id = "right_invariant_ep_sign",
-     .spec = "s1.right-invariant-sign",
+    {.spec = "s1.right-invariant-sign",
      .title = "Remark 1.1 on so(3), sl(2,R): for right-invariant l, dmu/dt = -ad*_xi mu with dg/dt = xi g makes "
               "the unreduced action stationary",
      .tolerance = ToleranceClass::Roundoff,
@@ -926,8 +916,7 @@ GM_PROPERTY(
      .cases = {.d = 10, .mp = 5, .q = 0}});
 
 GM_PROPERTY(ep_product_space_variation, float_scalars,
-            {.id = "ep_product_space_variation",
-             .spec = "s1.ep-product-space",
+            {.spec = "s1.ep-product-space",
              .title = "exercise on G x Y: along d/dt dl/dxi = ad*_xi dl/dxi, d/dt dl/ddy = dl/dy (subject's ad*), "
                       "delta int l dt = 0 for delta xi = deta/dt + [xi, eta], delta y = zeta",
              .tolerance = ToleranceClass::Roundoff,

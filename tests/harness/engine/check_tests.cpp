@@ -126,8 +126,7 @@ void test_only_casimir_claim(const Subject<T>&, const Integrator<T>& in, const I
   judge_claim("casimir", claims.casimir, holds, "||Pi1|^2 - |Pi0|^2| = " + std::to_string(change));
 }
 GM_PROPERTY(test_only_casimir_claim, integrator_scalars,
-            {.id = "test_only_casimir_claim",
-             .spec = "s3.casimir",
+            {.spec = "s3.casimir",
              .title = "test only: one step keeps |Pi|^2",
              .tolerance = ToleranceClass::Roundoff,
              .needs = {},
