@@ -1,7 +1,7 @@
 #include "mutation/kill_matrix.hpp"
 
-#include "harness/engine/quick_profile.hpp"
-#include "harness/engine/thorough_only.hpp"
+#include "harness/checking/quick_profile.hpp"
+#include "harness/checking/thorough_only.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -197,7 +197,7 @@ json thorough_only_json(const ThoroughOnly& t, const MutantsRun& run) {
       "out when every mutant it kills is still killed by a check that is kept";
   j["min_seconds"] = t.min_seconds;
   // The factor the matrix ran at: an implementation behind the protocol runs that share of each
-  // property's cases by default (harness/engine/thorough_only.hpp).
+  // property's cases by default (harness/checking/thorough_only.hpp).
   j["case_factor"] = run.options.case_factor;
   j["candidates"] = t.candidates;
   j["killable"] = t.killable;

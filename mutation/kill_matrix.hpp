@@ -45,7 +45,7 @@ nlohmann::json quick_profile_json(const QuickProfile& q, const MutantsRun& run);
 std::string matrix_markdown(const MutantsRun& run);
 
 // The 50-digit runs an implementation behind the protocol leaves to `geomech check --thorough`
-// (spec/thorough_only.json, harness/engine/thorough_only.hpp). An interpreted implementation computes in
+// (spec/thorough_only.json, harness/checking/thorough_only.hpp). An interpreted implementation computes in
 // 50 digits a hundred times slower than compiled code, and a few 50-digit runs (long flows, the
 // variational principles) are nearly all of its check's time. Chosen here so that no mutant the
 // matrix kills is lost: the 50-digit checks costing at least `min_seconds` per mutant, most costly

@@ -87,7 +87,7 @@ struct PropertyDef {
   StepKind step = StepKind::None;  // Integrator scope: the step function it drives
   // Integrator scope: the claims this property decides ("order", "casimir", ...; the
   // names of IntegratorClaims). A claim is verified only when every property that judges it ran all
-  // its cases and passed (harness/engine/integrator_verdicts.hpp).
+  // its cases and passed (harness/checking/integrator_verdicts.hpp).
   std::vector<std::string> judges{};
   // The file that registers it, from properties/ on ("properties/s3_4_nambu/nambu_bracket.cpp"):
   // set by GM_PROPERTY from __FILE__ (also inside a unity batch, where the file is #included).

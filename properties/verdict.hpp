@@ -63,7 +63,7 @@ struct Verdict {
   std::string step_raised;
   std::string step_raised_where;
   double step_raised_rate = 0, step_raised_size = 0;  // |Omega| and |Pi| where it raised (not written out)
-  // What every view shows for this verdict, decided once (harness/engine/integrator_verdicts.hpp): for an
+  // What every view shows for this verdict, decided once (harness/checking/integrator_verdicts.hpp): for an
   // integrator property, "PASS", "FALSE CLAIM", "holds (not claimed)", "does not hold (not claimed)",
   // "not established (not claimed): ...", "NOT CHARACTERISED"; empty for the others (the outcome).
   std::string word;

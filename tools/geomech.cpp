@@ -14,9 +14,9 @@
 //   geomech mutants    mutation score: single-mistake variants of the reference through the properties
 //   geomech golden     golden trajectories: regenerate/check the fixtures, make your own (golden/cli.hpp)
 #include "golden/cli.hpp"
+#include "harness/checking/trajectory.hpp"
 #include "harness/class/class_mode.hpp"
 #include "harness/class/lecturer_cli.hpp"
-#include "harness/engine/trajectory.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/isolation/isolate.hpp"
 #include "harness/isolation/private_copy.hpp"

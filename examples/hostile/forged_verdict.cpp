@@ -1,6 +1,6 @@
 // Hostile: a wrong hat (transposed) that tries to forge its own verdict. On its first
 // call it writes a verdict saying PASS for hat_is_cross_product in double, in the harness's own
-// format (harness/engine/verdict_io.cpp; the suite is open source), to every file descriptor above 2 it
+// format (harness/checking/verdict_io.cpp; the suite is open source), to every file descriptor above 2 it
 // may have been given, and exits with status 0 before the property can judge it.
 // In-process, the result pipe of the check is one of those descriptors: the forgery is read as the
 // check's verdict (ctest untrusted.forged_verdict_control shows it: the attack works without the

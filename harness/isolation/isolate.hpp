@@ -40,7 +40,7 @@ struct IsolationOptions {
   long memory_limit_mb = 4096;  // writable-memory limit of a child, RLIMIT_DATA (not under AddressSanitizer)
   bool isolate = true;          // false: run the tasks in this process, one after the other (debugging)
   // Called in the parent as each task starts (index), and as it finishes (index, its result): a
-  // check reports each result the moment it is known (harness/engine/check_events.hpp).
+  // check reports each result the moment it is known (harness/checking/check_events.hpp).
   std::function<void(std::size_t)> on_started;
   std::function<void(std::size_t, const TaskResult&)> on_finished;
   // Called in the parent while tasks run, between looks at them (about 50 times a second): a

@@ -74,7 +74,7 @@ struct Language {
   // verdict. `function_names`: the functions a file defines where a slot may be (top level), for the
   // did-you-mean of a misspelt slot. `code_only`: the text with comments and string literals blanked
   // (same length), `definitions`: where each function of such a text begins (methods too), for which
-  // slot calls which (harness/engine/source_calls.hpp). Null: these hints are missing.
+  // slot calls which (harness/checking/source_calls.hpp). Null: these hints are missing.
   std::vector<std::string> (*function_names)(const std::string& source) = nullptr;
   std::string (*code_only)(const std::string& source) = nullptr;
   std::vector<Definition> (*definitions)(const std::string& code) = nullptr;
@@ -163,6 +163,5 @@ std::string slot_result_type(const std::string& cpp_signature);
 // A row's interpreter: the one its variable names ($GEOMECH_PYTHON; a bare name as PATH finds it),
 // else `program` first on PATH (a venv's, nvm's), else `fallback` (the system's, or the bare name).
 std::string interpreter_named(const char* variable, const std::string& program, const std::string& fallback);
-
 
 }  // namespace gm::harness

@@ -1,6 +1,6 @@
 #include "harness/program/cli.hpp"
-#include "harness/engine/quick_profile.hpp"
-#include "harness/engine/thorough_only.hpp"
+#include "harness/checking/quick_profile.hpp"
+#include "harness/checking/thorough_only.hpp"
 
 #include "harness/isolation/process.hpp"
 #include "harness/reports/console_stream.hpp"

@@ -3,7 +3,7 @@
 // reproduce command printed by one works with the other.
 #pragma once
 
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 #include "harness/program/library_flags.hpp"
 
 #include <CLI/CLI.hpp>
@@ -39,10 +39,10 @@ struct CheckCliOptions {
   // Only every slot's own definition check, in double, no report, no pictures: the first look
   // `geomech check FILE.cpp` takes while the other scalars compile.
   bool definitions_only = false;
-  // The quick profile (harness/engine/quick_profile.hpp): only its checks.
+  // The quick profile (harness/checking/quick_profile.hpp): only its checks.
   bool quick = false;
   // Also the costly 50-digit runs that an implementation behind the protocol otherwise leaves out
-  // (harness/engine/thorough_only.hpp); nothing changes for an implementation linked in.
+  // (harness/checking/thorough_only.hpp); nothing changes for an implementation linked in.
   bool thorough = false;
 };
 

@@ -2,7 +2,7 @@
 // assembled into one subject.
 #pragma once
 
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 
 #include <geomech/student.hpp>
 

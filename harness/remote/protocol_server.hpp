@@ -5,7 +5,7 @@
 #pragma once
 
 #include "core/subject.hpp"
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 
 #include <nlohmann/json.hpp>
 

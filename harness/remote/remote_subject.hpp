@@ -8,7 +8,7 @@
 // it (the harness's per-check timeout and process-group kill apply to it).
 #pragma once
 
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 #include "harness/isolation/work_limit.hpp"
 #include "harness/remote/call_memo.hpp"
 

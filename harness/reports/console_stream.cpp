@@ -112,7 +112,7 @@ void ConsoleStream::finished(const std::vector<Verdict>& verdicts, bool replayed
     }
     // What to fix first: a slot's own definition check names the slot; an integrator's false claim
     // names the claim and what was measured.
-    // (decided by the engine as the verdicts arrive: harness/engine/first_fix.hpp)
+    // (decided by the check as the verdicts arrive: harness/checking/first_fix.hpp)
     std::string lead;
     if (const auto named = first_fixes_.on_problem(v)) {
       const std::string& slot = named->slot;

@@ -6,8 +6,8 @@
 // FIRST FIX lines and the false claims are streamed.
 #pragma once
 
-#include "harness/engine/check.hpp"
-#include "harness/engine/first_fix.hpp"
+#include "harness/checking/check.hpp"
+#include "harness/checking/first_fix.hpp"
 
 #include <chrono>
 #include <iosfwd>
@@ -42,7 +42,7 @@ class ConsoleStream : public CheckListener {
   bool terminal_;
   bool line_shown_ = false;
   std::chrono::steady_clock::time_point last_line_;
-  FirstFixesSoFar first_fixes_;        // the slots named in a FIRST FIX line, decided by the engine
+  FirstFixesSoFar first_fixes_;        // the slots named in a FIRST FIX line, decided by the check
   std::set<std::string> raises_seen_;  // integrator and message of each step raise already shown
   int failures_ = 0;
 };

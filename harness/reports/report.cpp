@@ -1,11 +1,11 @@
 #include "harness/reports/report.hpp"
 
-#include "harness/engine/integrator_verdicts.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/html_page.hpp"
 
-#include "harness/engine/verdict_io.hpp"
-#include "harness/engine/work_precision.hpp"
+#include "harness/checking/verdict_io.hpp"
+#include "harness/checking/work_precision.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/svg.hpp"
 
@@ -47,7 +47,7 @@ std::string area_of(const Verdict& v, const Catalogue* c) {
 }
 
 std::vector<ClaimRow> claim_rows(const CheckResult& r, const IntegratorInfo& integrator) {
-  // The decisions of the check (harness/engine/integrator_verdicts.hpp), made once; a result assembled
+  // The decisions of the check (harness/checking/integrator_verdicts.hpp), made once; a result assembled
   // without them (a test's) is decided here by the same function.
   const std::vector<ClaimDecision> decisions =
       integrator.decisions.empty() ? decide_claims(r, integrator) : integrator.decisions;

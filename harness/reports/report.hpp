@@ -3,8 +3,8 @@
 // directory is either the previous one or the complete new one, never half of each).
 #pragma once
 
-#include "harness/engine/check.hpp"
-#include "harness/engine/first_fix.hpp"
+#include "harness/checking/check.hpp"
+#include "harness/checking/first_fix.hpp"
 #include "spec/catalogue.hpp"
 
 #include <nlohmann/json.hpp>
@@ -31,7 +31,7 @@ struct Figure {
 };
 std::vector<Figure> report_figures(const CheckResult& r);
 
-// The first fixes (RootCauses, root_causes) are decided by the engine (harness/engine/first_fix.hpp)
+// The first fixes (RootCauses, root_causes) are decided by the check (harness/checking/first_fix.hpp)
 // and kept on the CheckResult (r.first_fixes); every view here renders them.
 
 // How a report names a slot to fix: "slot 'x'" for C++; for another language, the function in the
@@ -55,7 +55,7 @@ void write_report_dir(const CheckResult& r, const std::string& dir, const Catalo
 void write_file_atomically(const std::string& path, const std::string& content);
 
 // The claims table of one integrator: for each claim, what was claimed and what the properties found.
-// A claim's decision (harness/engine/integrator_verdicts.hpp) as the reports render it.
+// A claim's decision (harness/checking/integrator_verdicts.hpp) as the reports render it.
 struct ClaimRow {
   std::string claim;
   std::string claimed;   // "2" for an order, "yes"/"no" otherwise

@@ -1,5 +1,5 @@
 // The console summary of a finished check (report.hpp, console_report); it renders the engine's decisions.
-#include "harness/engine/integrator_verdicts.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/report.hpp"
 #include "harness/reports/report_parts.hpp"
@@ -91,7 +91,7 @@ void write_table(std::ostream& os, const CheckResult& r, const Catalogue* c) {
   }
 }
 
-// The counts, the first fixes the engine decided, what was not checked, discarded or cut short.
+// The counts, the first fixes the check decided, what was not checked, discarded or cut short.
 void write_summary(std::ostream& os, const CheckResult& r) {
   os << "\nsummary: " << summary_counts(r) << "  (" << seconds_text(r.seconds) << ")\n";
   {

@@ -1,6 +1,6 @@
 // verdicts.json: the report of a check for machines and class mode (report.hpp, json_report).
-#include "harness/engine/integrator_verdicts.hpp"
-#include "harness/engine/verdict_io.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
+#include "harness/checking/verdict_io.hpp"
 #include "harness/reports/report.hpp"
 #include "harness/reports/report_parts.hpp"
 

@@ -1,5 +1,5 @@
 // junit.xml: the JUnit report of a check, for CI (report.hpp, junit_report).
-#include "harness/engine/integrator_verdicts.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
 #include "harness/reports/html_page.hpp"
 #include "harness/reports/report.hpp"
 #include "harness/reports/report_parts.hpp"

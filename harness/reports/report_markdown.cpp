@@ -1,6 +1,6 @@
 // report.md: the Markdown report of a check, for people (report.hpp, markdown_report); it renders the engine's decisions.
-#include "harness/engine/integrator_verdicts.hpp"
-#include "harness/engine/work_precision.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
+#include "harness/checking/work_precision.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/html_page.hpp"
 #include "harness/reports/report.hpp"
@@ -57,7 +57,7 @@ void write_header(std::ostream& md, const CheckResult& r) {
   }
 }
 
-// What to fix: the first fixes the engine decided (harness/engine/first_fix.hpp), the steps that
+// What to fix: the first fixes the check decided (harness/checking/first_fix.hpp), the steps that
 // raise, then the rest, one line per property and outcome. `problems` is sorted here for the details.
 void write_what_to_fix(std::ostream& md, const CheckResult& r, std::vector<const Verdict*>& problems) {
   if (!problems.empty()) {

@@ -3,7 +3,7 @@
 
 #include "harness/reports/report.hpp"
 
-#include "harness/engine/integrator_verdicts.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
 #include "harness/isolation/inert_text.hpp"
 #include "harness/reports/html_page.hpp"
 
@@ -60,7 +60,7 @@ bool nothing_ran(const std::map<std::string, const Verdict*>& by_scalar) {
   return true;
 }
 
-// The table cell of a verdict: its word, decided once (harness/engine/integrator_verdicts.hpp),
+// The table cell of a verdict: its word, decided once (harness/checking/integrator_verdicts.hpp),
 // with what a pass measured: the order where one was measured, the cases run of those planned when
 // the time budget was spent, the worst residual.
 std::string verdict_cell(const Verdict& v, bool exact_column) {

@@ -1,10 +1,10 @@
 // What the report's formats share: the words and cells they all print the same way (the console
 // summary, report.md, junit.xml and verdicts.json, each in a file of its own: report_console.cpp,
 // report_markdown.cpp, report_junit.cpp, report_json.cpp). Rendering only: what a verdict is, which
-// slot to fix first and what a claim came to are decided by the engine (harness/engine/).
+// slot to fix first and what a claim came to are decided by the check (harness/checking/).
 #pragma once
 
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 #include "spec/catalogue.hpp"
 
 #include <map>

@@ -7,7 +7,7 @@
 //   - a built-in subject (the reference, a negative control): checked in this process.
 #pragma once
 
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 #include "harness/program/build.hpp"
 #include "harness/program/cli.hpp"
 

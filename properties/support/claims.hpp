@@ -13,7 +13,7 @@
 //
 // The runner gathers the findings of every case of a run into the verdict (Verdict::claims):
 // a finding holds only if it held in every case. What the claims block, the table, the JUnit XML and
-// verdicts.json say is decided once from the verdicts and their findings (harness/engine/integrator_verdicts.hpp):
+// verdicts.json say is decided once from the verdicts and their findings (harness/checking/integrator_verdicts.hpp):
 // a claim is verified only when every check that judges it (PropertyDef::judges) ran all its
 // cases and passed with complete findings.
 #pragma once

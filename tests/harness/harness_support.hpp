@@ -2,7 +2,7 @@
 // check configuration, a crowded core.
 #pragma once
 
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 
 #include <gtest/gtest.h>
 
@@ -75,7 +75,7 @@ inline CheckConfig quick(std::vector<std::string> props) {
 }
 
 // An Octave folder in which manakov_Omega is wrong and manakov_2_34 calls it: the first fix is the
-// callee (harness/engine/first_fix.hpp).
+// callee (harness/checking/first_fix.hpp).
 inline void write_omega_and_its_caller(const std::filesystem::path& dir) {
   std::filesystem::create_directories(dir);
   std::ofstream(dir / "manakov_Omega.m") << "function W = manakov_Omega(A, M)\n  W = -M;\nend\n";

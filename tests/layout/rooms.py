@@ -3,7 +3,7 @@
 
 A room is a folder whose README.md has a line
 
-    May include: harness/engine, harness/isolation
+    May include: harness/checking, harness/isolation
 
 naming the other rooms its files may include (`May include: no other room.` for none). A file
 belongs to the innermost room above it. Its `#include "a/b.hpp"` lines are root-relative; one that

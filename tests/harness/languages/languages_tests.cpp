@@ -1,8 +1,8 @@
 // harness/languages/: a row carries its language. What the check, the reports and the slot listing
 // used to ask by id now comes from the row; each statement with its failing side (a row without a
 // reader, a language that is not one, the suite's own style against a row's).
-#include "harness/engine/check.hpp"
-#include "harness/engine/source_calls.hpp"
+#include "harness/checking/check.hpp"
+#include "harness/checking/source_calls.hpp"
 #include "harness/languages/language.hpp"
 #include "harness/reports/report.hpp"
 #include "properties/support/show.hpp"

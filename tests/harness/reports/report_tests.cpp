@@ -1,10 +1,10 @@
 // harness/reports/: the report writers say the same, a machine's fault names no slot, verdicts
 // survive JSON, SVG says what it leaves out.
-#include "harness/engine/check.hpp"
-#include "harness/engine/integrator_verdicts.hpp"
-#include "harness/engine/thorough_only.hpp"
-#include "harness/engine/trajectory.hpp"
-#include "harness/engine/verdict_io.hpp"
+#include "harness/checking/check.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
+#include "harness/checking/thorough_only.hpp"
+#include "harness/checking/trajectory.hpp"
+#include "harness/checking/verdict_io.hpp"
 #include "harness/isolation/isolate.hpp"
 #include "harness/isolation/process_cpu.hpp"
 #include "harness/program/build.hpp"
@@ -99,7 +99,7 @@ TEST(Reports, AMachineFaultNamesNoSlotInAnyView) {
       "the machine's fault, not the code's: the check could not do its work. Fix: run it again on a "
       "less busy machine, or with fewer checks at once (--jobs).";
   r.verdicts.push_back(v);
-  decide_first_fixes(r);  // as the engine does, once the verdicts are complete
+  decide_first_fixes(r);  // as the check does, once the verdicts are complete
   EXPECT_TRUE(r.first_fixes.broken.empty());
   const auto j = json_report(r, nullptr);
   EXPECT_TRUE(j.at("first_fix").empty()) << j.at("first_fix").dump();
@@ -176,7 +176,7 @@ TEST(Reports, SvgLeavesOutWhatCannotBeDrawnAndSaysSo) {
   EXPECT_NE(svg_plot("empty", {}).find("no drawable points"), std::string::npos);
 }
 
-// The streamed console renders the live first fixes the engine decides (harness/engine/first_fix.hpp):
+// The streamed console renders the live first fixes the check decides (harness/checking/first_fix.hpp):
 // a FIRST FIX line for the callee, a THEN line for the caller that calls it. The control: a
 // verdict that is no slot's own check gets no such line.
 TEST(Reports, TheConsoleStreamNamesTheFirstFixAsItArrives) {

@@ -1,5 +1,5 @@
 // A control of ctest layout.formatted: its project includes out of order.
-#include "core/b.hpp"
 #include "core/a.hpp"
+#include "core/b.hpp"
 
 int f() { return 1; }

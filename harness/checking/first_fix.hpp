@@ -1,10 +1,10 @@
-// The first fixes of a check, decided once by the engine (run_check, check_trajectories) and kept on
+// The first fixes of a check, decided once by the check (run_check, check_trajectories) and kept on
 // the CheckResult; the console, report.md, verdicts.json's `first_fix` and the class views render
 // them and decide nothing.
 //
 // A slot is wrong when its own direct property (one that needs that slot alone) has a problem; the
 // other failing properties that need it are its downstream. A wrong slot whose source calls another
-// wrong slot (harness/engine/source_calls.hpp) most likely fails through it: the callee is the fix.
+// wrong slot (harness/checking/source_calls.hpp) most likely fails through it: the callee is the fix.
 // Order: callees before their callers, then the slot most other failures call.
 #pragma once
 
@@ -66,7 +66,7 @@ class FirstFixesSoFar {
   const Language* language_;
   std::vector<CodeCell> cells_;  // a notebook's
   std::set<std::string> named_;
-  // Which slots each slot of the source calls (harness/engine/source_calls.hpp), read at the first one.
+  // Which slots each slot of the source calls (harness/checking/source_calls.hpp), read at the first one.
   std::optional<std::map<std::string, std::set<std::string>>> calls_;
 };
 

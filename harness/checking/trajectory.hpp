@@ -3,7 +3,7 @@
 // are in harness/trajectories/trajectory_reader.hpp.
 #pragma once
 
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 #include "harness/trajectories/trajectory_reader.hpp"
 
 #include <set>

@@ -1,4 +1,4 @@
-#include "harness/engine/integrator_verdicts.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
 
 #include "properties/registry.hpp"
 

@@ -1,10 +1,10 @@
-// harness/engine/: checking trajectory files (check_trajectories): refusals, the examples' verdicts,
+// harness/checking/: checking trajectory files (check_trajectories): refusals, the examples' verdicts,
 // the order.
-#include "harness/engine/check.hpp"
-#include "harness/engine/integrator_verdicts.hpp"
-#include "harness/engine/thorough_only.hpp"
-#include "harness/engine/trajectory.hpp"
-#include "harness/engine/verdict_io.hpp"
+#include "harness/checking/check.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
+#include "harness/checking/thorough_only.hpp"
+#include "harness/checking/trajectory.hpp"
+#include "harness/checking/verdict_io.hpp"
 #include "harness/isolation/isolate.hpp"
 #include "harness/isolation/process_cpu.hpp"
 #include "harness/program/build.hpp"

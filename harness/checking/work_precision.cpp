@@ -1,6 +1,6 @@
-#include "harness/engine/work_precision.hpp"
+#include "harness/checking/work_precision.hpp"
 
-#include "harness/engine/verdict_io.hpp"
+#include "harness/checking/verdict_io.hpp"
 #include "harness/trajectories/reference_flow.hpp"
 #include "impl/canonical_integrators.hpp"
 #include "impl/integrators.hpp"

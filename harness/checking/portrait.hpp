@@ -6,7 +6,7 @@
 // report down. Portraits illustrate; the verdicts on claims come from the properties.
 #pragma once
 
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 #include "harness/isolation/isolate.hpp"
 
 #include <functional>

@@ -21,7 +21,7 @@
 // said in the word: "verified (double; mp50: left to --thorough)".
 #pragma once
 
-#include "harness/engine/check.hpp"
+#include "harness/checking/check.hpp"
 
 #include <string>
 #include <vector>

@@ -1,7 +1,7 @@
 // Who calls whom in a submission, read from its source: the first fix is the function
 // whose own check fails, not one that calls it.
-#include "harness/engine/first_fix.hpp"
-#include "harness/engine/source_calls.hpp"
+#include "harness/checking/first_fix.hpp"
+#include "harness/checking/source_calls.hpp"
 #include "harness/reports/report.hpp"
 
 #include "tests/harness/harness_support.hpp"

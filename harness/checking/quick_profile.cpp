@@ -1,4 +1,4 @@
-#include "harness/engine/quick_profile.hpp"
+#include "harness/checking/quick_profile.hpp"
 
 #include "core/data_path.hpp"
 

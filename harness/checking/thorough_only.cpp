@@ -1,4 +1,4 @@
-#include "harness/engine/thorough_only.hpp"
+#include "harness/checking/thorough_only.hpp"
 
 #include "core/data_path.hpp"
 

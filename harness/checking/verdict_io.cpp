@@ -1,4 +1,4 @@
-#include "harness/engine/verdict_io.hpp"
+#include "harness/checking/verdict_io.hpp"
 
 #include <cmath>
 #include <stdexcept>

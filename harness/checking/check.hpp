@@ -7,8 +7,8 @@
 // in a scalar the subject has no instantiation for, gets a NOT PROVIDED verdict with the reason.
 #pragma once
 
-#include "harness/engine/check_events.hpp"
-#include "harness/engine/first_fix.hpp"
+#include "harness/checking/check_events.hpp"
+#include "harness/checking/first_fix.hpp"
 #include "harness/isolation/process_cpu.hpp"
 #include "harness/languages/language.hpp"
 #include "harness/languages/notebook.hpp"
@@ -75,7 +75,7 @@ struct CheckConfig {
   std::set<std::string> only_checks;  // only these "property/scalar" (empty: all): --quick
   std::string selection_note;         // said with the selection (the quick profile's provenance)
   // Left out and listed as such ("property/scalar"): the costly 50-digit runs an implementation
-  // behind the protocol leaves to --thorough (harness/engine/thorough_only.hpp), and why.
+  // behind the protocol leaves to --thorough (harness/checking/thorough_only.hpp), and why.
   std::set<std::string> thorough_only;
   std::string thorough_only_note;
   // Why run.case_factor is below 1 when the user did not choose it (the matrix's factor, for an
@@ -107,7 +107,7 @@ std::string check_key(const Verdict& v);
 std::set<std::string> failed_checks_in_report(const std::string& dir);
 
 // What a claim of an integrator is found to be, decided once from the verdicts of the checks that
-// judge it (harness/engine/integrator_verdicts.hpp); every view (the console's claims block,
+// judge it (harness/checking/integrator_verdicts.hpp); every view (the console's claims block,
 // report.md, verdicts.json, the class summary, the gradebook) shows this record.
 enum class ClaimStatus {
   Verified,         // claimed: every check that judges it ran all its cases and passed
@@ -140,7 +140,7 @@ struct IntegratorInfo {
   std::vector<std::string> steps;        // "rigid_body_step", "manakov_step"
   std::vector<std::string> scalars;      // the scalars it is instantiated in
   StateForm form;                        // the form it keeps the rigid body's state in (core/state_form.hpp)
-  std::vector<ClaimDecision> decisions;  // decided at the end of the check (harness/engine/integrator_verdicts.hpp)
+  std::vector<ClaimDecision> decisions;  // decided at the end of the check (harness/checking/integrator_verdicts.hpp)
   // The precision its checks judged it at (properties/support/step_precision.hpp), from its verdicts:
   // "float" with how it is known ("stated: ...", "detected: ..."); empty when it computes in its scalar.
   std::string judged_precision, judged_precision_how;
@@ -176,7 +176,7 @@ struct CheckResult {
   // in a full run. Non-empty means the check fails.
   std::vector<std::string> unchecked;
   // The slots to fix first, decided once when the verdicts are complete (decide_first_fixes,
-  // harness/engine/first_fix.hpp); every view renders them.
+  // harness/checking/first_fix.hpp); every view renders them.
   RootCauses first_fixes;
 
   int count(Outcome o) const;

@@ -1,4 +1,4 @@
-#include "harness/engine/source_calls.hpp"
+#include "harness/checking/source_calls.hpp"
 
 #include "core/subject.hpp"
 

@@ -1,7 +1,7 @@
-#include "harness/engine/trajectory.hpp"
+#include "harness/checking/trajectory.hpp"
 
-#include "harness/engine/first_fix.hpp"
-#include "harness/engine/integrator_verdicts.hpp"
+#include "harness/checking/first_fix.hpp"
+#include "harness/checking/integrator_verdicts.hpp"
 
 #include "harness/trajectories/reference_flow.hpp"
 

@@ -1,7 +1,7 @@
-#include "harness/engine/first_fix.hpp"
+#include "harness/checking/first_fix.hpp"
 
-#include "harness/engine/check.hpp"
-#include "harness/engine/source_calls.hpp"
+#include "harness/checking/check.hpp"
+#include "harness/checking/source_calls.hpp"
 
 #include "properties/registry.hpp"
 

@@ -1,7 +1,7 @@
-#include "harness/engine/portrait.hpp"
+#include "harness/checking/portrait.hpp"
 
-#include "harness/engine/trajectory.hpp"
-#include "harness/engine/verdict_io.hpp"
+#include "harness/checking/trajectory.hpp"
+#include "harness/checking/verdict_io.hpp"
 #include "harness/trajectories/reference_flow.hpp"
 
 #include "properties/support/loglog_fit.hpp"

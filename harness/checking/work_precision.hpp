@@ -24,7 +24,7 @@
 // the SVGs as figures/work-precision.csv (work_precision_csv).
 #pragma once
 
-#include "harness/engine/portrait.hpp"
+#include "harness/checking/portrait.hpp"
 
 #include <optional>
 #include <string>
