@@ -28,6 +28,7 @@
 #include "harness/program/build.hpp"
 #include "harness/program/cli.hpp"
 #include "harness/program/library_flags.hpp"
+#include "harness/program/report_tail.hpp"
 #include "harness/program/student_registry.hpp"
 #include "harness/remote/protocol_codec.hpp"
 #include "harness/remote/remote_subject.hpp"
@@ -158,22 +159,7 @@ int run_trajectory_check(const std::vector<std::string>& files, const harness::T
   try {
     cat = load_catalogue(default_catalogue_path());
   } catch (const std::exception&) {}
-  if (quiet)
-    std::cout << r.subject << ": " << r.verdict_word() << " (" << r.count(Outcome::Pass) << " PASS, "
-              << r.count(Outcome::Fail) << " FAIL)\n";
-  else
-    std::cout << harness::console_report(r, cat ? &*cat : nullptr);
-  try {
-    if (!report_dir.empty()) {
-      harness::write_report_dir(r, report_dir, cat ? &*cat : nullptr);
-      std::cout << "report: " << report_dir << "/report.md\n";
-    }
-    if (!junit.empty()) harness::write_file_atomically(junit, harness::junit_report(r));
-  } catch (const std::exception& e) {
-    std::cerr << "geomech: " << e.what() << "\n";
-    return 2;
-  }
-  return r.exit_code();
+  return harness::finish_check(r, cat ? &*cat : nullptr, harness::ReportTail{quiet, report_dir, junit});
 }
 
 int run_list() {

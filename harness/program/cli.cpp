@@ -1,6 +1,7 @@
 #include "harness/program/cli.hpp"
 #include "harness/checking/quick_profile.hpp"
 #include "harness/checking/thorough_only.hpp"
+#include "harness/program/report_tail.hpp"
 
 #include "harness/isolation/process.hpp"
 #include "harness/reports/console_stream.hpp"
@@ -138,7 +139,7 @@ CheckConfig config_from(const CheckCliOptions& o) {
   c.jobs = o.jobs;
   c.memory_limit_mb = o.memory_limit_mb;
   c.isolate = !o.no_isolation;
-  c.portraits = !o.no_portraits && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty();
+  c.portraits = !o.no_portraits && !o.selects_properties();
   if (o.quick) {
     try {
       const QuickSelection q = load_quick_profile(default_quick_profile_path());
@@ -206,8 +207,7 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
   streaming.failed_before = failed_checks_in_report(o.report_dir);
   // Behind the protocol, the whole check leaves its costliest 50-digit runs to --thorough
   // (a selection by name, a replay or --quick runs what it names).
-  if (info.out_of_process && !o.thorough && o.properties.empty() && o.spec_prefix.empty() && o.reproduce.empty() &&
-      !o.quick && !o.definitions_only) {
+  if (info.out_of_process && !o.thorough && !o.selects_properties() && !o.quick && !o.definitions_only) {
     try {
       const ThoroughOnlySelection t = load_thorough_only(default_thorough_only_path());
       streaming.thorough_only = t.checks;
@@ -234,28 +234,7 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
               << console.failures_printed() << (console.failures_printed() == 1 ? " failure" : " failures") << "\n";
     return r.exit_code();
   }
-  if (o.quiet) {
-    std::cout << r.subject << ": " << r.verdict_word() << " (" << report_parts::summary_counts(r) << ")"
-              << (r.left_to_thorough.empty()
-                      ? ""
-                      : "; " + std::to_string(r.left_to_thorough.size()) + " costly 50-digit runs left to --thorough")
-              << "\n";
-    for (const auto& u : r.unchecked) std::cout << "UNCHECKED: " << u << "\n";  // why it is not a pass
-  } else {
-    std::cout << console_report(r, c);
-  }
-  int status = r.exit_code();
-  try {
-    if (!o.report_dir.empty()) {
-      write_report_dir(r, o.report_dir, c);
-      std::cout << "report: " << o.report_dir << "/report.md (JUnit: " << o.report_dir << "/junit.xml)\n";
-    }
-    if (!o.junit.empty()) write_file_atomically(o.junit, junit_report(r));
-  } catch (const std::exception& e) {
-    std::cerr << "geomech: " << e.what() << "\n";
-    status = 2;
-  }
-  return status;
+  return finish_check(r, c, ReportTail{o.quiet, o.report_dir, o.junit});
 }
 
 }  // namespace gm::harness

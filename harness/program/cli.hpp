@@ -44,6 +44,12 @@ struct CheckCliOptions {
   // Also the costly 50-digit runs that an implementation behind the protocol otherwise leaves out
   // (harness/checking/thorough_only.hpp); nothing changes for an implementation linked in.
   bool thorough = false;
+
+  // Its properties are a selection (by name, by catalogue entry, or a replay's one check), not all.
+  bool selects_properties() const { return !properties.empty() || !spec_prefix.empty() || !reproduce.empty(); }
+  // Narrowed: not the whole suite (a selection of properties, one scalar, one integrator, a replay).
+  // A narrowed check writes its report only when asked, so that a replay never replaces the full one.
+  bool narrowed() const { return selects_properties() || scalar != "all" || !integrator.empty(); }
 };
 
 void add_check_options(CLI::App& app, CheckCliOptions& o);

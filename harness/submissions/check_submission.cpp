@@ -46,8 +46,7 @@ int run_student_check(const SubmissionRequest& r, SubmissionOutcome& out) {
   const std::string reproduce = r.reproduce_prefix.empty()
                                     ? r.front_door + " check " + shell_quote(file) + replay_build_options(bo)
                                     : r.reproduce_prefix;
-  const bool narrowed_run = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" ||
-                            !o.integrator.empty() || !o.reproduce.empty() || o.definitions_only;
+  const bool narrowed_run = o.narrowed() || o.definitions_only;
   // The first look: from an empty cache the pieces of the file take 11-20 s of compiles. The
   // double slots alone compile first, in two pieces on two cores, and their program checks every
   // slot's own definition in double, its failures printed as they come, while the integrators and
@@ -108,9 +107,7 @@ int run_student_check(const SubmissionRequest& r, SubmissionOutcome& out) {
             << std::setprecision(1) << b.seconds << " s\n";
   // A full check writes its report by default; a narrowed one (a replay, one property) only when asked,
   // so that replaying a failure never replaces the full report.
-  const bool narrowed = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" || !o.integrator.empty() ||
-                        !o.reproduce.empty();
-  if (o.report_dir.empty() && !narrowed) o.report_dir = "geomech-reports/" + b.name;
+  if (o.report_dir.empty() && !o.narrowed()) o.report_dir = "geomech-reports/" + b.name;
   std::vector<std::string> argv{b.program};
   const auto args = to_args(o);
   argv.insert(argv.end(), args.begin(), args.end());
@@ -212,9 +209,7 @@ int run_protocol_check(const SubmissionRequest& r, const std::vector<std::string
   std::cerr << "geomech: " << language << " implementation " << file << " started and described itself in "
             << std::fixed << std::setprecision(2)
             << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s\n";
-  const bool narrowed = !o.properties.empty() || !o.spec_prefix.empty() || o.scalar != "all" || !o.integrator.empty() ||
-                        !o.reproduce.empty();
-  if (o.report_dir.empty() && !narrowed) o.report_dir = "geomech-reports/" + name;
+  if (o.report_dir.empty() && !o.narrowed()) o.report_dir = "geomech-reports/" + name;
   const auto check_start = std::chrono::steady_clock::now();
   const int status = run_check_cli(s, info, o);
   out.check_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - check_start).count();

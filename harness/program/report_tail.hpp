@@ -1,0 +1,23 @@
+// The end of every command that checks (geomech check, a student's check program, check-trajectory):
+// the console's report, or under --quiet one line (the verdict, its counts, the costly runs left to
+// --thorough, and each UNCHECKED reason, which is why it is not a pass); then the report folder and
+// the JUnit file written, each named.
+#pragma once
+
+#include "harness/checking/check.hpp"
+#include "spec/catalogue.hpp"
+
+#include <string>
+
+namespace gm::harness {
+
+struct ReportTail {
+  bool quiet = false;
+  std::string report_dir;  // report.md, junit.xml, verdicts.json, figures/ (empty: none)
+  std::string junit;       // also the JUnit XML here (empty: none)
+};
+
+// The check's exit status; 2 when a file cannot be written (said on stderr, with the reason).
+int finish_check(const CheckResult& r, const Catalogue* catalogue, const ReportTail& tail);
+
+}  // namespace gm::harness
