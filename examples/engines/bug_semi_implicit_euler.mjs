@@ -11,6 +11,7 @@
 //   q (0, Omega)): "your quaternion q = (x, y, z, w) turns with the body's Omega on the left".
 // - MatrixSpatialMomentum: pi rebuilt with the attitude before the turn: "your pi ... follows dpi/dt".
 
+// geomech: beside semi_implicit_euler.mjs
 import {
   matvec, tmatvec, qmul, normalised, rotation, axis_angle, matmul, body_velocity_step, advance,
   heap, AT, store, rowsAt, PRECISION_REASON,

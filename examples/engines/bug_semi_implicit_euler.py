@@ -7,6 +7,7 @@ engines get them wrong. Each keeps its declared form; the suite names the form i
   q (0, Omega)): "your quaternion q = (x, y, z, w) turns with the body's Omega on the left".
 - MatrixSpatialMomentum: pi rebuilt with the attitude before the turn: "your pi ... follows dpi/dt".
 """
+# geomech: beside semi_implicit_euler.py
 from semi_implicit_euler import (matvec, tmatvec, qmul, normalised, rotation, axis_angle, matmul,
                                  body_velocity_step)
 

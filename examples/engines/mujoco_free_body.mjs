@@ -51,8 +51,9 @@ function model(I, h, integrator) {
   return m;
 }
 
-// One mj_step from (q, Omega): the body at the origin, at rest in translation.
-function step(integrator, I, x, h) {
+// One mj_step from (q, Omega): the body at the origin, at rest in translation. Exported for
+// mujoco_step_server.mjs, which serves it to a wrapper in another language.
+export function mujoco_step(integrator, I, x, h) {
   if (!(h > 0)) throw new RangeError(`MuJoCo's timestep must be positive, got ${h}`);
   const { model: m, data: d } = model(I, h, integrator);
   mujoco.mj_resetData(m, d);
@@ -70,7 +71,7 @@ function integrator(name, claims) {
     precision: "double",
     precision_reason: "MuJoCo's mjtNum is double, in its WebAssembly build too",
     claims,
-    rigid_body_step: (I, x, h) => step(name, I, x, h),
+    rigid_body_step: (I, x, h) => mujoco_step(name, I, x, h),
   };
 }
 

@@ -1,6 +1,8 @@
 // Buggy: Euler's equations with the cross product reversed, dPi/dt = Omega x Pi (the notes'
 // (3.8) is dPi/dt = Pi x Omega). Everything else is correct.mjs. Caught by euler_form_3_8.
 //   ./geomech check examples/students/bug_euler_sign.mjs
+// The file it builds on is part of it (shown with it behind the sandbox, --untrusted):
+// geomech: beside correct.mjs
 export * from "./correct.mjs";
 
 export const description = "Euler's equations with the cross product reversed (examples/students/bug_euler_sign.mjs)";

@@ -149,8 +149,20 @@ std::string kernels_in_words();
 // the file is of no served language. `language` receives its id, `why` what is missing.
 std::vector<std::string> server_command(const std::string& file, std::string* language, std::string* why);
 
+// The files a served file names as its own, beside it in its folder: one `<comment>geomech: beside
+// NAME` line each, in the row's comment syntax ("# geomech: beside node_server.mjs"). A wrapper's own
+// files (a Node server a Python file starts, a module a JavaScript file imports) are part of it:
+// behind the sandbox they are shown with it, read as a stranger's files are (never through a link).
+// NAME is a plain file name (letters, digits, . _ -, not first a .); a line naming anything else (a
+// path, "..") throws std::invalid_argument with its line, as the code's own mistake.
+std::vector<std::string> beside_files(const Language& language, const std::string& source);
+
 // A program as PATH finds it (absolute), or "" when it is not there; a name with a '/' as given.
 std::string on_path(const std::string& program);
+
+// A row's interpreter: the one its variable names ($GEOMECH_PYTHON; a bare name as PATH finds it),
+// else `program` first on PATH (a venv's, nvm's), else `fallback` (the system's, or the bare name).
+std::string interpreter_named(const char* variable, const std::string& program, const std::string& fallback);
 
 // Line and column (from 1) of a byte offset into a text.
 std::pair<int, int> line_and_column(const std::string& text, std::size_t offset);
@@ -160,8 +172,5 @@ std::pair<int, int> line_and_column(const std::string& text, std::size_t offset)
 // ("Mat3<T>"). For the rows' signature printers.
 std::vector<std::pair<std::string, std::string>> slot_parameters(const std::string& cpp_signature);
 std::string slot_result_type(const std::string& cpp_signature);
-// A row's interpreter: the one its variable names ($GEOMECH_PYTHON; a bare name as PATH finds it),
-// else `program` first on PATH (a venv's, nvm's), else `fallback` (the system's, or the bare name).
-std::string interpreter_named(const char* variable, const std::string& program, const std::string& fallback);
 
 }  // namespace gm::harness

@@ -8,6 +8,9 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
+#include <regex>
+#include <set>
+#include <stdexcept>
 
 namespace gm::harness {
 
@@ -36,6 +39,37 @@ const Language* language_of(const std::string& path) {
     for (const auto& l : languages())
       if (l.folder_of_files) return &l;
   return nullptr;
+}
+
+std::vector<std::string> beside_files(const Language& language, const std::string& source) {
+  std::string comment = language.comment;
+  while (!comment.empty() && comment.back() == ' ') comment.pop_back();
+  if (comment.empty()) return {};
+  static const std::regex plain(R"(^[A-Za-z0-9_-][A-Za-z0-9._-]*$)");
+  const std::string key = "geomech: beside";
+  std::set<std::string> names;
+  std::size_t start = 0;
+  for (int line = 1; start <= source.size(); ++line) {
+    const std::size_t end = std::min(source.find('\n', start), source.size());
+    std::string text = source.substr(start, end - start);
+    start = end + 1;
+    if (!text.empty() && text.back() == '\r') text.pop_back();
+    const std::size_t first = text.find_first_not_of(" \t");
+    if (first == std::string::npos || text.compare(first, comment.size(), comment) != 0) continue;
+    std::size_t at = text.find_first_not_of(" \t", first + comment.size());
+    if (at == std::string::npos || text.compare(at, key.size(), key) != 0) continue;
+    at += key.size();
+    const std::size_t name_at = text.find_first_not_of(" \t", at);
+    if (name_at == at || name_at == std::string::npos) continue;  // "geomech: besides", or nothing named
+    std::string name = text.substr(name_at);
+    while (!name.empty() && (name.back() == ' ' || name.back() == '\t')) name.pop_back();
+    if (name.size() > 255 || !std::regex_match(name, plain))
+      throw std::invalid_argument("line " + std::to_string(line) + ": `geomech: beside " + name +
+                                  "` names no file beside this one: a file of this folder is named by its name "
+                                  "alone (letters, digits, . _ -), never a path");
+    names.insert(name);
+  }
+  return {names.begin(), names.end()};
 }
 
 std::string interpreter_named(const char* variable, const std::string& program, const std::string& fallback) {

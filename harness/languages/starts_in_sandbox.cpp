@@ -4,6 +4,7 @@
 #include "harness/isolation/sandbox.hpp"
 #include "harness/isolation/sandboxed_interpreter.hpp"
 
+#include <cctype>
 #include <filesystem>
 
 namespace gm::harness {
@@ -26,9 +27,11 @@ std::string interpreter_start_problem(const Language& language) {
   const ProcessResult r = run_process(ProcessSpec{sandboxed(argv, spec), {}, false}, 60);
   if (r.started && r.exit_code == 0) return "";
   const std::string who = sandbox_uid() == 65534 ? "nobody" : "this user";
+  std::string said = r.output.substr(0, 600);
+  while (!said.empty() && std::isspace(static_cast<unsigned char>(said.back()))) said.pop_back();
   return "the " + language.name + " interpreter " + si.program + " does not start in the sandbox (as " + who +
-         "): " + r.output.substr(0, 600) + ". Fix: " + language.interpreter_variable + "=" +
-         language.system_interpreter + " (the system's), or an interpreter whose folders every user may read";
+         "): " + said + ". Fix: " + language.interpreter_variable + "=" + language.system_interpreter +
+         " (the system's), or an interpreter whose folders every user may read";
 }
 
 }  // namespace gm::harness

@@ -9,11 +9,13 @@
 #include "harness/isolation/submission_intake.hpp"
 #include "harness/languages/language.hpp"
 #include "harness/languages/notebook.hpp"
+#include "harness/languages/starts_in_sandbox.hpp"
 #include "harness/program/library_flags.hpp"
 #include "harness/program/student_registry.hpp"
 #include "harness/remote/remote_subject.hpp"
 #include "harness/reports/report.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -297,9 +299,145 @@ bool show_named_packages(const Language& l, const std::string& source, SandboxSp
                 " --prefix DIR` and GEOMECH_LIBRARY_ROOTS=DIR";
       return false;
     }
-    spec.mounts.emplace_back(found, "/" + l.package_folder + "/" + name);
+    const std::pair<std::string, std::string> mount(found, "/" + l.package_folder + "/" + name);
+    if (std::find(spec.mounts.begin(), spec.mounts.end(), mount) == spec.mounts.end()) spec.mounts.push_back(mount);
   }
   return true;
+}
+
+// The files a served file names as its own (`geomech: beside NAME`, harness/languages/language.hpp),
+// copied with it into /submission as a stranger's files are (never through a link, never a device,
+// within the intake's limits); the paths here of each. A file named and not there, or a name that is
+// a path, is the code's mistake: std::invalid_argument (RefusedEntry for an entry the intake refuses).
+std::vector<std::string> add_beside_files(const Language& l, const std::string& file, PrivateCopy& copy) {
+  namespace fs = std::filesystem;
+  const fs::path p = fs::path(file).lexically_normal();
+  const fs::path folder = p.has_parent_path() ? p.parent_path() : fs::path(".");
+  std::vector<std::string> added;
+  for (const auto& name : beside_files(l, read_stranger_file(file))) {
+    const fs::path beside = folder / name;
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(beside, ec)))
+      throw std::invalid_argument("`geomech: beside " + name + "` names a file that is not beside it (no " +
+                                  beside.string() + ")");
+    (void)copy.add(beside.string(), "submission");
+    added.push_back(beside.string());
+  }
+  return added;
+}
+
+// What the sandbox is given for a served file (or a notebook's cells file, `notebook`): its
+// interpreter shown read-only (a venv, pyenv: harness/isolation/sandboxed_interpreter.hpp), the server
+// script and the file (or folder) copied (the last two arguments of `cmd`), the files it names beside
+// it, the runtimes they need started once inside, and the packages each names. 0 when all is ready;
+// else the exit status, said on stderr: the grader's machine (kExitMachine, out.machine_fault set)
+// or the code's own mistake (2).
+int prepare_served(const std::string& file, const Language* served, bool notebook, std::vector<std::string>& cmd,
+                   SandboxSpec& spec, PrivateCopy& copy, SubmissionOutcome& out) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  // Python or Octave: the interpreter and its libraries are in /usr, or shown read-only where they
+  // are (a venv, pyenv: harness/isolation/sandboxed_interpreter.hpp); the server script and the student's
+  // file (or folder) are the last two arguments.
+  if (cmd.size() > 2 && served && served->for_sandbox) {
+    const SandboxedInterpreter si = served->for_sandbox(cmd[0]);
+    if (!si.error.empty()) {  // the grader's set-up, not the submission
+      std::cerr << "geomech check: " << file << ": the grader's machine: " << si.error << "\n";
+      out.machine_fault = "the grader's machine: " + si.error;
+      return kExitMachine;
+    }
+    cmd[0] = si.program;
+    spec.read_only.insert(spec.read_only.end(), si.read_only.begin(), si.read_only.end());
+  }
+  // A served file with the files it names beside it (a wrapper's Node server, a module it imports).
+  std::vector<std::string> own;
+  try {
+    cmd[cmd.size() - 2] = copy.add(cmd[cmd.size() - 2], "geomech");
+    cmd.back() = copy.add(cmd.back(), "submission");
+    if (served && !notebook && fs::is_regular_file(file, ec)) {
+      own = {file};
+      for (auto& b : add_beside_files(*served, file, copy)) own.push_back(std::move(b));
+    }
+  } catch (const RefusedEntry& e) {
+    std::cerr << "geomech check: " << inert_text(e.what()) << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+    return 2;
+  }
+  // The runtimes they need start inside the sandbox (the served file's, and each own file's: a
+  // Python wrapper's Node server), or the grader's machine is at fault, never the code.
+  std::vector<const Language*> runtimes{served};
+  for (const auto& f : own)
+    if (const Language* l = language_of(f); l && l->route == Route::Served) runtimes.push_back(l);
+  for (std::size_t i = 0; i < runtimes.size(); ++i) {
+    if (!runtimes[i] || std::find(runtimes.begin(), runtimes.begin() + i, runtimes[i]) != runtimes.begin() + i)
+      continue;
+    if (const std::string problem = interpreter_start_problem(*runtimes[i]); !problem.empty()) {
+      std::cerr << "geomech check: " << file << ": the grader's machine: " << problem << "\n";
+      out.machine_fault = "the grader's machine: " + problem;
+      return kExitMachine;
+    }
+    // Another runtime an own file needs is shown as the served one's is, and named to the wrapper
+    // by its variable (GEOMECH_NODE=/usr/bin/node), as outside the sandbox.
+    if (i > 0 && runtimes[i]->for_sandbox && runtimes[i]->interpreter) {
+      const SandboxedInterpreter si = runtimes[i]->for_sandbox(runtimes[i]->interpreter());
+      spec.read_only.insert(spec.read_only.end(), si.read_only.begin(), si.read_only.end());
+      spec.env.emplace_back(runtimes[i]->interpreter_variable, si.program);
+    }
+  }
+  // The packages each of them names, by its own language's row.
+  for (const auto& f : own) {
+    const Language* l = language_of(f);
+    std::string missing;
+    if (l && l->named_packages && !show_named_packages(*l, read_stranger_file(f), spec, missing)) {
+      std::cerr << "geomech check: " << f << ": the grader's machine: " << missing << "\n";
+      out.machine_fault = "the grader's machine: " + missing;
+      return kExitMachine;
+    }
+  }
+  return 0;
+}
+
+// A compiled submission behind the sandbox: compiled (sandboxed too) into a protocol server that
+// links the student's code and nothing of the judge, copied for the sandbox (`cmd`), with its
+// libraries under a folder the grader trusts shown read-only. 0 when ready; else the exit status,
+// said on stderr: a file that does not compile (2, out.built false), the grader's machine
+// (kExitMachine).
+int prepare_compiled(const std::string& file, const Language& l, BuildOptions& bo, std::vector<std::string>& cmd,
+                     nlohmann::json& notes, std::string& language, SandboxSpec& spec, PrivateCopy& copy,
+                     SubmissionOutcome& out) {
+  const Toolchain tc = load_toolchain(default_toolchain_path());
+  bo.server = true;
+  bo.sandbox = true;
+  const BuildResult b = build_student(file, tc, bo);
+  for (const auto& line : b.log) std::cerr << "geomech: " << line << " (sandboxed)\n";
+  out.build_seconds = b.seconds;
+  if (!b.ok) {
+    std::cerr << "geomech check: " << file << ": " << b.message << "\n";
+    if (!b.machine_fault.empty()) {  // the sandbox could not start the compiler: the set-up's
+      out.machine_fault = b.machine_fault;
+      return kExitMachine;
+    }
+    out.built = false;
+    out.build_message = b.message;
+    return 2;
+  }
+  std::cerr << "geomech: built " << b.name << "'s protocol server" << (b.cached ? " (up to date)" : "") << " in "
+            << std::fixed << std::setprecision(1) << b.seconds << " s\n";
+  notes = b.notes;
+  language = l.id;
+  // Its libraries under a folder the grader trusts are loaded inside the sandbox (build_student vetted it).
+  for (const auto& root : trusted_library_roots()) spec.read_only.push_back(root);
+  try {
+    cmd = {copy.add(b.program, "submission", IntakeLimits{}.program_bytes)};
+  } catch (const std::exception& e) {
+    std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+    return 2;
+  }
+  for (const auto& f : tc.flags)
+    if (f.find("-fsanitize=") == 0 && f.find("address") != std::string::npos) spec.limits.memory_mb = 0;
+  return 0;
 }
 
 int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
@@ -368,66 +506,11 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
     return 2;
   }
   if (!cmd.empty()) {
-    // Python or Octave: the interpreter and its libraries are in /usr, or shown read-only where they
-    // are (a venv, pyenv: harness/isolation/sandboxed_interpreter.hpp); the server script and the student's
-    // file (or folder) are the last two arguments.
-    const Language* served = nb ? &nb->language() : language_of(file);
-    if (cmd.size() > 2 && served && served->for_sandbox) {
-      const SandboxedInterpreter si = served->for_sandbox(cmd[0]);
-      if (!si.error.empty()) {  // the grader's set-up, not the submission
-        std::cerr << "geomech check: " << file << ": the grader's machine: " << si.error << "\n";
-        out.machine_fault = "the grader's machine: " + si.error;
-        return kExitMachine;
-      }
-      cmd[0] = si.program;
-      spec.read_only.insert(spec.read_only.end(), si.read_only.begin(), si.read_only.end());
-    }
-    try {
-      cmd[cmd.size() - 2] = copy->add(cmd[cmd.size() - 2], "geomech");
-      cmd.back() = copy->add(cmd.back(), "submission");
-    } catch (const std::exception& e) {
-      std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
-      return 2;
-    }
-    if (served && !nb && served->named_packages) {
-      std::string missing;
-      if (!show_named_packages(*served, read_stranger_file(file), spec, missing)) {
-        std::cerr << "geomech check: " << file << ": the grader's machine: " << missing << "\n";
-        out.machine_fault = "the grader's machine: " + missing;
-        return kExitMachine;
-      }
-    }
+    if (const int status =
+            prepare_served(file, nb ? &nb->language() : language_of(file), nb.has_value(), cmd, spec, *copy, out))
+      return status;
   } else if (const Language* l = language_of(file); l && l->route == Route::Compiled) {
-    const Toolchain tc = load_toolchain(default_toolchain_path());
-    bo.server = true;
-    bo.sandbox = true;
-    const BuildResult b = build_student(file, tc, bo);
-    for (const auto& line : b.log) std::cerr << "geomech: " << line << " (sandboxed)\n";
-    out.build_seconds = b.seconds;
-    if (!b.ok) {
-      std::cerr << "geomech check: " << file << ": " << b.message << "\n";
-      if (!b.machine_fault.empty()) {  // the sandbox could not start the compiler: the set-up's
-        out.machine_fault = b.machine_fault;
-        return kExitMachine;
-      }
-      out.built = false;
-      out.build_message = b.message;
-      return 2;
-    }
-    std::cerr << "geomech: built " << b.name << "'s protocol server" << (b.cached ? " (up to date)" : "") << " in "
-              << std::fixed << std::setprecision(1) << b.seconds << " s\n";
-    notes = b.notes;
-    language = l->id;
-    // Its libraries under a folder the grader trusts are loaded inside the sandbox (build_student vetted it).
-    for (const auto& root : trusted_library_roots()) spec.read_only.push_back(root);
-    try {
-      cmd = {copy->add(b.program, "submission", IntakeLimits{}.program_bytes)};
-    } catch (const std::exception& e) {
-      std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
-      return 2;
-    }
-    for (const auto& f : tc.flags)
-      if (f.find("-fsanitize=") == 0 && f.find("address") != std::string::npos) spec.limits.memory_mb = 0;
+    if (const int status = prepare_compiled(file, *l, bo, cmd, notes, language, spec, *copy, out)) return status;
   } else {
     std::cerr << "geomech check: " << file << ": not a " << extensions_in_words() << " file" << folder_in_words()
               << "\n";

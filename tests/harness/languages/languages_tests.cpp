@@ -10,6 +10,9 @@
 #include <gtest/gtest.h>
 
 #include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace gm::harness {
 namespace {
@@ -104,6 +107,27 @@ TEST(LanguageRows, SourceIsReadByItsRow) {
             (std::vector<std::string>{"@dimforge/rapier3d", "mujoco-js"}));
   EXPECT_TRUE(js.named_packages("const s = 'x'; // geomech: npm mujoco-js\n").empty());
   EXPECT_EQ(language_named("python")->named_packages, nullptr);
+}
+
+// The files a served file names as its own, in its row's comment syntax; a path is the code's
+// mistake, with its line; the controls: another language's comment, a line that only mentions it.
+TEST(LanguageRows, BesideFilesAreNamedInTheRowsCommentSyntax) {
+  const Language& py = *language_named("python");
+  const Language& js = *language_named("javascript");
+  EXPECT_EQ(beside_files(py, "# geomech: beside step_server.mjs\n#geomech: beside helpers.py\r\nimport os\n"),
+            (std::vector<std::string>{"helpers.py", "step_server.mjs"}));
+  EXPECT_EQ(beside_files(js, "// geomech: beside correct.mjs\nexport * from './correct.mjs';\n"),
+            (std::vector<std::string>{"correct.mjs"}));
+  EXPECT_TRUE(beside_files(js, "# geomech: beside correct.mjs\n").empty());
+  EXPECT_TRUE(beside_files(py, "x = 1  # geomech: beside other.py\n# geomech: besides other.py\n").empty());
+  for (const char* bad : {"import os\n# geomech: beside ../secret.py\n", "# geomech: beside /etc/passwd\n",
+                          "# geomech: beside .hidden\n", "# geomech: beside sub/file.py\n"})
+    EXPECT_THROW((void)beside_files(py, bad), std::invalid_argument) << bad;
+  try {
+    (void)beside_files(py, "import os\n# geomech: beside ../secret.py\n");
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("line 2: `geomech: beside ../secret.py`"), std::string::npos) << e.what();
+  }
 }
 
 // `geomech slots --<id>`: each row writes a slot's signature in its language.
