@@ -47,7 +47,9 @@ def cell(text):
 def cause_of(claim, integrator, messages):
     """What the check that decided a failing claim says of it, in the words of its first line: for a
     step whose own equation differs from the notes', the clause that names the difference ("the
-    gyroscopic term (I Omega) x Omega is missing"); else the line itself (its measurement)."""
+    gyroscopic term (I Omega) x Omega is missing", read by the check at the failing input); when the
+    check found the equation right and named no cause, "cause not identified" with the measurement;
+    else the line itself."""
     why = claim["why"]  # "integrator_order [double]", the check that decided it
     if " [" not in why:
         return ""
@@ -57,7 +59,8 @@ def cause_of(claim, integrator, messages):
     first = lines[0]
     if first.startswith("the step's own equation:"):
         if "the equation is not the cause" in first and len(lines) > 1:  # then the measurement is the finding
-            return "its field is the notes' (" + re.sub(r"^false claim '[^']*': [^:]*: ", "", lines[1]) + ")"
+            return ("cause not identified (its field follows the notes'; the evidence: " +
+                    re.sub(r"^false claim '[^']*': [^:]*: ", "", lines[1]) + ")")
         return brief(first.split("; in the notes'", 1)[0].split(": ")[-1])
     return brief(first_clause(first))[:300]
 
