@@ -57,6 +57,18 @@ class SignalHold {
   sigset_t set_, old_;
 };
 
+// Says how long a fixture took to generate, method by method, and how closely its checks agree.
+void report_generation(const std::string& name, const GenerationReport& rep, std::ostream& err) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.2f s", rep.seconds);
+  err << name << ": " << buf << " (";
+  for (std::size_t i = 0; i < rep.timings.size(); ++i) {
+    std::snprintf(buf, sizeof buf, "%.2f s", rep.timings[i].seconds);
+    err << (i ? ", " : "") << rep.timings[i].method << " " << buf;
+  }
+  err << "); checks agree to " << rep.max_abs_diff << " (required <= " << rep.allowed << ")\n";
+}
+
 }  // namespace
 
 void write_file_atomically(const std::string& path, const std::string& text) {
@@ -148,6 +160,53 @@ std::vector<std::string> fixture_differences(const std::string& path, const std:
   return out;
 }
 
+namespace {
+
+// --check: compares each regenerated fixture with the committed one (and, when all are
+// regenerated, looks for committed fixtures no longer generated); the exit status.
+int check_against_committed(const RegenerateOptions& o, const std::string& dir,
+                            const std::vector<std::pair<std::string, std::string>>& texts,
+                            std::chrono::steady_clock::time_point start, std::ostream& out, std::ostream& err) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  int differing = 0;
+  for (const auto& [path, text] : texts) {
+    std::string committed;
+    if (!read_file(path, committed)) {
+      err << path << ": missing (run `./geomech golden regenerate` and commit the file)\n";
+      ++differing;
+      continue;
+    }
+    const auto diffs = fixture_differences(path, committed, text);
+    for (const auto& m : diffs) err << m << "\n";
+    if (!diffs.empty()) ++differing;
+  }
+  if (o.only.empty()) {
+    // A committed fixture that is no longer generated is stale.
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+      const auto p = entry.path();
+      if (p.extension() != ".golden") continue;
+      if (!find_definition(p.stem().string())) {
+        err << p.string() << ": not in the fixture set (golden/catalogue.cpp): remove it or add its definition\n";
+        ++differing;
+      }
+    }
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (differing) {
+    err << "geomech golden regenerate --check: " << differing << " of " << texts.size()
+        << " fixtures differ from their regeneration\n";
+    return 1;
+  }
+  out << "geomech golden regenerate --check: " << texts.size() << " fixture" << (texts.size() == 1 ? "" : "s")
+      << " identical to their regeneration, certificates included: every printed value proved within its "
+         "certified radius ("
+      << static_cast<int>(secs * 100 + 0.5) / 100.0 << " s)\n";
+  return 0;
+}
+
+}  // namespace
+
 int regenerate(const RegenerateOptions& o, std::ostream& out, std::ostream& err) {
   namespace fs = std::filesystem;
   const std::string dir = o.dir.empty() ? default_fixture_dir() : o.dir;
@@ -193,16 +252,7 @@ int regenerate(const RegenerateOptions& o, std::ostream& out, std::ostream& err)
       status = 1;
       continue;
     }
-    if (!o.quiet) {
-      char buf[64];
-      std::snprintf(buf, sizeof buf, "%.2f s", rep.seconds);
-      err << d->name << ": " << buf << " (";
-      for (std::size_t i = 0; i < rep.timings.size(); ++i) {
-        std::snprintf(buf, sizeof buf, "%.2f s", rep.timings[i].seconds);
-        err << (i ? ", " : "") << rep.timings[i].method << " " << buf;
-      }
-      err << "); checks agree to " << rep.max_abs_diff << " (required <= " << rep.allowed << ")\n";
-    }
+    if (!o.quiet) report_generation(d->name, rep, err);
   }
   if (status != 0) {
     err << "geomech golden regenerate: nothing " << (o.check ? "checked" : "written")
@@ -210,42 +260,7 @@ int regenerate(const RegenerateOptions& o, std::ostream& out, std::ostream& err)
     return status;
   }
 
-  if (o.check) {
-    int differing = 0;
-    for (const auto& [path, text] : texts) {
-      std::string committed;
-      if (!read_file(path, committed)) {
-        err << path << ": missing (run `./geomech golden regenerate` and commit the file)\n";
-        ++differing;
-        continue;
-      }
-      const auto diffs = fixture_differences(path, committed, text);
-      for (const auto& m : diffs) err << m << "\n";
-      if (!diffs.empty()) ++differing;
-    }
-    if (o.only.empty()) {
-      // A committed fixture that is no longer generated is stale.
-      for (const auto& entry : fs::directory_iterator(dir, ec)) {
-        const auto p = entry.path();
-        if (p.extension() != ".golden") continue;
-        if (!find_definition(p.stem().string())) {
-          err << p.string() << ": not in the fixture set (golden/catalogue.cpp): remove it or add its definition\n";
-          ++differing;
-        }
-      }
-    }
-    const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    if (differing) {
-      err << "geomech golden regenerate --check: " << differing << " of " << texts.size()
-          << " fixtures differ from their regeneration\n";
-      return 1;
-    }
-    out << "geomech golden regenerate --check: " << texts.size() << " fixture" << (texts.size() == 1 ? "" : "s")
-        << " identical to their regeneration, certificates included: every printed value proved within its "
-           "certified radius ("
-        << static_cast<int>(secs * 100 + 0.5) / 100.0 << " s)\n";
-    return 0;
-  }
+  if (o.check) return check_against_committed(o, dir, texts, start, out, err);
 
   int written = 0;
   {

@@ -621,13 +621,9 @@ std::vector<std::size_t> start_order_of(const SubjectSet& s, const std::vector<I
   return start;
 }
 
-}  // namespace
-
-CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckConfig& cfg) {
-  const auto start = std::chrono::steady_clock::now();
-  // Values and types in failures are written in the implementation's language (support/show.hpp);
-  // the checks' processes inherit it.
-  value_style() = info.language->values;
+// The result's account of the subject before any check runs: its name, description, seed,
+// integrators and the slots it provides in each scalar.
+CheckResult result_of_subject(const SubjectSet& s, const SubjectInfo& info, const CheckConfig& cfg) {
   CheckResult result;
   result.subject = s.name;
   result.description = s.description;
@@ -637,16 +633,12 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   for (ScalarKind k : {ScalarKind::Double, ScalarKind::MP50, ScalarKind::Exact})
     for (const auto& slot : subject_slots())
       if (subject_provides(s, k, slot.name)) result.provided[scalar_name(k)].push_back(slot.name);
+  return result;
+}
 
-  const std::vector<Item> items = select_items(s, cfg, result);
-  say_selection(cfg, result);
-
-  // The order that finds the likely mistake first (schedule).
-  const std::vector<bool> replayed = replayed_items(s, cfg, items);
-  const std::vector<std::size_t> order = schedule(s, items, replayed);
-
-  RunOptions run = cfg.run;
-  run.out_of_process = info.out_of_process;
+// One task per check, in the scheduled order: it runs the property and returns its verdicts as text.
+std::vector<std::function<std::string()>> check_tasks(const SubjectSet& s, const std::vector<Item>& items,
+                                                      const std::vector<std::size_t>& order, const RunOptions& run) {
   std::vector<std::function<std::string()>> tasks;
   for (std::size_t i : order) {
     const Item item = items[i];
@@ -659,17 +651,11 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
       return verdicts_to_string(vs);
     });
   }
-  const std::size_t n_items = tasks.size();
-  auto portrait_tasks = cfg.portraits ? portrait_task_list(s, cfg) : std::vector<PortraitTask>{};
-  if (cfg.portraits)
-    if (auto wp = work_precision_task(s, cfg)) {
-      if (cfg.work_precision_left_out.empty())
-        portrait_tasks.push_back(std::move(*wp));
-      else
-        result.work_precision_left_out = cfg.work_precision_left_out;
-    }
-  for (const auto& pt : portrait_tasks) tasks.push_back(pt.run);
+  return tasks;
+}
 
+// The limits and hooks the checks' processes run under: jobs, timeout, memory, isolation, workers.
+IsolationOptions isolation_options(const SubjectInfo& info, const CheckConfig& cfg) {
   IsolationOptions io;
   io.jobs = cfg.jobs;
   io.timeout_seconds = cfg.timeout_given ? cfg.timeout_seconds : cfg.timeout_seconds * timeout_factor(info);
@@ -689,6 +675,49 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
       io.busy_factor = busy;
     }
   }
+  return io;
+}
+
+// The verdicts in report order: by property, then scalar, then integrator.
+void sort_verdicts(CheckResult& result) {
+  std::stable_sort(result.verdicts.begin(), result.verdicts.end(), [](const Verdict& a, const Verdict& b) {
+    if (a.property != b.property) return a.property < b.property;
+    if (a.scalar != b.scalar) return scalar_rank(a.scalar) < scalar_rank(b.scalar);
+    return a.integrator < b.integrator;
+  });
+}
+
+}  // namespace
+
+CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckConfig& cfg) {
+  const auto start = std::chrono::steady_clock::now();
+  // Values and types in failures are written in the implementation's language (support/show.hpp);
+  // the checks' processes inherit it.
+  value_style() = info.language->values;
+  CheckResult result = result_of_subject(s, info, cfg);
+
+  const std::vector<Item> items = select_items(s, cfg, result);
+  say_selection(cfg, result);
+
+  // The order that finds the likely mistake first (schedule).
+  const std::vector<bool> replayed = replayed_items(s, cfg, items);
+  const std::vector<std::size_t> order = schedule(s, items, replayed);
+
+  RunOptions run = cfg.run;
+  run.out_of_process = info.out_of_process;
+  std::vector<std::function<std::string()>> tasks = check_tasks(s, items, order, run);
+  const std::size_t n_items = tasks.size();
+  auto portrait_tasks = cfg.portraits ? portrait_task_list(s, cfg) : std::vector<PortraitTask>{};
+  if (cfg.portraits)
+    if (auto wp = work_precision_task(s, cfg)) {
+      if (cfg.work_precision_left_out.empty())
+        portrait_tasks.push_back(std::move(*wp));
+      else
+        result.work_precision_left_out = cfg.work_precision_left_out;
+    }
+  for (const auto& pt : portrait_tasks) tasks.push_back(pt.run);
+
+  IsolationOptions io = isolation_options(info, cfg);
   io.start_order = start_order_of(s, items, replayed, order, tasks.size());
 
   // Each check's verdicts the moment it ends, told to the listeners (check_events.hpp).
@@ -737,11 +766,7 @@ CheckResult run_check(const SubjectSet& s, const SubjectInfo& info, const CheckC
   for (std::size_t j = 0; j < portrait_tasks.size(); ++j)
     result.portraits.push_back(portrait_from_task(portrait_tasks[j], results[n_items + j]));
 
-  std::stable_sort(result.verdicts.begin(), result.verdicts.end(), [](const Verdict& a, const Verdict& b) {
-    if (a.property != b.property) return a.property < b.property;
-    if (a.scalar != b.scalar) return scalar_rank(a.scalar) < scalar_rank(b.scalar);
-    return a.integrator < b.integrator;
-  });
+  sort_verdicts(result);
   keep_within_budget(result);
   account_for_slots(result, s, cfg);
   decide_integrator_verdicts(result);  // once; every view renders it

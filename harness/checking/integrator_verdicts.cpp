@@ -259,6 +259,122 @@ bool fails_check(const ClaimDecision& d) {
          d.status == ClaimStatus::NotChecked || d.status == ClaimStatus::DoesNotConverge;
 }
 
+namespace {
+
+using ScalarStates = std::vector<std::pair<std::string, ScalarState>>;
+
+// For a claim that does not hold: the contradicting figure leads the measured ones, and an
+// unclaimed property's counterexample and reproducing command join its why.
+void explain_contradiction(ClaimDecision& d, const CheckResult& r, const std::string& claim,
+                           const ScalarStates& states) {
+  // The figure that contradicts it leads, not a passing check's (a generic order beside a
+  // failing regime's).
+  for (const auto& [s, st] : states)
+    if (st.kind == ScalarState::False && !st.contradicting.empty()) {
+      if (d.measured.find(st.contradicting) == std::string::npos)
+        d.measured = st.contradicting + (d.measured.empty() ? "" : "; elsewhere " + d.measured);
+      else
+        d.measured = st.contradicting;
+      break;
+    }
+  // A property nobody claimed that does not hold carries its counterexample: the check's finding
+  // at its input (support/named_inputs.hpp puts the input in it) and the command that shows it
+  // again.
+  if (d.status == ClaimStatus::DoesNotHold)
+    for (const auto& [s, st] : states)
+      if (st.kind == ScalarState::False && st.contradicted_by) {
+        const Verdict& v = *st.contradicted_by;
+        std::string finding;
+        if (const ClaimFinding* f = finding_of(v, claim)) finding = first_line(f->evidence);
+        d.why = d.why + (finding.empty() ? "" : ": " + finding) + "; reproduce: " + reproduce_command(r, v);
+        break;
+      }
+}
+
+// An unclaimed order's checks that fail (the step does not converge) are FAIL rows: said so.
+void mark_unclaimed_order_failure(ClaimDecision& d, const CheckResult& r, const IntegratorInfo& integ) {
+  for (const auto& v : r.verdicts)
+    if (v.integrator == integ.name && v.outcome == Outcome::Fail && v.step_raised.empty()) {
+      const auto judged = judged_claims(v);
+      if (std::find(judged.begin(), judged.end(), "order") != judged.end()) {
+        d.status = ClaimStatus::DoesNotConverge;
+        d.why = v.property + " [" + v.scalar + "]: " + first_line(v.message);
+        break;
+      }
+    }
+}
+
+// One claim of an integrator decided from its checks' states in every scalar: status, word, why.
+ClaimDecision decide_claim(const CheckResult& r, const IntegratorInfo& integ, const std::string& claim,
+                           const std::vector<std::string>& scalars) {
+  ClaimDecision d;
+  d.claim = claim;
+  d.claimed = claimed_text(integ.claims, claim);
+  bool claimed = d.claimed != "no";
+  // A claim a check reported as made (a trajectory's --order) counts as made.
+  for (const auto& v : r.verdicts)
+    if (v.integrator == integ.name)
+      if (const ClaimFinding* f = finding_of(v, claim); f && f->claimed) claimed = true;
+  if (claimed && d.claimed == "no") d.claimed = "yes";
+  std::vector<std::string> measured;
+  ScalarStates states;
+  for (const auto& s : scalars) {
+    ScalarState st = scalar_state(r, integ, claim, s, d.evidence, measured);
+    if (st.kind != ScalarState::NotApplicable) states.emplace_back(s, st);
+  }
+  d.measured = join(measured, ", ");
+  auto any = [&](ScalarState::Kind k) {
+    return std::any_of(states.begin(), states.end(), [&](const auto& x) { return x.second.kind == k; });
+  };
+  auto first = [&](ScalarState::Kind k) {
+    for (const auto& [s, st] : states)
+      if (st.kind == k) return st.why;
+    return std::string();
+  };
+  // Where not every check of the claim ran (a selection, --thorough): the word says by which it was
+  // decided, and `why` which did not run.
+  std::vector<std::string> partly;
+  for (const auto& [s, st] : states)
+    if (st.kind == ScalarState::NotRun || st.kind == ScalarState::Partial) partly.push_back(st.why);
+  std::vector<std::string> decided;
+  for (const auto& [s, st] : states)
+    if (st.kind == ScalarState::Complete || st.kind == ScalarState::Partial) decided.push_back(s);
+  const std::string qualified = partly.empty() ? "" : " by the checks that ran (" + join(decided, ", ") + ")";
+  const bool order = claim == "order";
+  if (states.empty()) {
+    d.status = claimed ? ClaimStatus::NotChecked : ClaimStatus::None;
+  } else if (any(ScalarState::False)) {
+    d.status = claimed ? ClaimStatus::FalseClaim : order ? ClaimStatus::DoesNotConverge : ClaimStatus::DoesNotHold;
+    d.why = first(ScalarState::False);
+    explain_contradiction(d, r, claim, states);
+  } else if (any(ScalarState::Incomplete)) {
+    d.status = claimed ? ClaimStatus::NotVerified : ClaimStatus::NotEstablished;
+    d.why = first(ScalarState::Incomplete);
+  } else if (decided.empty()) {
+    d.status = claimed ? ClaimStatus::NotRun : ClaimStatus::None;
+    d.why = join(partly, "; ");
+  } else {
+    bool holds = true;
+    for (const auto& [s, st] : states) holds = holds && st.holds;
+    if (claimed)
+      d.status = holds ? ClaimStatus::Verified : ClaimStatus::FalseClaim;
+    else if (order)
+      d.status = holds ? ClaimStatus::Measured : ClaimStatus::DoesNotConverge;
+    else
+      d.status = holds ? ClaimStatus::Holds : ClaimStatus::DoesNotHold;
+  }
+  if (order && !claimed && d.status != ClaimStatus::DoesNotConverge) mark_unclaimed_order_failure(d, r, integ);
+  d.word = status_word(d.status);
+  if (d.status == ClaimStatus::Verified || d.status == ClaimStatus::Holds || d.status == ClaimStatus::Measured) {
+    d.word += qualified;
+    if (!partly.empty()) d.why = "not run: " + join(partly, "; ");
+  }
+  if (d.status == ClaimStatus::NotRun) d.word = "claimed, " + d.why;
+  return d;
+}
+
+}  // namespace
+
 std::vector<ClaimDecision> decide_claims(const CheckResult& r, const IntegratorInfo& integ) {
   std::vector<std::string> names = claim_names();
   for (const auto& v : r.verdicts)
@@ -275,103 +391,7 @@ std::vector<ClaimDecision> decide_claims(const CheckResult& r, const IntegratorI
         scalars.push_back(v.scalar);
   }
   std::vector<ClaimDecision> out;
-  for (const auto& claim : names) {
-    ClaimDecision d;
-    d.claim = claim;
-    d.claimed = claimed_text(integ.claims, claim);
-    bool claimed = d.claimed != "no";
-    // A claim a check reported as made (a trajectory's --order) counts as made.
-    for (const auto& v : r.verdicts)
-      if (v.integrator == integ.name)
-        if (const ClaimFinding* f = finding_of(v, claim); f && f->claimed) claimed = true;
-    if (claimed && d.claimed == "no") d.claimed = "yes";
-    std::vector<std::string> measured;
-    std::vector<std::pair<std::string, ScalarState>> states;
-    for (const auto& s : scalars) {
-      ScalarState st = scalar_state(r, integ, claim, s, d.evidence, measured);
-      if (st.kind != ScalarState::NotApplicable) states.emplace_back(s, st);
-    }
-    d.measured = join(measured, ", ");
-    auto any = [&](ScalarState::Kind k) {
-      return std::any_of(states.begin(), states.end(), [&](const auto& x) { return x.second.kind == k; });
-    };
-    auto first = [&](ScalarState::Kind k) {
-      for (const auto& [s, st] : states)
-        if (st.kind == k) return st.why;
-      return std::string();
-    };
-    // Where not every check of the claim ran (a selection, --thorough): the word says by which it was
-    // decided, and `why` which did not run.
-    std::vector<std::string> partly;
-    for (const auto& [s, st] : states)
-      if (st.kind == ScalarState::NotRun || st.kind == ScalarState::Partial) partly.push_back(st.why);
-    std::vector<std::string> decided;
-    for (const auto& [s, st] : states)
-      if (st.kind == ScalarState::Complete || st.kind == ScalarState::Partial) decided.push_back(s);
-    const std::string qualified = partly.empty() ? "" : " by the checks that ran (" + join(decided, ", ") + ")";
-    const bool order = claim == "order";
-    if (states.empty()) {
-      d.status = claimed ? ClaimStatus::NotChecked : ClaimStatus::None;
-    } else if (any(ScalarState::False)) {
-      d.status = claimed ? ClaimStatus::FalseClaim : order ? ClaimStatus::DoesNotConverge : ClaimStatus::DoesNotHold;
-      d.why = first(ScalarState::False);
-      // The figure that contradicts it leads, not a passing check's (a generic order beside a
-      // failing regime's).
-      for (const auto& [s, st] : states)
-        if (st.kind == ScalarState::False && !st.contradicting.empty()) {
-          if (d.measured.find(st.contradicting) == std::string::npos)
-            d.measured = st.contradicting + (d.measured.empty() ? "" : "; elsewhere " + d.measured);
-          else
-            d.measured = st.contradicting;
-          break;
-        }
-      // A property nobody claimed that does not hold carries its counterexample: the check's finding
-      // at its input (support/named_inputs.hpp puts the input in it) and the command that shows it
-      // again.
-      if (d.status == ClaimStatus::DoesNotHold)
-        for (const auto& [s, st] : states)
-          if (st.kind == ScalarState::False && st.contradicted_by) {
-            const Verdict& v = *st.contradicted_by;
-            std::string finding;
-            if (const ClaimFinding* f = finding_of(v, claim)) finding = first_line(f->evidence);
-            d.why = d.why + (finding.empty() ? "" : ": " + finding) + "; reproduce: " + reproduce_command(r, v);
-            break;
-          }
-    } else if (any(ScalarState::Incomplete)) {
-      d.status = claimed ? ClaimStatus::NotVerified : ClaimStatus::NotEstablished;
-      d.why = first(ScalarState::Incomplete);
-    } else if (decided.empty()) {
-      d.status = claimed ? ClaimStatus::NotRun : ClaimStatus::None;
-      d.why = join(partly, "; ");
-    } else {
-      bool holds = true;
-      for (const auto& [s, st] : states) holds = holds && st.holds;
-      if (claimed)
-        d.status = holds ? ClaimStatus::Verified : ClaimStatus::FalseClaim;
-      else if (order)
-        d.status = holds ? ClaimStatus::Measured : ClaimStatus::DoesNotConverge;
-      else
-        d.status = holds ? ClaimStatus::Holds : ClaimStatus::DoesNotHold;
-    }
-    // An unclaimed order's checks that fail (the step does not converge) are FAIL rows: said so.
-    if (order && !claimed && d.status != ClaimStatus::DoesNotConverge)
-      for (const auto& v : r.verdicts)
-        if (v.integrator == integ.name && v.outcome == Outcome::Fail && v.step_raised.empty()) {
-          const auto judged = judged_claims(v);
-          if (std::find(judged.begin(), judged.end(), "order") != judged.end()) {
-            d.status = ClaimStatus::DoesNotConverge;
-            d.why = v.property + " [" + v.scalar + "]: " + first_line(v.message);
-            break;
-          }
-        }
-    d.word = status_word(d.status);
-    if (d.status == ClaimStatus::Verified || d.status == ClaimStatus::Holds || d.status == ClaimStatus::Measured) {
-      d.word += qualified;
-      if (!partly.empty()) d.why = "not run: " + join(partly, "; ");
-    }
-    if (d.status == ClaimStatus::NotRun) d.word = "claimed, " + d.why;
-    out.push_back(std::move(d));
-  }
+  for (const auto& claim : names) out.push_back(decide_claim(r, integ, claim, scalars));
   return out;
 }
 

@@ -486,6 +486,129 @@ int grade_submission(const GradeSubmissionOptions& o) {
   return 0;
 }
 
+namespace {
+
+// Packs the suite's source tree into the tarball the grader builds it from.
+void pack_suite_source(const fs::path& src, const fs::path& tarball) {
+  const ProcessResult tar =
+      run_process(ProcessSpec{{"tar", "-czf", tarball.string(), "-C", src.string(), "--exclude=./build*",
+                               "--exclude=./.git", "--exclude=./geomech-reports", "--exclude=__pycache__", "."},
+                              "",
+                              false});
+  if (tar.exit_code != 0) throw std::runtime_error("tar could not pack " + src.string() + ": " + tar.output);
+}
+
+// Gradescope's two scripts: setup.sh, which builds the suite in the image, and run_autograder,
+// which grades one submission.
+void write_gradescope_scripts(const AutograderOptions& o, const fs::path& out) {
+  write_text(out / "setup.sh",
+             "#!/usr/bin/env bash\n"
+             "# Gradescope runs this once, as root, when it builds the autograder's image\n"
+             "# (gradescope-autograders.readthedocs.io/en/latest/specs/). Written by `geomech autograder gradescope`.\n"
+             "# It unpacks the suite and builds it with its own front door, which installs the Debian packages the\n"
+             "# suite needs (apt-get) and nothing from anywhere else.\n"
+             "set -euo pipefail\n"
+             "here=$(cd \"$(dirname \"${BASH_SOURCE[0]}\")\" && pwd)\n"
+             "mkdir -p /opt/geomech-spec\n"
+             "tar -xzf \"$here/geomech-src.tar.gz\" -C /opt/geomech-spec\n"
+             "cd /opt/geomech-spec\n"
+             "GEOMECH_JOBS=$(nproc) ./geomech build\n"
+             "ln -sf /opt/geomech-spec/build/bin/geomech /usr/local/bin/geomech\n"
+             "geomech slots >/dev/null  # the tool runs\n"
+             "# The grader's machine, tried as a submission's check needs it (the sandbox, the cache, Python):\n"
+             "# a container that cannot run the sandbox fails here, with the fix, instead of grading anyone 0.\n"
+             "geomech self-test" +
+                 std::string(o.trusted ? " --trusted" : "") + "\n",
+             true);
+  write_text(out / "run_autograder",
+             "#!/usr/bin/env bash\n"
+             "# Gradescope runs this for every submission, from /autograder: the student's files are in\n"
+             "# /autograder/submission, and /autograder/results/results.json is what Gradescope shows\n"
+             "# (gradescope-autograders.readthedocs.io/en/latest/specs/). Written by `geomech autograder gradescope`.\n"
+             "# GEOMECH_AUTOGRADER_ROOT (default /autograder) and GEOMECH (default: geomech on PATH) are for\n"
+             "# trying it outside Gradescope.\n"
+             "set -u\n"
+             "root=${GEOMECH_AUTOGRADER_ROOT:-/autograder}\n"
+             "mkdir -p \"$root/results\"\n"
+             "exec \"${GEOMECH:-geomech}\" grade-submission gradescope --submission \"$root/submission\" \\\n"
+             "  --results \"$root/results/results.json\" --config \"$root/source/" +
+                 std::string(kConfigName) + "\"\n",
+             true);
+}
+
+// PrairieLearn's external grader: its run.sh, the Dockerfile of its image and the question's info.json.
+void write_prairielearn_files(const AutograderOptions& o, const fs::path& out, const fs::path& code_dir) {
+  write_text(code_dir / "run.sh",
+             "#!/usr/bin/env bash\n"
+             "# PrairieLearn's external grader runs this in the image built from ../../Dockerfile: the student's\n"
+             "# files are in /grade/student, and /grade/results/results.json is what PrairieLearn records\n"
+             "# (prairielearn.readthedocs.io, External Grading). Written by `geomech autograder prairielearn`.\n"
+             "# GEOMECH_GRADER_ROOT (default /grade) and GEOMECH (default: geomech on PATH) are for trying it\n"
+             "# outside PrairieLearn.\n"
+             "set -u\n"
+             "root=${GEOMECH_GRADER_ROOT:-/grade}\n"
+             "mkdir -p \"$root/results\"\n"
+             "exec \"${GEOMECH:-geomech}\" grade-submission prairielearn --submission \"$root/student\" \\\n"
+             "  --results \"$root/results/results.json\" --config \"$root/serverFilesCourse/geomech/" +
+                 std::string(kConfigName) + "\"\n",
+             true);
+  write_text(out / "Dockerfile",
+             "# The external grader's image: Debian 12 with the suite built by its own front door.\n"
+             "#   docker build -t YOUR_REGISTRY/geomech-grader . && docker push YOUR_REGISTRY/geomech-grader\n"
+             "FROM debian:12\n"
+             "COPY geomech-src.tar.gz /tmp/\n"
+             "RUN apt-get update && apt-get install -y --no-install-recommends ca-certificates && \\\n"
+             "    mkdir -p /opt/geomech-spec && tar -xzf /tmp/geomech-src.tar.gz -C /opt/geomech-spec && \\\n"
+             "    cd /opt/geomech-spec && ./geomech build && \\\n"
+             "    ln -s /opt/geomech-spec/build/bin/geomech /usr/local/bin/geomech && rm /tmp/geomech-src.tar.gz\n");
+  json info;
+  info["externalGradingOptions"] = {{"enabled", true},
+                                    {"image", "YOUR_REGISTRY/geomech-grader"},
+                                    {"serverFilesCourse", {"geomech/"}},
+                                    {"entrypoint", "/grade/serverFilesCourse/geomech/run.sh"},
+                                    {"timeout", std::min(600.0, o.timeout_seconds + 60)}};
+  write_text(out / "info.json", json_text(info));
+}
+
+// The autograder folder's README.md: what wrote it, how it checks and grades, and how to install it.
+void write_autograder_readme(const AutograderOptions& o, const fs::path& out, bool gs, const std::string& check_line,
+                             const std::string& rubric_source, std::size_t assignment_slots) {
+  std::ostringstream readme;
+  readme << "# A geomech autograder for " << (gs ? "Gradescope" : "PrairieLearn") << "\n\n"
+         << "Written by `geomech autograder " << platform_name(o.platform)
+         << "` (docs/AUTOGRADERS.md). Every submission is "
+         << "checked " << (o.trusted ? "in-process (--trusted: a submission can forge its own verdicts)" : "sandboxed")
+         << " with the options `" << check_line << " ` and graded by the rubric `" << rubric_source
+         << "` (its assignment: " << assignment_slots << " slots).\n\n";
+  if (gs)
+    readme << "Upload `" << out.filename().string()
+           << ".zip` (setup.sh, run_autograder and the rest at its root) as the "
+           << "assignment's autograder. `setup.sh` builds the suite from `geomech-src.tar.gz` with its Debian "
+           << "packages (about 7 minutes on 2 cores).\n";
+  else
+    readme << "Build the image from `Dockerfile`, copy `serverFilesCourse/geomech/` into your course's "
+           << "`serverFilesCourse/`, and give each question the `externalGradingOptions` of `info.json` with your "
+           << "image's name.\n";
+  write_text(out / "README.md", readme.str());
+}
+
+// The zip to upload to Gradescope, beside the autograder folder.
+void write_gradescope_zip(const fs::path& out) {
+  // Gradescope wants the files at the zip's root; Python's zipfile keeps their modes (run_autograder
+  // stays executable).
+  const fs::path zip = out.parent_path() / (out.filename().string() + ".zip");
+  std::error_code ec;
+  fs::remove(zip, ec);
+  std::vector<std::string> argv{"python3", "-m", "zipfile", "-c", zip.string()};
+  for (const char* f : {"setup.sh", "run_autograder", kConfigName, "geomech-src.tar.gz", "README.md"})
+    argv.push_back((out / f).string());
+  const ProcessResult z = run_process(ProcessSpec{argv, "", false});
+  if (z.exit_code != 0) throw std::runtime_error("could not write " + zip.string() + ": " + z.output);
+  std::cout << "autograder: " << zip.string() << " (upload it to Gradescope)\n";
+}
+
+}  // namespace
+
 int write_autograder(const AutograderOptions& o) {
   if (o.rubric_file.empty())
     throw std::runtime_error(
@@ -526,114 +649,19 @@ int write_autograder(const AutograderOptions& o) {
 
   // The suite's source, to be built where the grader runs (Debian packages only, by ./geomech).
   const fs::path tarball = (gs ? out : out) / "geomech-src.tar.gz";
-  const ProcessResult tar =
-      run_process(ProcessSpec{{"tar", "-czf", tarball.string(), "-C", src.string(), "--exclude=./build*",
-                               "--exclude=./.git", "--exclude=./geomech-reports", "--exclude=__pycache__", "."},
-                              "",
-                              false});
-  if (tar.exit_code != 0) throw std::runtime_error("tar could not pack " + src.string() + ": " + tar.output);
+  pack_suite_source(src, tarball);
 
   std::string check_line;
   for (const auto& a : o.check_args) check_line += " " + shell_quote(a);
   if (gs) {
-    write_text(
-        out / "setup.sh",
-        "#!/usr/bin/env bash\n"
-        "# Gradescope runs this once, as root, when it builds the autograder's image\n"
-        "# (gradescope-autograders.readthedocs.io/en/latest/specs/). Written by `geomech autograder gradescope`.\n"
-        "# It unpacks the suite and builds it with its own front door, which installs the Debian packages the\n"
-        "# suite needs (apt-get) and nothing from anywhere else.\n"
-        "set -euo pipefail\n"
-        "here=$(cd \"$(dirname \"${BASH_SOURCE[0]}\")\" && pwd)\n"
-        "mkdir -p /opt/geomech-spec\n"
-        "tar -xzf \"$here/geomech-src.tar.gz\" -C /opt/geomech-spec\n"
-        "cd /opt/geomech-spec\n"
-        "GEOMECH_JOBS=$(nproc) ./geomech build\n"
-        "ln -sf /opt/geomech-spec/build/bin/geomech /usr/local/bin/geomech\n"
-        "geomech slots >/dev/null  # the tool runs\n"
-        "# The grader's machine, tried as a submission's check needs it (the sandbox, the cache, Python):\n"
-        "# a container that cannot run the sandbox fails here, with the fix, instead of grading anyone 0.\n"
-        "geomech self-test" +
-            std::string(o.trusted ? " --trusted" : "") + "\n",
-        true);
-    write_text(
-        out / "run_autograder",
-        "#!/usr/bin/env bash\n"
-        "# Gradescope runs this for every submission, from /autograder: the student's files are in\n"
-        "# /autograder/submission, and /autograder/results/results.json is what Gradescope shows\n"
-        "# (gradescope-autograders.readthedocs.io/en/latest/specs/). Written by `geomech autograder gradescope`.\n"
-        "# GEOMECH_AUTOGRADER_ROOT (default /autograder) and GEOMECH (default: geomech on PATH) are for\n"
-        "# trying it outside Gradescope.\n"
-        "set -u\n"
-        "root=${GEOMECH_AUTOGRADER_ROOT:-/autograder}\n"
-        "mkdir -p \"$root/results\"\n"
-        "exec \"${GEOMECH:-geomech}\" grade-submission gradescope --submission \"$root/submission\" \\\n"
-        "  --results \"$root/results/results.json\" --config \"$root/source/" +
-            std::string(kConfigName) + "\"\n",
-        true);
+    write_gradescope_scripts(o, out);
   } else {
-    write_text(code_dir / "run.sh",
-               "#!/usr/bin/env bash\n"
-               "# PrairieLearn's external grader runs this in the image built from ../../Dockerfile: the student's\n"
-               "# files are in /grade/student, and /grade/results/results.json is what PrairieLearn records\n"
-               "# (prairielearn.readthedocs.io, External Grading). Written by `geomech autograder prairielearn`.\n"
-               "# GEOMECH_GRADER_ROOT (default /grade) and GEOMECH (default: geomech on PATH) are for trying it\n"
-               "# outside PrairieLearn.\n"
-               "set -u\n"
-               "root=${GEOMECH_GRADER_ROOT:-/grade}\n"
-               "mkdir -p \"$root/results\"\n"
-               "exec \"${GEOMECH:-geomech}\" grade-submission prairielearn --submission \"$root/student\" \\\n"
-               "  --results \"$root/results/results.json\" --config \"$root/serverFilesCourse/geomech/" +
-                   std::string(kConfigName) + "\"\n",
-               true);
-    write_text(out / "Dockerfile",
-               "# The external grader's image: Debian 12 with the suite built by its own front door.\n"
-               "#   docker build -t YOUR_REGISTRY/geomech-grader . && docker push YOUR_REGISTRY/geomech-grader\n"
-               "FROM debian:12\n"
-               "COPY geomech-src.tar.gz /tmp/\n"
-               "RUN apt-get update && apt-get install -y --no-install-recommends ca-certificates && \\\n"
-               "    mkdir -p /opt/geomech-spec && tar -xzf /tmp/geomech-src.tar.gz -C /opt/geomech-spec && \\\n"
-               "    cd /opt/geomech-spec && ./geomech build && \\\n"
-               "    ln -s /opt/geomech-spec/build/bin/geomech /usr/local/bin/geomech && rm /tmp/geomech-src.tar.gz\n");
-    json info;
-    info["externalGradingOptions"] = {{"enabled", true},
-                                      {"image", "YOUR_REGISTRY/geomech-grader"},
-                                      {"serverFilesCourse", {"geomech/"}},
-                                      {"entrypoint", "/grade/serverFilesCourse/geomech/run.sh"},
-                                      {"timeout", std::min(600.0, o.timeout_seconds + 60)}};
-    write_text(out / "info.json", json_text(info));
+    write_prairielearn_files(o, out, code_dir);
   }
-  std::ostringstream readme;
-  readme << "# A geomech autograder for " << (gs ? "Gradescope" : "PrairieLearn") << "\n\n"
-         << "Written by `geomech autograder " << platform_name(o.platform)
-         << "` (docs/AUTOGRADERS.md). Every submission is "
-         << "checked " << (o.trusted ? "in-process (--trusted: a submission can forge its own verdicts)" : "sandboxed")
-         << " with the options `" << check_line << " ` and graded by the rubric `"
-         << config["rubric_source"].get<std::string>() << "` (its assignment: " << rubric.assignment->size()
-         << " slots).\n\n";
-  if (gs)
-    readme << "Upload `" << out.filename().string()
-           << ".zip` (setup.sh, run_autograder and the rest at its root) as the "
-           << "assignment's autograder. `setup.sh` builds the suite from `geomech-src.tar.gz` with its Debian "
-           << "packages (about 7 minutes on 2 cores).\n";
-  else
-    readme << "Build the image from `Dockerfile`, copy `serverFilesCourse/geomech/` into your course's "
-           << "`serverFilesCourse/`, and give each question the `externalGradingOptions` of `info.json` with your "
-           << "image's name.\n";
-  write_text(out / "README.md", readme.str());
+  write_autograder_readme(o, out, gs, check_line, config["rubric_source"].get<std::string>(),
+                          rubric.assignment->size());
 
-  if (gs && o.zip) {
-    // Gradescope wants the files at the zip's root; Python's zipfile keeps their modes (run_autograder
-    // stays executable).
-    const fs::path zip = out.parent_path() / (out.filename().string() + ".zip");
-    fs::remove(zip, ec);
-    std::vector<std::string> argv{"python3", "-m", "zipfile", "-c", zip.string()};
-    for (const char* f : {"setup.sh", "run_autograder", kConfigName, "geomech-src.tar.gz", "README.md"})
-      argv.push_back((out / f).string());
-    const ProcessResult z = run_process(ProcessSpec{argv, "", false});
-    if (z.exit_code != 0) throw std::runtime_error("could not write " + zip.string() + ": " + z.output);
-    std::cout << "autograder: " << zip.string() << " (upload it to Gradescope)\n";
-  }
+  if (gs && o.zip) write_gradescope_zip(out);
   std::cout << "autograder: " << out.string() << " (" << platform_name(o.platform) << "; rubric "
             << config["rubric_source"].get<std::string>() << ", " << rubric.assignment->size()
             << " slots in the assignment; checks:" << (check_line.empty() ? " the whole check" : check_line) << ")\n";

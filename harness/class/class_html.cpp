@@ -84,25 +84,11 @@ std::vector<std::string> class_table_columns() {
   return c;
 }
 
-std::string class_summary_html(const ClassView& view, const ClassPage& page) {
-  const auto& areas = area_names();
-  std::ostringstream b;
-  b << "<h1>geomech class report: " << html_escape(page.class_name) << "</h1>\n";
-  const std::size_t done = view.students.size();
-  if (!page.pending.empty()) {
-    b << "<p class=\"partial\" id=\"in-progress\">In progress: " << done << " of " << done + page.pending.size()
-      << " implementations checked. Not yet checked (a run started again resumes with them): ";
-    for (std::size_t i = 0; i < page.pending.size(); ++i) b << (i ? ", " : "") << html_escape(page.pending[i]);
-    b << ".";
-    if (page.grades_withheld) b << " The gradebook is not written until every implementation is checked.";
-    b << "</p>\n";
-  }
-  b << "<p class=\"note\">" << done << " implementations. Grades: " << html_escape(page.rubric_source) << ", "
-    << view.assignment.size() << " slots in the assignment"
-    << (view.assignment_from_rubric ? "" : " (every slot a student of the class provides)")
-    << ". Each area cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or ERROR); n/w: checks of slots "
-       "not written; d/o: checks in 50 digits or rationals the code or its language cannot run (double only). "
-       "Click a heading to sort.</p>\n";
+namespace {
+
+// The class table: a row per student, its result, grade, area cells and first fix, each cell
+// with the value it sorts by.
+void write_class_table_html(std::ostream& b, const ClassView& view, const std::vector<std::string>& areas) {
   b << "<table id=\"class-table\">\n<thead><tr><th data-key=\"name\">implementation</th>"
        "<th data-key=\"result\">result</th><th data-key=\"grade\">grade</th>";
   for (const auto& a : areas) b << "<th data-key=\"" << key_of(a) << "\">" << html_escape(a) << "</th>";
@@ -134,39 +120,67 @@ std::string class_summary_html(const ClassView& view, const ClassPage& page) {
       << "</td></tr>\n";
   }
   b << "</tbody>\n</table>\n";
-  if (!view.mistakes.empty()) {
-    // What the class got wrong: a bar per slot or claim, the share of the students checked who got
-    // it wrong (an inline SVG: the page stays self-contained), then the table with who and the fix.
-    const int bar_h = 22, label_w = 260, bar_w = 360;
-    const int height = bar_h * static_cast<int>(view.mistakes.size()) + 10;
-    b << "<h2 id=\"wrong\">What the class got wrong</h2>\n<svg role=\"img\" aria-label=\"students who got each wrong\" "
-         "width=\""
-      << label_w + bar_w + 90 << "\" height=\"" << height << "\" style=\"font: 13px sans-serif\">\n";
-    for (std::size_t i = 0; i < view.mistakes.size(); ++i) {
-      const ClassMistake& m = view.mistakes[i];
-      const int y = static_cast<int>(i) * bar_h + 5;
-      const int w = m.checked > 0 ? bar_w * m.students / m.checked : 0;
-      b << "<text x=\"" << label_w - 6 << "\" y=\"" << y + 15 << "\" text-anchor=\"end\">"
-        << html_escape(m.kind + " " + m.what) << "</text><rect x=\"" << label_w << "\" y=\"" << y + 3 << "\" width=\""
-        << std::max(w, 1) << "\" height=\"" << bar_h - 6 << "\" fill=\"#c0392b\"/><text x=\""
-        << label_w + std::max(w, 1) + 6 << "\" y=\"" << y + 15 << "\">" << m.students << " of " << m.checked
-        << "</text>\n";
-    }
-    b << "</svg>\n<table id=\"wrong-table\">\n<thead><tr><th>wrong</th><th>students</th><th>who</th><th>the most "
-         "common "
-         "first fix</th></tr></thead>\n<tbody>\n";
-    for (const auto& m : view.mistakes) {
-      std::string who;
-      for (std::size_t i = 0; i < m.who.size(); ++i) who += (i ? ", " : "") + m.who[i];
-      b << "<tr><td>" << html_escape(m.kind) << " <code>" << html_escape(m.what) << "</code></td><td>" << m.students
-        << " of " << m.checked << "</td><td>" << html_escape(who) << "</td><td>"
-        << (m.common_fix.empty() ? std::string("-")
-                                 : "(" + std::to_string(m.common_fix_students) + " of " + std::to_string(m.students) +
-                                       ") " + html_escape(m.common_fix))
-        << "</td></tr>\n";
-    }
-    b << "</tbody>\n</table>\n";
+}
+
+// The section of what the class got wrong, when it got anything wrong.
+void write_class_mistakes_html(std::ostream& b, const ClassView& view) {
+  if (view.mistakes.empty()) return;
+  // What the class got wrong: a bar per slot or claim, the share of the students checked who got
+  // it wrong (an inline SVG: the page stays self-contained), then the table with who and the fix.
+  const int bar_h = 22, label_w = 260, bar_w = 360;
+  const int height = bar_h * static_cast<int>(view.mistakes.size()) + 10;
+  b << "<h2 id=\"wrong\">What the class got wrong</h2>\n<svg role=\"img\" aria-label=\"students who got each wrong\" "
+       "width=\""
+    << label_w + bar_w + 90 << "\" height=\"" << height << "\" style=\"font: 13px sans-serif\">\n";
+  for (std::size_t i = 0; i < view.mistakes.size(); ++i) {
+    const ClassMistake& m = view.mistakes[i];
+    const int y = static_cast<int>(i) * bar_h + 5;
+    const int w = m.checked > 0 ? bar_w * m.students / m.checked : 0;
+    b << "<text x=\"" << label_w - 6 << "\" y=\"" << y + 15 << "\" text-anchor=\"end\">"
+      << html_escape(m.kind + " " + m.what) << "</text><rect x=\"" << label_w << "\" y=\"" << y + 3 << "\" width=\""
+      << std::max(w, 1) << "\" height=\"" << bar_h - 6 << "\" fill=\"#c0392b\"/><text x=\""
+      << label_w + std::max(w, 1) + 6 << "\" y=\"" << y + 15 << "\">" << m.students << " of " << m.checked
+      << "</text>\n";
   }
+  b << "</svg>\n<table id=\"wrong-table\">\n<thead><tr><th>wrong</th><th>students</th><th>who</th><th>the most "
+       "common "
+       "first fix</th></tr></thead>\n<tbody>\n";
+  for (const auto& m : view.mistakes) {
+    std::string who;
+    for (std::size_t i = 0; i < m.who.size(); ++i) who += (i ? ", " : "") + m.who[i];
+    b << "<tr><td>" << html_escape(m.kind) << " <code>" << html_escape(m.what) << "</code></td><td>" << m.students
+      << " of " << m.checked << "</td><td>" << html_escape(who) << "</td><td>"
+      << (m.common_fix.empty() ? std::string("-")
+                               : "(" + std::to_string(m.common_fix_students) + " of " + std::to_string(m.students) +
+                                     ") " + html_escape(m.common_fix))
+      << "</td></tr>\n";
+  }
+  b << "</tbody>\n</table>\n";
+}
+
+}  // namespace
+
+std::string class_summary_html(const ClassView& view, const ClassPage& page) {
+  const auto& areas = area_names();
+  std::ostringstream b;
+  b << "<h1>geomech class report: " << html_escape(page.class_name) << "</h1>\n";
+  const std::size_t done = view.students.size();
+  if (!page.pending.empty()) {
+    b << "<p class=\"partial\" id=\"in-progress\">In progress: " << done << " of " << done + page.pending.size()
+      << " implementations checked. Not yet checked (a run started again resumes with them): ";
+    for (std::size_t i = 0; i < page.pending.size(); ++i) b << (i ? ", " : "") << html_escape(page.pending[i]);
+    b << ".";
+    if (page.grades_withheld) b << " The gradebook is not written until every implementation is checked.";
+    b << "</p>\n";
+  }
+  b << "<p class=\"note\">" << done << " implementations. Grades: " << html_escape(page.rubric_source) << ", "
+    << view.assignment.size() << " slots in the assignment"
+    << (view.assignment_from_rubric ? "" : " (every slot a student of the class provides)")
+    << ". Each area cell: checks passed / checks run (bad: FAIL, CRASH, TIMEOUT or ERROR); n/w: checks of slots "
+       "not written; d/o: checks in 50 digits or rationals the code or its language cannot run (double only). "
+       "Click a heading to sort.</p>\n";
+  write_class_table_html(b, view, areas);
+  write_class_mistakes_html(b, view);
   b << "<h2 id=\"in-words\">Each student in words</h2>\n<ul>\n";
   for (const auto& s : view.students) {
     b << "<li id=\"words-" << html_escape(key_of(s.row->name)) << "\"><strong>" << html_escape(s.row->name)

@@ -788,6 +788,77 @@ struct ClassPlan {
   std::size_t kept_suspect = 0;
 };
 
+// The files the lecturer shares with every C++ submission (--shared).
+SubmissionTree read_shared_files(const ClassOptions& o) {
+  SubmissionTree shared;
+  for (const auto& file : o.shared) {
+    try {
+      shared.files.emplace_back(fs::path(file).filename().string(), read_stranger_file(file));
+    } catch (const RefusedEntry& e) {
+      throw std::runtime_error("--shared " + file + ": " + e.why());
+    }
+  }
+  return shared;
+}
+
+// The folder of the class's snapshots in the compilers' cache, named by the class folder.
+fs::path snapshots_folder(const ClassOptions& o, const Toolchain& tc) {
+  return fs::absolute(o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir) /
+         ("class-" +
+          [&] {
+            Fingerprint f;
+            f.add(fs::absolute(o.dir).lexically_normal().string());
+            return f.hex();
+          }()) /
+         "submissions";
+}
+
+// The row of an implementation that could not be read: never checked.
+Row refused_row(const Implementation& impl) {
+  Row row;
+  row.impl = impl;
+  row.problem = kNotRead + impl.refused;
+  return row;
+}
+
+// An implementation's complete result from an earlier run with the same fingerprint, kept in the
+// plan (true) unless it must be checked again (false): the machine's fault it met is then recorded.
+bool keep_earlier_row(const ClassOptions& o, const std::string& report_dir, const fs::path& row_file, std::size_t i,
+                      ClassPlan& plan) {
+  try {
+    std::ifstream in(row_file);
+    const json j = json::parse(in);
+    if (j.at("format") == "geomech-class-row 1" && j.at("fingerprint") == plan.prints[i]) {
+      Row row = row_from_json(j.at("row"), report_dir);
+      // The grader's fault is checked again: the condition may have changed since; so is one
+      // not checked, when the lecturer asks (--not-checked).
+      const bool retry = o.not_checked && status_of(class_row(row)) == "not checked";
+      if (retry) ++plan.not_checked_again;
+      const std::string fault = grader_fault_of(class_row(row));
+      // A machine's fault is checked again, once: the machine may have been busy. The same fault
+      // again, while classmates checked fine, is suspect and left to the lecturer (the busy limit
+      // is not spent on it at every run); --regrade NAME checks it again.
+      if (!fault.empty() && row.suspect) {
+        plan.finished[i] = std::move(row);
+        ++plan.kept_suspect;
+        return true;
+      }
+      if (!fault.empty()) {
+        plan.earlier_faults[i] = row.earlier_faults;
+        plan.earlier_faults[i].push_back(fault);
+      }
+      if (!retry && row.problem.rfind("its report cannot be read", 0) != 0 && fault.empty()) {
+        plan.finished[i] = std::move(row);
+        ++plan.resumed;
+        return true;
+      }
+    }
+  } catch (const std::exception&) {
+    // unreadable: checked again
+  }
+  return false;
+}
+
 ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::string& report_dir,
                       std::vector<Implementation>& impls) {
   // Resuming: what each check depends on, and the implementations whose complete result
@@ -801,27 +872,13 @@ ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::str
       plan;
   std::error_code ec;
   // The files the lecturer shares with every C++ submission (--shared), read once.
-  SubmissionTree shared;
-  for (const auto& file : o.shared) {
-    try {
-      shared.files.emplace_back(fs::path(file).filename().string(), read_stranger_file(file));
-    } catch (const RefusedEntry& e) {
-      throw std::runtime_error("--shared " + file + ": " + e.why());
-    }
-  }
+  const SubmissionTree shared = read_shared_files(o);
   // Each submission's snapshot (harness/isolation/submission_intake.hpp): read without following anything,
   // within limits, into a folder of ours; what is fingerprinted, compiled and checked is that copy.
   const StrangerFolder class_folder(o.dir);
   // In the compilers' cache, under a name of the class folder: a whole run, its shards and a resumed
   // run check the same copies (and a C++ one compiled once is not compiled again).
-  const fs::path snapshots = fs::absolute(o.build.cache_dir.empty() ? tc.cache_dir : o.build.cache_dir) /
-                             ("class-" +
-                              [&] {
-                                Fingerprint f;
-                                f.add(fs::absolute(o.dir).lexically_normal().string());
-                                return f.hex();
-                              }()) /
-                             "submissions";
+  const fs::path snapshots = snapshots_folder(o, tc);
   // Where each check writes its outcome (harness/submissions/check_submission.hpp).
   outcomes = snapshots.parent_path() / "outcomes";
   fs::create_directories(outcomes, ec);
@@ -829,10 +886,7 @@ ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::str
   for (std::size_t i = 0; i < impls.size(); ++i) {
     Implementation& impl = impls[i];
     if (!impl.refused.empty()) {
-      Row row;
-      row.impl = impl;
-      row.problem = kNotRead + impl.refused;
-      finished[i] = std::move(row);
+      finished[i] = refused_row(impl);
       continue;
     }
     const bool folder =
@@ -843,10 +897,7 @@ ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::str
       tree = read_submission(class_folder, root);
     } catch (const RefusedEntry& e) {
       impl.refused = e.what();
-      Row row;
-      row.impl = impl;
-      row.problem = kNotRead + impl.refused;
-      finished[i] = std::move(row);
+      finished[i] = refused_row(impl);
       continue;
     }
     const std::string ext = fs::path(impl.origin).extension().string();
@@ -868,39 +919,7 @@ ClassPlan plan_checks(const ClassOptions& o, const Toolchain& tc, const std::str
     const fs::path row_file = fs::path(report_dir) / impls[i].name / "class-row.json";
     const bool named = std::find(o.regrade.begin(), o.regrade.end(), impl.name) != o.regrade.end();
     if (named) ++regraded;
-    if (!o.fresh && !named && fs::exists(row_file, ec)) {
-      try {
-        std::ifstream in(row_file);
-        const json j = json::parse(in);
-        if (j.at("format") == "geomech-class-row 1" && j.at("fingerprint") == prints[i]) {
-          Row row = row_from_json(j.at("row"), report_dir);
-          // The grader's fault is checked again: the condition may have changed since; so is one
-          // not checked, when the lecturer asks (--not-checked).
-          const bool retry = o.not_checked && status_of(class_row(row)) == "not checked";
-          if (retry) ++not_checked_again;
-          const std::string fault = grader_fault_of(class_row(row));
-          // A machine's fault is checked again, once: the machine may have been busy. The same fault
-          // again, while classmates checked fine, is suspect and left to the lecturer (the busy limit
-          // is not spent on it at every run); --regrade NAME checks it again.
-          if (!fault.empty() && row.suspect) {
-            finished[i] = std::move(row);
-            ++kept_suspect;
-            continue;
-          }
-          if (!fault.empty()) {
-            earlier_faults[i] = row.earlier_faults;
-            earlier_faults[i].push_back(fault);
-          }
-          if (!retry && row.problem.rfind("its report cannot be read", 0) != 0 && fault.empty()) {
-            finished[i] = std::move(row);
-            ++resumed;
-            continue;
-          }
-        }
-      } catch (const std::exception&) {
-        // unreadable: checked again
-      }
-    }
+    if (!o.fresh && !named && fs::exists(row_file, ec) && keep_earlier_row(o, report_dir, row_file, i, plan)) continue;
     fs::remove(row_file, ec);
     to_check.push_back(i);
   }
@@ -941,6 +960,96 @@ void write_shard(const ClassOptions& o, std::size_t implementations, const std::
   write_file_atomically((fs::path(report_dir) / "class-shard.json").string(), shard.dump(1));
 }
 
+// What the class run checks, and how, said as it starts.
+void say_class_start(const ClassOptions& o, std::size_t count, std::size_t class_size) {
+  std::cerr << "geomech check-class: " << count << " implementations in " << o.dir
+            << (o.untrusted ? " (untrusted mode: each sandboxed)" : " (trusted: in-process)");
+  if (o.shard_n > 1) std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << class_size << ")";
+  std::cerr << ", " << o.jobs << " at a time\n";
+}
+
+// The checks of this run, a task each.
+std::vector<std::function<std::string()>> class_check_tasks(const ClassOptions& o,
+                                                            const std::vector<Implementation>& impls,
+                                                            const std::vector<std::size_t>& to_check,
+                                                            const std::string& report_dir, const fs::path& outcomes) {
+  std::vector<std::function<std::string()>> tasks;
+  // The cores are shared among the checks that run at once: a class of one (a regrade, an
+  // autograder's submission) or fewer students than --parallel gives each check more than one
+  // worker, so that no core idles (a complete Python file took 2.6x its direct check with one).
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int at_once = static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(o.jobs, to_check.size())));
+  const int check_jobs = std::max(1, cores / at_once);
+  for (std::size_t i : to_check) {
+    const Implementation& impl = impls[i];
+    tasks.push_back([&o, &report_dir, &outcomes, check_jobs, impl] {
+      return check_one(impl, o, report_dir, outcomes, check_jobs);
+    });
+  }
+  return tasks;
+}
+
+// The command that runs the class again, resuming it.
+std::string resume_command(const ClassOptions& o) {
+  return o.command.empty() ? (o.front_door.empty() ? "geomech" : o.front_door) + " check-class " + shell_quote(o.dir)
+                           : o.command;
+}
+
+// The class as it stands: the rows finished, the implementations still to check, and the roster's
+// names with no submission.
+ClassState class_state_now(const ClassOptions& o, const std::vector<Implementation>& impls,
+                           const std::vector<std::optional<Row>>& finished,
+                           const std::vector<std::string>& no_submission) {
+  ClassState st;
+  st.class_dir = o.dir;
+  for (std::size_t k = 0; k < impls.size(); ++k)
+    if (finished[k])
+      st.rows.push_back(*finished[k]);
+    else
+      st.pending.push_back(impls[k].name);
+  st.no_submission = no_submission;
+  return st;
+}
+
+// Whether a classmate of implementation i has checked fine.
+bool classmates_fine(const std::vector<std::optional<Row>>& finished, std::size_t i) {
+  for (std::size_t k = 0; k < finished.size(); ++k)
+    if (k != i && finished[k] && status_of(class_row(*finished[k])) == "checked") return true;
+  return false;
+}
+
+// A machine's fault this unchanged submission met in the run before, met again: the evidence of
+// each run is kept with its row, and it is suspect once a classmate checked fine (this run's
+// self-test passed: refuse_on_the_graders_machine).
+bool judge_repeat(const std::vector<std::string>& before, const std::vector<std::optional<Row>>& finished,
+                  std::size_t i, Row& row) {
+  const std::string fault = grader_fault_of(class_row(row));
+  if (fault.empty() || before.empty() || row.suspect || !same_machine_fault(fault, before.back())) return false;
+  row.earlier_faults = before;
+  row.suspect = classmates_fine(finished, i);
+  return true;
+}
+
+// A repeated fault met before any classmate had checked fine: judged again now the run is done.
+void judge_repeats_again(ClassPlan& plan, const std::vector<Implementation>& impls, const std::string& report_dir) {
+  auto& finished = plan.finished;
+  for (std::size_t i : plan.to_check)
+    if (finished[i] && !finished[i]->suspect && !finished[i]->earlier_faults.empty() && classmates_fine(finished, i) &&
+        !grader_fault_of(class_row(*finished[i])).empty()) {
+      finished[i]->suspect = true;
+      keep_row(report_dir, impls[i].name, plan.prints[i], *finished[i]);
+    }
+}
+
+// Where this run's shard was written, and how many implementations were resumed, said at its end.
+void say_run_written(const ClassOptions& o, const std::string& report_dir, std::size_t resumed, std::size_t count) {
+  if (o.shard_n > 1)
+    std::cerr << "geomech check-class: shard " << o.shard_k << "/" << o.shard_n << " written to " << report_dir
+              << "; combine the shards with `geomech merge-class OUT SHARD_DIR...`\n";
+  if (resumed > 0)
+    std::cout << "(" << resumed << " of " << count << " implementations resumed from the previous run, unchanged)\n";
+}
+
 }  // namespace
 
 int run_class(const ClassOptions& o, const Toolchain& tc) {
@@ -957,10 +1066,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
 
   const std::vector<std::string> no_submission = roster_without_submission(o, grades, all_impls);
   refuse_on_the_graders_machine(o, tc, impls);
-  std::cerr << "geomech check-class: " << impls.size() << " implementations in " << o.dir
-            << (o.untrusted ? " (untrusted mode: each sandboxed)" : " (trusted: in-process)");
-  if (o.shard_n > 1) std::cerr << " (shard " << o.shard_k << "/" << o.shard_n << " of " << all_impls.size() << ")";
-  std::cerr << ", " << o.jobs << " at a time\n";
+  say_class_start(o, impls.size(), all_impls.size());
   ClassPlan plan = plan_checks(o, tc, report_dir, impls);
   say_plan(plan, impls.size(), o);
   auto& prints = plan.prints;
@@ -969,17 +1075,7 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   const std::size_t resumed = plan.resumed;
   const fs::path& outcomes = plan.outcomes;
 
-  std::vector<std::function<std::string()>> tasks;
-  // The cores are shared among the checks that run at once: a class of one (a regrade, an
-  // autograder's submission) or fewer students than --parallel gives each check more than one
-  // worker, so that no core idles (a complete Python file took 2.6x its direct check with one).
-  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int at_once = static_cast<int>(std::max<std::size_t>(1, std::min<std::size_t>(o.jobs, to_check.size())));
-  const int check_jobs = std::max(1, cores / at_once);
-  for (std::size_t i : to_check) {
-    const Implementation& impl = impls[i];
-    tasks.push_back([&, impl] { return check_one(impl, o, report_dir, outcomes, check_jobs); });
-  }
+  std::vector<std::function<std::string()>> tasks = class_check_tasks(o, impls, to_check, report_dir, outcomes);
   IsolationOptions io;
   io.jobs = o.jobs;
   io.timeout_seconds = o.timeout_per_implementation;
@@ -988,50 +1084,21 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
   // The views of the class as it stands (summary.md, summary.html, the gradebook), rewritten
   // together, now (so that an earlier run's complete summary and gradebook never stand beside this
   // run's deleted results) and as each implementation finishes.
-  const std::string resume =
-      o.command.empty() ? (o.front_door.empty() ? "geomech" : o.front_door) + " check-class " + shell_quote(o.dir)
-                        : o.command;
+  const std::string resume = resume_command(o);
   ClassConsole console(impls.size(), impls.size() - to_check.size());
-  auto state_now = [&] {
-    ClassState st;
-    st.class_dir = o.dir;
-    for (std::size_t k = 0; k < impls.size(); ++k)
-      if (finished[k])
-        st.rows.push_back(*finished[k]);
-      else
-        st.pending.push_back(impls[k].name);
-    st.no_submission = no_submission;
-    return st;
-  };
   auto rewrite_views = [&] {
-    const ClassState st = state_now();
+    const ClassState st = class_state_now(o, impls, finished, no_submission);
     summarise_class(st, report_dir, grades, false);
     console.on_interrupt_say(interrupted_words(st, impls.size(), report_dir, grades, resume));
   };
   rewrite_views();
-  // A machine's fault this unchanged submission met in the run before, met again: the evidence of
-  // each run is kept with its row, and it is suspect once a classmate checked fine (this run's
-  // self-test passed: refuse_on_the_graders_machine).
-  auto classmates_fine = [&](std::size_t i) {
-    for (std::size_t k = 0; k < impls.size(); ++k)
-      if (k != i && finished[k] && status_of(class_row(*finished[k])) == "checked") return true;
-    return false;
-  };
-  auto judge_repeat = [&](std::size_t i, Row& row) {
-    const std::string fault = grader_fault_of(class_row(row));
-    const auto& before = plan.earlier_faults[i];
-    if (fault.empty() || before.empty() || row.suspect || !same_machine_fault(fault, before.back())) return false;
-    row.earlier_faults = before;
-    row.suspect = classmates_fine(i);
-    return true;
-  };
   io.on_started = [&](std::size_t t) { console.started(impls[to_check[t]].name); };
   io.on_idle = [&] { console.tick(); };
   std::size_t done = 0;
   io.on_finished = [&](std::size_t t, const TaskResult& result) {
     const std::size_t i = to_check[t];
     Row row = row_of(impls[i], result, report_dir);
-    judge_repeat(i, row);
+    judge_repeat(plan.earlier_faults[i], finished, i, row);
     keep_row(report_dir, impls[i].name, prints[i], row);
     const double seconds = result.seconds;
     finished[i] = std::move(row);
@@ -1041,24 +1108,13 @@ int run_class(const ClassOptions& o, const Toolchain& tc) {
     if (stop_after >= 0 && static_cast<long>(done) >= stop_after) ::raise(stop_signal);
   };
   run_isolated(tasks, io);
-  // A repeated fault met before any classmate had checked fine: judged again now the run is done.
-  for (std::size_t i : to_check)
-    if (finished[i] && !finished[i]->suspect && !finished[i]->earlier_faults.empty() && classmates_fine(i) &&
-        !grader_fault_of(class_row(*finished[i])).empty()) {
-      finished[i]->suspect = true;
-      keep_row(report_dir, impls[i].name, prints[i], *finished[i]);
-    }
+  judge_repeats_again(plan, impls, report_dir);
 
   std::vector<Row> rows;
   for (auto& r : finished) rows.push_back(*r);
 
   write_shard(o, all_impls.size(), rows, no_submission, report_dir);
-  if (o.shard_n > 1)
-    std::cerr << "geomech check-class: shard " << o.shard_k << "/" << o.shard_n << " written to " << report_dir
-              << "; combine the shards with `geomech merge-class OUT SHARD_DIR...`\n";
-  if (resumed > 0)
-    std::cout << "(" << resumed << " of " << impls.size()
-              << " implementations resumed from the previous run, unchanged)\n";
+  say_run_written(o, report_dir, resumed, impls.size());
   ClassState st;
   st.class_dir = o.dir;
   st.rows = rows;

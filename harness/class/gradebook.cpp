@@ -343,106 +343,123 @@ std::vector<std::string> resolve_assignment(const Rubric& rubric, const std::vec
   return {all.begin(), all.end()};
 }
 
-Score score_student(const StudentResult& st, const Rubric& r, const std::vector<std::string>& assignment) {
-  double slot_max = 0, max = r.claims_weight;
-  for (const auto& s : assignment) slot_max += weight_of(r.slot_weights, r.slot_default, s);
-  max += slot_max;
-  for (const auto& [name, w] : r.area_weights) max += w;
-  if (max <= 0)
-    rubric_error(r, "assignment",
-                 "the maximum grade is 0 for this class (" + std::to_string(assignment.size()) +
-                     " assignment slots); list the slots under \"assignment\"");
-  Score out;
-  out.max_points = r.points;
-  const double scale = r.points / max;  // rubric weight -> points
-  auto item = [&](ScoreItem::Kind kind, std::string name, double weight, double earned, std::string state,
-                  std::string detail) {
-    out.items.push_back(ScoreItem{kind, std::move(name), weight, earned, weight * scale, earned * scale,
-                                  std::move(state), std::move(detail)});
-  };
+namespace {
+
+// A student's score as it is built: the score so far, and the counts its words are made of.
+struct Scoring {
+  Scoring(const StudentResult& student, const Rubric& rubric, const std::vector<std::string>& slots, double slots_max,
+          double points_per_weight)
+      : st(student), r(rubric), assignment(slots), slot_max(slots_max), scale(points_per_weight) {}
+  const StudentResult& st;
+  const Rubric& r;
+  const std::vector<std::string>& assignment;
+  const double slot_max;
+  const double scale;  // rubric weight -> points
   const bool graded = st.status == "checked";
-  // Every assignment slot, every weighted area and the claims are items, graded or not: a student
-  // who was not checked sees what the assignment asked for, each at 0.
+  Score out;
+  int correct = 0;
+  double slot_earned = 0, earned = 0;
+  std::vector<std::string> wrong_list, missing, not_exercised;
+  std::vector<std::string> area_words;
+  int n_made = 0, n_verified = 0;
+  std::vector<std::string> false_claims;
+
+  // Adds an item: its weight and what was earned of it, in the rubric's weights and in points.
+  void item(ScoreItem::Kind kind, std::string name, double weight, double gained, std::string state,
+            std::string detail) {
+    out.items.push_back(ScoreItem{kind, std::move(name), weight, gained, weight * scale, gained * scale,
+                                  std::move(state), std::move(detail)});
+  }
+};
+
+// Scores the assignment's slots, an item each; lists the wrong, missing and not exercised ones
+// for the words.
+void score_slots(Scoring& sc) {
+  const StudentResult& st = sc.st;
+  const Rubric& r = sc.r;
+  const std::vector<std::string>& assignment = sc.assignment;
   const std::set<std::string> provided(st.provided.begin(), st.provided.end());
   const std::set<std::string> wrong(st.wrong.begin(), st.wrong.end());
   const std::set<std::string> unexercised(st.unexercised.begin(), st.unexercised.end());
-  int correct = 0;
-  double slot_earned = 0;
-  std::vector<std::string> wrong_list, missing, not_exercised;
   for (const auto& s : assignment) {
     const double w = weight_of(r.slot_weights, r.slot_default, s);
     if (w <= 0) continue;
     const auto why = st.why_wrong.find(s);
     const std::string detail = why == st.why_wrong.end() ? "" : why->second;
-    if (!graded) {
-      item(ScoreItem::Kind::Slot, s, w, 0, st.status, "");
+    if (!sc.graded) {
+      sc.item(ScoreItem::Kind::Slot, s, w, 0, st.status, "");
     } else if (wrong.count(s)) {
-      item(ScoreItem::Kind::Slot, s, w, 0, "wrong", detail);
+      sc.item(ScoreItem::Kind::Slot, s, w, 0, "wrong", detail);
     } else if (provided.count(s)) {
-      ++correct, slot_earned += w;
-      item(ScoreItem::Kind::Slot, s, w, w, "correct", "");
+      ++sc.correct, sc.slot_earned += w;
+      sc.item(ScoreItem::Kind::Slot, s, w, w, "correct", "");
     } else if (unexercised.count(s)) {
-      not_exercised.push_back(s);
-      item(ScoreItem::Kind::Slot, s, w, 0, "not exercised", "provided, but no check that ran calls it");
+      sc.not_exercised.push_back(s);
+      sc.item(ScoreItem::Kind::Slot, s, w, 0, "not exercised", "provided, but no check that ran calls it");
     } else {
-      missing.push_back(s);
-      item(ScoreItem::Kind::Slot, s, w, 0, "missing", "not provided");
+      sc.missing.push_back(s);
+      sc.item(ScoreItem::Kind::Slot, s, w, 0, "missing", "not provided");
     }
   }
   for (const auto& s : st.wrong)  // in the order of the first fixes
     if (std::find(assignment.begin(), assignment.end(), s) != assignment.end() &&
         weight_of(r.slot_weights, r.slot_default, s) > 0)
-      wrong_list.push_back(s);
-  double earned = slot_earned;
-  std::vector<std::string> area_words;
-  for (const auto& [area, w] : r.area_weights) {
+      sc.wrong_list.push_back(s);
+}
+
+// Scores each weighted area by the share of its checks that passed.
+void score_areas(Scoring& sc) {
+  const StudentResult& st = sc.st;
+  for (const auto& [area, w] : sc.r.area_weights) {
     if (w <= 0) continue;
     auto it = st.areas.find(area);
-    const int run = !graded || it == st.areas.end() ? 0 : it->second.second;
+    const int run = !sc.graded || it == st.areas.end() ? 0 : it->second.second;
     const int passed = run <= 0 ? 0 : std::clamp(it->second.first, 0, run);
     const double e = run > 0 ? (w * passed) / run : 0;  // no checks run: no evidence, no credit
-    earned += e;
+    sc.earned += e;
     const std::string counts = std::to_string(passed) + "/" + std::to_string(run);
-    item(ScoreItem::Kind::Area, area, w, e, counts + " checks passed", run > 0 ? "" : "no check of this area ran");
-    if (graded) out.breakdown.push_back(area + " " + counts), area_words.push_back(area + " " + counts + " checks");
+    sc.item(ScoreItem::Kind::Area, area, w, e, counts + " checks passed", run > 0 ? "" : "no check of this area ran");
+    if (sc.graded)
+      sc.out.breakdown.push_back(area + " " + counts), sc.area_words.push_back(area + " " + counts + " checks");
   }
-  int n_made = 0, n_verified = 0;
-  std::vector<std::string> false_claims;
-  if (r.claims_weight > 0) {
-    double made = 0;
-    for (const auto& c : st.claims) {
-      const double w = weight_of(r.claim_weights, r.claim_default, c.claim);
-      if (c.status == "not claimed" || w <= 0) continue;
-      made += w;
-    }
-    for (const auto& c : st.claims) {
-      const double w = weight_of(r.claim_weights, r.claim_default, c.claim);
-      if (c.status == "not claimed" || w <= 0 || !graded) continue;
-      ++n_made;
-      const double share = r.claims_weight * w / made, e = c.status.rfind("verified", 0) == 0 ? share : 0;
-      n_verified += c.status.rfind("verified", 0) == 0;
-      if (c.status == "FALSE CLAIM") false_claims.push_back(c.integrator + " " + c.claim);
-      earned += e;
-      item(ScoreItem::Kind::Claim, c.integrator + " " + c.claim, share, e, c.status, "");
-    }
-    // No claims made: no claim credit (making none would otherwise be the safest way to score).
-    if (n_made == 0) item(ScoreItem::Kind::Claim, "claims", r.claims_weight, 0, graded ? "none made" : st.status, "");
-    if (graded)
-      out.breakdown.push_back("claims " + std::to_string(n_verified) + "/" + std::to_string(n_made) + " verified");
-  }
-  if (graded && slot_max > 0)
-    out.breakdown.insert(out.breakdown.begin(),
-                         "slots " + std::to_string(correct) + "/" + std::to_string(assignment.size()));
-  out.points = graded ? static_cast<double>(cents(earned * scale)) / 100.0 : 0.0;
-  for (auto& i : out.items) {  // a claim's item is "<integrator> <claim>"; its visibility is the claim's
-    const std::string name = i.kind == ScoreItem::Kind::Claim ? i.name.substr(i.name.rfind(' ') + 1) : i.name;
-    const auto v = r.visibility.find(name);
-    i.visibility = v == r.visibility.end() ? r.visibility_default : v->second;
-  }
+}
 
-  // The feedback in words: the grade first, then what it rests on, counts and weights
-  // together ("11 of 12 slots correct (weight 12 of 13)", "casimir (weight 1)"), the first fix, and
-  // the report; clipped in the middle, never at its ends.
+// Scores the integrator claims: the claims weight shared among the claims made, earned by those verified.
+void score_claims(Scoring& sc) {
+  const StudentResult& st = sc.st;
+  const Rubric& r = sc.r;
+  double made = 0;
+  for (const auto& c : st.claims) {
+    const double w = weight_of(r.claim_weights, r.claim_default, c.claim);
+    if (c.status == "not claimed" || w <= 0) continue;
+    made += w;
+  }
+  for (const auto& c : st.claims) {
+    const double w = weight_of(r.claim_weights, r.claim_default, c.claim);
+    if (c.status == "not claimed" || w <= 0 || !sc.graded) continue;
+    ++sc.n_made;
+    const double share = r.claims_weight * w / made, e = c.status.rfind("verified", 0) == 0 ? share : 0;
+    sc.n_verified += c.status.rfind("verified", 0) == 0;
+    if (c.status == "FALSE CLAIM") sc.false_claims.push_back(c.integrator + " " + c.claim);
+    sc.earned += e;
+    sc.item(ScoreItem::Kind::Claim, c.integrator + " " + c.claim, share, e, c.status, "");
+  }
+  // No claims made: no claim credit (making none would otherwise be the safest way to score).
+  if (sc.n_made == 0)
+    sc.item(ScoreItem::Kind::Claim, "claims", r.claims_weight, 0, sc.graded ? "none made" : st.status, "");
+  if (sc.graded)
+    sc.out.breakdown.push_back("claims " + std::to_string(sc.n_verified) + "/" + std::to_string(sc.n_made) +
+                               " verified");
+}
+
+// The feedback in words: the grade first, then what it rests on, counts and weights
+// together ("11 of 12 slots correct (weight 12 of 13)", "casimir (weight 1)"), the first fix, and
+// the report; clipped in the middle, never at its ends.
+void write_feedback(Scoring& sc) {
+  const StudentResult& st = sc.st;
+  const Rubric& r = sc.r;
+  const std::vector<std::string>& assignment = sc.assignment;
+  Score& out = sc.out;
   bool uniform = true;
   for (const auto& s : assignment) uniform = uniform && weight_of(r.slot_weights, r.slot_default, s) == r.slot_default;
   const auto weighted = [&](const std::vector<std::string>& slots) {
@@ -455,26 +472,26 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
   };
   std::vector<std::string> notes;
   std::string head = format_points(out.points) + " of " + trimmed_number(r.points);
-  if (!graded) {
+  if (!sc.graded) {
     head += ": " + st.status;
   } else {
     std::vector<std::string> parts;
-    if (slot_max > 0) {
-      std::string slots = std::to_string(correct) + " of " + std::to_string(assignment.size()) +
+    if (sc.slot_max > 0) {
+      std::string slots = std::to_string(sc.correct) + " of " + std::to_string(assignment.size()) +
                           (assignment.size() == 1 ? " slot" : " slots") + " correct";
-      if (!uniform) slots += " (weight " + trimmed_number(slot_earned) + " of " + trimmed_number(slot_max) + ")";
+      if (!uniform) slots += " (weight " + trimmed_number(sc.slot_earned) + " of " + trimmed_number(sc.slot_max) + ")";
       parts.push_back(slots);
     }
-    parts.insert(parts.end(), area_words.begin(), area_words.end());
+    parts.insert(parts.end(), sc.area_words.begin(), sc.area_words.end());
     if (r.claims_weight > 0)
-      parts.push_back(n_made == 0 ? std::string("no integrator claims made")
-                                  : std::to_string(n_verified) + " of " + std::to_string(n_made) +
-                                        (n_made == 1 ? " claim verified" : " claims verified"));
+      parts.push_back(sc.n_made == 0 ? std::string("no integrator claims made")
+                                     : std::to_string(sc.n_verified) + " of " + std::to_string(sc.n_made) +
+                                           (sc.n_made == 1 ? " claim verified" : " claims verified"));
     for (std::size_t i = 0; i < parts.size(); ++i) head += (i ? ", " : ": ") + parts[i];
-    if (!wrong_list.empty()) notes.push_back("wrong: " + weighted(wrong_list));
-    if (!missing.empty()) notes.push_back("missing: " + weighted(missing));
-    if (!not_exercised.empty()) notes.push_back("not exercised by the checks run: " + weighted(not_exercised));
-    if (!false_claims.empty()) notes.push_back("false claims: " + short_list(false_claims));
+    if (!sc.wrong_list.empty()) notes.push_back("wrong: " + weighted(sc.wrong_list));
+    if (!sc.missing.empty()) notes.push_back("missing: " + weighted(sc.missing));
+    if (!sc.not_exercised.empty()) notes.push_back("not exercised by the checks run: " + weighted(sc.not_exercised));
+    if (!sc.false_claims.empty()) notes.push_back("false claims: " + short_list(sc.false_claims));
   }
   out.headline = one_line(head);
   out.notes = notes;
@@ -483,7 +500,10 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
   for (const auto& n : notes) middle += (middle.empty() ? "" : "; ") + n;
   const std::string tail = st.report.empty() ? "" : "report: " + one_line(st.report);
   out.feedback = feedback_line(one_line(head), one_line(middle), tail);
-  out.no_grade = st.status == kGraderError || st.status == kNotCheckedYet;
+}
+
+// The words of a student with no grade: the grader's machine failed its check, or it is not checked yet.
+void say_no_grade(const StudentResult& st, Score& out) {
   if (st.status == kGraderError) {
     // The machine's fault is not the student's: no grade (an empty cell), and words without the
     // grader's paths; the lecturer's summary says what failed and its fix.
@@ -505,7 +525,42 @@ Score score_student(const StudentResult& st, const Rubric& r, const std::vector<
     out.feedback =
         "no grade yet: the class run stopped before checking this submission; the same command again resumes it";
   }
-  return out;
+}
+
+}  // namespace
+
+Score score_student(const StudentResult& st, const Rubric& r, const std::vector<std::string>& assignment) {
+  double slot_max = 0, max = r.claims_weight;
+  for (const auto& s : assignment) slot_max += weight_of(r.slot_weights, r.slot_default, s);
+  max += slot_max;
+  for (const auto& [name, w] : r.area_weights) max += w;
+  if (max <= 0)
+    rubric_error(r, "assignment",
+                 "the maximum grade is 0 for this class (" + std::to_string(assignment.size()) +
+                     " assignment slots); list the slots under \"assignment\"");
+  Scoring sc(st, r, assignment, slot_max, r.points / max);
+  Score& out = sc.out;
+  out.max_points = r.points;
+  // Every assignment slot, every weighted area and the claims are items, graded or not: a student
+  // who was not checked sees what the assignment asked for, each at 0.
+  score_slots(sc);
+  sc.earned = sc.slot_earned;
+  score_areas(sc);
+  if (r.claims_weight > 0) score_claims(sc);
+  if (sc.graded && slot_max > 0)
+    out.breakdown.insert(out.breakdown.begin(),
+                         "slots " + std::to_string(sc.correct) + "/" + std::to_string(assignment.size()));
+  out.points = sc.graded ? static_cast<double>(cents(sc.earned * sc.scale)) / 100.0 : 0.0;
+  for (auto& i : out.items) {  // a claim's item is "<integrator> <claim>"; its visibility is the claim's
+    const std::string name = i.kind == ScoreItem::Kind::Claim ? i.name.substr(i.name.rfind(' ') + 1) : i.name;
+    const auto v = r.visibility.find(name);
+    i.visibility = v == r.visibility.end() ? r.visibility_default : v->second;
+  }
+
+  write_feedback(sc);
+  out.no_grade = st.status == kGraderError || st.status == kNotCheckedYet;
+  say_no_grade(st, out);
+  return std::move(out);
 }
 
 std::vector<std::string> gradebook_header(const Rubric& r) {

@@ -53,10 +53,8 @@ std::string read_text(const std::string& path) {
   return os.str();
 }
 
-}  // namespace
-
-void add_lecturer_commands(CLI::App& app) {
-  // geomech autograder PLATFORM DIR
+// geomech autograder PLATFORM DIR
+void add_autograder_command(CLI::App& app) {
   struct Autograder {
     std::string platform, dir;
     AutograderOptions o;
@@ -98,8 +96,10 @@ void add_lecturer_commands(CLI::App& app) {
       return write_autograder(ag->o);
     });
   });
+}
 
-  // geomech grade-submission PLATFORM --submission DIR --results FILE --config FILE
+// geomech grade-submission PLATFORM --submission DIR --results FILE --config FILE
+void add_grade_submission_command(CLI::App& app) {
   struct Grade {
     std::string platform;
     GradeSubmissionOptions o;
@@ -121,8 +121,10 @@ void add_lecturer_commands(CLI::App& app) {
       return grade_submission(gr->o);
     });
   });
+}
 
-  // geomech self-test: the grader's machine, checked as a class run checks it before any student.
+// geomech self-test: the grader's machine, checked as a class run checks it before any student.
+void add_self_test_command(CLI::App& app) {
   struct SelfTest {
     bool trusted = false;
     std::map<std::string, bool> flag;  // a served language's id -> its flag (--no-<id> or --<id>) given
@@ -172,8 +174,10 @@ void add_lecturer_commands(CLI::App& app) {
       return 0;
     });
   });
+}
 
-  // geomech class-html REPORT_DIR
+// geomech class-html REPORT_DIR
+void add_class_html_command(CLI::App& app) {
   struct Html {
     std::string dir, rubric;
   };
@@ -205,6 +209,15 @@ void add_lecturer_commands(CLI::App& app) {
       return 0;
     });
   });
+}
+
+}  // namespace
+
+void add_lecturer_commands(CLI::App& app) {
+  add_autograder_command(app);
+  add_grade_submission_command(app);
+  add_self_test_command(app);
+  add_class_html_command(app);
 }
 
 }  // namespace gm::harness

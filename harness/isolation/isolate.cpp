@@ -347,6 +347,56 @@ TaskResult stopped_result(const Running& r, double wall, const LimitVerdict& v) 
   return t;
 }
 
+// Waits, a fiftieth of a second at most, for a running task's child to write to either pipe.
+void wait_for_output(const std::deque<Running>& running) {
+  std::vector<pollfd> fds;
+  for (const auto& r : running) {
+    if (r.result_fd >= 0) fds.push_back(pollfd{r.result_fd, POLLIN, 0});
+    if (r.output_fd >= 0) fds.push_back(pollfd{r.output_fd, POLLIN, 0});
+  }
+  ::poll(fds.data(), fds.size(), 20);
+}
+
+// Reads what the task's child has written to its pipes; a pipe at its end is closed.
+void read_pipes(Running& r) {
+  if (r.result_fd >= 0 && !drain(r.result_fd, r.result)) {
+    ::close(r.result_fd);
+    r.result_fd = -1;
+  }
+  if (r.output_fd >= 0 && !drain(r.output_fd, r.output, &r.sanitizer_report)) {
+    ::close(r.output_fd);
+    r.output_fd = -1;
+  }
+}
+
+// Judges the work of a task still running against its limit; one past it (and not busy writing a
+// sanitizer's report) is killed and its result recorded. True when it was stopped.
+bool stop_if_over_limit(Running& r, const WorkLimit& limit, const IsolationOptions& o,
+                        std::vector<TaskResult>& results) {
+  // The code's CPU and run-queue delay, read four times a second: the limit is on the work it
+  // does, and the kernel's accounting tells a task that sleeps from one a busy machine starves.
+  const auto now = Clock::now();
+  if (now - r.sampled > std::chrono::milliseconds(250)) sample_times(r, o, now);
+  const double wall = std::chrono::duration<double>(now - r.start).count();
+  WorkSoFar so_far;
+  so_far.wall = wall;
+  so_far.cpu = r.times.cpu;
+  so_far.known = r.times.queued_known;
+  so_far.looked_a_second = r.sampled > r.start + std::chrono::seconds(1);
+  so_far.account = r.account.get();
+  const LimitVerdict v = judge_work(limit, so_far);
+  const bool dying = !r.sanitizer_report.empty() && wall < limit.wall_guard() + kSanitizerGrace;
+  if (v.stop && !dying) {
+    int status = 0;
+    ::kill(-r.pid, SIGKILL);
+    ::kill(r.pid, SIGKILL);
+    ::waitpid(r.pid, &status, 0);
+    results[r.index] = stopped_result(r, wall, v);
+    return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string()>>& tasks,
@@ -392,24 +442,12 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
   while (next < tasks.size() || !running.empty()) {
     while (next < tasks.size() && static_cast<int>(running.size()) < jobs) start_one(seq[next++]);
 
-    std::vector<pollfd> fds;
-    for (const auto& r : running) {
-      if (r.result_fd >= 0) fds.push_back(pollfd{r.result_fd, POLLIN, 0});
-      if (r.output_fd >= 0) fds.push_back(pollfd{r.output_fd, POLLIN, 0});
-    }
-    ::poll(fds.data(), fds.size(), 20);
+    wait_for_output(running);
     if (o.on_idle) o.on_idle();
 
     for (auto it = running.begin(); it != running.end();) {
       Running& r = *it;
-      if (r.result_fd >= 0 && !drain(r.result_fd, r.result)) {
-        ::close(r.result_fd);
-        r.result_fd = -1;
-      }
-      if (r.output_fd >= 0 && !drain(r.output_fd, r.output, &r.sanitizer_report)) {
-        ::close(r.output_fd);
-        r.output_fd = -1;
-      }
+      read_pipes(r);
       int status = 0;
       const pid_t w = ::waitpid(r.pid, &status, WNOHANG);
       bool done = false;
@@ -421,26 +459,7 @@ std::vector<TaskResult> run_isolated(const std::vector<std::function<std::string
         results[r.index] = finish(r, status);
         done = true;
       } else {
-        // The code's CPU and run-queue delay, read four times a second: the limit is on the work it
-        // does, and the kernel's accounting tells a task that sleeps from one a busy machine starves.
-        const auto now = Clock::now();
-        if (now - r.sampled > std::chrono::milliseconds(250)) sample_times(r, o, now);
-        const double wall = std::chrono::duration<double>(now - r.start).count();
-        WorkSoFar so_far;
-        so_far.wall = wall;
-        so_far.cpu = r.times.cpu;
-        so_far.known = r.times.queued_known;
-        so_far.looked_a_second = r.sampled > r.start + std::chrono::seconds(1);
-        so_far.account = r.account.get();
-        const LimitVerdict v = judge_work(limit, so_far);
-        const bool dying = !r.sanitizer_report.empty() && wall < limit.wall_guard() + kSanitizerGrace;
-        if (v.stop && !dying) {
-          ::kill(-r.pid, SIGKILL);
-          ::kill(r.pid, SIGKILL);
-          ::waitpid(r.pid, &status, 0);
-          results[r.index] = stopped_result(r, wall, v);
-          done = true;
-        }
+        done = stop_if_over_limit(r, limit, o, results);
       }
       if (done) {
         if (r.result_fd >= 0) ::close(r.result_fd);

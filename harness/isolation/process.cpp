@@ -52,6 +52,51 @@ std::string read_bounded(const std::string& path) {
          " bytes of output cut ...]\n" + tail;
 }
 
+// Starts the process spec describes (the i-th), its output captured in a file unless it passes through;
+// one that cannot be started says why in its result.
+void spawn_child(const ProcessSpec& spec, std::size_t i, ProcessResult& result, std::vector<Child>& running) {
+  std::string capture = spec.output_file;
+  if (capture.empty() && !spec.pass_through) {
+    char tmpl[] = "/tmp/geomech-process-XXXXXX";
+    const int fd = ::mkstemp(tmpl);
+    if (fd >= 0) ::close(fd);
+    capture = tmpl;
+  }
+  posix_spawn_file_actions_t fa;
+  posix_spawn_file_actions_init(&fa);
+  if (!capture.empty()) {
+    posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, capture.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
+  }
+  // Nothing a child runs (a compiler told to #include "/dev/stdin", a submission's program)
+  // reads this process's input, which may be the lecturer's terminal. A child whose
+  // output passes through (the user's own check) keeps the terminal.
+  if (!spec.pass_through) posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  if (!spec.pass_through) {  // its own group: stopping it stops what it started (run_processes)
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+    posix_spawnattr_setpgroup(&attr, 0);
+  }
+  std::vector<char*> argv;
+  for (const auto& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = -1;
+  const int rc = argv[0] ? ::posix_spawnp(&pid, argv[0], &fa, &attr, argv.data(), environ) : EINVAL;
+  posix_spawn_file_actions_destroy(&fa);
+  posix_spawnattr_destroy(&attr);
+  if (rc != 0) {
+    result.started = false;
+    result.output =
+        "cannot run " + (spec.argv.empty() ? std::string("(nothing)") : spec.argv[0]) + ": " + std::strerror(rc);
+    if (spec.output_file.empty() && !capture.empty()) ::unlink(capture.c_str());
+    return;
+  }
+  result.started = true;
+  result.pid = pid;
+  running.push_back(Child{i, pid, Clock::now(), capture});
+}
+
 }  // namespace
 
 std::string shell_quote(const std::string& s) {
@@ -75,49 +120,7 @@ std::vector<ProcessResult> run_processes(const std::vector<ProcessSpec>& specs, 
   std::size_t next = 0;
   if (jobs < 1) jobs = 1;
 
-  auto start = [&](std::size_t i) {
-    const ProcessSpec& spec = specs[i];
-    std::string capture = spec.output_file;
-    if (capture.empty() && !spec.pass_through) {
-      char tmpl[] = "/tmp/geomech-process-XXXXXX";
-      const int fd = ::mkstemp(tmpl);
-      if (fd >= 0) ::close(fd);
-      capture = tmpl;
-    }
-    posix_spawn_file_actions_t fa;
-    posix_spawn_file_actions_init(&fa);
-    if (!capture.empty()) {
-      posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, capture.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-      posix_spawn_file_actions_adddup2(&fa, STDOUT_FILENO, STDERR_FILENO);
-    }
-    // Nothing a child runs (a compiler told to #include "/dev/stdin", a submission's program)
-    // reads this process's input, which may be the lecturer's terminal. A child whose
-    // output passes through (the user's own check) keeps the terminal.
-    if (!spec.pass_through) posix_spawn_file_actions_addopen(&fa, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-    posix_spawnattr_t attr;
-    posix_spawnattr_init(&attr);
-    if (!spec.pass_through) {  // its own group: stopping it stops what it started (run_processes)
-      posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
-      posix_spawnattr_setpgroup(&attr, 0);
-    }
-    std::vector<char*> argv;
-    for (const auto& a : spec.argv) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-    pid_t pid = -1;
-    const int rc = argv[0] ? ::posix_spawnp(&pid, argv[0], &fa, &attr, argv.data(), environ) : EINVAL;
-    posix_spawn_file_actions_destroy(&fa);
-    posix_spawnattr_destroy(&attr);
-    if (rc != 0) {
-      results[i].started = false;
-      results[i].output =
-          "cannot run " + (spec.argv.empty() ? std::string("(nothing)") : spec.argv[0]) + ": " + std::strerror(rc);
-      if (spec.output_file.empty() && !capture.empty()) ::unlink(capture.c_str());
-      return;
-    }
-    results[i].started = true;
-    results[i].pid = pid;
-    running.push_back(Child{i, pid, Clock::now(), capture});
-  };
+  auto start = [&](std::size_t i) { spawn_child(specs[i], i, results[i], running); };
 
   auto finish = [&](const Child& c, int status, bool timed_out) {
     ProcessResult& r = results[c.index];

@@ -74,23 +74,8 @@ std::string cells_in_words(const std::vector<int>& numbers) {
   return out;
 }
 
-}  // namespace
-
-std::string CodeCell::label() const {
-  return "cell " + std::to_string(number) +
-         (execution_count >= 0 ? ", In [" + std::to_string(execution_count) + "]" : std::string());
-}
-
-std::string cell_magic(const std::string& source) {
-  const std::size_t start = source.find_first_not_of(" \t\r\n");
-  if (start == std::string::npos || source.compare(start, 2, "%%") != 0) return "";
-  std::size_t end = start + 2;
-  while (end < source.size() && (std::isalnum(static_cast<unsigned char>(source[end])) || source[end] == '_')) ++end;
-  if (end == start + 2) return "";  // "%% Section": a comment in Octave's cell mode, not a magic
-  return source.substr(start, end - start);
-}
-
-Notebook read_notebook(const std::string& file, const std::string& text) {
+// The notebook's JSON, parsed, once it is seen to be an nbformat 4 notebook with a list of cells.
+json parsed_notebook(const std::string& file, const std::string& text) {
   json nb;
   try {
     nb = json::parse(text);
@@ -113,11 +98,12 @@ Notebook read_notebook(const std::string& file, const std::string& text) {
   if (!nb.contains("cells") || !nb.at("cells").is_array())
     throw NotebookError(file + ": its \"cells\" is " + (nb.contains("cells") ? kind_of(nb.at("cells")) : "missing") +
                         "; nbformat 4 has the list of cells there");
-  const json metadata = nb.contains("metadata") ? nb.at("metadata") : json::object();
-  if (!metadata.is_object())
-    throw NotebookError(file + ": its \"metadata\" is " + kind_of(metadata) + "; nbformat 4 has an object there");
+  return nb;
+}
 
-  Notebook out;
+// Sets the notebook's kernel and the language its cells are in, from its metadata; a notebook whose
+// kernel names no language the suite checks is refused.
+void find_kernel(const json& metadata, const std::string& file, Notebook& out) {
   // The kernel: what its kernelspec says it runs, else the language_info its kernel wrote, else the
   // kernelspec's name.
   const json kernelspec = metadata.contains("kernelspec") ? metadata.at("kernelspec") : json();
@@ -140,6 +126,32 @@ Notebook read_notebook(const std::string& file, const std::string& text) {
                                        : "its kernel is " + named + "; the suite checks notebooks whose kernel is " +
                                              kernels_in_words()));
   }
+}
+
+}  // namespace
+
+std::string CodeCell::label() const {
+  return "cell " + std::to_string(number) +
+         (execution_count >= 0 ? ", In [" + std::to_string(execution_count) + "]" : std::string());
+}
+
+std::string cell_magic(const std::string& source) {
+  const std::size_t start = source.find_first_not_of(" \t\r\n");
+  if (start == std::string::npos || source.compare(start, 2, "%%") != 0) return "";
+  std::size_t end = start + 2;
+  while (end < source.size() && (std::isalnum(static_cast<unsigned char>(source[end])) || source[end] == '_')) ++end;
+  if (end == start + 2) return "";  // "%% Section": a comment in Octave's cell mode, not a magic
+  return source.substr(start, end - start);
+}
+
+Notebook read_notebook(const std::string& file, const std::string& text) {
+  const json nb = parsed_notebook(file, text);
+  const json metadata = nb.contains("metadata") ? nb.at("metadata") : json::object();
+  if (!metadata.is_object())
+    throw NotebookError(file + ": its \"metadata\" is " + kind_of(metadata) + "; nbformat 4 has an object there");
+
+  Notebook out;
+  find_kernel(metadata, file, out);
   const Language& l = *out.language;
   std::vector<int> shown, skipped_tag;
   const json& cells = nb.at("cells");

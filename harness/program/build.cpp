@@ -787,6 +787,67 @@ Linked link_program(const CompileSetting& cs, const BuildOptions& o, const UnitS
   return out;
 }
 
+// Sandboxed (untrusted mode): copies the source into `dir` for the compiler and sets out what the
+// sandbox shows it; false, with r.message, when it cannot.
+bool prepare_sandbox(const fs::path& source, const fs::path& dir, const Toolchain& tc, const BuildOptions& o,
+                     fs::path& compiled_source, SandboxSpec& sandbox, BuildResult& r) {
+  if (o.server && tc.server_object.empty()) {
+    r.message = "the toolchain " + tc.path + " has no server_object: rebuild the suite (`./geomech build`)";
+    return false;
+  }
+  if (const std::string why = copy_for_the_sandbox(source, dir); !why.empty()) {
+    r.message = why;
+    return false;
+  }
+  compiled_source = dir / "src" / source.filename();
+  sandbox = compiler_sandbox(tc, dir);
+  return true;
+}
+
+// The library flags the source asks for, and the roots the grader trusts; false, with r.message,
+// when they cannot be resolved.
+bool resolve_libraries(const fs::path& source, const fs::path& compiled_source, const BuildOptions& o,
+                       SandboxSpec& sandbox, LibraryFlags& libs, std::vector<std::string>& trusted_roots,
+                       BuildResult& r) {
+  try {
+    trusted_roots = trusted_library_roots();
+    LibraryRequest wanted = o.libraries;
+    wanted.add(declared_in_source(read_text(compiled_source), source.filename().string()));
+    libs = resolve_library_flags(wanted, o.sandbox);
+    // The folders the grader trusts (GEOMECH_LIBRARY_ROOTS) are shown to the sandboxed compiler.
+    if (o.sandbox)
+      for (const auto& root : trusted_roots) sandbox.read_only.push_back(root);
+  } catch (const std::exception& e) {
+    r.message = e.what();
+    return false;
+  }
+  return true;
+}
+
+// Which units this build compiles; those it does not are marked done, with the reason.
+void choose_units(const BuildOptions& o, UnitState st[]) {
+  // Scalars not asked for (--scalar double) are not compiled at all. Double is the whole compile,
+  // or the pieces: for a first look (its slots only), and after one, when its two pieces are up to
+  // date and the whole is not (see kUnits).
+  const bool pieces =
+      !o.integrators || (st[kDoubleOtherSlots].ok && st[kDoubleManakovSlots].ok && !st[kDoubleWhole].ok);
+  for (int k = 0; k < kUnitCount; ++k) {
+    const Unit& unit = kUnits[k];
+    st[k].wanted = k == kDoubleWhole                                    ? !pieces
+                   : k == kDoubleOtherSlots || k == kDoubleManakovSlots ? pieces
+                   : k == kDoubleIntegrators                            ? pieces && o.integrators
+                   : unit.scalar == 1                                   ? o.mp50
+                                                                        : o.exact;
+    if (!st[k].wanted) {
+      st[k].done = true;
+      st[k].ok = false;
+      st[k].unavailable =
+          std::string("not compiled for ") + kScalars[unit.scalar] +
+          (o.scalars_left_out_because.empty() ? " in this run (--scalar)" : ": " + o.scalars_left_out_because);
+    }
+  }
+}
+
 }  // namespace
 
 BuildResult build_student(const std::string& source_in, const Toolchain& tc, const BuildOptions& o) {
@@ -814,18 +875,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   // suite's headers and the prebuilt files, and writes only into `dir` (harness/isolation/sandbox.hpp).
   fs::path compiled_source = source;
   SandboxSpec sandbox;
-  if (o.sandbox) {
-    if (o.server && tc.server_object.empty()) {
-      r.message = "the toolchain " + tc.path + " has no server_object: rebuild the suite (`./geomech build`)";
-      return r;
-    }
-    if (const std::string why = copy_for_the_sandbox(source, dir); !why.empty()) {
-      r.message = why;
-      return r;
-    }
-    compiled_source = dir / "src" / source.filename();
-    sandbox = compiler_sandbox(tc, dir);
-  }
+  if (o.sandbox && !prepare_sandbox(source, dir, tc, o, compiled_source, sandbox, r)) return r;
   const RunArgv run_argv = [&](const std::vector<std::string>& argv) {
     return o.sandbox ? sandboxed(argv, sandbox) : argv;
   };
@@ -834,18 +884,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   // own `// geomech:` lines; a stranger's (sandboxed) are vetted before the compiler sees them.
   LibraryFlags libs;
   std::vector<std::string> trusted_roots;  // GEOMECH_LIBRARY_ROOTS
-  try {
-    trusted_roots = trusted_library_roots();
-    LibraryRequest wanted = o.libraries;
-    wanted.add(declared_in_source(read_text(compiled_source), source.filename().string()));
-    libs = resolve_library_flags(wanted, o.sandbox);
-    // The folders the grader trusts (GEOMECH_LIBRARY_ROOTS) are shown to the sandboxed compiler.
-    if (o.sandbox)
-      for (const auto& root : trusted_roots) sandbox.read_only.push_back(root);
-  } catch (const std::exception& e) {
-    r.message = e.what();
-    return r;
-  }
+  if (!resolve_libraries(source, compiled_source, o, sandbox, libs, trusted_roots, r)) return r;
   if (o.verbose)
     for (const auto& d : libs.dropped) r.log.push_back("left out " + d);
 
@@ -854,26 +893,7 @@ BuildResult build_student(const std::string& source_in, const Toolchain& tc, con
   const CompileSetting cs{tc, libs, compiled_source, dir};
   UnitState st[kUnitCount];
   if (!o.force) read_cached_objects(cs, pch_inputs, st);
-  // Scalars not asked for (--scalar double) are not compiled at all. Double is the whole compile,
-  // or the pieces: for a first look (its slots only), and after one, when its two pieces are up to
-  // date and the whole is not (see kUnits).
-  const bool pieces =
-      !o.integrators || (st[kDoubleOtherSlots].ok && st[kDoubleManakovSlots].ok && !st[kDoubleWhole].ok);
-  for (int k = 0; k < kUnitCount; ++k) {
-    const Unit& unit = kUnits[k];
-    st[k].wanted = k == kDoubleWhole                                    ? !pieces
-                   : k == kDoubleOtherSlots || k == kDoubleManakovSlots ? pieces
-                   : k == kDoubleIntegrators                            ? pieces && o.integrators
-                   : unit.scalar == 1                                   ? o.mp50
-                                                                        : o.exact;
-    if (!st[k].wanted) {
-      st[k].done = true;
-      st[k].ok = false;
-      st[k].unavailable =
-          std::string("not compiled for ") + kScalars[unit.scalar] +
-          (o.scalars_left_out_because.empty() ? " in this run (--scalar)" : ": " + o.scalars_left_out_because);
-    }
-  }
+  choose_units(o, st);
 
   bool compiled_anything = false;
   if (!compile_rounds(cs, o, source, run_argv, st, compiled_anything, r)) {

@@ -30,6 +30,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <sstream>
@@ -554,6 +555,86 @@ json Connection::call(const Call& c) {
 
 namespace {
 bool is_scalar_word(const std::string& s) { return s == "double" || s == "mp50" || s == "exact"; }
+
+// One integrator of the handshake: its name (checked: it names figures and is typed in
+// --integrator), steps, scalars, claims, state form, precision and domain. What it declares that the
+// suite does not know goes to `d.unchecked` (so the check cannot pass on it); a malformed field
+// throws RemoteError through `bad`.
+RemoteDescription::Integrator parse_integrator(const json& i, RemoteDescription& d,
+                                               const std::function<RemoteError(const std::string&)>& bad) {
+  RemoteDescription::Integrator x;
+  x.name = i.at("name").get<std::string>();
+  // An integrator's name names figures and report sections and is typed in --integrator:
+  // letters, digits and "_.-", at most 64 (it is the submission's text).
+  if (x.name.empty() || x.name.size() > 64 ||
+      x.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") !=
+          std::string::npos)
+    throw bad("an integrator's name must be 1 to 64 letters, digits, '_', '.' or '-'; got '" +
+              harness::inert_text(harness::bounded_text(x.name, 200)) + "'");
+  for (const auto& s : i.value("steps", json::array())) x.steps.push_back(s.get<std::string>());
+  for (const auto& s : i.value("scalars", json::array({"double"}))) x.scalars.push_back(s.get<std::string>());
+  if (i.contains("claims") && i["claims"].is_object()) {
+    const json& c = i["claims"];
+    x.has_claims = true;
+    x.claims.integrator = x.name;
+    x.claims.order = c.value("order", 0);
+    std::set<std::string> known{"order"};
+    for (const auto& bc : kBooleanClaims) {
+      x.claims.*bc.member = c.value(bc.name, false);
+      known.insert(bc.name);
+    }
+    // A claim the suite does not know is not verified, so it fails the check (UNCHECKED)
+    // instead of passing with a warning, naming the claim it probably means and every known one.
+    for (const auto& [k, v] : c.items())
+      if (!known.count(k)) {
+        const std::vector<std::string> names(known.begin(), known.end());
+        const std::string guess = harness::closest_claim(k, names);
+        std::string list;
+        for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+        d.unchecked.push_back("integrator '" + x.name + "' claims '" + k +
+                              "', which is not a claim the suite knows, so " + "nothing can verify it" +
+                              (guess.empty() ? "" : "; did you mean '" + guess + "'?") + " The claims are: " + list);
+      }
+  }
+  // The form its rigid-body step keeps the state in, and the precision it states.
+  if (i.contains("state")) {
+    try {
+      x.form = parse_state_form(i["state"].is_string() ? i["state"].get<std::string>() : i["state"].dump());
+    } catch (const std::exception& e) {
+      d.unchecked.push_back("integrator '" + x.name + "' declares its state as " + i["state"].dump().substr(0, 80) +
+                            ": " + e.what());
+      x.steps.erase(std::remove(x.steps.begin(), x.steps.end(), "rigid_body_step"), x.steps.end());
+    }
+  }
+  x.claims.integrator = x.name;
+  if (i.contains("precision") && i["precision"].is_string()) {
+    x.claims.precision = i["precision"].get<std::string>();
+    x.has_claims = true;
+  }
+  if (i.contains("precision_reason") && i["precision_reason"].is_string())
+    x.claims.precision_reason = i["precision_reason"].get<std::string>();
+  // Where the step is meant to work: positive numbers, each optional.
+  if (i.contains("domain") && i["domain"].is_object() && !i["domain"].empty()) {
+    x.has_claims = true;
+    x.claims.integrator = x.name;
+    for (const auto& [k, v] : i["domain"].items()) {
+      double* field = k == "max_omega" ? &x.claims.domain.max_omega
+                      : k == "max_pi"  ? &x.claims.domain.max_pi
+                      : k == "min_h"   ? &x.claims.domain.min_h
+                                       : nullptr;
+      if (!field) {
+        d.unchecked.push_back("integrator '" + x.name + "' declares its domain with '" + harness::inert_text(k) +
+                              "', which the suite does not know (max_omega, max_pi, min_h)");
+        continue;
+      }
+      if (!v.is_number() || !(v.get<double>() > 0) || !std::isfinite(v.get<double>()))
+        throw bad("integrator '" + x.name + "': domain '" + k + "' must be a positive number, got " + v.dump());
+      *field = v.get<double>();
+    }
+  }
+  return x;
+}
+
 }  // namespace
 
 RemoteDescription parse_hello(const json& h) {
@@ -590,80 +671,7 @@ RemoteDescription parse_hello(const json& h) {
     }
   }
   if (h.contains("integrators"))
-    for (const auto& i : h["integrators"]) {
-      RemoteDescription::Integrator x;
-      x.name = i.at("name").get<std::string>();
-      // An integrator's name names figures and report sections and is typed in --integrator:
-      // letters, digits and "_.-", at most 64 (it is the submission's text).
-      if (x.name.empty() || x.name.size() > 64 ||
-          x.name.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_.-") !=
-              std::string::npos)
-        throw bad("an integrator's name must be 1 to 64 letters, digits, '_', '.' or '-'; got '" +
-                  harness::inert_text(harness::bounded_text(x.name, 200)) + "'");
-      for (const auto& s : i.value("steps", json::array())) x.steps.push_back(s.get<std::string>());
-      for (const auto& s : i.value("scalars", json::array({"double"}))) x.scalars.push_back(s.get<std::string>());
-      if (i.contains("claims") && i["claims"].is_object()) {
-        const json& c = i["claims"];
-        x.has_claims = true;
-        x.claims.integrator = x.name;
-        x.claims.order = c.value("order", 0);
-        std::set<std::string> known{"order"};
-        for (const auto& bc : kBooleanClaims) {
-          x.claims.*bc.member = c.value(bc.name, false);
-          known.insert(bc.name);
-        }
-        // A claim the suite does not know is not verified, so it fails the check (UNCHECKED)
-        // instead of passing with a warning, naming the claim it probably means and every known one.
-        for (const auto& [k, v] : c.items())
-          if (!known.count(k)) {
-            const std::vector<std::string> names(known.begin(), known.end());
-            const std::string guess = harness::closest_claim(k, names);
-            std::string list;
-            for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
-            d.unchecked.push_back("integrator '" + x.name + "' claims '" + k +
-                                  "', which is not a claim the suite knows, so " + "nothing can verify it" +
-                                  (guess.empty() ? "" : "; did you mean '" + guess + "'?") +
-                                  " The claims are: " + list);
-          }
-      }
-      // The form its rigid-body step keeps the state in, and the precision it states.
-      if (i.contains("state")) {
-        try {
-          x.form = parse_state_form(i["state"].is_string() ? i["state"].get<std::string>() : i["state"].dump());
-        } catch (const std::exception& e) {
-          d.unchecked.push_back("integrator '" + x.name + "' declares its state as " + i["state"].dump().substr(0, 80) +
-                                ": " + e.what());
-          x.steps.erase(std::remove(x.steps.begin(), x.steps.end(), "rigid_body_step"), x.steps.end());
-        }
-      }
-      x.claims.integrator = x.name;
-      if (i.contains("precision") && i["precision"].is_string()) {
-        x.claims.precision = i["precision"].get<std::string>();
-        x.has_claims = true;
-      }
-      if (i.contains("precision_reason") && i["precision_reason"].is_string())
-        x.claims.precision_reason = i["precision_reason"].get<std::string>();
-      // Where the step is meant to work: positive numbers, each optional.
-      if (i.contains("domain") && i["domain"].is_object() && !i["domain"].empty()) {
-        x.has_claims = true;
-        x.claims.integrator = x.name;
-        for (const auto& [k, v] : i["domain"].items()) {
-          double* field = k == "max_omega" ? &x.claims.domain.max_omega
-                          : k == "max_pi"  ? &x.claims.domain.max_pi
-                          : k == "min_h"   ? &x.claims.domain.min_h
-                                           : nullptr;
-          if (!field) {
-            d.unchecked.push_back("integrator '" + x.name + "' declares its domain with '" + harness::inert_text(k) +
-                                  "', which the suite does not know (max_omega, max_pi, min_h)");
-            continue;
-          }
-          if (!v.is_number() || !(v.get<double>() > 0) || !std::isfinite(v.get<double>()))
-            throw bad("integrator '" + x.name + "': domain '" + k + "' must be a positive number, got " + v.dump());
-          *field = v.get<double>();
-        }
-      }
-      d.integrators.push_back(std::move(x));
-    }
+    for (const auto& i : h["integrators"]) d.integrators.push_back(parse_integrator(i, d, bad));
   // What the implementation says of itself is its own text: each bounded, notes only on
   // slots and scalars there are, at most kMaxRemarks warnings and unchecked items (the rest counted).
   auto text = [](const json& j) { return harness::bounded_text(j.is_string() ? j.get<std::string>() : j.dump()); };

@@ -305,6 +305,16 @@ bool show_named_packages(const Language& l, const std::string& source, SandboxSp
   return true;
 }
 
+// A submission the intake refused (an entry that is a link, a device, too large: RefusedEntry, whose
+// words name it) or could not read: said, and the code's error (2).
+int refused(const std::string& file, const std::exception& e) {
+  if (dynamic_cast<const RefusedEntry*>(&e))
+    std::cerr << "geomech check: " << inert_text(e.what()) << "\n";
+  else
+    std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
+  return 2;
+}
+
 // The files a served file names as its own (`geomech: beside NAME`, harness/languages/language.hpp),
 // copied with it into /submission as a stranger's files are (never through a link, never a device,
 // within the intake's limits); the paths here of each. A file named and not there, or a name that is
@@ -358,12 +368,8 @@ int prepare_served(const std::string& file, const Language* served, bool noteboo
       own = {file};
       for (auto& b : add_beside_files(*served, file, copy)) own.push_back(std::move(b));
     }
-  } catch (const RefusedEntry& e) {
-    std::cerr << "geomech check: " << inert_text(e.what()) << "\n";
-    return 2;
   } catch (const std::exception& e) {
-    std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
-    return 2;
+    return refused(file, e);
   }
   // The runtimes they need start inside the sandbox (the served file's, and each own file's: a
   // Python wrapper's Node server), or the grader's machine is at fault, never the code.
@@ -466,12 +472,8 @@ int run_untrusted_check(const SubmissionRequest& r, SubmissionOutcome& out) {
       (void)read_submission(folder, p.filename().string());
     else
       (void)read_stranger_file(file);
-  } catch (const RefusedEntry& e) {
-    std::cerr << "geomech check: " << inert_text(e.what()) << "\n";
-    return 2;
   } catch (const std::exception& e) {
-    std::cerr << "geomech check: " << file << ": " << e.what() << "\n";
-    return 2;
+    return refused(file, e);
   }
   SandboxSpec spec;
   // The sandbox clears the environment: what the harness sets for the server is passed again (the
