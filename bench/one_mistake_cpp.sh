@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # A complete C++ file with one mistake, checked from an empty cache, timed to its FIRST FIX line
-# (issue 56, item 3): examples/students/correct.hpp inlined into one file, with Euler's equations
+# (the time a student waits for the first fix): examples/students/correct.hpp inlined into one file, with Euler's equations
 # (3.8) written as (I^-1 Pi) x Pi instead of Pi x I^-1 Pi. Then the pieces of the double
 # instantiation compiled one at a time, as `geomech check` compiles them (harness/program/build.cpp,
 # kUnits): the precompiled header with an empty implementation, the slots other than Manakov's, the

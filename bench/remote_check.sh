@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Issue 15's speed figures: a full check of the correct Python and Octave implementations (every
+# Speed figures of the slot protocol: a full check of the correct Python and Octave implementations (every
 # property, every scalar they provide), beside the same check of the C++ one in the same run, with
 # the protocol's cost per call and the checks that took longest (where the time goes).
 #   bench/remote_check.sh [build-dir]        (default: build; after ./geomech build)
