@@ -35,6 +35,7 @@
 #include "harness/remote/slot_conventions.hpp"
 #include "harness/remote/slot_names.hpp"
 #include "harness/reports/report.hpp"
+#include "harness/reports/report_formats.hpp"
 #include "harness/submissions/check_submission.hpp"
 #include "impl/reference_subject.hpp"
 #include "mutation/runner.hpp"
@@ -128,7 +129,7 @@ int run_protocol_bench(const std::string& file, int calls) {
 
 // `geomech check-trajectory FILE...`: trajectories written by programs in any language.
 int run_trajectory_check(const std::vector<std::string>& files, const harness::TrajectoryCheckOptions& o,
-                         const std::string& report_dir, const std::string& junit, bool quiet) {
+                         const std::string& report_dir, const harness::FormatFiles& also, bool quiet) {
   harness::CheckResult r;
   try {
     r = harness::check_trajectories(files, o);
@@ -159,7 +160,7 @@ int run_trajectory_check(const std::vector<std::string>& files, const harness::T
   try {
     cat = load_catalogue(default_catalogue_path());
   } catch (const std::exception&) {}
-  return harness::finish_check(r, cat ? &*cat : nullptr, harness::ReportTail{quiet, report_dir, junit});
+  return harness::finish_check(r, cat ? &*cat : nullptr, harness::ReportTail{quiet, report_dir, also});
 }
 
 int run_list() {
@@ -460,12 +461,13 @@ struct TrajectoryCommand {
   CLI::App* app = nullptr;
   harness::TrajectoryCheckOptions tro;
   std::vector<std::string> trajectory_files, tr_inertia, tr_preserves;
-  std::string tr_system, tr_step, tr_report, tr_junit;
+  std::string tr_system, tr_step, tr_report;
+  harness::FormatFiles tr_also;  // each format's own option (harness/reports/report_formats.hpp)
   bool tr_quiet = false;
 };
 
 void add_trajectory_command(CLI::App& app, TrajectoryCommand& c) {
-  auto& [unused_app, tro, trajectory_files, tr_inertia, tr_preserves, tr_system, tr_step, tr_report, tr_junit,
+  auto& [unused_app, tro, trajectory_files, tr_inertia, tr_preserves, tr_system, tr_step, tr_report, tr_also,
          tr_quiet] = c;
   (void)unused_app;
   auto* traj = c.app = app.add_subcommand(
@@ -486,8 +488,8 @@ void add_trajectory_command(CLI::App& app, TrajectoryCommand& c) {
       ->check(CLI::PositiveNumber);
   traj->add_option(
       "--report", tr_report,
-      "write report.md, junit.xml, verdicts.json and figures/ here (default: geomech-reports/trajectory-<first file>)");
-  traj->add_option("--junit", tr_junit, "also write the JUnit XML to this file");
+      "write " + harness::report_folder_files() + " here (default: geomech-reports/trajectory-<first file>)");
+  harness::add_format_options(*traj, tr_also);
   traj->add_flag("--quiet,-q", tr_quiet, "print only the summary");
   traj->add_flag(
       "--allow-nonphysical", tro.params.allow_nonphysical,
@@ -495,7 +497,7 @@ void add_trajectory_command(CLI::App& app, TrajectoryCommand& c) {
 }
 
 int run_trajectory_command(TrajectoryCommand& c) {
-  auto& [traj, tro, trajectory_files, tr_inertia, tr_preserves, tr_system, tr_step, tr_report, tr_junit, tr_quiet] = c;
+  auto& [traj, tro, trajectory_files, tr_inertia, tr_preserves, tr_system, tr_step, tr_report, tr_also, tr_quiet] = c;
   if (!tr_system.empty()) tro.params.system = tr_system;
   if (!tr_inertia.empty()) tro.params.inertia = std::array<std::string, 3>{tr_inertia[0], tr_inertia[1], tr_inertia[2]};
   if (!tr_step.empty()) tro.params.step = tr_step;
@@ -503,7 +505,7 @@ int run_trajectory_command(TrajectoryCommand& c) {
   // A report by default, as `geomech check` writes one: named after the first file.
   if (tr_report.empty())
     tr_report = "geomech-reports/trajectory-" + std::filesystem::path(trajectory_files.front()).stem().string();
-  return run_trajectory_check(trajectory_files, tro, tr_report, tr_junit, tr_quiet);
+  return run_trajectory_check(trajectory_files, tro, tr_report, tr_also, tr_quiet);
 }
 
 // The commands that describe the suite: list, slots, subjects, catalogue, and bench-protocol.

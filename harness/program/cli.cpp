@@ -58,9 +58,8 @@ void add_check_options(CLI::App& app, CheckCliOptions& o) {
                  "memory per check, in MiB (default 4096): each check's writable memory; untrusted, the whole "
                  "sandbox's memory as root (a cgroup), else each of its processes' writable memory")
       ->check(CLI::Range(64L, 1L << 30));
-  app.add_option("--report", o.report_dir,
-                 "write report.md, junit.xml, verdicts.json and figures/ into this directory");
-  app.add_option("--junit", o.junit, "also write the JUnit XML to this file");
+  app.add_option("--report", o.report_dir, "write " + report_folder_files() + " into this directory");
+  add_format_options(app, o.also);
   app.add_flag("--no-isolation", o.no_isolation, "run checks in this process (for a debugger; a crash ends the run)");
   app.add_flag("--no-portraits", o.no_portraits, "do not draw the integrator pictures");
   app.add_flag("--quiet,-q", o.quiet, "print only the summary");
@@ -182,7 +181,7 @@ std::vector<std::string> to_args(const CheckCliOptions& o) {
   a.insert(a.end(), {"--jobs", std::to_string(o.jobs)});
   a.insert(a.end(), {"--memory-limit", std::to_string(o.memory_limit_mb)});
   if (!o.report_dir.empty()) a.insert(a.end(), {"--report", o.report_dir});
-  if (!o.junit.empty()) a.insert(a.end(), {"--junit", o.junit});
+  for (const auto& [option, file] : o.also) a.insert(a.end(), {option, file});
   if (o.no_isolation) a.push_back("--no-isolation");
   if (o.no_portraits) a.push_back("--no-portraits");
   if (o.quiet) a.push_back("--quiet");
@@ -234,7 +233,7 @@ int run_check_cli(const SubjectSet& subject, const SubjectInfo& info, const Chec
               << console.failures_printed() << (console.failures_printed() == 1 ? " failure" : " failures") << "\n";
     return r.exit_code();
   }
-  return finish_check(r, c, ReportTail{o.quiet, o.report_dir, o.junit});
+  return finish_check(r, c, ReportTail{o.quiet, o.report_dir, o.also});
 }
 
 }  // namespace gm::harness

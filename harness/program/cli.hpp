@@ -5,6 +5,7 @@
 
 #include "harness/checking/check.hpp"
 #include "harness/program/library_flags.hpp"
+#include "harness/reports/report_formats.hpp"
 
 #include <CLI/CLI.hpp>
 
@@ -31,8 +32,8 @@ struct CheckCliOptions {
   double case_budget = -1;     // seconds after which no new case starts; < 0: 40 % of the timeout; 0: none
   int jobs = default_jobs();   // the cores of this machine
   long memory_limit_mb = 4096;
-  std::string report_dir;  // write report.md, junit.xml, verdicts.json, figures/ here
-  std::string junit;       // also write the JUnit XML here
+  std::string report_dir;  // write every format's file and figures/ here (harness/reports/report_formats.hpp)
+  FormatFiles also;        // a format's own option -> its file ("--junit" -> "out.xml")
   bool no_isolation = false;
   bool no_portraits = false;
   bool quiet = false;  // only the summary line and the report's path

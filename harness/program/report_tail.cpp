@@ -24,7 +24,9 @@ int finish_check(const CheckResult& r, const Catalogue* catalogue, const ReportT
       write_report_dir(r, tail.report_dir, catalogue);
       std::cout << "report: " << tail.report_dir << "/report.md (JUnit: " << tail.report_dir << "/junit.xml)\n";
     }
-    if (!tail.junit.empty()) write_file_atomically(tail.junit, junit_report(r));
+    for (const ReportFormat& f : report_formats())
+      if (const auto to = tail.also.find(f.option); to != tail.also.end() && !to->second.empty())
+        write_file_atomically(to->second, f.render(r, catalogue));
   } catch (const std::exception& e) {
     std::cerr << "geomech: " << e.what() << "\n";
     status = 2;

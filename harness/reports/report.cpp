@@ -2,7 +2,7 @@
 
 #include "harness/checking/integrator_verdicts.hpp"
 #include "harness/isolation/inert_text.hpp"
-#include "harness/reports/html_page.hpp"
+#include "harness/reports/report_formats.hpp"
 
 #include "harness/checking/verdict_io.hpp"
 #include "harness/checking/work_precision.hpp"
@@ -179,20 +179,8 @@ void write_report_dir(const CheckResult& r, const std::string& dir, const Catalo
     if (!f) throw std::runtime_error("cannot write " + (tmp / name).string());
   };
   try {
-    const std::string md = markdown_report(r, c);
-    const auto figures = report_figures(r);
-    put("report.md", md);
-    // The same report as a page: report.md in HTML, its figures inline.
-    MarkdownHtml to_html;
-    to_html.image = [&](const std::string& path) {
-      for (const auto& f : figures)
-        if (f.file == path) return "data:image/svg+xml;base64," + base64(f.svg);
-      return std::string();
-    };
-    put("report.html", html_page("geomech report: " + r.subject, markdown_to_html(md, to_html)));
-    put("junit.xml", junit_report(r));
-    put("verdicts.json", json_report(r, c).dump(1, ' ', false, json::error_handler_t::replace) + "\n");
-    for (const auto& f : figures) put(f.file, f.svg);
+    for (const ReportFormat& f : report_formats()) put(f.file, f.render(r, c));
+    for (const auto& f : report_figures(r)) put(f.file, f.svg);
     if (const std::string csv = work_precision_csv(r); !csv.empty()) put("figures/work-precision.csv", csv);
   } catch (...) {
     fs::remove_all(tmp, ec);

@@ -47,8 +47,8 @@ std::string markdown_report(const CheckResult& r, const Catalogue* catalogue);
 std::string junit_report(const CheckResult& r);
 nlohmann::json json_report(const CheckResult& r, const Catalogue* catalogue);
 
-// Writes report.md, junit.xml, verdicts.json and figures/*.svg into `dir`, replacing a previous
-// report there only once the new one is complete. Throws std::runtime_error on failure.
+// Writes every report format's file (report_formats.hpp) and figures/*.svg into `dir`, replacing a
+// previous report there only once the new one is complete. Throws std::runtime_error on failure.
 void write_report_dir(const CheckResult& r, const std::string& dir, const Catalogue* catalogue);
 
 // Writes one file atomically (a temporary file in the same directory, then rename).
