@@ -20,6 +20,7 @@
 #include "properties/integrators/support/roundoff_claim.hpp"
 #include "properties/integrators/support/roundoff_drift.hpp"
 #include "properties/integrators/support/step_field_matrix.hpp"
+#include "properties/integrators/support/step_kind.hpp"
 #include "properties/registry.hpp"
 #include "properties/support/claims.hpp"
 #include "properties/support/derivatives.hpp"
@@ -46,37 +47,17 @@ namespace {
 // more than a generic one, and a finding must not come from such a coincidence.
 constexpr int kStates = 3;
 
+// The runs, distances and cases of both kinds, and their traits (support/step_kind.hpp).
+using stepkind::ManakovCase;
+using stepkind::ManakovKind;
+using stepkind::rigid_body_inputs;
+using stepkind::RigidBodyKind;
+using stepkind::run;
+using stepkind::state_distance;
+
 // ---------------------------------------------------------------------------------------------
-// The rigid body with attitude.
-
-struct NoCallback {
-  template <class X>
-  void operator()(int, const X&) const {}
-};
-
-template <class T, class Each = NoCallback>
-RigidBodyState<T> run(const Integrator<T>& in, const Vec3<T>& I, RigidBodyState<T> x, const T& h, int steps,
-                      const Each& each = {}) {
-  for (int n = 0; n < steps; ++n) {
-    x = in.rigid_body_step(I, x, h);
-    each(n + 1, x);
-  }
-  return x;
-}
-
-// A rigid-body case by the notes' names.
-template <class T>
-std::string rigid_body_inputs(const Vec3<T>& I, const RigidBodyState<T>& x) {
-  return named("I", I) + named("Pi", x.Pi) + named("O", x.O);
-}
-
-template <class T>
-T state_distance(const RigidBodyState<T>& a, const RigidBodyState<T>& b) {
-  return std::max(max_abs((a.Pi - b.Pi).eval()), max_abs((a.O - b.O).eval()));
-}
-
-using stepfield::explaining_manakov_step;
-using stepfield::explaining_step;
+// The claims, each written once over the step kind (support/step_kind.hpp); the numbers below are
+// the rigid body's where the kinds differ, Manakov's given with its trait or its overload.
 
 // Order: errors against the Taylor oracle at t = 1 for h = 1/8 ... 1/128; the log-log slope over
 // the points above the round-off floor (16 eps * scale per step, eps the step's own) must be within
@@ -85,10 +66,11 @@ using stepfield::explaining_step;
 // by a power of two to |Omega| in [1/2, 1) (Pi scaled by it: the same motion in other units) and the
 // steps are taken from h = 1/4 down by factors of about sqrt(2) (N = 4, 6, 8, 11, ..., 128), where
 // truncation stands above the floor (RK4 in float: three steps, h |Omega| from 1/4 to 1/8); with fewer than three such points still, the order is not
-// measurable at this precision (NOT VERIFIED, with the reason).
+// measurable at this precision (NOT VERIFIED, with the reason). Manakov's: n in [3, 4], h = 1/8
+// halved down to 1/64, the floor linear (order_floor_of), no reruns.
 template <class T>
 struct OrderRun {
-  std::vector<double> hs, errs, floors, errs_pi, errs_O;
+  std::vector<double> hs, errs, floors, errs_p, errs_O;  // errs_p: the momentum's (Pi or M)
   int used() const { return conv::loglog_slope(hs, errs, floors).used; }
 };
 
@@ -109,120 +91,164 @@ double order_floor(const Integrator<T>& in, int N) {
   return 16.0 * eps * (drift.systematic ? N : std::sqrt(static_cast<double>(N)));
 }
 
+// The floor of a run of N steps from the case c, of scale `scale`: the rigid body's as above; Manakov's
+// 16 eps a step, linearly, on the scale times n (entries of products summed over n terms).
 template <class T>
-OrderRun<T> order_run(const Integrator<T>& in, const Vec3<T>& I, const RigidBodyState<T>& x0,
-                      const RigidBodyState<T>& exact, const std::vector<int>& Ns) {
+double order_floor_of(RigidBodyKind, const Integrator<T>& in, const stepkind::RigidBodyCase<T>&, const T& scale,
+                      int N) {
+  return order_floor<T>(in, N) * to_double(scale);
+}
+
+template <class T>
+double order_floor_of(ManakovKind, const Integrator<T>&, const ManakovCase<T>& m, const T& scale, int N) {
+  return 16.0 * step_eps_double<T>() * to_double(scale) * N * m.n;
+}
+
+// The errors at t = 1 from c.x0 against `exact`, for N steps each; the rigid body's run stops at its
+// first error that is not finite (has_order_reruns: the reruns compare the points used).
+template <class Kind, class T>
+OrderRun<T> order_run(const Integrator<T>& in, const typename Kind::template Case<T>& c,
+                      const typename Kind::template State<T>& exact, const std::vector<int>& Ns) {
+  using State = typename Kind::template State<T>;
   const T t_end(1);
-  const T scale = dyn::at_least_one(norm_inf(x0.Pi));
+  const T scale = Kind::order_scale(c);
   OrderRun<T> r;
   for (int N : Ns) {
     const T h = t_end / T(N);
-    const RigidBodyState<T> y = run(in, I, x0, h, N);
+    const State y = Kind::run_from(in, c, c.x0, h, N);
     const T err = state_distance(y, exact);
     r.hs.push_back(to_double(h));
     r.errs.push_back(to_double(err));
-    r.errs_pi.push_back(to_double(T(max_abs(Vec3<T>(y.Pi - exact.Pi)))));
-    r.errs_O.push_back(to_double(T(max_abs(Mat3<T>(y.O - exact.O)))));
-    r.floors.push_back(order_floor<T>(in, N) * to_double(scale));
-    if (!std::isfinite(r.errs.back())) break;
+    const auto [err_p, err_O] = Kind::part_errors(y, exact);
+    r.errs_p.push_back(err_p);
+    r.errs_O.push_back(err_O);
+    r.floors.push_back(order_floor_of<T>(Kind{}, in, c, scale, N));
+    if constexpr (Kind::has_order_reruns) {
+      if (!std::isfinite(r.errs.back())) break;
+    }
   }
   return r;
 }
 
-template <class T>
-void integrator_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  Vec3<T> I = dyn::draw_generic_inertia<T>();
-  RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
-  RigidBodyState<T> exact = dyn::oracle_rigid_body(I, x0, {T(1)}).front();
-  Series ser{"convergence: " + in.name,   "error at t = 1" + judged_tag<T>(), "step h", "max error", true, true, {},
+template <class Kind, class T>
+void order_claim(const Integrator<T>& in, const IntegratorClaims& c) {
+  using Case = typename Kind::template Case<T>;
+  using State = typename Kind::template State<T>;
+  Case m = Kind::template draw_case<T>(3, 4);
+  State exact = Kind::oracle(m, T(1));
+  Series ser{"convergence" + std::string(Kind::series_kind) + ": " + in.name,
+             "error at t = 1" + judged_tag<T>(),
+             "step h",
+             "max error",
+             true,
+             true,
+             {},
              static_cast<double>(c.order)};
-  OrderRun<T> r = order_run(in, I, x0, exact, {8, 16, 32, 64, 128});
-  std::string steps = "h = 1/8, halved down to 1/128; t = 1";
-  if (r.used() < 3 && conv::first_non_finite(r.hs, r.errs) == 0) {
-    // Sped up where truncation stands above the floor: |Omega| in [1/2, 1), inside a declared domain.
-    T lambda(1);
-    const T rate = max_abs(Vec3<T>(x0.Pi.cwiseQuotient(I)));
-    while (rate * lambda < T(1) / T(2)) lambda *= T(2);
-    while (rate * lambda >= T(1)) lambda /= T(2);
-    lambda = within_domain<T>(lambda, stepguard::rate_of(I, x0), stepguard::size_of(x0), 1.0 / 128);
-    if (lambda != T(1)) {
-      RigidBodyState<T> fast{Vec3<T>(x0.Pi * lambda), x0.O};
-      // The flow of the scaled state at t = 1 is the drawn one's at t = lambda, its momentum scaled.
-      RigidBodyState<T> fast_exact = dyn::oracle_rigid_body(I, x0, {lambda}).front();
-      fast_exact.Pi *= lambda;
-      OrderRun<T> sped = order_run(in, I, fast, fast_exact, {4, 6, 8, 11, 16, 23, 32, 45, 64, 91, 128});
-      if (sped.used() >= r.used()) {
-        r = std::move(sped);
-        x0 = fast;
-        exact = fast_exact;
-        steps = "h = 1/4 down to 1/128 by factors of about sqrt(2); t = 1; the drawn momentum scaled by " +
-                to_string_full(lambda) +
-                " (the same motion in other units, |Omega| in [1/2, 1)): at the drawn speed fewer than three steps "
-                "stood above the round-off floor";
+  OrderRun<T> r = order_run<Kind>(in, m, exact, Kind::order_steps());
+  std::string steps = Kind::order_steps_words;
+  if constexpr (Kind::has_order_reruns) {
+    if (r.used() < 3 && conv::first_non_finite(r.hs, r.errs) == 0) {
+      const Vec3<T> I = m.I;
+      const RigidBodyState<T> x0 = m.x0;  // as drawn
+      // Sped up where truncation stands above the floor: |Omega| in [1/2, 1), inside a declared domain.
+      T lambda(1);
+      const T rate = max_abs(Vec3<T>(x0.Pi.cwiseQuotient(I)));
+      while (rate * lambda < T(1) / T(2)) lambda *= T(2);
+      while (rate * lambda >= T(1)) lambda /= T(2);
+      lambda = within_domain<T>(lambda, stepguard::rate_of(I, x0), stepguard::size_of(x0), 1.0 / 128);
+      if (lambda != T(1)) {
+        const Case fast{I, RigidBodyState<T>{Vec3<T>(x0.Pi * lambda), x0.O}};
+        // The flow of the scaled state at t = 1 is the drawn one's at t = lambda, its momentum scaled.
+        State fast_exact = Kind::oracle(m, lambda);
+        fast_exact.Pi *= lambda;
+        OrderRun<T> sped = order_run<Kind>(in, fast, fast_exact, {4, 6, 8, 11, 16, 23, 32, 45, 64, 91, 128});
+        if (sped.used() >= r.used()) {
+          r = std::move(sped);
+          m = fast;
+          exact = fast_exact;
+          steps = "h = 1/4 down to 1/128 by factors of about sqrt(2); t = 1; the drawn momentum scaled by " +
+                  to_string_full(lambda) +
+                  " (the same motion in other units, |Omega| in [1/2, 1)): at the drawn speed fewer than three steps "
+                  "stood above the round-off floor";
+        }
       }
     }
-  }
-  if (r.used() < 3 && conv::first_non_finite(r.hs, r.errs) == 0 && current_step_precision().coarser_than<T>()) {
-    // At a coarse precision (a float step) a drawn state whose truncation constant is small stays on the
-    // floor even sped up (RK4 at a slow special motion): the order is measured at a fixed generic state
-    // where methods up to order 4 stand above float's floor at h |Omega| = 0.4 ... 0.2, and said so.
-    const Vec3<T> If(T(7) / T(4), T(3) / T(2), T(5) / T(4));
-    const RigidBodyState<T> xf{Vec3<T>(T(21) / T(8), T(-19) / T(8), T(-3) / T(4)), x0.O};  // |Omega| = 1.58
-    if (within_domain<T>(T(1), stepguard::rate_of(If, xf), stepguard::size_of(xf), 1.0 / 128) == T(1)) {
-      const RigidBodyState<T> fixed_exact = dyn::oracle_rigid_body(If, xf, {T(1)}).front();
-      OrderRun<T> fixed = order_run(in, If, xf, fixed_exact, {4, 6, 8, 11, 16, 23, 32, 45, 64, 91, 128});
-      if (fixed.used() > r.used()) {
-        r = std::move(fixed);
-        I = If;
-        x0 = xf;
-        exact = fixed_exact;
-        steps =
-            "h = 1/4 down to 1/128 by factors of about sqrt(2); t = 1; a fixed generic state, since at the "
-            "drawn one, sped up, fewer than three steps stood above " +
-            current_step_precision().name + "'s round-off floor";
+    if (r.used() < 3 && conv::first_non_finite(r.hs, r.errs) == 0 && current_step_precision().coarser_than<T>()) {
+      // At a coarse precision (a float step) a drawn state whose truncation constant is small stays on the
+      // floor even sped up (RK4 at a slow special motion): the order is measured at a fixed generic state
+      // where methods up to order 4 stand above float's floor at h |Omega| = 0.4 ... 0.2, and said so.
+      const Vec3<T> If(T(7) / T(4), T(3) / T(2), T(5) / T(4));
+      const RigidBodyState<T> xf{Vec3<T>(T(21) / T(8), T(-19) / T(8), T(-3) / T(4)), m.x0.O};  // |Omega| = 1.58
+      if (within_domain<T>(T(1), stepguard::rate_of(If, xf), stepguard::size_of(xf), 1.0 / 128) == T(1)) {
+        const Case fixed_case{If, xf};
+        const State fixed_exact = Kind::oracle(fixed_case, T(1));
+        OrderRun<T> fixed = order_run<Kind>(in, fixed_case, fixed_exact, {4, 6, 8, 11, 16, 23, 32, 45, 64, 91, 128});
+        if (fixed.used() > r.used()) {
+          r = std::move(fixed);
+          m = fixed_case;
+          exact = fixed_exact;
+          steps =
+              "h = 1/4 down to 1/128 by factors of about sqrt(2); t = 1; a fixed generic state, since at the "
+              "drawn one, sped up, fewer than three steps stood above " +
+              current_step_precision().name + "'s round-off floor";
+        }
       }
     }
   }
   for (std::size_t i = 0; i < r.hs.size(); ++i) ser.points.emplace_back(r.hs[i], r.errs[i]);
   record_series(ser);
   // Each part with its own order: a Lie-group method may be right on Pi and not on O.
-  const std::string parts = parts_order({"Pi", "O"}, {r.errs_pi, r.errs_O}, r.hs, r.floors);
-  explaining_step(
-      in, I,
+  const std::string parts = parts_order(Kind::part_names(), {r.errs_p, r.errs_O}, r.hs, r.floors);
+  Kind::explaining(
+      in, m,
       [&] {
-        return std::vector<RigidBodyState<T>>{x0, exact};
+        return std::vector<State>{m.x0, exact};
       },
       r.hs,
       [&] {
-        // The sped-up steps reach h |Omega| = 1/4, where a method's error is not yet its leading term
-        // alone: a slope there within 0.25 of the claim, and not within 0.1, is not decided.
-        const bool window = steps.rfind("h = 1/4", 0) == 0;
-        const double top = r.hs.empty() ? 0.0 : r.hs.front() * to_double(T(max_abs(Vec3<T>(x0.Pi.cwiseQuotient(I)))));
-        showing_inputs([&] { return rigid_body_inputs(I, x0) + "    " + steps + "\n"; },
+        double undecided = 0.0, top = 0.0;
+        if constexpr (Kind::has_order_reruns) {
+          // The sped-up steps reach h |Omega| = 1/4, where a method's error is not yet its leading term
+          // alone: a slope there within 0.25 of the claim, and not within 0.1, is not decided.
+          const bool window = steps.rfind("h = 1/4", 0) == 0;
+          undecided = window ? 0.25 : 0.0;
+          top = r.hs.empty() ? 0.0 : r.hs.front() * to_double(T(max_abs(Vec3<T>(m.x0.Pi.cwiseQuotient(m.I)))));
+        }
+        showing_inputs([&] { return Kind::order_inputs(m, steps); },
                        [&] {
-                         judge_order_claim(in.name, c.order, "", judged_tag<T>(), r.hs, r.errs, r.floors, parts,
-                                           window ? 0.25 : 0.0, top);
+                         judge_order_claim(in.name, c.order, Kind::order_where(m), judged_tag<T>(), r.hs, r.errs,
+                                           r.floors, parts, undecided, top);
                        });
       });
 }
 
-// Symmetry: step(h) then step(-h) returns to the start, at round-off: two steps, each accurate to
-// a few eps (an implicit method's solve included), k = 64 on the scale of the state.
 template <class T>
-void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+void integrator_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  order_claim<RigidBodyKind>(in, c);
+}
+
+// Symmetry: step(h) then step(-h) returns to the start, at round-off: two steps, each accurate to
+// a few eps (an implicit method's solve included), k = 64 on the scale of the state (the kind's
+// symmetric_residual: 1 for the rigid body, n for Manakov).
+template <class Kind, class T>
+void symmetric_claim(const Integrator<T>& in, const IntegratorClaims& c) {
+  using Case = typename Kind::template Case<T>;
+  using State = typename Kind::template State<T>;
   const T h = T(1) / T(4);
-  T worst(0);  // in units of the scale, which is max(1, |Pi|) <= 1 for these draws
-  std::string inputs;
+  T worst(0);
+  Case first, worst_case;
   bool ignores_negative = false;  // step(-h) returned its input exactly, at every state tried
   for (int k = 0; k < kStates; ++k) {
-    const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
-    const RigidBodyState<T> x1 = in.rigid_body_step(I, x0, h);
-    const RigidBodyState<T> back = in.rigid_body_step(I, x1, -h);
-    const bool still = returned_input(back, x1);
-    ignores_negative = (k == 0 || ignores_negative) && still;
-    const T r = state_distance(back, x0);
-    if (k == 0 || worse(r, worst)) worst = r, inputs = rigid_body_inputs(I, x0) + "    h = 1/4\n";
+    const Case m = Kind::template draw_case<T>();
+    if (k == 0) first = m;
+    const State x1 = Kind::step(in, m, m.x0, h);
+    const State back = Kind::step(in, m, x1, -h);
+    if constexpr (Kind::says_ignored_negative_step) {
+      const bool still = returned_input(back, x1);
+      ignores_negative = (k == 0 || ignores_negative) && still;
+    }
+    const T r = Kind::symmetric_residual(m, back);
+    if (k == 0 || worse(r, worst)) worst = r, worst_case = m;
   }
   // A step that returns its input for h < 0 (as engines that refuse negative steps do) is said to:
   // step(h) then step(-h) is then step(h), whatever the method.
@@ -230,16 +256,30 @@ void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const Inte
       ignores_negative ? "your step returns its input for h < 0 (h = -1/4, at every state tried): it does nothing for "
                          "a negative step, so step(h) then step(-h) is step(h)"
                        : std::string();
-  showing_inputs([&] { return inputs; },
-                 [&] {
-                   judge_roundoff_claim<T>("symmetric", c.symmetric, in.name,
-                                           "step(h) then step(-h) returns to the start", worst, T(1), 64, negative);
-                 });
+  const auto judge = [&] {
+    showing_inputs([&] { return Kind::symmetric_inputs(worst_case, h); },
+                   [&] {
+                     judge_roundoff_claim<T>(
+                         "symmetric", c.symmetric, in.name,
+                         std::string(Kind::step_words) + "step(h) then step(-h) returns to the start", worst, T(1), 64,
+                         negative);
+                   });
+  };
+  if constexpr (Kind::explains_symmetry)
+    Kind::explaining(
+        in, first, [&] { return std::vector<State>{first.x0}; }, std::vector<double>{}, judge);
+  else
+    judge();
+}
+
+template <class T>
+void integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  symmetric_claim<RigidBodyKind>(in, c);
 }
 
 // Invariants over 64 steps of h = 1/8: round-off accumulates at most linearly, k = 16 per step and
 // per degree of the invariant.
-constexpr int kSteps = 64;
+constexpr int kSteps = RigidBodyKind::invariant_steps;
 
 // Where the worst residual of an invariant claim was seen, for its evidence: a state scaled by
 // lambda = 2^k with the step scaled by 1/lambda (claim_state_scale below). A cause is named only
@@ -301,10 +341,7 @@ T claim_state_scale(int k) {
   return k == 0 ? T(1) : dyn::pick<T>(gen::motion_scale_side<T>(k == 1 ? -1 : 1), "lambda (the state scaled by it)");
 }
 
-// The worst drift of `invariant` over 64 steps of h = 1/8 from kStates generic states, each
-// relative to its scale. The momentum of the second and third is scaled by lambda and h by
-// 1/lambda (claim_state_scale); `scale_of` is taken on the drawn state and carried over as
-// lambda^degree (the invariant's degree in Pi), so the allowance does not change.
+// The cause of a rigid-body invariant's failure at the large-turn state (invariant_claim below).
 // A step that limits the rotation of one step (engines keep |Omega| h below some angle, pi/4 or
 // pi/2) by shrinking the body's momentum changes |Pi| wherever a step would turn it further. The
 // experiment, at a state x: one step at h |Omega| = 1/2, 1, 2, 4 and the ratio r = |Pi'| / |Pi| at
@@ -342,25 +379,35 @@ std::string speed_cap_cause(const Integrator<T>& in, const Vec3<T>& I, const Rig
          fmt("%.3g rad, and kept below): the momentum lost is the body's", turns.back() * speed);
 }
 
-template <class T, class Invariant, class Scale>
-void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const char* name, Invariant invariant,
-                     Scale scale_of, int degree) {
+// The worst drift of `invariant` over the kind's invariant_steps steps of h = 1/8 from kStates
+// generic cases, each relative to its scale (`scale_of`, taken on the drawn case). The state of the
+// second and third is scaled by lambda and h by 1/lambda (claim_state_scale), the scale carried
+// over as lambda^homogeneity (the invariant's degree in the state; -1: it mixes degrees, as the
+// spectrum's eigenvalues and tr(M^4) do, and the states are not scaled), so the allowance does not
+// change. The rigid body's (has_large_turn) also tries a fourth state, turned by 1 rad a step, and
+// names a bias per step or a cap on the turn as the cause, by experiment.
+template <class Kind, class T, class Invariant, class Scale>
+void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const std::string& name, int lo, int hi,
+                     Invariant invariant, Scale scale_of, int degree, int homogeneity) {
+  using Case = typename Kind::template Case<T>;
+  using State = typename Kind::template State<T>;
+  constexpr int steps = Kind::invariant_steps;
   T worst(0), worst_lambda(1), worst_scale(1);
-  Vec3<T> I_worst;
-  RigidBodyState<T> drawn_worst, x_worst;  // the worst case as drawn, and as run (scaled)
+  Case worst_case, drawn_worst;  // the worst case as run (scaled), and as drawn
   for (int k = 0; k < kStates; ++k) {
-    const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> drawn{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
+    const Case drawn = Kind::template draw_case<T>(lo, hi);
     // Inside the integrator's declared domain, h = 1/8 scaled with the state.
-    const T lambda =
-        within_domain<T>(claim_state_scale<T>(k), stepguard::rate_of(I, drawn), stepguard::size_of(drawn), 0.125);
-    const RigidBodyState<T> x0{(drawn.Pi * lambda).eval(), drawn.O};
-    const T drawn_scale = scale_of(I, drawn);
+    const T lambda = homogeneity < 0
+                         ? T(1)
+                         : within_domain<T>(claim_state_scale<T>(k), stepguard::rate_of(Kind::body(drawn), drawn.x0),
+                                            stepguard::size_of(drawn.x0), 0.125);
+    const Case m = Kind::scaled(drawn, lambda);
+    const T drawn_scale = scale_of(drawn);
     T scale = drawn_scale;
-    for (int d = 0; d < degree; ++d) scale *= lambda;
-    const T v0 = invariant(I, x0);
-    Series ser{std::string("invariants: ") + in.name,
-               std::string(name) + judged_tag<T>(),
+    for (int d = 0; d < homogeneity; ++d) scale *= lambda;
+    const auto v0 = Kind::value(invariant, m, m.x0);
+    Series ser{"invariants" + std::string(Kind::series_kind) + ": " + in.name,
+               name + judged_tag<T>(),
                "t",
                "|residual|",
                false,
@@ -368,91 +415,89 @@ void invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, c
                {},
                0};
     bool this_worst = k == 0;
-    run(in, I, x0, T(1) / (T(8) * lambda), kSteps, [&](int n, const RigidBodyState<T>& x) {
-      const T r = abs_value(T(invariant(I, x) - v0));
+    Kind::run_from(in, m, m.x0, T(1) / (T(8) * lambda), steps, [&](int n, const State& x) {
+      const T r = residual_size(Kind::value(invariant, m, x), v0);
       if (worse(T(r / scale), worst))
         worst = r / scale, worst_lambda = lambda, this_worst = true;  // a NaN stays the worst
       ser.points.emplace_back(n / 8.0, to_double(r));
     });
-    if (this_worst) I_worst = I, drawn_worst = drawn, x_worst = x0, worst_scale = drawn_scale;
+    if (this_worst) worst_case = m, drawn_worst = drawn, worst_scale = drawn_scale;
     if (k == 0) record_series(ser);
   }
   T h_worst = T(1) / (T(8) * worst_lambda);
-  int steps_worst = kSteps;
-  // A fourth state, turned by 1 rad a step (h |Omega| = 1, past the pi/4 at which engines limit the
-  // rotation of a step), 16 steps: a step that keeps the invariant keeps it at any h.
+  int steps_worst = steps;
   bool large_turn = false;
-  {
-    const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
-    const T h = T(1) / max_abs(Vec3<T>(x0.Pi.cwiseQuotient(I)));
+  if constexpr (Kind::has_large_turn) {
+    // A fourth state, turned by 1 rad a step (h |Omega| = 1, past the pi/4 at which engines limit
+    // the rotation of a step), 16 steps: a step that keeps the invariant keeps it at any h.
+    const Case m = Kind::template draw_case<T>(lo, hi);
+    const T h = T(1) / max_abs(Vec3<T>(m.x0.Pi.cwiseQuotient(m.I)));
     const StepDomain& d = current_step_domain();
     if (!(d.min_h > 0 && to_double(h) < d.min_h) &&
-        within_domain<T>(T(1), stepguard::rate_of(I, x0), stepguard::size_of(x0), to_double(h)) == T(1)) {
-      const T scale = scale_of(I, x0), v0 = invariant(I, x0);
-      run(in, I, x0, h, 16, [&](int, const RigidBodyState<T>& x) {
-        const T r = abs_value(T(invariant(I, x) - v0));
+        within_domain<T>(T(1), stepguard::rate_of(m.I, m.x0), stepguard::size_of(m.x0), to_double(h)) == T(1)) {
+      const T scale = scale_of(m), v0 = Kind::value(invariant, m, m.x0);
+      Kind::run_from(in, m, m.x0, h, 16, [&](int, const State& x) {
+        const T r = residual_size(Kind::value(invariant, m, x), v0);
         if (worse(T(r / scale), worst)) {
           worst = r / scale, worst_lambda = T(1), large_turn = true;
-          I_worst = I, drawn_worst = x0, x_worst = x0, worst_scale = scale, h_worst = h, steps_worst = 16;
+          worst_case = m, drawn_worst = m, worst_scale = scale, h_worst = h, steps_worst = 16;
         }
       });
     }
   }
   const auto states = [&] {
-    return std::vector<RigidBodyState<T>>{x_worst, run(in, I_worst, x_worst, h_worst, steps_worst)};
+    return std::vector<State>{worst_case.x0, Kind::run_from(in, worst_case, worst_case.x0, h_worst, steps_worst)};
   };
-  explaining_step(in, I_worst, states, std::vector<double>{to_double(h_worst)}, [&] {
+  Kind::explaining(in, worst_case, states, std::vector<double>{to_double(h_worst)}, [&] {
     showing_inputs(
-        [&] {
-          return rigid_body_inputs(I_worst, x_worst) + "    h = " + to_string_full(h_worst) + ", " +
-                 std::to_string(steps_worst) + " steps (the case with the worst residual" +
-                 (large_turn ? ": one step turns the body by 1 rad)\n" : ")\n");
-        },
+        [&] { return Kind::invariant_inputs(worst_case, h_worst, steps_worst, large_turn); },
         [&] {
           // A cause is named on a failing row only, and only on an experiment.
-          const T allowed = T(T(16.0 * degree) * T(kSteps) * step_eps<T>());
+          const T allowed = T(T(16.0 * degree) * T(steps) * step_eps<T>());
           const bool fails = !(is_finite(worst) && worst <= allowed);
           T unscaled(0);
           if (fails && worst_lambda != T(1))
             unscaled = residual_along(
-                [&](const RigidBodyState<T>& x, const auto& each) { run(in, I_worst, x, T(1) / T(8), kSteps, each); },
-                drawn_worst, worst_scale, [&](const RigidBodyState<T>& x) { return invariant(I_worst, x); });
+                [&](const State& x, const auto& each) { Kind::run_from(in, drawn_worst, x, T(1) / T(8), steps, each); },
+                drawn_worst.x0, worst_scale, [&](const State& x) { return Kind::value(invariant, drawn_worst, x); });
           // A bias per step is the cause when there is one, and a defect even within the allowance.
-          const roundoffdrift::Drift& drift = roundoffdrift::rigid_body_drift<T>(in, name, invariant);
+          const roundoffdrift::Drift& drift = Kind::drift(in, name, invariant);
           std::string cause = drift.words;
-          if (fails && large_turn && !drift.systematic) cause = speed_cap_cause<T>(in, I_worst, x_worst);
+          if constexpr (Kind::has_large_turn) {
+            if (fails && large_turn && !drift.systematic) cause = speed_cap_cause<T>(in, worst_case.I, worst_case.x0);
+          }
           judge_roundoff_claim<T>(
               claim, claimed, in.name,
-              std::string(name) + " is kept to round-off over " + std::to_string(steps_worst) + " steps" +
+              name + " is kept to round-off over " + std::to_string(steps_worst) + " steps" +
                   (fails && !drift.systematic ? scaled_note(worst_lambda, unscaled, allowed) : std::string()),
-              worst, T(kSteps), 16.0 * degree, cause, drift.systematic, drift.rate);
+              worst, T(steps), 16.0 * degree, cause, drift.systematic, drift.rate);
         });
   });
 }
 
+// The rigid body's invariants, of degree 2 in Pi (homogeneity 2), on the scale of the drawn case.
 template <class T>
 void integrator_casimir(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  invariant_claim<T>(
-      in, "casimir", c.casimir, "the Casimir |Pi|^2",
+  invariant_claim<RigidBodyKind>(
+      in, "casimir", c.casimir, "the Casimir |Pi|^2", 0, 0,
       [](const Vec3<T>&, const RigidBodyState<T>& x) { return dyn::casimir(x.Pi); },
-      [](const Vec3<T>&, const RigidBodyState<T>& x) {
-        const T size = dyn::at_least_one(norm_inf(x.Pi));
+      [](const stepkind::RigidBodyCase<T>& m) {
+        const T size = dyn::at_least_one(norm_inf(m.x0.Pi));
         return T(size * size);
       },
-      2);
+      2, 2);
 }
 
 template <class T>
 void integrator_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  invariant_claim<T>(
-      in, "energy", c.energy, "the energy h (3.4)",
+  invariant_claim<RigidBodyKind>(
+      in, "energy", c.energy, "the energy h (3.4)", 0, 0,
       [](const Vec3<T>& I, const RigidBodyState<T>& x) { return dyn::energy(I, x.Pi); },
-      [](const Vec3<T>& I, const RigidBodyState<T>& x) {
-        const T size = dyn::at_least_one(norm_inf(x.Pi));
-        return T(size * size / I.minCoeff());
+      [](const stepkind::RigidBodyCase<T>& m) {
+        const T size = dyn::at_least_one(norm_inf(m.x0.Pi));
+        return T(size * size / m.I.minCoeff());
       },
-      2);
+      2, 2);
 }
 
 // O^T O - Id, entrywise (scale 1).
@@ -487,7 +532,7 @@ void integrator_orthogonality(const Subject<T>&, const Integrator<T>& in, const 
 // in 50 digits. The defect's round-off is ~2 |Pi| * roundoff_factor8 eps |Pi|: k = 16 on the scale
 // |Pi|^2 roundoff_factor8. A non-Poisson second-order method shows ~h^3 = 1e-2 at h = 1/4.
 template <class T>
-T poisson_defect(const Integrator<T>& in, std::string* inputs) {
+T poisson_defect(RigidBodyKind, const Integrator<T>& in, std::string* inputs) {
   const Vec3<T> I = dyn::draw_generic_inertia<T>();
   const Vec3<T> Pi = dyn::draw_generic_momentum<T>();
   const T h = T(1) / T(4);
@@ -508,185 +553,29 @@ T poisson_defect(const Integrator<T>& in, std::string* inputs) {
   return max_abs(defect);
 }
 
-template <class T>
-void integrator_poisson(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  T worst(0);  // in units of |Pi|^2 roundoff_factor8 (|Pi| <= 1 here, so of roundoff_factor8)
-  std::string inputs, drawn;
-  for (int k = 0; k < kStates; ++k) {
-    const T r = poisson_defect<T>(in, &drawn);
-    if (k == 0 || worse(r, worst)) worst = r, inputs = drawn;
-  }
-  showing_inputs([&] { return inputs; },
-                 [&] {
-                   judge_roundoff_claim<T>("poisson", c.poisson, in.name,
-                                           "D Phi J(Pi) D Phi^T = J(Phi(Pi)): a Poisson map for (3.6)", worst,
-                                           deriv::roundoff_factor8<T>(), 16);
-                 });
-}
-
 // ---------------------------------------------------------------------------------------------
-// Manakov's (M, O), A = diag(a).
-
-template <class T>
-struct ManakovCase {
-  int n;
-  std::vector<T> a;
-  MatX<T> A;
-  ManakovState<T> x0;
-};
-
-template <class T>
-ManakovCase<T> draw_manakov_case(int lo, int hi) {
-  ManakovCase<T> m;
-  m.n = dyn::pick<T>(rc::gen::inRange(lo, hi + 1), "n");
-  m.a = dyn::draw_generic_manakov_a<T>(m.n);
-  m.A = dyn::diag_of(m.a);
-  m.x0 = ManakovState<T>{dyn::draw_generic_skew<T>(m.n), dyn::pick<T>(gen::rotation<T>(m.n))};
-  return m;
-}
-
-// A Manakov case by the notes' names, with the step h.
-template <class T>
-std::string manakov_inputs(const ManakovCase<T>& m, const T& h) {
-  return named("A", m.A) + named("M", m.x0.M) + named("O", m.x0.O) + named("h", h);
-}
-
-template <class T, class Each = NoCallback>
-ManakovState<T> run(const Integrator<T>& in, const MatX<T>& A, ManakovState<T> x, const T& h, int steps,
-                    const Each& each = {}) {
-  for (int n = 0; n < steps; ++n) {
-    x = in.manakov_step(A, x, h);
-    each(n + 1, x);
-  }
-  return x;
-}
-
-template <class T>
-T state_distance(const ManakovState<T>& a, const ManakovState<T>& b) {
-  return std::max(max_abs((a.M - b.M).eval()), max_abs((a.O - b.O).eval()));
-}
+// Manakov's (M, O), A = diag(a): the property functions, the invariants' scales, the Poisson defect.
 
 template <class T>
 void manakov_integrator_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const ManakovCase<T> m = draw_manakov_case<T>(3, 4);
-  const T t_end(1);
-  const ManakovState<T> exact = dyn::oracle_manakov(m.a, m.x0, {t_end}).front();
-  const T scale = dyn::at_least_one(norm_inf(m.x0.M));
-  std::vector<double> hs, errs, floors, errs_M, errs_O;
-  Series ser{
-      "convergence (Manakov): " + in.name, "error at t = 1" + judged_tag<T>(), "step h", "max error", true, true, {},
-      static_cast<double>(c.order)};
-  for (int N : {8, 16, 32, 64}) {
-    const T h = t_end / T(N);
-    const ManakovState<T> y = run(in, m.A, m.x0, h, N);
-    const T err = state_distance(y, exact);
-    hs.push_back(to_double(h));
-    errs.push_back(to_double(err));
-    errs_M.push_back(to_double(T(max_abs(MatX<T>(y.M - exact.M)))));
-    errs_O.push_back(to_double(T(max_abs(MatX<T>(y.O - exact.O)))));
-    floors.push_back(16.0 * step_eps_double<T>() * to_double(scale) * N * m.n);
-    ser.points.emplace_back(hs.back(), errs.back());
-  }
-  record_series(ser);
-  const std::string parts = parts_order({"M", "O"}, {errs_M, errs_O}, hs, floors);
-  explaining_manakov_step(
-      in, m.A,
-      [&] {
-        return std::vector<ManakovState<T>>{m.x0, exact};
-      },
-      [&] {
-        showing_inputs([&] { return manakov_inputs(m, T(t_end / T(8))) + "    (h halved down to 1/64)\n"; },
-                       [&] {
-                         judge_order_claim(in.name, c.order, " on Manakov, n = " + std::to_string(m.n), judged_tag<T>(),
-                                           hs, errs, floors, parts);
-                       });
-      });
+  order_claim<ManakovKind>(in, c);
 }
 
-// |M_ij| <= 1 and n <= 5 here: the scale n (entries of products summed over n terms).
 template <class T>
 void manakov_integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const T h = T(1) / T(4);
-  T worst(0);
-  ManakovCase<T> first, worst_case;
-  for (int k = 0; k < kStates; ++k) {
-    const ManakovCase<T> m = draw_manakov_case<T>(3, 5);
-    if (k == 0) first = m;
-    const ManakovState<T> back = in.manakov_step(m.A, in.manakov_step(m.A, m.x0, h), -h);
-    const T r = state_distance(back, m.x0) / T(m.n);
-    if (k == 0 || worse(r, worst)) worst = r, worst_case = m;
-  }
-  explaining_manakov_step(
-      in, first.A, [&] { return std::vector<ManakovState<T>>{first.x0}; },
-      [&] {
-        showing_inputs([&] { return manakov_inputs(worst_case, h); },
-                       [&] {
-                         judge_roundoff_claim<T>("symmetric", c.symmetric, in.name,
-                                                 "Manakov step(h) then step(-h) returns to the start", worst, T(1), 64);
-                       });
-      });
+  symmetric_claim<ManakovKind>(in, c);
 }
 
-// The worst drift over 32 steps of h = 1/8 from kStates generic cases with n in [lo, hi], relative
-// to |M|^degree * n^(degree - 1) (the size of the invariant's terms, summed over n per product).
-// With |M_ij| up to 1 a fourth-order method drifts by ~(h |Omega|)^5 ~ 1e-6 per step: far above
-// the round-off bound in double too.
-constexpr int kManakovSteps = 32;
-
-template <class T, class F>
-void manakov_invariant_claim(const Integrator<T>& in, const char* claim, bool claimed, const std::string& name, int lo,
-                             int hi, F invariant, int degree, int homogeneity) {
-  T worst(0), worst_lambda(1), worst_scale(1);
-  ManakovCase<T> worst_case, drawn_worst;  // the worst case as run (scaled), and as drawn
-  for (int k = 0; k < kStates; ++k) {
-    ManakovCase<T> m = draw_manakov_case<T>(lo, hi);
-    const ManakovCase<T> drawn = m;
+// The Manakov invariants: the worst drift over 32 steps of h = 1/8 from kStates generic cases
+// with n in [lo, hi], relative to |M|^degree * n^(degree - 1) (the size of the invariant's terms,
+// summed over n per product).
+template <class T>
+auto manakov_scale(int degree) {
+  return [degree](const ManakovCase<T>& m) {
     T scale(1);
     for (int d = 0; d < degree; ++d) scale *= dyn::at_least_one(norm_inf(m.x0.M)) * (d ? T(m.n) : T(1));
-    const T drawn_scale = scale;
-    // M scaled by lambda and h by 1/lambda, as in invariant_claim; the invariant is homogeneous
-    // of degree `homogeneity` in M (-1: it mixes degrees, as the spectrum's eigenvalues and
-    // tr(M^4) do, and the states are not scaled).
-    const T lambda = homogeneity < 0 ? T(1)
-                                     : within_domain<T>(claim_state_scale<T>(k), stepguard::rate_of(m.A, m.x0),
-                                                        stepguard::size_of(m.x0), 0.125);
-    m.x0.M *= lambda;
-    for (int d = 0; d < homogeneity; ++d) scale *= lambda;
-    const auto v0 = invariant(m, m.x0);
-    Series ser{"invariants (Manakov): " + in.name, name + judged_tag<T>(), "t", "|residual|", false, true, {}, 0};
-    bool this_worst = k == 0;
-    run(in, m.A, m.x0, T(1) / (T(8) * lambda), kManakovSteps, [&](int n, const ManakovState<T>& x) {
-      const T r = norm_inf((invariant(m, x) - v0).eval());
-      if (worse(T(r / scale), worst)) worst = r / scale, worst_lambda = lambda, this_worst = true;
-      ser.points.emplace_back(n / 8.0, to_double(r));
-    });
-    if (this_worst) worst_case = m, drawn_worst = drawn, worst_scale = drawn_scale;
-    if (k == 0) record_series(ser);
-  }
-  const T h_worst = T(1) / (T(8) * worst_lambda);
-  const auto states = [&] {
-    return std::vector<ManakovState<T>>{worst_case.x0, run(in, worst_case.A, worst_case.x0, h_worst, kManakovSteps)};
+    return scale;
   };
-  explaining_manakov_step(in, worst_case.A, states, [&] {
-    const auto inputs = [&] {
-      return manakov_inputs(worst_case, h_worst) + "    (32 steps; the case with the worst residual)\n";
-    };
-    showing_inputs(inputs, [&] {
-      const T allowed = T(T(16.0 * degree) * T(kManakovSteps) * step_eps<T>());
-      const bool fails = !(is_finite(worst) && worst <= allowed);
-      T unscaled(0);
-      if (fails && worst_lambda != T(1))
-        unscaled = residual_along(
-            [&](const ManakovState<T>& x, const auto& each) {
-              run(in, drawn_worst.A, x, T(1) / T(8), kManakovSteps, each);
-            },
-            drawn_worst.x0, worst_scale, [&](const ManakovState<T>& x) { return invariant(drawn_worst, x); });
-      judge_roundoff_claim<T>(claim, claimed, in.name,
-                              name + " is kept to round-off over 32 steps" +
-                                  (fails ? scaled_note(worst_lambda, unscaled, allowed) : std::string()),
-                              worst, T(kManakovSteps), 16.0 * degree);
-    });
-  });
 }
 
 template <class T>
@@ -696,30 +585,32 @@ VecX<T> one(const T& x) {
   return v;
 }
 
-// The Manakov invariants, with the scales of manakov_invariant_claim.
+// The Manakov invariants, with the scales of manakov_scale.
 template <class T>
 void manakov_integrator_casimir(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  manakov_invariant_claim<T>(
+  invariant_claim<ManakovKind>(
       in, "casimir", c.casimir, "the Casimir tr(M^2)", 3, 5,
-      [](const ManakovCase<T>&, const ManakovState<T>& x) { return one(T((x.M * x.M).trace())); }, 2, 2);
+      [](const ManakovCase<T>&, const ManakovState<T>& x) { return one(T((x.M * x.M).trace())); }, manakov_scale<T>(2),
+      2, 2);
 }
 
 template <class T>
 void manakov_integrator_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  manakov_invariant_claim<T>(
+  invariant_claim<ManakovKind>(
       in, "energy", c.energy, "the energy -tr(Omega M)/4", 3, 5,
-      [](const ManakovCase<T>& m, const ManakovState<T>& x) { return one(dyn::manakov_energy(m.a, x.M)); }, 2, 2);
+      [](const ManakovCase<T>& m, const ManakovState<T>& x) { return one(dyn::manakov_energy(m.a, x.M)); },
+      manakov_scale<T>(2), 2, 2);
 }
 
 template <class T>
 void manakov_integrator_orthogonality(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  manakov_invariant_claim<T>(
+  invariant_claim<ManakovKind>(
       in, "orthogonality", c.orthogonality, "O^T O = Id", 3, 5,
       [](const ManakovCase<T>& m, const ManakovState<T>& x) {
         const MatX<T> E = x.O.transpose() * x.O - MatX<T>::Identity(m.n, m.n);
         return VecX<T>(E.reshaped());
       },
-      2, 0);
+      manakov_scale<T>(2), 2, 0);
 }
 
 // The spectrum for n = 5, where the quadratic invariants (tr M^2, and for n = 4 a Pfaffian-like
@@ -728,7 +619,7 @@ void manakov_integrator_orthogonality(const Subject<T>&, const Integrator<T>& in
 // the two parts have different degrees in M.
 template <class T>
 void manakov_integrator_spectrum(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  manakov_invariant_claim<T>(
+  invariant_claim<ManakovKind>(
       in, "spectrum", c.spectrum, "the spectrum of M (eigenvalues of -M^2 and tr(M^4))", 5, 5,
       [](const ManakovCase<T>&, const ManakovState<T>& x) {
         const VecX<T> ev = spectral::skew_spectrum<T>(x.M);
@@ -736,14 +627,14 @@ void manakov_integrator_spectrum(const Subject<T>&, const Integrator<T>& in, con
         v << ev, spectral::power_traces<T>(x.M, 4)[3];
         return v;
       },
-      4, -1);
+      manakov_scale<T>(4), 4, -1);
 }
 
 // Poisson map for the Lie-Poisson bracket of so(n)*, {F, H}(M) = -<M, [dF/dM, dH/dM]> (2.23) in
 // the coordinates m_ij = M_ij (i < j), orthonormal for (2.15): J(M)_(ij),(kl) = -<M, [E_ij, E_kl]>.
 // n = 4 (6 coordinates). Same difference scheme and tolerance as for the rigid body.
 template <class T>
-T manakov_poisson_defect(const Integrator<T>& in, std::string* inputs) {
+T poisson_defect(ManakovKind, const Integrator<T>& in, std::string* inputs) {
   const int n = 4, d = 6;
   const auto a = dyn::draw_generic_manakov_a<T>(n);
   const MatX<T> A = dyn::diag_of(a);
@@ -782,22 +673,31 @@ T manakov_poisson_defect(const Integrator<T>& in, std::string* inputs) {
   return max_abs(defect);
 }
 
-// |M_ij| <= 1: scale d * roundoff_factor8 (sums of d terms).
-template <class T>
-void manakov_integrator_poisson(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+// The Poisson claim of either kind: the worst defect of kStates cases (poisson_defect of the kind,
+// each drawing its own case) against k = 16 on the kind's poisson_scale.
+template <class Kind, class T>
+void poisson_claim(const Integrator<T>& in, const IntegratorClaims& c) {
   T worst(0);
   std::string inputs, drawn;
   for (int k = 0; k < kStates; ++k) {
-    const T r = manakov_poisson_defect<T>(in, &drawn);
+    const T r = poisson_defect<T>(Kind{}, in, &drawn);
     if (k == 0 || worse(r, worst)) worst = r, inputs = drawn;
   }
   showing_inputs([&] { return inputs; },
                  [&] {
-                   judge_roundoff_claim<T>(
-                       "poisson", c.poisson, in.name,
-                       "D Phi J(M) D Phi^T = J(Phi(M)): a Poisson map for the Lie-Poisson bracket of so(4)*", worst,
-                       T(T(6) * deriv::roundoff_factor8<T>()), 16);
+                   judge_roundoff_claim<T>("poisson", c.poisson, in.name, Kind::poisson_words, worst,
+                                           Kind::template poisson_scale<T>(), 16);
                  });
+}
+
+template <class T>
+void integrator_poisson(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  poisson_claim<RigidBodyKind>(in, c);
+}
+
+template <class T>
+void manakov_integrator_poisson(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  poisson_claim<ManakovKind>(in, c);
 }
 
 }  // namespace

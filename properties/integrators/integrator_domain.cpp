@@ -14,8 +14,10 @@
 //
 // Spec entries: the flows of (3.8) with (2.10) and of (2.36) are defined for every state
 // (s3.euler-flow, s2.manakov-flow).
+#include "properties/integrators/support/step_kind.hpp"
 #include "properties/registry.hpp"
 #include "properties/support/dynamics.hpp"
+#include "properties/support/figures.hpp"
 #include "properties/support/named_inputs.hpp"
 #include "properties/support/regimes.hpp"
 #include "properties/support/scalar_text.hpp"
@@ -197,48 +199,70 @@ bool finite(const ManakovState<T>& y) {
   return is_finite(max_abs(y.M)) && is_finite(max_abs(y.O));
 }
 
+// The case probed, by kind: the rigid body's generic case; Manakov's with n from gen::uniform(3, 5)
+// (this check's own generator for n, kept so that its draws do not move).
 template <class T>
-void integrator_domain(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const Vec3<T> I = dyn::draw_generic_inertia<T>();
-  const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
-  const double rate0 = stepguard::rate_of(I, x0), size0 = stepguard::size_of(x0);
+stepkind::RigidBodyCase<T> draw_domain_case(stepkind::RigidBodyKind) {
+  return stepkind::RigidBodyKind::draw_case<T>();
+}
+
+template <class T>
+stepkind::ManakovCase<T> draw_domain_case(stepkind::ManakovKind) {
+  stepkind::ManakovCase<T> m;
+  m.n = dyn::pick<T>(gen::uniform(3, 5), "n");
+  m.a = dyn::draw_generic_manakov_a<T>(m.n);
+  m.A = dyn::diag_of(m.a);
+  m.x0 = ManakovState<T>{dyn::draw_generic_skew<T>(m.n), dyn::pick<T>(gen::rotation<T>(m.n))};
+  return m;
+}
+
+// The state with its momentum scaled by l (the probes' scales).
+template <class T>
+RigidBodyState<T> scaled_state(const RigidBodyState<T>& x0, const T& l) {
+  return RigidBodyState<T>{Vec3<T>(x0.Pi * l), x0.O};
+}
+
+template <class T>
+ManakovState<T> scaled_state(const ManakovState<T>& x0, const T& l) {
+  return ManakovState<T>{MatX<T>(x0.M * l), x0.O};
+}
+
+template <class T>
+std::string domain_inputs(const stepkind::RigidBodyCase<T>& m) {
+  return named("I", m.I) + named("Pi (before scaling)", m.x0.Pi) + named("O", m.x0.O);
+}
+
+template <class T>
+std::string domain_inputs(const stepkind::ManakovCase<T>& m) {
+  return named("A", m.A) + named("M (before scaling)", m.x0.M) + named("O", m.x0.O);
+}
+
+template <class Kind, class T>
+void domain_claim(const Integrator<T>& in, const IntegratorClaims& c) {
+  using State = typename Kind::template State<T>;
+  const auto m = draw_domain_case<T>(Kind{});
+  const State& x0 = m.x0;
+  const double rate0 = stepguard::rate_of(Kind::body(m), x0), size0 = stepguard::size_of(x0);
   const auto probes = probes_of<T>(
-      rate0, size0,
-      [&](const T& l) {
-        return RigidBodyState<T>{Vec3<T>(x0.Pi * l), x0.O};
-      },
-      [&](int j, int k, const RigidBodyState<T>& x, const T& h) {
-        return probe(j, k, I, x, h,
-                     [&](const RigidBodyState<T>& s, const T& dt) { return finite(in.rigid_body_step(I, s, dt)); });
+      rate0, size0, [&](const T& l) { return scaled_state(x0, l); },
+      [&](int j, int k, const State& x, const T& h) {
+        return probe(j, k, Kind::body(m), x, h,
+                     [&](const State& s, const T& dt) { return finite(Kind::step(in, m, s, dt)); });
       });
   bool works = false;
   const std::string words = verdict_of(probes, c.domain, &works);
   if (works) record_note(in.name + ": " + words + judged_tag<T>());
-  showing_inputs([&] { return named("I", I) + named("Pi (before scaling)", x0.Pi) + named("O", x0.O); },
-                 [&] { require(in.name + ": " + words, works, "\n"); });
+  showing_inputs([&] { return domain_inputs(m); }, [&] { require(in.name + ": " + words, works, "\n"); });
+}
+
+template <class T>
+void integrator_domain(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  domain_claim<stepkind::RigidBodyKind>(in, c);
 }
 
 template <class T>
 void manakov_integrator_domain(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const int n = dyn::pick<T>(gen::uniform(3, 5), "n");
-  const auto a = dyn::draw_generic_manakov_a<T>(n);
-  const MatX<T> A = dyn::diag_of(a);
-  const ManakovState<T> x0{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
-  const double rate0 = stepguard::rate_of(A, x0), size0 = stepguard::size_of(x0);
-  const auto probes = probes_of<T>(
-      rate0, size0,
-      [&](const T& l) {
-        return ManakovState<T>{MatX<T>(x0.M * l), x0.O};
-      },
-      [&](int j, int k, const ManakovState<T>& x, const T& h) {
-        return probe(j, k, A, x, h,
-                     [&](const ManakovState<T>& s, const T& dt) { return finite(in.manakov_step(A, s, dt)); });
-      });
-  bool works = false;
-  const std::string words = verdict_of(probes, c.domain, &works);
-  if (works) record_note(in.name + ": " + words + judged_tag<T>());
-  showing_inputs([&] { return named("A", A) + named("M (before scaling)", x0.M) + named("O", x0.O); },
-                 [&] { require(in.name + ": " + words, works, "\n"); });
+  domain_claim<stepkind::ManakovKind>(in, c);
 }
 
 }  // namespace

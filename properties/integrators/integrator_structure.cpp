@@ -20,6 +20,7 @@
 #include "properties/integrators/support/long_time.hpp"
 #include "properties/integrators/support/roundoff_claim.hpp"
 #include "properties/integrators/support/roundoff_drift.hpp"
+#include "properties/integrators/support/step_kind.hpp"
 #include "properties/integrators/support/step_runs.hpp"
 #include "properties/registry.hpp"
 #include "properties/runner.hpp"
@@ -45,66 +46,109 @@ constexpr int kStates = 3;
 
 // 64 steps of h = 1/8. pi = O Pi is bilinear (degree 2) in the state: each step may add a few eps
 // per factor, accumulating at most linearly: k = 16 per degree and per step (as integrator_casimir),
-// on the scale max(1, |Pi|).
-constexpr int kNoetherSteps = 64;
+// on the scale max(1, |Pi|). The rigid body's first case is drawn as a series.
+template <class T>
+Vec3<T> spatial_momentum(const RigidBodyState<T>& x) {
+  return x.O * x.Pi;
+}
 
 template <class T>
-void integrator_noether(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  T worst(0);
-  std::string inputs;
-  for (int k = 0; k < kStates; ++k) {
-    const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
-    const std::string drawn = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + "    h = 1/8, 64 steps\n";
-    if (k == 0) inputs = drawn;
-    const Vec3<T> pi0 = x.O * x.Pi;
-    const T scale = dyn::at_least_one(norm_inf(x.Pi));
-    Series ser{"Noether: " + in.name, "|O Pi - O0 Pi0|" + judged_tag<T>(), "t", "|residual|", false, true, {}, 0};
-    for (int n = 1; n <= kNoetherSteps; ++n) {
-      x = in.rigid_body_step(I, x, T(1) / T(8));
-      const T r = norm_inf(Vec3<T>(x.O * x.Pi - pi0)) / scale;
-      if (worse(r, worst)) worst = r, inputs = drawn;
-      ser.points.emplace_back(n / 8.0, to_double(r));
-    }
-    if (k == 0) record_series(ser);
-  }
-  showing_inputs([&] { return inputs; },
-                 [&] {
-                   judge_roundoff_claim<T>(
-                       "noether", c.noether, in.name,
-                       "the spatial momentum pi = O Pi (Theorem 2.2) is kept to round-off over 64 steps", worst,
-                       T(kNoetherSteps), 32);
-                 });
+T noether_scale(const stepkind::RigidBodyCase<T>& m) {
+  return dyn::at_least_one(norm_inf(m.x0.Pi));
 }
+
+template <class T>
+T noether_residual(const RigidBodyState<T>& x, const Vec3<T>& pi0) {
+  return norm_inf(Vec3<T>(x.O * x.Pi - pi0));
+}
+
+template <class T>
+std::string noether_inputs(const stepkind::RigidBodyCase<T>& m) {
+  return named("I", m.I) + named("Pi", m.x0.Pi) + named("O", m.x0.O) + "    h = 1/8, 64 steps\n";
+}
+
+struct RigidBodyNoether {
+  static constexpr int steps = 64;
+  static constexpr double k = 32;
+  static constexpr bool series = true;
+  static constexpr const char* words =
+      "the spatial momentum pi = O Pi (Theorem 2.2) is kept to round-off over 64 steps";
+};
 
 // O M O^T is of degree 3 in the state and each entry sums n^2 products: scale n^2 max(1, |M|),
 // k = 16 per degree and step, 32 steps of h = 1/8, n = 3..6.
-constexpr int kManakovNoetherSteps = 32;
+template <class T>
+MatX<T> spatial_momentum(const ManakovState<T>& x) {
+  return x.O * x.M * x.O.transpose();
+}
 
 template <class T>
-void manakov_integrator_noether(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+T noether_scale(const stepkind::ManakovCase<T>& m) {
+  return T(m.n * m.n) * dyn::at_least_one(norm_inf(m.x0.M));
+}
+
+template <class T>
+T noether_residual(const ManakovState<T>& x, const MatX<T>& m0) {
+  return max_abs(MatX<T>(x.O * x.M * x.O.transpose() - m0));
+}
+
+template <class T>
+std::string noether_inputs(const stepkind::ManakovCase<T>& m) {
+  return named("A", m.A) + named("M", m.x0.M) + named("O", m.x0.O) + "    h = 1/8, 32 steps\n";
+}
+
+struct ManakovNoether {
+  static constexpr int steps = 32;
+  static constexpr double k = 48;
+  static constexpr bool series = false;
+  static constexpr const char* words = "the spatial momentum O M O^T is kept to round-off over 32 steps (n = 3..6)";
+};
+
+inline RigidBodyNoether noether_of(stepkind::RigidBodyKind) { return {}; }
+inline ManakovNoether noether_of(stepkind::ManakovKind) { return {}; }
+
+template <class Kind, class T>
+void noether_claim(const Integrator<T>& in, const IntegratorClaims& c) {
+  using Case = typename Kind::template Case<T>;
+  using State = typename Kind::template State<T>;
+  using Numbers = decltype(noether_of(Kind{}));
   T worst(0);
   std::string inputs;
   for (int k = 0; k < kStates; ++k) {
-    const int n = dyn::pick<T>(rc::gen::inRange(3, 7), "n");
-    const MatX<T> A = dyn::diag_of(dyn::draw_generic_manakov_a<T>(n));
-    ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
-    const std::string drawn = named("A", A) + named("M", x.M) + named("O", x.O) + "    h = 1/8, 32 steps\n";
+    const Case m = Kind::template draw_case<T>(3, 6);
+    State x = m.x0;
+    const std::string drawn = noether_inputs(m);
     if (k == 0) inputs = drawn;
-    const MatX<T> m0 = x.O * x.M * x.O.transpose();
-    const T scale = T(n * n) * dyn::at_least_one(norm_inf(x.M));
-    for (int s = 1; s <= kManakovNoetherSteps; ++s) {
-      x = in.manakov_step(A, x, T(1) / T(8));
-      const T r = max_abs(MatX<T>(x.O * x.M * x.O.transpose() - m0)) / scale;
+    const auto p0 = spatial_momentum(x);
+    const T scale = noether_scale(m);
+    Series ser;  // drawn for the rigid body only
+    if constexpr (Numbers::series)
+      ser = Series{"Noether: " + in.name, "|O Pi - O0 Pi0|" + judged_tag<T>(), "t", "|residual|", false, true, {}, 0};
+    for (int n = 1; n <= Numbers::steps; ++n) {
+      x = Kind::step(in, m, x, T(1) / T(8));
+      const T r = noether_residual(x, p0) / scale;
       if (worse(r, worst)) worst = r, inputs = drawn;
+      if constexpr (Numbers::series) ser.points.emplace_back(n / 8.0, to_double(r));
+    }
+    if constexpr (Numbers::series) {
+      if (k == 0) record_series(ser);
     }
   }
   showing_inputs([&] { return inputs; },
                  [&] {
-                   judge_roundoff_claim<T>("noether", c.noether, in.name,
-                                           "the spatial momentum O M O^T is kept to round-off over 32 steps (n = 3..6)",
-                                           worst, T(kManakovNoetherSteps), 48);
+                   judge_roundoff_claim<T>("noether", c.noether, in.name, Numbers::words, worst, T(Numbers::steps),
+                                           Numbers::k);
                  });
+}
+
+template <class T>
+void integrator_noether(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  noether_claim<stepkind::RigidBodyKind>(in, c);
+}
+
+template <class T>
+void manakov_integrator_noether(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  noether_claim<stepkind::ManakovKind>(in, c);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -113,56 +157,92 @@ void manakov_integrator_noether(const Subject<T>&, const Integrator<T>& in, cons
 // One step of h = 1/4 from (Pi, O) and from (Pi, R O); R is exactly orthogonal as a rational and
 // within an ulp per entry once rounded. The two O's differ by the reassociation R (O U) against
 // (R O) U, a few eps per entry of products of 3 terms, and by the step's own solve if it looks at
-// O: k = 64 on the scale 1 (|Pi_i| <= 1, |O_ij| <= 1), as for the symmetry check.
+// O: k = 64 on the scale 1 (|Pi_i| <= 1, |O_ij| <= 1), as for the symmetry check. Manakov's, n =
+// 3..6: entries of products summed over n terms, scale n.
+//
+// What differs by kind: the rotation R (drawn after the case), the inputs, the residual and the words.
 template <class T>
-void integrator_equivariant(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+Mat3<T> draw_left_rotation(stepkind::RigidBodyKind, const stepkind::RigidBodyCase<T>&) {
+  return dyn::draw_rotation<T>();
+}
+
+template <class T>
+MatX<T> draw_left_rotation(stepkind::ManakovKind, const stepkind::ManakovCase<T>& m) {
+  return dyn::pick<T>(gen::rotation<T>(m.n), "R");
+}
+
+template <class T>
+std::string equivariant_inputs(const stepkind::RigidBodyCase<T>& m, const Mat3<T>& R) {
+  return named("I", m.I) + named("Pi", m.x0.Pi) + named("O", m.x0.O) + named("R", R) + "    h = 1/4\n";
+}
+
+template <class T>
+std::string equivariant_inputs(const stepkind::ManakovCase<T>& m, const MatX<T>& R) {
+  return named("A", m.A) + named("M", m.x0.M) + named("O", m.x0.O) + named("R", R) + "    h = 1/4\n";
+}
+
+template <class T>
+RigidBodyState<T> rotated(const RigidBodyState<T>& x, const Mat3<T>& R) {
+  return RigidBodyState<T>{x.Pi, Mat3<T>(R * x.O)};
+}
+
+template <class T>
+ManakovState<T> rotated(const ManakovState<T>& x, const MatX<T>& R) {
+  return ManakovState<T>{x.M, MatX<T>(R * x.O)};
+}
+
+template <class T>
+T equivariant_residual(const stepkind::RigidBodyCase<T>&, const RigidBodyState<T>& a, const RigidBodyState<T>& b,
+                       const Mat3<T>& R) {
+  return std::max(max_abs(Vec3<T>(b.Pi - a.Pi)), max_abs(Mat3<T>(b.O - R * a.O)));
+}
+
+template <class T>
+T equivariant_residual(const stepkind::ManakovCase<T>& m, const ManakovState<T>& a, const ManakovState<T>& b,
+                       const MatX<T>& R) {
+  return std::max(max_abs(MatX<T>(b.M - a.M)), max_abs(MatX<T>(b.O - R * a.O))) / T(m.n);
+}
+
+inline const char* equivariant_words(stepkind::RigidBodyKind) {
+  return "step(Pi, R O) = (Pi', R O'): the step commutes with rotating the attitude";
+}
+
+inline const char* equivariant_words(stepkind::ManakovKind) {
+  return "Manakov step(M, R O) = (M', R O'): the step commutes with rotating the attitude (n = 3..6)";
+}
+
+template <class Kind, class T>
+void equivariant_claim(const Integrator<T>& in, const IntegratorClaims& c) {
+  using Case = typename Kind::template Case<T>;
+  using State = typename Kind::template State<T>;
   const T h = T(1) / T(4);
   T worst(0);
   std::string inputs;
   for (int k = 0; k < kStates; ++k) {
-    const Vec3<T> I = dyn::draw_generic_inertia<T>();
-    const RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
-    const Mat3<T> R = dyn::draw_rotation<T>();
-    const std::string drawn = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + named("R", R) + "    h = 1/4\n";
+    const Case m = Kind::template draw_case<T>(3, 6);
+    const auto R = draw_left_rotation<T>(Kind{}, m);
+    const std::string drawn = equivariant_inputs(m, R);
     if (k == 0) inputs = drawn;
-    const RigidBodyState<T> a = in.rigid_body_step(I, x, h);
-    const RigidBodyState<T> b = in.rigid_body_step(I, RigidBodyState<T>{x.Pi, Mat3<T>(R * x.O)}, h);
-    const T r = std::max(max_abs(Vec3<T>(b.Pi - a.Pi)), max_abs(Mat3<T>(b.O - R * a.O)));
+    const State a = Kind::step(in, m, m.x0, h);
+    const State b = Kind::step(in, m, rotated(m.x0, R), h);
+    const T r = equivariant_residual(m, a, b, R);
     if (worse(r, worst)) worst = r, inputs = drawn;
   }
   showing_inputs([&] { return inputs; },
                  [&] {
-                   judge_roundoff_claim<T>("equivariant", c.equivariant, in.name,
-                                           "step(Pi, R O) = (Pi', R O'): the step commutes with rotating the attitude",
-                                           worst, T(1), 64);
+                   judge_roundoff_claim<T>("equivariant", c.equivariant, in.name, equivariant_words(Kind{}), worst,
+                                           T(1), 64);
                  });
 }
 
-// n = 3..6: entries of products summed over n terms, scale n.
+template <class T>
+void integrator_equivariant(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  equivariant_claim<stepkind::RigidBodyKind>(in, c);
+}
+
 template <class T>
 void manakov_integrator_equivariant(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const T h = T(1) / T(4);
-  T worst(0);
-  std::string inputs;
-  for (int k = 0; k < kStates; ++k) {
-    const int n = dyn::pick<T>(rc::gen::inRange(3, 7), "n");
-    const MatX<T> A = dyn::diag_of(dyn::draw_generic_manakov_a<T>(n));
-    const ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
-    const MatX<T> R = dyn::pick<T>(gen::rotation<T>(n), "R");
-    const std::string drawn = named("A", A) + named("M", x.M) + named("O", x.O) + named("R", R) + "    h = 1/4\n";
-    if (k == 0) inputs = drawn;
-    const ManakovState<T> a = in.manakov_step(A, x, h);
-    const ManakovState<T> b = in.manakov_step(A, ManakovState<T>{x.M, MatX<T>(R * x.O)}, h);
-    const T r = std::max(max_abs(MatX<T>(b.M - a.M)), max_abs(MatX<T>(b.O - R * a.O))) / T(n);
-    if (worse(r, worst)) worst = r, inputs = drawn;
-  }
-  showing_inputs([&] { return inputs; },
-                 [&] {
-                   judge_roundoff_claim<T>(
-                       "equivariant", c.equivariant, in.name,
-                       "Manakov step(M, R O) = (M', R O'): the step commutes with rotating the attitude (n = 3..6)",
-                       worst, T(1), 64);
-                 });
+  equivariant_claim<stepkind::ManakovKind>(in, c);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -227,51 +307,108 @@ void long_time_energy(const std::string& integrator, bool claimed, const std::st
 // bounded oscillation seen over one or two periods looks like a trend): near a separatrix the
 // period of generic draws reaches ~200, so the 50-digit run is 4000 steps, t = 1000 (measured:
 // the splitting's fitted rise stays below 0.3 of the median window maximum); double, 10^5 steps,
-// t = 25000.
+// t = 25000. A bias per step of the step's rounding is looked for (support/roundoff_drift.hpp).
+struct RigidBodyLongRun {
+  static constexpr int double_steps = 100000, mp_steps = 4000, floor = 1000;
+  static constexpr int h_inverse = 4;
+};
+
 template <class T>
-void integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const Vec3<T> I = dyn::draw_generic_inertia<T>();
-  RigidBodyState<T> x{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
-  const T h = T(1) / T(4);
-  const int steps = long_run_steps<T>(c.bounded_energy, 100000, 4000, 1000);
-  const std::string inputs = named("I", I) + named("Pi", x.Pi) + named("O", x.O) + "    h = 1/4\n";
-  showing_inputs([&] { return inputs; },
-                 [&] {
-                   auto run = runs::rigid_body_steps(in, I, x, h, steps);
-                   long_time_energy<T>(
-                       in.name, c.bounded_energy, "the energy h (3.4) over a long run", steps,
-                       steps == long_run_steps<T>(true, 100000, 4000, 1000), h,
-                       [&](int n) {
-                         if (n > 0) x = run.next();
-                         return dyn::energy(I, x.Pi);
-                       },
-                       roundoffdrift::rigid_body_drift<T>(
-                           in, "the energy h (3.4)",
-                           [](const Vec3<T>& J, const RigidBodyState<T>& y) { return dyn::energy(J, y.Pi); }));
-                 });
+std::string long_run_inputs(const stepkind::RigidBodyCase<T>& m) {
+  return named("I", m.I) + named("Pi", m.x0.Pi) + named("O", m.x0.O) + "    h = 1/4\n";
+}
+
+template <class T>
+std::string long_run_what(const stepkind::RigidBodyCase<T>&) {
+  return "the energy h (3.4) over a long run";
+}
+
+template <class T>
+auto long_run_steps_of(const Integrator<T>& in, const stepkind::RigidBodyCase<T>& m, const RigidBodyState<T>& x,
+                       const T& h, int steps) {
+  return runs::rigid_body_steps(in, m.I, x, h, steps);
+}
+
+template <class T>
+T long_run_energy(const stepkind::RigidBodyCase<T>& m, const RigidBodyState<T>& x) {
+  return dyn::energy(m.I, x.Pi);
+}
+
+template <class T>
+roundoffdrift::Drift long_run_drift(stepkind::RigidBodyKind, const Integrator<T>& in) {
+  return roundoffdrift::rigid_body_drift<T>(
+      in, "the energy h (3.4)", [](const Vec3<T>& J, const RigidBodyState<T>& y) { return dyn::energy(J, y.Pi); });
 }
 
 // Manakov, n = 3 or 4, h = 1/8: 20000 steps in double, 400 in 50 digits (each step is a
-// fixed-point solve of n x n matrices). The energy -tr(Omega M)/4 is positive definite.
+// fixed-point solve of n x n matrices). The energy -tr(Omega M)/4 is positive definite. No
+// experiment for a bias per step.
+struct ManakovLongRun {
+  static constexpr int double_steps = 20000, mp_steps = 400, floor = 100;
+  static constexpr int h_inverse = 8;
+};
+
 template <class T>
-void manakov_integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const int n = dyn::pick<T>(rc::gen::inRange(3, 5), "n");
-  const auto a = dyn::draw_generic_manakov_a<T>(n);
-  const MatX<T> A = dyn::diag_of(a);
-  ManakovState<T> x{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
-  const T h = T(1) / T(8);
-  const int steps = long_run_steps<T>(c.bounded_energy, 20000, 400, 100);
-  const std::string inputs = named("A", A) + named("M", x.M) + named("O", x.O) + "    h = 1/8\n";
+std::string long_run_inputs(const stepkind::ManakovCase<T>& m) {
+  return named("A", m.A) + named("M", m.x0.M) + named("O", m.x0.O) + "    h = 1/8\n";
+}
+
+template <class T>
+std::string long_run_what(const stepkind::ManakovCase<T>& m) {
+  return "the energy -tr(Omega M)/4 over a long run, n = " + std::to_string(m.n);
+}
+
+template <class T>
+auto long_run_steps_of(const Integrator<T>& in, const stepkind::ManakovCase<T>& m, const ManakovState<T>& x, const T& h,
+                       int steps) {
+  return runs::manakov_steps(in, m.A, x, h, steps);
+}
+
+template <class T>
+T long_run_energy(const stepkind::ManakovCase<T>& m, const ManakovState<T>& x) {
+  return dyn::manakov_energy(m.a, x.M);
+}
+
+template <class T>
+roundoffdrift::Drift long_run_drift(stepkind::ManakovKind, const Integrator<T>&) {
+  return {};
+}
+
+inline RigidBodyLongRun long_run_of(stepkind::RigidBodyKind) { return {}; }
+inline ManakovLongRun long_run_of(stepkind::ManakovKind) { return {}; }
+
+template <class Kind, class T>
+void bounded_energy_claim(const Integrator<T>& in, const IntegratorClaims& c) {
+  using Case = typename Kind::template Case<T>;
+  using State = typename Kind::template State<T>;
+  using Numbers = decltype(long_run_of(Kind{}));
+  const Case m = Kind::template draw_case<T>(3, 4);
+  State x = m.x0;
+  const T h = T(1) / T(Numbers::h_inverse);
+  const int steps = long_run_steps<T>(c.bounded_energy, Numbers::double_steps, Numbers::mp_steps, Numbers::floor);
+  const std::string inputs = long_run_inputs(m);
   showing_inputs([&] { return inputs; },
                  [&] {
-                   auto run = runs::manakov_steps(in, A, x, h, steps);
-                   long_time_energy<T>(in.name, c.bounded_energy,
-                                       "the energy -tr(Omega M)/4 over a long run, n = " + std::to_string(n), steps,
-                                       steps == long_run_steps<T>(true, 20000, 400, 100), h, [&](int s) {
-                                         if (s > 0) x = run.next();
-                                         return dyn::manakov_energy(a, x.M);
-                                       });
+                   auto run = long_run_steps_of(in, m, x, h, steps);
+                   long_time_energy<T>(
+                       in.name, c.bounded_energy, long_run_what(m), steps,
+                       steps == long_run_steps<T>(true, Numbers::double_steps, Numbers::mp_steps, Numbers::floor), h,
+                       [&](int n) {
+                         if (n > 0) x = run.next();
+                         return long_run_energy(m, x);
+                       },
+                       long_run_drift<T>(Kind{}, in));
                  });
+}
+
+template <class T>
+void integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  bounded_energy_claim<stepkind::RigidBodyKind>(in, c);
+}
+
+template <class T>
+void manakov_integrator_bounded_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  bounded_energy_claim<stepkind::ManakovKind>(in, c);
 }
 
 }  // namespace
