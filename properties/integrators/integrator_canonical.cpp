@@ -33,6 +33,7 @@
 #include <cstdio>
 
 #include "impl/canonical_integrators.hpp"
+#include "properties/integrators/support/canonical_kind.hpp"
 #include "properties/integrators/support/convergence.hpp"
 #include "properties/integrators/support/order_claim.hpp"
 #include "properties/integrators/support/roundoff_claim.hpp"
@@ -52,117 +53,11 @@ namespace {
 
 constexpr int kStates = 3;
 
-// One drawn case of either system, stepped through the integrator's slot on the stacked state
-// Z = [Q; P] (impl/canonical_integrators.hpp).
-template <class T>
-struct CanonicalCase {
-  std::string system;  // "(3.21)" or "(3.23), n = ..."
-  int n = 3;
-  std::function<MatX<T>(const MatX<T>&, const T&)> step;
-  std::function<T(const MatX<T>&)> energy;
-  MatX<T> Z0;
-  T energy_scale;                          // a bound on the sum of |terms| of H at Z0 (H is of degree 4 in Z)
-  std::function<MatX<T>(const T&)> exact;  // the exact flow at time t from Z0
-  std::function<std::string()> body;       // the body's data (I or A) by the notes' names, for failures
-  // The step's own vector field at Z against the system's (support/step_field_matrix.hpp).
-  std::function<stepfield::Diagnosis(const MatX<T>&)> diagnose;
-
-  // The case's inputs by the notes' names, with the step h.
-  std::string inputs(const T& h) const {
-    const auto k = Z0.rows() / 2;
-    return "    system: " + system + "\n" + body() + named("Q", MatX<T>(Z0.topRows(k))) +
-           named("P", MatX<T>(Z0.bottomRows(k))) + named("h", h);
-  }
-};
-
-template <class T>
-T at_least_one_abs(const MatX<T>& Z) {
-  return dyn::at_least_one(max_abs(Z));
-}
-
-// The size of H's round-off at Z: H is a sum of positive terms (|H| bounds their sum), and an
-// error of eps |Z| in each entry of Z moves H by at most eps |Z|_inf sum |dH/dz| to first order,
-// where (dH/dP, -dH/dQ) is the field f(Z): scale |H| + |Z|_inf sum |f(Z)|.
-template <class T>
-T energy_scale(const T& H, const MatX<T>& Z, const MatX<T>& f) {
-  return T(abs_value(H) + max_abs(Z) * f.cwiseAbs().sum());
-}
-
-template <class T>
-CanonicalCase<T> clebsch_case(const Integrator<T>& in) {
-  CanonicalCase<T> c;
-  const Vec3<T> I = dyn::draw_generic_inertia<T>();
-  c.system = "(3.21)";
-  c.body = [I]() { return named("I", I); };
-  c.step = [&in, I](const MatX<T>& Z, const T& h) { return ref::stack<T>(in.clebsch_step(I, ref::unstack3<T>(Z), h)); };
-  c.energy = [I](const MatX<T>& Z) {
-    const auto [Q, P] = ref::unstack3<T>(Z);
-    return dyn::energy(I, ref::cross<T>(P, Q));
-  };
-  c.diagnose = [step = c.step, I](const MatX<T>& Z) {
-    return stepfield::diagnose_clebsch<T>(stepfield::canonical_field<T>(step, Z), I, Z);
-  };
-  c.Z0 = ref::stack<T>(Vec3Pair<T>{dyn::draw_generic_momentum<T>(), dyn::draw_generic_momentum<T>()});
-  c.energy_scale = energy_scale<T>(c.energy(c.Z0), c.Z0, ref::clebsch_field<T>(I, c.Z0));
-  const MatX<T> Z0 = c.Z0;
-  c.exact = [I, Z0](const T& t) {
-    const auto [Q, P] = ref::unstack3<T>(Z0);
-    const RigidBodyState<T> x =
-        dyn::oracle_rigid_body(I, RigidBodyState<T>{ref::cross<T>(P, Q), Mat3<T>::Identity()}, {t}).front();
-    return ref::stack<T>(Vec3Pair<T>{Vec3<T>(x.O.transpose() * Q), Vec3<T>(x.O.transpose() * P)});
-  };
-  return c;
-}
-
-template <class T>
-MatX<T> draw_generic_matrix(int n) {
-  MatX<T> X(n, n);
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) X(i, j) = dyn::generic_entry<T>();
-  return X;
-}
-
-// n from lo to hi. Entries of Q and P of size in [1/16, 1/2]: M = Q^T P - P^T Q then has entries of
-// size about sqrt(2n)/4 (at most n/2), Omega about as large as in the (3.21) case, and the
-// fixed-point solve of an implicit step of h = 1/4 contracts.
-template <class T>
-CanonicalCase<T> manakov_clebsch_case(const Integrator<T>& in, int lo, int hi) {
-  CanonicalCase<T> c;
-  c.n = dyn::pick<T>(rc::gen::inRange(lo, hi + 1), "n");
-  const int n = c.n;
-  const std::vector<T> a = dyn::draw_generic_manakov_a<T>(n);
-  const MatX<T> A = dyn::diag_of(a);
-  c.system = "(3.23), n = " + std::to_string(n);
-  c.body = [A]() { return named("A", A); };
-  c.step = [&in, A](const MatX<T>& Z, const T& h) {
-    return ref::stack<T>(in.manakov_clebsch_step(A, ref::unstack_n<T>(Z), h));
-  };
-  c.diagnose = [step = c.step, A](const MatX<T>& Z) {
-    return stepfield::diagnose_manakov_clebsch<T>(stepfield::canonical_field<T>(step, Z), A, Z);
-  };
-  c.energy = [a](const MatX<T>& Z) {
-    const auto [Q, P] = ref::unstack_n<T>(Z);
-    return dyn::manakov_energy(a, ref::manakov_clebsch_M<T>(Q, P));
-  };
-  const T shrink = T(1) / T(2);
-  c.Z0 = ref::stack<T>(
-      MatXPair<T>{MatX<T>(shrink * draw_generic_matrix<T>(n)), MatX<T>(shrink * draw_generic_matrix<T>(n))});
-  c.energy_scale = energy_scale<T>(c.energy(c.Z0), c.Z0, ref::manakov_clebsch_field<T>(A, c.Z0));
-  const MatX<T> Z0 = c.Z0;
-  c.exact = [a, Z0](const T& t) {
-    const auto [Q, P] = ref::unstack_n<T>(Z0);
-    const auto k = Q.rows();
-    const ManakovState<T> x =
-        dyn::oracle_manakov(a, ManakovState<T>{ref::manakov_clebsch_M<T>(Q, P), MatX<T>::Identity(k, k)}, {t}).front();
-    return ref::stack<T>(MatXPair<T>{MatX<T>(Q * x.O), MatX<T>(P * x.O)});
-  };
-  return c;
-}
-
-template <class T>
-CanonicalCase<T> draw_case(StepKind kind, const Integrator<T>& in, int lo = 3, int hi = 6) {
-  return kind == StepKind::Clebsch ? clebsch_case<T>(in) : manakov_clebsch_case<T>(in, lo, hi);
-}
+// The cases of both systems and their traits (support/canonical_kind.hpp).
+using canonicalkind::at_least_one_abs;
+using canonicalkind::CanonicalCase;
+using canonicalkind::ClebschKind;
+using canonicalkind::ManakovClebschKind;
 
 template <class T>
 MatX<T> run(const CanonicalCase<T>& c, MatX<T> Z, const T& h, int steps) {
@@ -180,9 +75,9 @@ void explained(const CanonicalCase<T>& c, Judge&& judge) {
 // ---------------------------------------------------------------------------------------------
 // Order: as integrator_order (h = 1/8 ... 1/128 for (3.21), to 1/64 for (3.23) with n = 3, 4);
 // the log-log slope above the round-off floor must be within 0.1 of the claim.
-template <class T>
-void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorClaims& cl) {
-  const CanonicalCase<T> c = draw_case<T>(kind, in, 3, 4);
+template <class Kind, class T>
+void canonical_order(const Integrator<T>& in, const IntegratorClaims& cl) {
+  const CanonicalCase<T> c = Kind::template draw_case<T>(in, 3, 4);
   const T t_end(1);
   const MatX<T> exact = c.exact(t_end);
   const T scale = at_least_one_abs(c.Z0);
@@ -195,8 +90,7 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
              true,
              {},
              static_cast<double>(cl.order)};
-  const std::vector<int> Ns =
-      kind == StepKind::Clebsch ? std::vector<int>{8, 16, 32, 64, 128} : std::vector<int>{8, 16, 32, 64};
+  const std::vector<int> Ns = Kind::order_steps();
   std::vector<double> errs_Q, errs_P;
   const auto k = c.Z0.rows() / 2;  // Z stacks Q over P
   for (int N : Ns) {
@@ -226,14 +120,14 @@ void canonical_order(StepKind kind, const Integrator<T>& in, const IntegratorCla
 
 // Symmetry: step(h) then step(-h), h = 1/4; two steps at a few eps each: k = 64 on the scale
 // max(1, |Z|) times n (the entries of M sum 2n products).
-template <class T>
-void canonical_symmetric(StepKind kind, const Integrator<T>& in, const IntegratorClaims& cl) {
+template <class Kind, class T>
+void canonical_symmetric(const Integrator<T>& in, const IntegratorClaims& cl) {
   const T h = T(1) / T(4);
   T worst(0), worst_scale(1);
   std::string system, inputs;
   CanonicalCase<T> shown;
   for (int k = 0; k < kStates; ++k) {
-    const CanonicalCase<T> c = draw_case<T>(kind, in);
+    const CanonicalCase<T> c = Kind::template draw_case<T>(in);
     system = c.system.substr(0, 6);
     const T scale = at_least_one_abs(c.Z0) * T(c.n);
     const T r = max_abs(MatX<T>(c.step(c.step(c.Z0, h), -h) - c.Z0)) / scale;
@@ -251,14 +145,14 @@ void canonical_symmetric(StepKind kind, const Integrator<T>& in, const Integrato
 
 // Energy over 64 steps (32 for (3.23)) of h = 1/8: H is of degree 4, k = 16 per degree and step on
 // the scale of H's terms (as integrator_energy).
-template <class T>
-void canonical_energy(StepKind kind, const Integrator<T>& in, const IntegratorClaims& cl) {
-  const int steps = kind == StepKind::Clebsch ? 64 : 32;
+template <class Kind, class T>
+void canonical_energy(const Integrator<T>& in, const IntegratorClaims& cl) {
+  const int steps = Kind::energy_steps;
   T worst(0), worst_scale(1);
   std::string system, inputs;
   CanonicalCase<T> shown;
   for (int k = 0; k < kStates; ++k) {
-    const CanonicalCase<T> c = draw_case<T>(kind, in);
+    const CanonicalCase<T> c = Kind::template draw_case<T>(in);
     system = c.system.substr(0, 6);
     if (k == 0) shown = c;
     const T H0 = c.energy(c.Z0);
@@ -291,28 +185,18 @@ T two_form(const MatX<T>& U, const MatX<T>& V) {
   return T((U.topRows(k).cwiseProduct(V.bottomRows(k))).sum() - (U.bottomRows(k).cwiseProduct(V.topRows(k))).sum());
 }
 
-template <class T>
-void canonical_symplectic(StepKind kind, const Integrator<T>& in, const IntegratorClaims& cl) {
+template <class Kind, class T>
+void canonical_symplectic(const Integrator<T>& in, const IntegratorClaims& cl) {
   const T h = T(1) / T(4);
   T worst(0), worst_raw(0), worst_scale(1);
   std::string system, where, inputs;
   CanonicalCase<T> shown;
   for (int s = 0; s < kStates; ++s) {
-    const CanonicalCase<T> c = draw_case<T>(kind, in);
+    const CanonicalCase<T> c = Kind::template draw_case<T>(in);
     system = c.system.substr(0, 6);
     if (s == 0) shown = c;
     const auto rows = c.Z0.rows(), cols = c.Z0.cols();
-    std::vector<MatX<T>> u;
-    if (kind == StepKind::Clebsch) {
-      for (int i = 0; i < 6; ++i) u.push_back(MatX<T>(VecX<T>::Unit(6, i)));
-    } else {
-      for (int i = 0; i < 6; ++i) {
-        MatX<T> d(rows, cols);
-        for (Eigen::Index r = 0; r < rows; ++r)
-          for (Eigen::Index q = 0; q < cols; ++q) d(r, q) = T(dyn::pick<T>(rc::gen::inRange(-8, 9), "8 d_rq")) / T(8);
-        u.push_back(d);
-      }
-    }
+    const std::vector<MatX<T>> u = Kind::template directions<T>(c);  // drawn after the case, as before
     const MatX<T> Phi0 = c.step(c.Z0, h);
     std::vector<MatX<T>> Du;
     T size(1);
@@ -346,35 +230,35 @@ void canonical_symplectic(StepKind kind, const Integrator<T>& in, const Integrat
 
 template <class T>
 void clebsch_integrator_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  canonical_order<T>(StepKind::Clebsch, in, c);
+  canonical_order<ClebschKind>(in, c);
 }
 template <class T>
 void manakov_clebsch_integrator_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  canonical_order<T>(StepKind::ManakovClebsch, in, c);
+  canonical_order<ManakovClebschKind>(in, c);
 }
 template <class T>
 void clebsch_integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  canonical_symmetric<T>(StepKind::Clebsch, in, c);
+  canonical_symmetric<ClebschKind>(in, c);
 }
 template <class T>
 void manakov_clebsch_integrator_symmetric(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  canonical_symmetric<T>(StepKind::ManakovClebsch, in, c);
+  canonical_symmetric<ManakovClebschKind>(in, c);
 }
 template <class T>
 void clebsch_integrator_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  canonical_energy<T>(StepKind::Clebsch, in, c);
+  canonical_energy<ClebschKind>(in, c);
 }
 template <class T>
 void manakov_clebsch_integrator_energy(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  canonical_energy<T>(StepKind::ManakovClebsch, in, c);
+  canonical_energy<ManakovClebschKind>(in, c);
 }
 template <class T>
 void clebsch_integrator_symplectic(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  canonical_symplectic<T>(StepKind::Clebsch, in, c);
+  canonical_symplectic<ClebschKind>(in, c);
 }
 template <class T>
 void manakov_clebsch_integrator_symplectic(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  canonical_symplectic<T>(StepKind::ManakovClebsch, in, c);
+  canonical_symplectic<ManakovClebschKind>(in, c);
 }
 
 }  // namespace

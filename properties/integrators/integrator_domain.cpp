@@ -206,14 +206,10 @@ stepkind::RigidBodyCase<T> draw_domain_case(stepkind::RigidBodyKind) {
   return stepkind::RigidBodyKind::draw_case<T>();
 }
 
+// The same draw as the local order's (support/step_kind.hpp).
 template <class T>
 stepkind::ManakovCase<T> draw_domain_case(stepkind::ManakovKind) {
-  stepkind::ManakovCase<T> m;
-  m.n = dyn::pick<T>(gen::uniform(3, 5), "n");
-  m.a = dyn::draw_generic_manakov_a<T>(m.n);
-  m.A = dyn::diag_of(m.a);
-  m.x0 = ManakovState<T>{dyn::draw_generic_skew<T>(m.n), dyn::pick<T>(gen::rotation<T>(m.n))};
-  return m;
+  return stepkind::ManakovKind::draw_local_case<T>();
 }
 
 // The state with its momentum scaled by l (the probes' scales).

@@ -47,6 +47,7 @@
 #include "properties/integrators/support/convergence.hpp"
 #include "properties/integrators/support/step_field.hpp"
 #include "properties/integrators/support/step_field_matrix.hpp"
+#include "properties/integrators/support/step_kind.hpp"
 #include "properties/integrators/support/step_runs.hpp"
 #include "properties/registry.hpp"
 #include "properties/support/claims.hpp"
@@ -66,6 +67,10 @@
 namespace gm {
 namespace properties_integrator_regimes {
 namespace {
+
+// The traits of both kinds (support/step_kind.hpp), for the local order and the 50-digit floor.
+using stepkind::ManakovKind;
+using stepkind::RigidBodyKind;
 
 const char* kRegimeNames[] = {"generic",
                               "relative equilibrium (Pi along a principal axis)",
@@ -175,6 +180,12 @@ ManakovState<T> run_steps(const Integrator<T>& in, const MatX<T>& A, ManakovStat
 template <class T>
 T relative_distance(const RigidBodyState<T>& a, const RigidBodyState<T>& b, const T& pi_size) {
   return std::max(T(max_abs((a.Pi - b.Pi).eval()) / pi_size), T(max_abs((a.O - b.O).eval())));
+}
+
+// The same for Manakov's (M, O), relative to the size of M.
+template <class T>
+T relative_distance(const ManakovState<T>& a, const ManakovState<T>& b, const T& m_size) {
+  return std::max(T(max_abs((a.M - b.M).eval()) / m_size), T(max_abs((a.O - b.O).eval())));
 }
 
 // The verdict of a convergence run (1. at the top of this file): the log-log slope of the error at
@@ -623,70 +634,59 @@ void manakov_integrator_converges_in_every_frame(const Subject<T>&, const Integr
 // The 50-digit floor (see the top of this file). Generic state, one step of h = 2^-40; the error
 // relative to the state's size must be below 2^-60 (~8.7e-19): a first-order method's local
 // error is ~C 2^-80 with C of the size of |Omega|^2 <= 64 here, and double round-off is 2^-53.
-template <class T>
-void integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const Vec3<T> I = dyn::draw_generic_inertia<T>();
-  const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
+// The case of either kind is the local order's (draw_local_case); the rigid body's failure names
+// its cause (probes_floor).
+template <class Kind, class T>
+void floor_claim(const Integrator<T>& in, const IntegratorClaims& c) {
+  using State = typename Kind::template State<T>;
+  const auto m = Kind::template draw_local_case<T>();
   const T h = gen::pow2<T>(-40);
-  const RigidBodyState<T> exact = dyn::oracle_rigid_body(I, x0, {h}).front();
-  const RigidBodyState<T> step = in.rigid_body_step(I, x0, h);
-  const T err = relative_distance(step, exact, T(norm_inf(x0.Pi)));
+  const State exact = Kind::oracle_at(m, {h}).front();
+  const State step = Kind::step(in, m, m.x0, h);
+  const T err = relative_distance(step, exact, Kind::momentum_size(m));
   const T bound = gen::pow2<T>(-60);
   // "computed in double" is said only on its evidence, the step's own vector field
   // agreeing with (3.8) and (2.10) to 50 digits while its error stalls; a wrong field is named instead.
   std::string cause;
-  if (!(err <= bound)) {
-    // First what the step does on the variable that shows it (a precision below 50 digits
-    // measured as such, a step that does not reduce to the identity), then its field.
-    const std::string seen =
-        stepfield::explain_rigid_body_step(in, I, std::vector<RigidBodyState<T>>{x0}, {to_double(h)});
-    const bool field_right = seen.find("your step's vector field is right") != std::string::npos;
-    // Field right and no precision below 50 digits measured (explain_rigid_body_step tries that
-    // first): nothing confirms a cause, and none is named.
-    cause = field_right ? "the step's own vector field agrees with (3.8) and (2.10) to 50 digits (" + seen +
-                              "), yet one step errs by far more than its truncation; the probe of the step's precision "
-                              "did not find it computing below 50 digits: cause not identified"
-                        : seen;
+  if constexpr (Kind::probes_floor) {
+    if (!(err <= bound)) {
+      // First what the step does on the variable that shows it (a precision below 50 digits
+      // measured as such, a step that does not reduce to the identity), then its field.
+      const std::string seen = stepfield::explain_rigid_body_step(in, m.I, std::vector<State>{m.x0}, {to_double(h)});
+      const bool field_right = seen.find("your step's vector field is right") != std::string::npos;
+      // Field right and no precision below 50 digits measured (explain_rigid_body_step tries that
+      // first): nothing confirms a cause, and none is named.
+      cause = field_right ? "the step's own vector field agrees with (3.8) and (2.10) to 50 digits (" + seen +
+                                "), yet one step errs by far more than its truncation; the probe of the step's "
+                                "precision did not find it computing below 50 digits: cause not identified"
+                          : seen;
+    }
   }
+  const std::string one_step = in.name + ": one " + Kind::step_words + "step of h = 2^-40 in 50 digits";
   record_claim_finding("order", c.order > 0, err <= bound,
-                       in.name + ": one step of h = 2^-40 in 50 digits errs by " + to_string_full(err) +
+                       one_step + " errs by " + to_string_full(err) +
                            " of the state's size (at most 2^-60 for a 50-digit step of any order)",
                        err <= bound ? std::string() : "computed below 50 digits");
-  // Failing, the cause leads: the first line is what every summary shows.
-  require(err <= bound ? in.name + ": one step of h = 2^-40 in 50 digits is accurate far below double round-off"
-                       : in.name + ": one step of h = 2^-40 in 50 digits is not accurate to 50 digits: " + cause,
+  // Failing, the cause leads: the first line is what every summary shows (Manakov's, without a
+  // probe, keeps its passing words).
+  require(err <= bound || !Kind::probes_floor ? one_step + " is accurate far below double round-off"
+                                              : one_step + " is not accurate to 50 digits: " + cause,
           err <= bound,
           "the error of the step is " + to_string_full(err) +
-              " of the state's size, where any method of order >= 1 has "
-              "at most ~1e-24 (local error C h^2) and the bound is 2^-60 = " +
-              to_string_full(bound) + "\n  inputs, by the notes' names:\n" + named("I", I) + named("Pi", x0.Pi) +
-              named("O", x0.O) + "    h = 2^-40\n");
+              " of the state's size, where any method of order >= 1 has at most ~1e-24" +
+              Kind::floor_bound_words(bound) + "\n  inputs, by the notes' names:\n" + Kind::case_names(m) +
+              "    h = 2^-40\n");
+}
+
+template <class T>
+void integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  floor_claim<RigidBodyKind>(in, c);
 }
 
 // Manakov's (M, O), n = 3..4 (the oracle's cost grows like n^4), A = diag(a) (the oracle's body).
 template <class T>
 void manakov_integrator_50_digit_floor(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const int n = dyn::pick<T>(gen::uniform(3, 5), "n");
-  const auto a = dyn::draw_generic_manakov_a<T>(n);
-  const MatX<T> A = dyn::diag_of(a);
-  const ManakovState<T> x0{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
-  const T h = gen::pow2<T>(-40);
-  const ManakovState<T> exact = dyn::oracle_manakov(a, x0, {h}).front();
-  const ManakovState<T> step = in.manakov_step(A, x0, h);
-  const T size = norm_inf(x0.M);
-  const T err = std::max(T(max_abs((step.M - exact.M).eval()) / size), T(max_abs((step.O - exact.O).eval())));
-  const T bound = gen::pow2<T>(-60);
-  record_claim_finding("order", c.order > 0, err <= bound,
-                       in.name + ": one Manakov step of h = 2^-40 in 50 digits errs by " + to_string_full(err) +
-                           " of the state's size (at most 2^-60 for a 50-digit step of any order)",
-                       err <= bound ? std::string() : "computed below 50 digits");
-  require(
-      in.name + ": one Manakov step of h = 2^-40 in 50 digits is accurate far below double round-off", err <= bound,
-      "the error of the step is " + to_string_full(err) +
-          " of the state's size, where any method of order >= 1 has "
-          "at most ~1e-24 and the bound is 2^-60 (cause not identified: the Manakov step's precision is not probed)\n"
-          "  inputs, by the notes' names:\n" +
-          named("A", A) + named("M", x0.M) + named("O", x0.O) + "    h = 2^-40\n");
+  floor_claim<ManakovKind>(in, c);
 }
 
 // The local order (3. at the top of this file).
@@ -816,33 +816,40 @@ inline void judge_local_order(const std::string& integrator, const IntegratorCla
           holds, fmt("measured slope %.4f\n", fit.slope) + fit.table + "  inputs, by the notes' names:\n" + inputs);
 }
 
-template <class T>
-void integrator_local_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const Vec3<T> I = dyn::draw_generic_inertia<T>();
-  const RigidBodyState<T> x0{dyn::draw_generic_momentum<T>(), dyn::draw_attitude<T>()};
+// The local order of either kind (3. at the top of this file): the case, the time scale, the
+// state's size, the floor and the words of the kind's trait (support/step_kind.hpp); the step
+// factor is drawn after the case.
+template <class Kind, class T>
+void local_order_claim(const Integrator<T>& in, const IntegratorClaims& c) {
+  using State = typename Kind::template State<T>;
+  const auto m = Kind::template draw_local_case<T>();
   const T factor = draw_step_factor<T>();
-  const T t_s = T(1) / dyn::at_least_one(T(norm_inf(x0.Pi) / I.minCoeff()));
+  const T t_s = Kind::local_time_scale(m);
   std::vector<T> steps = local_order_steps<T>(c.order, factor, t_s);
   // Not below the smallest step the integrator declares it takes (its domain).
   std::erase_if(steps, [](const T& h) { return to_double(h) < current_step_domain().min_h; });
   // The oracle's times must increase; the steps decrease.
   std::vector<T> times(steps.rbegin(), steps.rend());
-  std::vector<RigidBodyState<T>> exact = dyn::oracle_rigid_body(I, x0, times);
+  std::vector<State> exact = Kind::oracle_at(m, times);
   std::reverse(exact.begin(), exact.end());
-  const T size = norm_inf(x0.Pi);
+  const T size = Kind::local_size(m);
   std::vector<double> hs, errs, h_run;
   for (std::size_t i = 0; i < steps.size(); ++i) {
-    hs.push_back(to_double(T(steps[i] / t_s)));
+    hs.push_back(Kind::local_h(steps[i], t_s));
     h_run.push_back(to_double(steps[i]));
-    errs.push_back(to_double(relative_distance(in.rigid_body_step(I, x0, steps[i]), exact[i], size)));
+    errs.push_back(to_double(relative_distance(Kind::step(in, m, m.x0, steps[i]), exact[i], size)));
   }
-  stepfield::explaining_step(
-      in, I, [&] { return std::vector<RigidBodyState<T>>{x0}; }, h_run,
+  Kind::explaining(
+      in, m, [&] { return std::vector<State>{m.x0}; }, h_run,
       [&] {
-        judge_local_order(in.name, c, "", ScalarInfo<T>::name, hs, errs, local_error_floor<T>(),
-                          named("I", I) + named("Pi", x0.Pi) + named("O", x0.O) + "    h = c 2^-k t, c = " +
-                              to_string_full(factor) + ", t = " + to_string_full(t_s) + "\n");
+        judge_local_order(in.name, c, Kind::local_where(m), ScalarInfo<T>::name, hs, errs,
+                          Kind::local_floor(local_error_floor<T>(), m), Kind::local_inputs(m, factor, t_s));
       });
+}
+
+template <class T>
+void integrator_local_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
+  local_order_claim<RigidBodyKind>(in, c);
 }
 
 // 4. at the top of this file: the exponents j of the turns h |Omega| = 2^-j, from 2^-10 down to two
@@ -916,33 +923,7 @@ void integrator_small_turns(const Subject<T>&, const Integrator<T>& in, const In
 // Manakov's (M, O), n = 3..4, A = diag(a), |M_ij| <= 1 (the time scale 1).
 template <class T>
 void manakov_integrator_local_order(const Subject<T>&, const Integrator<T>& in, const IntegratorClaims& c) {
-  const int n = dyn::pick<T>(gen::uniform(3, 5), "n");
-  const auto a = dyn::draw_generic_manakov_a<T>(n);
-  const MatX<T> A = dyn::diag_of(a);
-  const ManakovState<T> x0{dyn::draw_generic_skew<T>(n), dyn::pick<T>(gen::rotation<T>(n))};
-  const T factor = draw_step_factor<T>();
-  std::vector<T> steps = local_order_steps<T>(c.order, factor, T(1));
-  // Not below the smallest step the integrator declares it takes (its domain).
-  std::erase_if(steps, [](const T& h) { return to_double(h) < current_step_domain().min_h; });
-  std::vector<T> times(steps.rbegin(), steps.rend());
-  std::vector<ManakovState<T>> exact = dyn::oracle_manakov(a, x0, times);
-  std::reverse(exact.begin(), exact.end());
-  const T size = dyn::at_least_one(norm_inf(x0.M));
-  std::vector<double> hs, errs;
-  for (std::size_t i = 0; i < steps.size(); ++i) {
-    const ManakovState<T> step = in.manakov_step(A, x0, steps[i]);
-    hs.push_back(to_double(steps[i]));
-    errs.push_back(
-        to_double(std::max(T(max_abs((step.M - exact[i].M).eval()) / size), T(max_abs((step.O - exact[i].O).eval())))));
-  }
-  stepfield::explaining_manakov_step(
-      in, A, [&] { return std::vector<ManakovState<T>>{x0}; },
-      [&] {
-        judge_local_order(in.name, c, " on Manakov, n = " + std::to_string(n), ScalarInfo<T>::name, hs, errs,
-                          local_error_floor<T>() * n,
-                          named("A", A) + named("M", x0.M) + named("O", x0.O) +
-                              "    h = c 2^-k, c = " + to_string_full(factor) + "\n");
-      });
+  local_order_claim<ManakovKind>(in, c);
 }
 
 }  // namespace

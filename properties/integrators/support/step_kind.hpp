@@ -4,7 +4,8 @@
 // the state and case types, the draws of a case (the generators' calls in their order: a verdict
 // is reproduced from its seed only if they do not move), a run of steps, the distance between
 // states, the case in the notes' names, the explaining wrapper of a false claim, and the words of
-// a message that name the kind. What a claim checks for one kind only is a flag of the trait.
+// a message that name the kind. What a claim checks for one kind only is a flag of the trait. The
+// local order and the 50-digit floor of integrator_regimes.cpp are written over them too.
 #pragma once
 
 #include "core/subject.hpp"
@@ -15,6 +16,7 @@
 #include "properties/support/dynamics.hpp"
 #include "properties/support/generators.hpp"
 #include "properties/support/named_inputs.hpp"
+#include "properties/support/regimes.hpp"
 #include "properties/support/scalar_text.hpp"
 
 #include <algorithm>
@@ -235,6 +237,71 @@ struct RigidBodyKind {
                          Judge&& judge) {
     stepfield::explaining_step(in, c.I, std::forward<States>(states), hs, std::forward<Judge>(judge));
   }
+
+  // The local order (integrator_regimes.cpp, 3. at its top): one step from a generic case drawn as
+  // draw_case draws it, at h = c 2^-k t_s with the time scale t_s = 1 / max(1, |Omega|) of the motion
+  // (its steps as h |Omega|, h / t_s), the error relative to |Pi| (not at least 1: the state's own
+  // size), against the floor of one step as it is.
+  template <class T>
+  static Case<T> draw_local_case() {
+    return draw_case<T>();
+  }
+
+  template <class T>
+  static T local_time_scale(const Case<T>& c) {
+    return T(1) / dyn::at_least_one(T(norm_inf(c.x0.Pi) / c.I.minCoeff()));
+  }
+
+  template <class T>
+  static std::vector<State<T>> oracle_at(const Case<T>& c, const std::vector<T>& times) {
+    return dyn::oracle_rigid_body(c.I, c.x0, times);
+  }
+
+  template <class T>
+  static T local_size(const Case<T>& c) {
+    return norm_inf(c.x0.Pi);
+  }
+
+  template <class T>
+  static double local_h(const T& h, const T& t_s) {
+    return to_double(T(h / t_s));
+  }
+
+  template <class T>
+  static double local_floor(double floor, const Case<T>&) {
+    return floor;
+  }
+
+  template <class T>
+  static std::string local_where(const Case<T>&) {
+    return "";
+  }
+
+  template <class T>
+  static std::string local_inputs(const Case<T>& c, const T& factor, const T& t_s) {
+    return named("I", c.I) + named("Pi", c.x0.Pi) + named("O", c.x0.O) +
+           "    h = c 2^-k t, c = " + to_string_full(factor) + ", t = " + to_string_full(t_s) + "\n";
+  }
+
+  // The 50-digit floor (integrator_regimes.cpp, 2. at its top), from the local order's case: the
+  // error relative to |Pi|; a failure names its cause by the step's own field and precision
+  // (stepfield::explain_rigid_body_step), and the bound is printed.
+  static constexpr bool probes_floor = true;
+
+  template <class T>
+  static T momentum_size(const Case<T>& c) {
+    return norm_inf(c.x0.Pi);
+  }
+
+  template <class T>
+  static std::string floor_bound_words(const T& bound) {
+    return " (local error C h^2) and the bound is 2^-60 = " + to_string_full(bound);
+  }
+
+  template <class T>
+  static std::string case_names(const Case<T>& c) {
+    return named("I", c.I) + named("Pi", c.x0.Pi) + named("O", c.x0.O);
+  }
 };
 
 struct ManakovKind {
@@ -359,6 +426,75 @@ struct ManakovKind {
   static void explaining(const Integrator<T>& in, const Case<T>& c, States&& states, const std::vector<double>&,
                          Judge&& judge) {
     stepfield::explaining_manakov_step(in, c.A, std::forward<States>(states), std::forward<Judge>(judge));
+  }
+
+  // The local order: n in [3, 4] drawn by gen::uniform (the regimes' own draw, not draw_case's: a
+  // verdict is reproduced from its seed only if the calls do not move), A = diag(a) (the oracle's
+  // body), |M_ij| <= 1: the time scale 1, steps h themselves, the error relative to max(1, |M|),
+  // the floor of one step times n (entries of products summed over n terms).
+  template <class T>
+  static Case<T> draw_local_case() {
+    Case<T> m;
+    m.n = dyn::pick<T>(gen::uniform(3, 5), "n");
+    m.a = dyn::draw_generic_manakov_a<T>(m.n);
+    m.A = dyn::diag_of(m.a);
+    m.x0 = ManakovState<T>{dyn::draw_generic_skew<T>(m.n), dyn::pick<T>(gen::rotation<T>(m.n))};
+    return m;
+  }
+
+  template <class T>
+  static T local_time_scale(const Case<T>&) {
+    return T(1);
+  }
+
+  template <class T>
+  static std::vector<State<T>> oracle_at(const Case<T>& c, const std::vector<T>& times) {
+    return dyn::oracle_manakov(c.a, c.x0, times);
+  }
+
+  template <class T>
+  static T local_size(const Case<T>& c) {
+    return dyn::at_least_one(norm_inf(c.x0.M));
+  }
+
+  template <class T>
+  static double local_h(const T& h, const T&) {
+    return to_double(h);
+  }
+
+  template <class T>
+  static double local_floor(double floor, const Case<T>& c) {
+    return floor * c.n;
+  }
+
+  template <class T>
+  static std::string local_where(const Case<T>& c) {
+    return " on Manakov, n = " + std::to_string(c.n);
+  }
+
+  template <class T>
+  static std::string local_inputs(const Case<T>& c, const T& factor, const T&) {
+    return named("A", c.A) + named("M", c.x0.M) + named("O", c.x0.O) + "    h = c 2^-k, c = " + to_string_full(factor) +
+           "\n";
+  }
+
+  // The 50-digit floor: the error relative to |M| (not at least 1); the step's precision is not
+  // probed, so a failure names no cause and keeps the passing words in its first line.
+  static constexpr bool probes_floor = false;
+
+  template <class T>
+  static T momentum_size(const Case<T>& c) {
+    return norm_inf(c.x0.M);
+  }
+
+  template <class T>
+  static std::string floor_bound_words(const T&) {
+    return " and the bound is 2^-60 (cause not identified: the Manakov step's precision is not probed)";
+  }
+
+  template <class T>
+  static std::string case_names(const Case<T>& c) {
+    return named("A", c.A) + named("M", c.x0.M) + named("O", c.x0.O);
   }
 };
 
